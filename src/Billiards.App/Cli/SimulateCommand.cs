@@ -1,0 +1,59 @@
+using System.CommandLine;
+using System.Text;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Cli;
+
+/// <summary>
+/// <c>simulate SCENE [--model M] [--integrator I] [--dt S] [--until T] [--sample DT] [--out FILE]</c>:
+/// headless; prints the result JSON or writes it to FILE. Never touches OpenGL or audio.
+/// </summary>
+public static class SimulateCommand
+{
+    /// <summary>Builds the verb.</summary>
+    public static Command Create(TextWriter stdout)
+    {
+        var scene = new Argument<string>("scene") { Description = "The scene file (billiards-scene/1 JSON)." };
+        var model = new Option<string?>("--model") { Description = "Override the physics model: standard or thesis." };
+        var integrator = new Option<string?>("--integrator") { Description = "Override the integrator: exact, euler or event (standard); fixed (thesis)." };
+        var dt = new Option<double?>("--dt") { Description = "Override the fixed step (s)." };
+        var until = new Option<double?>("--until") { Description = "Stop at this simulated time (s) instead of at rest." };
+        var sample = new Option<double?>("--sample") { Description = "Record positions every DT seconds." };
+        var output = new Option<string?>("--out") { Description = "Write the result to FILE instead of standard output." };
+
+        var command = new Command("simulate", "Simulate a scene headless and print its result JSON.")
+        {
+            scene, model, integrator, dt, until, sample, output,
+        };
+        command.SetAction(parse =>
+        {
+            double? untilValue = parse.GetValue(until);
+            double? sampleValue = parse.GetValue(sample);
+            if (untilValue is { } u && (!double.IsFinite(u) || u < 0))
+            {
+                throw new CliException($"--until {u}: expected a time of 0 s or more");
+            }
+            if (sampleValue is { } s && (!double.IsFinite(s) || s <= 0))
+            {
+                throw new CliException($"--sample {s}: expected a positive interval (s)");
+            }
+            var loaded = SceneLoader.Load(parse.GetValue(scene)!, new SceneOverrides(parse.GetValue(model), parse.GetValue(integrator), parse.GetValue(dt)));
+            if (sampleValue is { } interval && (untilValue ?? 600) / interval > 1_000_000)
+            {
+                throw new CliException($"--sample {interval}: more than a million samples; choose a larger interval");
+            }
+            var outcome = SimulationRunner.Run(loaded, new RunOptions(untilValue, sampleValue));
+            byte[] json = ResultWriter.ToUtf8(outcome);
+            if (parse.GetValue(output) is { } path)
+            {
+                CommandLine.WriteAtomically(path, json);
+            }
+            else
+            {
+                stdout.Write(Encoding.UTF8.GetString(json));
+            }
+            return 0;
+        });
+        return command;
+    }
+}

@@ -1,0 +1,3 @@
+using Billiards.App.Cli;
+
+return CommandLine.Run(args, Console.Out, Console.Error);

@@ -1,0 +1,72 @@
+using System.Numerics;
+using Billiards.Core.Balls;
+using Billiards.Core.Table;
+
+namespace Billiards.App.Rendering;
+
+/// <summary>
+/// Everything the renderer draws in one frame, as plain data: the game builds it from Core's
+/// state (interpolated between physics steps), the renderer only reads it. World units are
+/// Core's: metres, z up, origin at the centre of the bed.
+/// </summary>
+public sealed class RenderFrame
+{
+    /// <summary>Framebuffer size in pixels.</summary>
+    public int Width { get; set; } = 1280;
+
+    /// <summary>Framebuffer size in pixels.</summary>
+    public int Height { get; set; } = 720;
+
+    /// <summary>The table to draw.</summary>
+    public required TableSpec Table { get; set; }
+
+    /// <summary>Camera position (m).</summary>
+    public Vector3 Eye { get; set; } = new(-2.2f, 0, 1.2f);
+
+    /// <summary>Point the camera looks at (m).</summary>
+    public Vector3 Target { get; set; } = Vector3.Zero;
+
+    /// <summary>Vertical field of view (deg).</summary>
+    public float FovYDegrees { get; set; } = 45;
+
+    /// <summary>The balls; pocketed balls that have dropped out of sight have Visible = false.</summary>
+    public List<BallVisual> Balls { get; } = [];
+
+    /// <summary>The cue; hidden while balls roll.</summary>
+    public CueVisual Cue { get; set; }
+
+    /// <summary>HUD and help overlay; null draws none (e.g. for `render`).</summary>
+    public HudInfo? Hud { get; set; }
+
+    /// <summary>Draw the collision geometry and its normals (debug toggle).</summary>
+    public bool ShowCollisionGeometry { get; set; }
+
+    /// <summary>Debug collision triangles (corners and unit normal, m) to draw when <see cref="ShowCollisionGeometry"/> is on.</summary>
+    public IReadOnlyList<DebugTriangle> CollisionTriangles { get; set; } = [];
+}
+
+/// <summary>One ball as drawn.</summary>
+/// <param name="Id">Which ball (its texture).</param>
+/// <param name="Position">Centre (m).</param>
+/// <param name="Orientation">Orientation quaternion.</param>
+/// <param name="Visible">False once it has dropped out of sight.</param>
+public readonly record struct BallVisual(BallId Id, Vector3 Position, Quaternion Orientation, bool Visible = true);
+
+/// <summary>The cue as drawn (seed 4.5.3): it points at the cue ball along the aim, tilted by the elevation.</summary>
+/// <param name="Visible">False while balls roll.</param>
+/// <param name="BallCentre">Centre of the cue ball (m).</param>
+/// <param name="AimDirection">Unit direction of the stroke in the bed plane.</param>
+/// <param name="ElevationDegrees">Cue elevation above the bed (deg).</param>
+/// <param name="PullBack">Distance of the tip from the ball's surface (m), the seed's offset d.</param>
+/// <param name="TipOffset">Tip offset on the ball [side, height] as fractions of R.</param>
+public readonly record struct CueVisual(bool Visible, Vector3 BallCentre, Vector3 AimDirection, float ElevationDegrees, float PullBack, Vector2 TipOffset);
+
+/// <summary>What the HUD shows.</summary>
+/// <param name="Lines">Text lines (mode, last shot's speed, elevation, frame rate...).</param>
+/// <param name="SpinPoint">Tip offset on the cue-ball diagram [side, height] as fractions of R.</param>
+/// <param name="ShowHelp">Whether the help overlay is open.</param>
+/// <param name="HelpLines">Lines of the help overlay: every key.</param>
+public sealed record HudInfo(IReadOnlyList<string> Lines, Vector2 SpinPoint, bool ShowHelp, IReadOnlyList<string> HelpLines);
+
+/// <summary>A collision triangle for the debug view (m).</summary>
+public readonly record struct DebugTriangle(Vector3 A, Vector3 B, Vector3 C, Vector3 Normal);

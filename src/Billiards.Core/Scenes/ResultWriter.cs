@@ -1,0 +1,136 @@
+using System.Text.Json;
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Physics;
+
+namespace Billiards.Core.Scenes;
+
+/// <summary>Writes "billiards-result/1" JSON (scene-format.md).</summary>
+public static class ResultWriter
+{
+    /// <summary>The format tag of a result.</summary>
+    public const string Format = "billiards-result/1";
+
+    /// <summary>The result as UTF-8 JSON bytes, indented, with round-trip numbers.</summary>
+    public static byte[] ToUtf8(RunOutcome outcome)
+    {
+        using var stream = new MemoryStream();
+        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
+        {
+            Write(w, outcome);
+        }
+        stream.WriteByte((byte)'\n');
+        return stream.ToArray();
+    }
+
+    private static void Write(Utf8JsonWriter w, RunOutcome outcome)
+    {
+        var sim = outcome.Simulation;
+        w.WriteStartObject();
+        w.WriteString("format", Format);
+        w.WriteString("model", sim.Model);
+        w.WriteString("integrator", sim.Integrator);
+        w.WriteNumber("dt", sim.Dt);
+        w.WriteNumber("t_end", sim.Time);
+
+        w.WriteStartArray("balls");
+        var balls = sim.Balls;
+        for (int i = 0; i < balls.Length; i++)
+        {
+            ref readonly var b = ref balls[i];
+            w.WriteStartObject();
+            w.WriteString("id", sim.Ids[i].ToString());
+            WriteVector(w, "position", b.Position);
+            WriteVector(w, "velocity", b.Velocity);
+            WriteVector(w, "spin", b.Spin);
+            w.WriteString("state", b.State.ToName());
+            if (b.Pocket >= 0)
+            {
+                w.WriteString("pocket", sim.FeatureName(EventKind.BallPocket, b.Pocket));
+            }
+            else
+            {
+                w.WriteNull("pocket");
+            }
+            w.WriteEndObject();
+        }
+        w.WriteEndArray();
+
+        w.WriteStartArray("events");
+        foreach (ref readonly var e in sim.Events.AsSpan())
+        {
+            w.WriteStartObject();
+            w.WriteNumber("t", e.Time);
+            switch (e.Kind)
+            {
+                case EventKind.BallBall:
+                    w.WriteString("type", "ball-ball");
+                    WriteIds(w, e.A, e.B);
+                    w.WriteNumber("speed", e.Speed);
+                    break;
+                case EventKind.BallCushion:
+                    w.WriteString("type", "ball-cushion");
+                    WriteIds(w, e.A);
+                    w.WriteString("cushion", sim.FeatureName(e.Kind, e.Feature));
+                    w.WriteNumber("speed", e.Speed);
+                    break;
+                case EventKind.BallPocket:
+                    w.WriteString("type", "ball-pocket");
+                    WriteIds(w, e.A);
+                    w.WriteString("pocket", sim.FeatureName(e.Kind, e.Feature));
+                    break;
+            }
+            w.WriteEndObject();
+        }
+        w.WriteEndArray();
+
+        if (outcome.Samples.Count > 0)
+        {
+            w.WriteStartArray("samples");
+            foreach (var s in outcome.Samples)
+            {
+                w.WriteStartObject();
+                w.WriteNumber("t", s.Time);
+                w.WriteStartObject("positions");
+                for (int i = 0; i < s.Positions.Length; i++)
+                {
+                    w.WriteStartArray(sim.Ids[i].ToString());
+                    w.WriteNumberValue(s.Positions[i].X);
+                    w.WriteNumberValue(s.Positions[i].Y);
+                    w.WriteEndArray();
+                }
+                w.WriteEndObject();
+                w.WriteEndObject();
+            }
+            w.WriteEndArray();
+        }
+
+        w.WriteStartObject("stats");
+        w.WriteNumber("steps", sim.StepCount);
+        w.WriteNumber("events", sim.Events.Count);
+        w.WriteNumber("wall_ms", Math.Round(outcome.WallMilliseconds, 3));
+        w.WriteBoolean("at_rest", outcome.AtRest);
+        w.WriteNumber("event_cap_hits", sim.EventCapHits);
+        w.WriteEndObject();
+        w.WriteEndObject();
+    }
+
+    private static void WriteIds(Utf8JsonWriter w, params ReadOnlySpan<BallId> ids)
+    {
+        w.WriteStartArray("balls");
+        foreach (var id in ids)
+        {
+            w.WriteStringValue(id.ToString());
+        }
+        w.WriteEndArray();
+    }
+
+    private static void WriteVector(Utf8JsonWriter w, string name, Vec3 v)
+    {
+        w.WriteStartArray(name);
+        w.WriteNumberValue(v.X);
+        w.WriteNumberValue(v.Y);
+        w.WriteNumberValue(v.Z);
+        w.WriteEndArray();
+    }
+}

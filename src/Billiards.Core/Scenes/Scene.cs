@@ -1,0 +1,80 @@
+using Billiards.Core.Balls;
+using Billiards.Core.Cue;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Physics;
+using Billiards.Core.Setup;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Scenes;
+
+/// <summary>The physics a scene asks for.</summary>
+/// <param name="Model">"standard" (default) or "thesis".</param>
+/// <param name="Integrator">"exact" (default), "euler" or "event" for standard; "fixed" for thesis.</param>
+/// <param name="Dt">Fixed step (s); default 1/250.</param>
+/// <param name="Params">Parameters of the standard model (the thesis model keeps its own constants).</param>
+public sealed record PhysicsConfig(string Model, string Integrator, double Dt, PhysicsParams Params)
+{
+    /// <summary>The default step, 1/250 s (the seed's rate).</summary>
+    public const double DefaultDt = 1.0 / 250.0;
+
+    /// <summary>The standard model with the exact integrator at 1/250 s and default parameters.</summary>
+    public static PhysicsConfig Default { get; } = new(Models.Standard, Integrators.Exact, DefaultDt, PhysicsParams.Default);
+}
+
+/// <summary>Names of the models.</summary>
+public static class Models
+{
+    /// <summary>The physically based model.</summary>
+    public const string Standard = "standard";
+    /// <summary>The seed's model, kept faithful.</summary>
+    public const string Thesis = "thesis";
+}
+
+/// <summary>Names of the integrators.</summary>
+public static class Integrators
+{
+    /// <summary>Closed-form motion with exact collision times inside fixed steps.</summary>
+    public const string Exact = "exact";
+    /// <summary>Naive explicit Euler with overlap detection: the accuracy report's baseline.</summary>
+    public const string Euler = "euler";
+    /// <summary>Event-based reference solver.</summary>
+    public const string Event = "event";
+    /// <summary>The thesis model's own fixed step with overlap detection.</summary>
+    public const string Fixed = "fixed";
+
+    /// <summary>The integrators a model accepts; the first is its default.</summary>
+    public static IReadOnlyList<string> For(string model) =>
+        model == Models.Thesis ? [Fixed] : [Exact, Euler, Event];
+}
+
+/// <summary>A ball's initial state as the scene (or its rack) places it.</summary>
+/// <param name="Id">Which ball.</param>
+/// <param name="Position">Centre (m), z = R.</param>
+/// <param name="Velocity">Initial velocity (m/s), in the bed plane.</param>
+/// <param name="Spin">Initial angular velocity (rad/s).</param>
+public sealed record BallSetup(BallId Id, Vec3 Position, Vec3 Velocity, Vec3 Spin);
+
+/// <summary>
+/// A loaded and validated scene: the table, the physics, the balls (the rack merged with the
+/// explicit balls, sorted by id), an optional shot and rules. A scene asks only for what it needs.
+/// </summary>
+public sealed record Scene(
+    string Path,
+    string? Name,
+    TableSpec Table,
+    PhysicsConfig Physics,
+    RackSpec? Rack,
+    IReadOnlyList<BallSetup> Balls,
+    ShotSpec? Shot,
+    string? Rules)
+{
+    /// <summary>The ball radius the scene's model uses (m).</summary>
+    public double BallRadius => Physics.Model == Models.Thesis ? ThesisConstants.RadiusMetres : Physics.Params.R;
+}
+
+/// <summary>Constants of the thesis model that the rest of Core needs in SI.</summary>
+public static class ThesisConstants
+{
+    /// <summary>The seed's ball radius, 2.86 cm, in metres.</summary>
+    public const double RadiusMetres = 0.0286;
+}

@@ -1,0 +1,426 @@
+using System.Globalization;
+using System.Text.Json;
+using Billiards.Core.Balls;
+using Billiards.Core.Cue;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Physics;
+using Billiards.Core.Setup;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Scenes;
+
+/// <summary>Command-line overrides of a scene's physics (simulate --model/--integrator/--dt).</summary>
+public sealed record SceneOverrides(string? Model = null, string? Integrator = null, double? Dt = null);
+
+/// <summary>
+/// Reads and validates "billiards-scene/1" files (scene-format.md). Every problem becomes a
+/// <see cref="SceneException"/> naming the file, the JSON path and what is wrong; unknown fields
+/// and values are refused rather than ignored, so that a typo never silently changes a shot.
+/// </summary>
+public static class SceneLoader
+{
+    /// <summary>The format tag of a scene file.</summary>
+    public const string Format = "billiards-scene/1";
+
+    /// <summary>Smallest and largest accepted fixed step (s).</summary>
+    public const double MinDt = 1e-6, MaxDt = 0.1;
+
+    /// <summary>Largest accepted cue speed (m/s); a hard break is about 12.</summary>
+    public const double MaxShotSpeed = 20;
+
+    /// <summary>Loads a scene file.</summary>
+    /// <exception cref="SceneException">When the file is missing, malformed or invalid.</exception>
+    public static Scene Load(string path, SceneOverrides? overrides = null)
+    {
+        string text;
+        try
+        {
+            text = File.ReadAllText(path);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
+        {
+            throw new SceneException(path, "$", $"cannot read the file ({e.Message})");
+        }
+        return Parse(text, path, overrides);
+    }
+
+    /// <summary>Parses scene JSON; <paramref name="path"/> only names the source in errors.</summary>
+    /// <exception cref="SceneException">When the text is malformed or invalid.</exception>
+    public static Scene Parse(string json, string path, SceneOverrides? overrides = null)
+    {
+        JsonDocument doc;
+        try
+        {
+            doc = JsonDocument.Parse(json, new JsonDocumentOptions { AllowTrailingCommas = false, CommentHandling = JsonCommentHandling.Disallow });
+        }
+        catch (JsonException e)
+        {
+            throw new SceneException(path, "$", $"not valid JSON: line {e.LineNumber + 1}, byte {e.BytePositionInLine + 1}: {FirstSentence(e.Message)}");
+        }
+        using (doc)
+        {
+            return new Reader(path).ReadScene(doc.RootElement, overrides ?? new SceneOverrides());
+        }
+    }
+
+    private static string FirstSentence(string message)
+    {
+        int end = message.IndexOf(". ", StringComparison.Ordinal);
+        return end < 0 ? message.TrimEnd('.') : message[..end];
+    }
+
+    private sealed class Reader(string file)
+    {
+        private SceneException Error(string jsonPath, string problem) => new(file, jsonPath, problem);
+
+        public Scene ReadScene(JsonElement root, SceneOverrides overrides)
+        {
+            var fields = Object(root, "$", "format", "name", "table", "physics", "rack", "balls", "shot", "rules");
+            if (!fields.TryGetValue("format", out var format))
+            {
+                throw Error("$", $"missing \"format\" (expected \"{Format}\")");
+            }
+            string formatText = String(format, "$.format");
+            if (formatText != Format)
+            {
+                throw Error("$.format", $"unknown format \"{formatText}\" (expected \"{Format}\")");
+            }
+            string? name = fields.TryGetValue("name", out var n) ? String(n, "$.name") : null;
+
+            var physics = fields.TryGetValue("physics", out var p) ? ReadPhysics(p, overrides) : ApplyOverrides(PhysicsConfig.Default, overrides, "$");
+            var table = fields.TryGetValue("table", out var t)
+                ? ReadTable(t)
+                : TableSpec.FromPreset(physics.Model == Models.Thesis ? "thesis" : "pool-9ft");
+            double radius = physics.Model == Models.Thesis ? ThesisConstants.RadiusMetres : physics.Params.R;
+
+            RackSpec? rack = fields.TryGetValue("rack", out var r) ? ReadRack(r) : null;
+            var balls = new SortedDictionary<int, (BallSetup Ball, string Path)>();
+            if (rack is not null)
+            {
+                foreach (var (id, position) in Initializer.Rack(rack, table, radius))
+                {
+                    balls[id.Value] = (new BallSetup(id, position, Vec3.Zero, Vec3.Zero), "$.rack");
+                }
+                if (!balls.ContainsKey(0))
+                {
+                    balls[0] = (new BallSetup(BallId.Cue, Initializer.HeadSpot(table, radius), Vec3.Zero, Vec3.Zero), "$.rack");
+                }
+            }
+            if (fields.TryGetValue("balls", out var b))
+            {
+                var explicitIds = new HashSet<int>();
+                int i = 0;
+                foreach (var item in Array(b, "$.balls"))
+                {
+                    string itemPath = $"$.balls[{i++}]";
+                    var ball = ReadBall(item, itemPath, radius);
+                    if (!explicitIds.Add(ball.Id.Value))
+                    {
+                        throw Error(itemPath + ".id", $"ball \"{ball.Id}\" appears twice");
+                    }
+                    balls[ball.Id.Value] = (ball, itemPath);
+                }
+            }
+            var list = balls.Values.ToList();
+            ValidatePlacement(list, table, radius);
+
+            ShotSpec? shot = fields.TryGetValue("shot", out var s) ? ReadShot(s) : null;
+            if (shot is not null && !balls.ContainsKey(0))
+            {
+                throw Error("$.shot", "a shot needs a cue ball, and the scene has none");
+            }
+            string? rules = fields.TryGetValue("rules", out var ru) ? OneOf(ru, "$.rules", "eight-ball", "nine-ball") : null;
+
+            return new Scene(file, name, table, physics, rack, list.Select(x => x.Ball).ToList(), shot, rules);
+        }
+
+        private void ValidatePlacement(List<(BallSetup Ball, string Path)> balls, TableSpec table, double radius)
+        {
+            const double Tolerance = 1e-9;
+            foreach (var (ball, path) in balls)
+            {
+                if (Math.Abs(ball.Position.X) > table.HalfLength - radius + Tolerance
+                    || Math.Abs(ball.Position.Y) > table.HalfWidth - radius + Tolerance)
+                {
+                    throw Error(path, string.Create(CultureInfo.InvariantCulture,
+                        $"ball \"{ball.Id}\" at [{ball.Position.X}, {ball.Position.Y}] is off the table (the centre must stay within [{-(table.HalfLength - radius):0.######}, {table.HalfLength - radius:0.######}] x [{-(table.HalfWidth - radius):0.######}, {table.HalfWidth - radius:0.######}])"));
+                }
+            }
+            for (int i = 0; i < balls.Count; i++)
+            {
+                for (int j = i + 1; j < balls.Count; j++)
+                {
+                    double d = (balls[i].Ball.Position - balls[j].Ball.Position).Length;
+                    if (d < 2 * radius - Tolerance)
+                    {
+                        throw Error(balls[j].Path, string.Create(CultureInfo.InvariantCulture,
+                            $"ball \"{balls[j].Ball.Id}\" overlaps ball \"{balls[i].Ball.Id}\" (centres {d:0.######} m apart, less than 2R = {2 * radius:0.######} m)"));
+                    }
+                }
+            }
+        }
+
+        private TableSpec ReadTable(JsonElement e)
+        {
+            var f = Object(e, "$.table", "preset", "length", "width", "cushion_height");
+            if (!f.TryGetValue("preset", out var preset))
+            {
+                throw Error("$.table", "missing \"preset\"");
+            }
+            var table = TableSpec.FromPreset(OneOf(preset, "$.table.preset", [.. TableSpec.PresetNames]));
+            if (f.TryGetValue("length", out var l))
+            {
+                table = table with { Length = Number(l, "$.table.length", 0.5, 10) };
+            }
+            if (f.TryGetValue("width", out var w))
+            {
+                table = table with { Width = Number(w, "$.table.width", 0.25, 5) };
+            }
+            if (f.TryGetValue("cushion_height", out var h))
+            {
+                table = table with { CushionHeight = Number(h, "$.table.cushion_height", 0.0, 0.1) };
+            }
+            return table;
+        }
+
+        private PhysicsConfig ReadPhysics(JsonElement e, SceneOverrides overrides)
+        {
+            var f = Object(e, "$.physics", "model", "integrator", "dt", "params");
+            var config = PhysicsConfig.Default;
+            if (f.TryGetValue("model", out var m))
+            {
+                string model = OneOf(m, "$.physics.model", Models.Standard, Models.Thesis);
+                config = config with { Model = model, Integrator = Integrators.For(model)[0] };
+            }
+            if (f.TryGetValue("integrator", out var i))
+            {
+                string model = overrides.Model ?? config.Model;
+                config = config with { Integrator = OneOf(i, "$.physics.integrator", [.. Integrators.For(model)]) };
+            }
+            if (f.TryGetValue("dt", out var dt))
+            {
+                config = config with { Dt = Number(dt, "$.physics.dt", MinDt, MaxDt) };
+            }
+            if (f.TryGetValue("params", out var p))
+            {
+                config = config with { Params = ReadParams(p) };
+            }
+            return ApplyOverrides(config, overrides, "$.physics");
+        }
+
+        private PhysicsConfig ApplyOverrides(PhysicsConfig config, SceneOverrides o, string path)
+        {
+            if (o.Model is not null)
+            {
+                if (o.Model is not (Models.Standard or Models.Thesis))
+                {
+                    throw new SceneException("--model", "$", $"unknown model \"{o.Model}\" (expected one of \"standard\", \"thesis\")");
+                }
+                config = config with { Model = o.Model };
+                if (!Integrators.For(o.Model).Contains(config.Integrator))
+                {
+                    config = config with { Integrator = Integrators.For(o.Model)[0] };
+                }
+            }
+            if (o.Integrator is not null)
+            {
+                if (!Integrators.For(config.Model).Contains(o.Integrator))
+                {
+                    throw new SceneException("--integrator", "$", $"integrator \"{o.Integrator}\" is not available for model \"{config.Model}\" (expected one of {Quote(Integrators.For(config.Model))})");
+                }
+                config = config with { Integrator = o.Integrator };
+            }
+            if (o.Dt is { } dt)
+            {
+                if (!double.IsFinite(dt) || dt < MinDt || dt > MaxDt)
+                {
+                    throw new SceneException("--dt", "$", string.Create(CultureInfo.InvariantCulture, $"dt {dt} is out of range [{MinDt}, {MaxDt}]"));
+                }
+                config = config with { Dt = dt };
+            }
+            _ = path;
+            return config;
+        }
+
+        private PhysicsParams ReadParams(JsonElement e)
+        {
+            var f = Object(e, "$.physics.params", [.. PhysicsParams.Symbols]);
+            var p = PhysicsParams.Default;
+            double Get(string key, double min, double max, double fallback) =>
+                f.TryGetValue(key, out var v) ? Number(v, $"$.physics.params.{key}", min, max) : fallback;
+
+            p = p with
+            {
+                M = Get("m", 0.01, 10, p.M),
+                R = Get("R", 0.005, 0.1, p.R),
+                MuS = Get("mu_s", 0, 2, p.MuS),
+                MuR = Get("mu_r", 0, 1, p.MuR),
+                EB = Get("e_b", 0, 1, p.EB),
+                EC = Get("e_c", 0, 1, p.EC),
+                FC = Get("f_c", 0, 2, p.FC),
+                G = Get("g", 0.1, 100, p.G),
+                CueMass = Get("M", 0.01, 10, p.CueMass),
+            };
+            // mu_sp and m_e default relative to R and m, so they follow an overridden R or m.
+            p = p with
+            {
+                MuSp = Get("mu_sp", 0, 1, 4.0 / 9.0 * p.R),
+                CueEndMass = Get("m_e", 1e-4, 10, p.M / 30),
+            };
+            if (f.TryGetValue("mu_b", out var mb))
+            {
+                if (mb.ValueKind == JsonValueKind.String)
+                {
+                    OneOf(mb, "$.physics.params.mu_b", "alciatore");
+                    p = p with { MuBModel = BallBallFriction.Alciatore };
+                }
+                else
+                {
+                    p = p with { MuB = Number(mb, "$.physics.params.mu_b", 0, 2), MuBModel = BallBallFriction.Constant };
+                }
+            }
+            return p;
+        }
+
+        private RackSpec ReadRack(JsonElement e)
+        {
+            var f = Object(e, "$.rack", "game", "seed");
+            if (!f.TryGetValue("game", out var g))
+            {
+                throw Error("$.rack", "missing \"game\"");
+            }
+            var game = OneOf(g, "$.rack.game", "eight-ball", "nine-ball") == "eight-ball" ? RackGame.EightBall : RackGame.NineBall;
+            int seed = 0;
+            if (f.TryGetValue("seed", out var s))
+            {
+                if (s.ValueKind != JsonValueKind.Number || !s.TryGetInt32(out seed))
+                {
+                    throw Error("$.rack.seed", "expected a whole number (a 32-bit integer)");
+                }
+            }
+            return new RackSpec(game, seed);
+        }
+
+        private BallSetup ReadBall(JsonElement e, string path, double radius)
+        {
+            var f = Object(e, path, "id", "position", "velocity", "spin");
+            if (!f.TryGetValue("id", out var idElement))
+            {
+                throw Error(path, "missing \"id\"");
+            }
+            string idText = String(idElement, path + ".id");
+            if (!BallId.TryParse(idText, out var id))
+            {
+                throw Error(path + ".id", $"unknown ball id \"{idText}\" (expected \"cue\" or \"1\" .. \"15\")");
+            }
+            if (!f.TryGetValue("position", out var pos))
+            {
+                throw Error(path, "missing \"position\"");
+            }
+            var p = Numbers(pos, path + ".position", 2, 100);
+            var v = f.TryGetValue("velocity", out var ve) ? Numbers(ve, path + ".velocity", 2, MaxShotSpeed) : [0, 0];
+            var w = f.TryGetValue("spin", out var sp) ? Numbers(sp, path + ".spin", 3, 5000) : [0, 0, 0];
+            return new BallSetup(id, new Vec3(p[0], p[1], radius), new Vec3(v[0], v[1], 0), new Vec3(w[0], w[1], w[2]));
+        }
+
+        private ShotSpec ReadShot(JsonElement e)
+        {
+            var f = Object(e, "$.shot", "speed", "aim_deg", "tip", "elevation_deg");
+            if (!f.TryGetValue("speed", out var speed))
+            {
+                throw Error("$.shot", "missing \"speed\"");
+            }
+            if (!f.TryGetValue("aim_deg", out var aim))
+            {
+                throw Error("$.shot", "missing \"aim_deg\"");
+            }
+            double[] tip = f.TryGetValue("tip", out var t) ? Numbers(t, "$.shot.tip", 2, 1) : [0, 0];
+            if (tip[0] * tip[0] + tip[1] * tip[1] >= 1)
+            {
+                throw Error("$.shot.tip", "the tip offset must lie inside the ball (side^2 + height^2 < 1)");
+            }
+            double elevation = f.TryGetValue("elevation_deg", out var el) ? Number(el, "$.shot.elevation_deg", 0, 90) : 0;
+            return new ShotSpec(Number(speed, "$.shot.speed", 0, MaxShotSpeed), Number(aim, "$.shot.aim_deg", -360, 360), tip[0], tip[1], elevation);
+        }
+
+        private Dictionary<string, JsonElement> Object(JsonElement e, string path, params string[] allowed)
+        {
+            if (e.ValueKind != JsonValueKind.Object)
+            {
+                throw Error(path, $"expected an object, found {Describe(e)}");
+            }
+            var result = new Dictionary<string, JsonElement>(StringComparer.Ordinal);
+            foreach (var property in e.EnumerateObject())
+            {
+                if (!allowed.Contains(property.Name))
+                {
+                    throw Error($"{path}.{property.Name}", $"unknown field (expected one of {Quote(allowed)})");
+                }
+                if (!result.TryAdd(property.Name, property.Value))
+                {
+                    throw Error($"{path}.{property.Name}", "field appears twice");
+                }
+            }
+            return result;
+        }
+
+        private JsonElement.ArrayEnumerator Array(JsonElement e, string path) =>
+            e.ValueKind == JsonValueKind.Array ? e.EnumerateArray() : throw Error(path, $"expected an array, found {Describe(e)}");
+
+        private string String(JsonElement e, string path) =>
+            e.ValueKind == JsonValueKind.String ? e.GetString()! : throw Error(path, $"expected a string, found {Describe(e)}");
+
+        private string OneOf(JsonElement e, string path, params string[] values)
+        {
+            string s = String(e, path);
+            return values.Contains(s) ? s : throw Error(path, $"unknown value \"{s}\" (expected one of {Quote(values)})");
+        }
+
+        private double Number(JsonElement e, string path, double min, double max)
+        {
+            if (e.ValueKind != JsonValueKind.Number)
+            {
+                throw Error(path, $"expected a number, found {Describe(e)}");
+            }
+            double x = e.GetDouble();
+            if (!double.IsFinite(x))
+            {
+                throw Error(path, "the number is not finite");
+            }
+            if (x < min || x > max)
+            {
+                throw Error(path, string.Create(CultureInfo.InvariantCulture, $"{x} is out of range [{min}, {max}]"));
+            }
+            return x;
+        }
+
+        private double[] Numbers(JsonElement e, string path, int count, double maxAbs)
+        {
+            if (e.ValueKind != JsonValueKind.Array || e.GetArrayLength() != count)
+            {
+                throw Error(path, $"expected an array of {count} numbers, found {Describe(e)}");
+            }
+            var result = new double[count];
+            int i = 0;
+            foreach (var x in e.EnumerateArray())
+            {
+                result[i] = Number(x, $"{path}[{i}]", -maxAbs, maxAbs);
+                i++;
+            }
+            return result;
+        }
+
+        private static string Describe(JsonElement e) => e.ValueKind switch
+        {
+            JsonValueKind.Array => $"an array of {e.GetArrayLength()}",
+            JsonValueKind.Object => "an object",
+            JsonValueKind.String => $"the string \"{e.GetString()}\"",
+            JsonValueKind.Number => $"the number {e.GetRawText()}",
+            JsonValueKind.True or JsonValueKind.False => e.GetRawText(),
+            JsonValueKind.Null => "null",
+            _ => e.ValueKind.ToString(),
+        };
+    }
+
+    private static string Quote(IEnumerable<string> values) => string.Join(", ", values.Select(v => $"\"{v}\""));
+}

@@ -1,0 +1,16 @@
+using Billiards.Core.Physics;
+using Billiards.Core.Physics.Standard;
+using Billiards.Core.Physics.Thesis;
+
+namespace Billiards.Core.Scenes;
+
+/// <summary>Creates the simulation a scene's physics block asks for, with its balls placed.</summary>
+public static class SimulationFactory
+{
+    /// <summary>A new simulation of the scene at t = 0, before its shot.</summary>
+    public static Simulation Create(Scene scene) => scene.Physics.Model switch
+    {
+        Models.Thesis => new ThesisSimulation(scene),
+        _ => new StandardSimulation(scene),
+    };
+}

@@ -1,0 +1,114 @@
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Setup;
+
+/// <summary>
+/// The seed's Initializer (seed 4.1.3): places the racks, builds the collision geometry and
+/// resets a game. Racks are model-independent and in SI: the seed's spacing of 2r + 0.2 cm and
+/// its jitter of +-0.1 cm on both axes ("no break equals another") become 2R + 2 mm and +-1 mm.
+/// </summary>
+public static partial class Initializer
+{
+    /// <summary>Gap between neighbouring racked balls before jitter (m); the seed's 0.2 cm.</summary>
+    public const double RackGap = 0.002;
+
+    /// <summary>Largest jitter added to x and y of each racked ball (m); the seed's 0.1 cm.</summary>
+    public const double RackJitter = 0.001;
+
+    /// <summary>The foot spot, where the apex ball of a rack stands: a quarter of the length from the foot rail.</summary>
+    public static Vec3 FootSpot(TableSpec table, double radius) => new(table.HalfLength / 2, 0, radius);
+
+    /// <summary>The head spot, where the cue ball starts: a quarter of the length from the head rail.</summary>
+    public static Vec3 HeadSpot(TableSpec table, double radius) => new(-table.HalfLength / 2, 0, radius);
+
+    /// <summary>
+    /// The balls of a rack with their centres (z = radius). 8-ball: a triangle of 15 with the 1 at
+    /// the apex, the 8 in the centre, a solid and a stripe on the two back corners (which corner
+    /// gets which, and the order of the rest, follow the seed). 9-ball: a diamond of 9 with the 1
+    /// at the apex and the 9 in the centre. The apex stands on the foot spot and the rack opens
+    /// towards the foot rail (+x).
+    /// </summary>
+    /// <remarks>
+    /// The seed's jitter can make two neighbours overlap (each may move sqrt(2) * 0.1 cm towards
+    /// the other across a 0.2 cm gap). We draw a ball's jitter again, from the same seeded
+    /// generator, until it overlaps no ball placed before it, so a rack is always valid.
+    /// </remarks>
+    public static IReadOnlyList<(BallId Id, Vec3 Position)> Rack(RackSpec rack, TableSpec table, double radius)
+    {
+        var random = new Random(rack.Seed);
+        int[] rowSizes = rack.Game == RackGame.EightBall ? [1, 2, 3, 4, 5] : [1, 2, 3, 2, 1];
+        int[] numbers = rack.Game == RackGame.EightBall ? EightBallOrder(random) : NineBallOrder(random);
+
+        double spacing = 2 * radius + RackGap;
+        double rowStep = spacing * Math.Sqrt(3) / 2;
+        var foot = FootSpot(table, radius);
+        var placed = new List<(BallId, Vec3)>(numbers.Length);
+        int k = 0;
+        for (int row = 0; row < rowSizes.Length; row++)
+        {
+            for (int j = 0; j < rowSizes[row]; j++)
+            {
+                var ideal = new Vec3(foot.X + row * rowStep, (j - (rowSizes[row] - 1) / 2.0) * spacing, radius);
+                placed.Add((new BallId(numbers[k++]), Jittered(ideal, placed, radius, random)));
+            }
+        }
+        return placed;
+    }
+
+    private static Vec3 Jittered(Vec3 ideal, List<(BallId, Vec3)> placed, double radius, Random random)
+    {
+        for (int attempt = 0; attempt < 1000; attempt++)
+        {
+            var p = ideal + new Vec3((random.NextDouble() * 2 - 1) * RackJitter, (random.NextDouble() * 2 - 1) * RackJitter, 0);
+            if (placed.TrueForAll(b => (b.Item2 - p).Length >= 2 * radius))
+            {
+                return p;
+            }
+        }
+        return ideal; // unreachable in practice: the unjittered spot keeps a 2 mm gap
+    }
+
+    // Rows are filled apex first, left to right: index 0 is the apex, 4 the centre, 10 and 14 the back corners.
+    private static int[] EightBallOrder(Random random)
+    {
+        var solids = new List<int> { 2, 3, 4, 5, 6, 7 };
+        var stripes = new List<int> { 9, 10, 11, 12, 13, 14, 15 };
+        int solid = Take(solids, random);
+        int stripe = Take(stripes, random);
+        bool solidLeft = random.Next(2) == 0;
+        var rest = solids.Concat(stripes).ToArray();
+        random.Shuffle(rest);
+        var order = new int[15];
+        order[0] = 1;
+        order[4] = 8;
+        order[10] = solidLeft ? solid : stripe;
+        order[14] = solidLeft ? stripe : solid;
+        int r = 0;
+        for (int i = 0; i < 15; i++)
+        {
+            if (order[i] == 0)
+            {
+                order[i] = rest[r++];
+            }
+        }
+        return order;
+    }
+
+    // Diamond rows 1, 2, 3, 2, 1: index 0 is the apex and 4 the centre.
+    private static int[] NineBallOrder(Random random)
+    {
+        int[] rest = [2, 3, 4, 5, 6, 7, 8];
+        random.Shuffle(rest);
+        return [1, rest[0], rest[1], rest[2], 9, rest[3], rest[4], rest[5], rest[6]];
+    }
+
+    private static int Take(List<int> from, Random random)
+    {
+        int i = random.Next(from.Count);
+        int value = from[i];
+        from.RemoveAt(i);
+        return value;
+    }
+}

@@ -1,0 +1,13 @@
+namespace Billiards.Core.Setup;
+
+/// <summary>The games whose racks the Initializer can place.</summary>
+public enum RackGame
+{
+    /// <summary>15 balls in a triangle, the 8 in the centre.</summary>
+    EightBall,
+    /// <summary>9 balls in a diamond, the 1 at the apex, the 9 in the centre.</summary>
+    NineBall,
+}
+
+/// <summary>A rack placed by the Initializer, with the seed of its jitter.</summary>
+public sealed record RackSpec(RackGame Game, int Seed);

@@ -1,0 +1,64 @@
+namespace Billiards.Core.Table;
+
+/// <summary>
+/// Configuration of a table: the playing area between the cushion noses and its pockets.
+/// Immutable; build one from a preset with <see cref="FromPreset"/> and override with `with`.
+/// Origin at the centre of the bed, x along the length towards the foot rail, y across, z up.
+/// </summary>
+/// <param name="Preset">The preset this table came from.</param>
+/// <param name="Length">Playing length between the cushion noses (m).</param>
+/// <param name="Width">Playing width between the cushion noses (m).</param>
+/// <param name="CushionHeight">Height of the cushion nose's contact point above the bed (m).</param>
+/// <param name="HasPockets">False for a pocketless (carom-style) rectangle.</param>
+/// <param name="CornerPocketMouth">Corner pocket mouth, jaw tip to jaw tip (m).</param>
+/// <param name="SidePocketMouth">Side pocket mouth, jaw tip to jaw tip (m).</param>
+/// <param name="CornerJawAngleDeg">Angle between the two jaws of a corner pocket (deg, WPA 142).</param>
+/// <param name="SideJawAngleDeg">Angle between the two jaws of a side pocket (deg, WPA 104).</param>
+/// <param name="SightOffset">Distance of the sights behind the cushion nose (m).</param>
+public sealed record TableSpec(
+    string Preset,
+    double Length,
+    double Width,
+    double CushionHeight,
+    bool HasPockets,
+    double CornerPocketMouth,
+    double SidePocketMouth,
+    double CornerJawAngleDeg,
+    double SideJawAngleDeg,
+    double SightOffset)
+{
+    /// <summary>Default cushion contact height: 0.64 of the ball diameter (physics-standard-model.md).</summary>
+    public const double DefaultCushionHeight = 0.64 * 2 * 0.028575;
+
+    /// <summary>The names accepted by <see cref="FromPreset"/>.</summary>
+    public static IReadOnlyList<string> PresetNames { get; } = ["pool-9ft", "pool-8ft", "pool-7ft", "thesis", "pocketless"];
+
+    private const double Inch = 0.0254;
+
+    /// <summary>
+    /// A table preset: WPA 9, 8 and 7 ft pool tables, the thesis table (245 x 127 cm nose to
+    /// nose, pockets of 11.2 cm, seed 3.1), and a pocketless 9 ft rectangle.
+    /// </summary>
+    /// <exception cref="ArgumentException">For an unknown preset name.</exception>
+    public static TableSpec FromPreset(string preset) => preset switch
+    {
+        "pool-9ft" => Pool(preset, 100 * Inch, 50 * Inch),
+        "pool-8ft" => Pool(preset, 92 * Inch, 46 * Inch),
+        "pool-7ft" => Pool(preset, 78 * Inch, 39 * Inch),
+        // The seed's table (seed 3.1): bed 258 x 140 less two 6.5 cm rails; pockets are cylinders of 11.2 cm.
+        // The seed's cushion faces are 60 deg to the bed; its jaws 35 deg (corner) and 70 deg (side) to the rail.
+        "thesis" => new TableSpec(preset, 2.45, 1.27, DefaultCushionHeight, true, 0.112, 0.112, 142, 104, 0.0937),
+        "pocketless" => Pool(preset, 100 * Inch, 50 * Inch) with { HasPockets = false },
+        _ => throw new ArgumentException($"unknown table preset '{preset}' (expected one of {string.Join(", ", PresetNames)})", nameof(preset)),
+    };
+
+    // WPA: corner mouth 4.5-4.625 in at 142 deg, side mouth 5-5.125 in at 104 deg; sights 93.7 mm behind the nose.
+    private static TableSpec Pool(string preset, double length, double width) =>
+        new(preset, length, width, DefaultCushionHeight, true, 4.5625 * Inch, 5.0625 * Inch, 142, 104, 0.0937);
+
+    /// <summary>Half the length (m).</summary>
+    public double HalfLength => Length / 2;
+
+    /// <summary>Half the width (m).</summary>
+    public double HalfWidth => Width / 2;
+}
