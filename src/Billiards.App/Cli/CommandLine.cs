@@ -25,7 +25,7 @@ public static class CommandLine
         var parse = root.Parse(args);
         if (parse.Errors.Count > 0)
         {
-            stderr.WriteLine($"billiards: {parse.Errors[0].Message}");
+            stderr.WriteLine($"billiards: {Plain(parse.Errors[0].Message)}");
             return BadInput;
         }
         try
@@ -48,6 +48,11 @@ public static class CommandLine
             return Failure;
         }
     }
+
+    // System.CommandLine names CLR types in its messages ("System.Nullable`1[System.Double]").
+    private static string Plain(string message) =>
+        message.Replace("'System.Nullable`1[System.Double]'", "number").Replace("'System.Double'", "number")
+               .Replace("'System.Int32'", "whole number");
 
     /// <summary>Writes bytes to a file only once they are complete: a temporary file renamed into place.</summary>
     public static void WriteAtomically(string path, ReadOnlySpan<byte> bytes)
