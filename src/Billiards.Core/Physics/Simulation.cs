@@ -83,6 +83,12 @@ public abstract class Simulation
         }
     }
 
+    /// <summary>
+    /// Restores the scene's initial state (t = 0, before any shot): balls, time, step count and
+    /// events. Allocates nothing, so a benchmark or a replay can rerun a shot.
+    /// </summary>
+    public abstract void Reset();
+
     /// <summary>Strikes the cue ball with the cue at the current time.</summary>
     public abstract void Strike(ShotSpec shot);
 

@@ -18,6 +18,9 @@ public sealed class ThesisSimulation(Scene scene)
     public override void Step() => throw new NotImplementedException();
 
     /// <inheritdoc />
+    public override void Reset() => throw new NotImplementedException();
+
+    /// <inheritdoc />
     public override void Strike(ShotSpec shot) => throw new NotImplementedException();
 
     /// <inheritdoc />

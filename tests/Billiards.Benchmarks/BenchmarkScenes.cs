@@ -1,0 +1,65 @@
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Physics;
+using Billiards.Core.Scenes;
+using Billiards.Core.Table;
+
+namespace Billiards.Benchmarks;
+
+/// <summary>Seeded scenes for the benchmarks; the whole-shot ones come from assets/scenes.</summary>
+public static class BenchmarkScenes
+{
+    /// <summary>The folder holding Billiards.sln (BenchmarkDotNet runs from a generated project deep below it).</summary>
+    public static string Root { get; } = FindRoot();
+
+    /// <summary>A shipped scene with the given model and integrator.</summary>
+    public static Scene Load(string file, string model, string integrator) =>
+        SceneLoader.Load(Path.Combine(Root, "assets", "scenes", file), new SceneOverrides(model, integrator));
+
+    /// <summary>
+    /// <paramref name="total"/> balls on a grid over a table of the 9 ft table's density (16 balls on
+    /// 2.54 x 1.27 m), the first <paramref name="moving"/> of them rolling at 1.5 m/s in seeded directions.
+    /// </summary>
+    public static Scene Grid(int total, int moving, string model, string integrator, int seed = 1)
+    {
+        double area = 2.54 * 1.27 / 16 * total;
+        double length = Math.Sqrt(2 * area), width = length / 2;
+        var table = TableSpec.FromPreset(total <= 16 ? "pool-9ft" : "pocketless") with { Length = length, Width = width };
+        double radius = model == Models.Thesis ? ThesisConstants.RadiusMetres : PhysicsParams.DefaultRadius;
+        int columns = (int)Math.Ceiling(Math.Sqrt(total * 2.0));
+        int rows = (int)Math.Ceiling(total / (double)columns);
+        double dx = length / (columns + 1), dy = width / (rows + 1);
+        var random = new Random(seed);
+        var balls = new List<BallSetup>(total);
+        for (int i = 0; i < total; i++)
+        {
+            var position = new Vec3(-length / 2 + dx * (i % columns + 1), -width / 2 + dy * (i / columns + 1), radius);
+            var velocity = Vec3.Zero;
+            var spin = Vec3.Zero;
+            if (i < moving)
+            {
+                double angle = random.NextDouble() * 2 * Math.PI;
+                velocity = new Vec3(1.5 * Math.Cos(angle), 1.5 * Math.Sin(angle), 0);
+                spin = Vec3.Cross(Vec3.UnitZ, velocity) / radius; // rolling: w = z x v / R
+            }
+            balls.Add(new BallSetup(new BallId(i), position, velocity, spin));
+        }
+        var physics = PhysicsConfig.Default with { Model = model, Integrator = integrator };
+        return new Scene("benchmark", $"{total} balls, {moving} moving", table, physics, null, balls, null, null);
+    }
+
+    private static string FindRoot()
+    {
+        foreach (string start in new[] { AppContext.BaseDirectory, Directory.GetCurrentDirectory() })
+        {
+            for (var dir = new DirectoryInfo(start); dir is not null; dir = dir.Parent)
+            {
+                if (File.Exists(Path.Combine(dir.FullName, "Billiards.sln")))
+                {
+                    return dir.FullName;
+                }
+            }
+        }
+        throw new InvalidOperationException("Billiards.sln not found above " + AppContext.BaseDirectory);
+    }
+}
