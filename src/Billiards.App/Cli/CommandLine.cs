@@ -22,6 +22,7 @@ public static class CommandLine
         {
             SimulateCommand.Create(stdout),
         };
+        PlayCommand.AddTo(root);
         var parse = root.Parse(args);
         if (parse.Errors.Count > 0)
         {
