@@ -23,6 +23,7 @@ public static class CommandLine
             SimulateCommand.Create(stdout),
             ReportCommand.Create(stdout, stderr),
         };
+        PlayCommand.AddTo(root);
         var parse = root.Parse(args);
         if (parse.Errors.Count > 0)
         {

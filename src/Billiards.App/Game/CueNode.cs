@@ -1,0 +1,74 @@
+using Billiards.App.Camera;
+using Billiards.App.Input.Modes;
+using Billiards.App.Nodes;
+using Billiards.App.Rendering;
+using Billiards.Core.Cue;
+using Billiards.Core.Mathematics;
+
+namespace Billiards.App.Game;
+
+/// <summary>
+/// The cue (the seed's Queue, seed 4.1): tip offset e_x, e_y, elevation and the backswing drawn
+/// while stroking. It points from the camera at the cue ball in the bed plane and is hidden while
+/// balls roll. A scene without a cue ball has no cue node.
+/// </summary>
+public sealed class CueNode : Node
+{
+    private PhysicsNode? _physics;
+    private CameraNode? _camera;
+
+    /// <summary>The tip's offset on the cue ball (seed 4.4.4).</summary>
+    public TipOffset Tip { get; } = new();
+
+    /// <summary>Cue elevation above the bed (deg), in [0, <see cref="SeedControls.MaxElevationDegrees"/>].</summary>
+    public double ElevationDegrees { get; private set; }
+
+    /// <summary>The current backswing (pixels of mouse Y), set by the shot mode; 0 at rest.</summary>
+    public double PullBackPixels { get; set; }
+
+    /// <summary>True when the cue is drawn: a cue ball on the table and nothing rolling.</summary>
+    public bool IsVisible => _physics is { IsRolling: false, HasCueBall: true };
+
+    /// <summary>The stroke direction (unit, bed plane): from the camera to the cue ball (seed 4.4.3).</summary>
+    public Vec3 AimDirection => _physics is null || _camera is null
+        ? new Vec3(1, 0, 0)
+        : ViewMath.BedForward(_camera.Camera.Eye, _physics.CueBallPosition);
+
+    /// <summary>Raises or lowers the cue by <paramref name="degrees"/>, within [0, max].</summary>
+    public void ChangeElevation(double degrees) =>
+        ElevationDegrees = Math.Clamp(ElevationDegrees + degrees, 0, SeedControls.MaxElevationDegrees);
+
+    /// <summary>The shot this cue would play at a cue speed (m/s): aim from the camera, tip offset and elevation.</summary>
+    public ShotSpec MakeShot(double speed) =>
+        new(speed, ViewMath.AimDegrees(AimDirection), Tip.SideFraction, Tip.HeightFraction, ElevationDegrees);
+
+    /// <inheritdoc />
+    protected override void Ready()
+    {
+        _physics = GetInTree<PhysicsNode>();
+        _camera = GetInTree<CameraNode>();
+        // Seed 4.3: when the balls rest "the cue is reset": the tip back to the centre.
+        _physics.CameToRest += _ =>
+        {
+            Tip.Reset();
+            PullBackPixels = 0;
+        };
+    }
+
+    /// <inheritdoc />
+    protected override void Draw(FrameBuilder frame)
+    {
+        if (_physics is null)
+        {
+            return;
+        }
+        double pullBack = SeedControls.CueRestGap + Math.Min(PullBackPixels * SeedControls.PullBackMetresPerPixel, SeedControls.MaxPullBack);
+        frame.Frame.Cue = new CueVisual(
+            IsVisible,
+            _physics.CueBallPosition.ToVector3(),
+            AimDirection.ToVector3(),
+            (float)ElevationDegrees,
+            (float)pullBack,
+            Tip.Fractions);
+    }
+}

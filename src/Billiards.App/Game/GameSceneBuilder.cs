@@ -1,0 +1,48 @@
+using Billiards.App.Camera;
+using Billiards.App.Hud;
+using Billiards.App.Input.Modes;
+using Billiards.App.Nodes;
+using Billiards.Core.Balls;
+using Billiards.Core.Physics;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Game;
+
+/// <summary>A built game: its tree (not started) and the nodes the host connects to the window and the loop.</summary>
+/// <param name="Tree">The scene tree.</param>
+/// <param name="Loop">The fixed-step loop at the simulation's step.</param>
+/// <param name="Physics">The physics node.</param>
+/// <param name="InputModes">The control modes.</param>
+/// <param name="SystemKeys">Pause, step, help, debug, fullscreen and quit.</param>
+public sealed record GameWorld(SceneTree Tree, FixedStepLoop Loop, PhysicsNode Physics, InputModeNode InputModes, SystemKeysNode SystemKeys);
+
+/// <summary>
+/// Builds the node tree a scene asks for: a scene loads only what it declares. Always: table,
+/// physics, camera, control modes, system keys and HUD. Only with a cue ball: the cue (without it
+/// there is nothing to shoot, and only view mode works). Only with <c>rules</c>: the rules node.
+/// </summary>
+public static class GameSceneBuilder
+{
+    /// <summary>Builds the tree for a scene; <paramref name="createSimulation"/> makes its simulation.</summary>
+    public static GameWorld Build(Scene scene, Func<Scene, Simulation> createSimulation)
+    {
+        var root = new Node("Game");
+        root.AddChild(new TableNode(scene.Table));
+        var physics = root.AddChild(new PhysicsNode(scene, createSimulation));
+        var loop = new FixedStepLoop(physics.Simulation.Dt);
+        root.AddChild(new CameraNode());
+        if (scene.Balls.Any(b => b.Id == BallId.Cue))
+        {
+            root.AddChild(new CueNode());
+        }
+        if (scene.Rules is { } rules)
+        {
+            root.AddChild(new RulesNode(rules));
+        }
+        var modes = root.AddChild(new InputModeNode());
+        // Added after the modes: input runs from the last child back, so these keys come first.
+        var keys = root.AddChild(new SystemKeysNode(loop));
+        root.AddChild(new HudNode());
+        return new GameWorld(new SceneTree(root), loop, physics, modes, keys);
+    }
+}

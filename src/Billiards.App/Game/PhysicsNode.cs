@@ -1,0 +1,227 @@
+using System.Numerics;
+using Billiards.App.Nodes;
+using Billiards.App.Rendering;
+using Billiards.Core.Balls;
+using Billiards.Core.Cue;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Physics;
+using Billiards.Core.Scenes;
+using Billiards.Core.Table;
+
+namespace Billiards.App.Game;
+
+/// <summary>
+/// Owns the <see cref="Simulation"/>: steps it once per fixed step while balls roll, remembers the
+/// previous step for interpolated drawing, and turns Core's state into signals (struck, events,
+/// came to rest). The game changes physics state only through Core's API.
+/// </summary>
+public sealed class PhysicsNode : Node
+{
+    /// <summary>Seed 4.3.5: a pocketed ball stops being drawn once it has dropped below y = -20 cm (m).</summary>
+    public const double DropOutOfSightZ = -0.20;
+
+    private readonly Func<Scene, Simulation> _createSimulation;
+    private readonly Scene _scene;
+    private Simulation _simulation;
+    private BallState[] _previous;
+    private int _eventsSeen;
+    private Vec3? _cuePlacement;
+    private Vec3 _cueAtStrike;
+
+    /// <summary>Creates the node and its simulation from the scene.</summary>
+    /// <param name="scene">The scene played.</param>
+    /// <param name="createSimulation">Makes a simulation of a scene (<see cref="SimulationFactory.Create"/> in the game).</param>
+    public PhysicsNode(Scene scene, Func<Scene, Simulation> createSimulation)
+    {
+        _scene = scene;
+        _createSimulation = createSimulation;
+        _simulation = CreateSimulation(scene);
+        _previous = _simulation.Balls.ToArray();
+    }
+
+    /// <summary>Signal: the cue ball was struck with this shot.</summary>
+    public event Action<ShotSpec>? Struck;
+
+    /// <summary>Signal: the simulation logged an event (collision, cushion, pocket).</summary>
+    public event Action<SimEvent>? EventOccurred;
+
+    /// <summary>Signal: every ball is at rest after a shot; the argument is the cue ball's displacement over the shot (m).</summary>
+    public event Action<Vec3>? CameToRest;
+
+    /// <summary>The running simulation (replaced when the cue ball is placed by hand).</summary>
+    public Simulation Simulation => _simulation;
+
+    /// <summary>The table.</summary>
+    public TableSpec Table => _scene.Table;
+
+    /// <summary>Ball radius of the scene's model (m).</summary>
+    public double BallRadius => _scene.BallRadius;
+
+    /// <summary>True from a strike until every ball rests: all actions but viewing are locked.</summary>
+    public bool IsRolling { get; private set; }
+
+    /// <summary>The last shot played, or null before the first.</summary>
+    public ShotSpec? LastShot { get; private set; }
+
+    /// <summary>True when there is a cue ball on the table.</summary>
+    public bool HasCueBall => CueIndex is int i && !_simulation.Balls[i].IsPocketed;
+
+    /// <summary>The cue ball's centre (m), including a placement not yet handed to the simulation.</summary>
+    public Vec3 CueBallPosition => _cuePlacement ?? (CueIndex is int i ? _simulation.Balls[i].Position : Vec3.Zero);
+
+    private int? CueIndex => _simulation.IndexOf(BallId.Cue) is var i and >= 0 ? i : null;
+
+    /// <summary>
+    /// Places the cue ball by hand (move mode). Refused (false) while balls roll, off the bed, or
+    /// overlapping another ball. The placement is handed to Core at the next strike.
+    /// </summary>
+    public bool TryPlaceCueBall(Vec3 position)
+    {
+        if (IsRolling || CueIndex is not int cue)
+        {
+            return false;
+        }
+        double r = BallRadius;
+        const double Tolerance = 1e-9;
+        if (Math.Abs(position.X) > Table.HalfLength - r + Tolerance || Math.Abs(position.Y) > Table.HalfWidth - r + Tolerance)
+        {
+            return false;
+        }
+        var balls = _simulation.Balls;
+        for (int i = 0; i < balls.Length; i++)
+        {
+            if (i != cue && !balls[i].IsPocketed && (balls[i].Position - position).XY.Length < 2 * r)
+            {
+                return false;
+            }
+        }
+        _cuePlacement = position with { Z = r };
+        return true;
+    }
+
+    /// <summary>Strikes the cue ball; refused while balls roll.</summary>
+    /// <exception cref="InvalidOperationException">When balls are still rolling or there is no cue ball.</exception>
+    public void Strike(ShotSpec shot)
+    {
+        if (IsRolling)
+        {
+            throw new InvalidOperationException("cannot strike while balls are rolling");
+        }
+        if (!HasCueBall)
+        {
+            throw new InvalidOperationException("there is no cue ball on the table");
+        }
+        CommitCuePlacement();
+        _cueAtStrike = CueBallPosition;
+        _simulation.Strike(shot);
+        LastShot = shot;
+        IsRolling = true;
+        PublishEvents();
+        Struck?.Invoke(shot);
+    }
+
+    /// <inheritdoc />
+    protected override void Ready()
+    {
+        // A scene may carry an opening shot (a break, a test position): play it at once.
+        if (_scene.Shot is { } shot && HasCueBall)
+        {
+            Strike(shot);
+        }
+    }
+
+    /// <inheritdoc />
+    protected override void PhysicsProcess(double dt)
+    {
+        if (!IsRolling)
+        {
+            return;
+        }
+        _simulation.Balls.CopyTo(_previous);
+        _simulation.Step();
+        PublishEvents();
+        if (_simulation.IsAtRest)
+        {
+            IsRolling = false;
+            // Nothing moves any more: interpolation must not pull the picture back a step.
+            _simulation.Balls.CopyTo(_previous);
+            var displacement = HasCueBall ? CueBallPosition - _cueAtStrike : Vec3.Zero;
+            CameToRest?.Invoke(displacement);
+        }
+    }
+
+    /// <inheritdoc />
+    protected override void Draw(FrameBuilder frame)
+    {
+        var balls = _simulation.Balls;
+        float alpha = (float)frame.Alpha;
+        for (int i = 0; i < balls.Length; i++)
+        {
+            ref readonly var current = ref balls[i];
+            ref readonly var previous = ref _previous[i];
+            var position = Vector3.Lerp(previous.Position.ToVector3(), current.Position.ToVector3(), alpha);
+            var orientation = Quaternion.Slerp(Valid(previous.Orientation), Valid(current.Orientation), alpha);
+            if (_cuePlacement is { } placed && _simulation.Ids[i].IsCue)
+            {
+                position = placed.ToVector3();
+            }
+            frame.Frame.Balls.Add(new BallVisual(_simulation.Ids[i], position, orientation, IsVisible(current)));
+        }
+    }
+
+    private bool IsVisible(in BallState ball) =>
+        // A pocketed ball is drawn only while it drops (seed 4.3.5); one resting at the pocket is not.
+        !ball.IsPocketed || (ball.Position.Z < BallRadius - 1e-6 && ball.Position.Z > DropOutOfSightZ);
+
+    // A simulation that does not track orientation leaves default (all-zero) quaternions.
+    private static Quaternion Valid(Quaternion q) => q.LengthSquared() > 1e-12f ? q : Quaternion.Identity;
+
+    private void PublishEvents()
+    {
+        var log = _simulation.Events;
+        if (log.Count < _eventsSeen)
+        {
+            _eventsSeen = 0; // the simulation cleared its log for a new shot
+        }
+        for (; _eventsSeen < log.Count; _eventsSeen++)
+        {
+            EventOccurred?.Invoke(log[_eventsSeen]);
+        }
+    }
+
+    /// <summary>
+    /// Core has no call to move a ball, so a placed cue ball is handed over by starting a new
+    /// simulation from the balls as they rest now. Pocketed balls are left out (they are out of
+    /// play); orientations start afresh. MERGE: replace with a Core placement call once there is one.
+    /// </summary>
+    private void CommitCuePlacement()
+    {
+        if (_cuePlacement is not { } placed)
+        {
+            return;
+        }
+        var balls = _simulation.Balls;
+        var setups = new List<BallSetup>(balls.Length);
+        for (int i = 0; i < balls.Length; i++)
+        {
+            if (balls[i].IsPocketed)
+            {
+                continue;
+            }
+            var id = _simulation.Ids[i];
+            setups.Add(new BallSetup(id, id.IsCue ? placed : balls[i].Position, Vec3.Zero, Vec3.Zero));
+        }
+        // No rack (its balls are already placed above) and no opening shot.
+        _simulation = CreateSimulation(_scene with { Balls = setups, Rack = null, Shot = null });
+        _previous = _simulation.Balls.ToArray();
+        _eventsSeen = 0;
+        _cuePlacement = null;
+    }
+
+    private Simulation CreateSimulation(Scene scene)
+    {
+        var simulation = _createSimulation(scene);
+        simulation.TrackOrientation = true; // the game draws the balls' numbers turning
+        return simulation;
+    }
+}

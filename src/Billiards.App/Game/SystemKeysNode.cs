@@ -1,0 +1,64 @@
+using Billiards.App.Input;
+using Billiards.App.Nodes;
+using Billiards.App.Platform;
+
+namespace Billiards.App.Game;
+
+/// <summary>
+/// Keys that are not about playing: pause (P), single step (N), help (H or F1), debug collision
+/// geometry (G), fullscreen (F11) and quit (Escape). Window actions are signals the host connects
+/// to the window; pause and step go to the fixed-step loop.
+/// </summary>
+public sealed class SystemKeysNode(FixedStepLoop loop) : Node
+{
+    /// <summary>The loop paused and stepped by P and N.</summary>
+    public FixedStepLoop Loop { get; } = loop;
+
+    /// <summary>True while the help overlay is open.</summary>
+    public bool ShowHelp { get; private set; }
+
+    /// <summary>True while the collision geometry is drawn.</summary>
+    public bool ShowCollisionGeometry { get; private set; }
+
+    /// <summary>Signal: F11 was pressed.</summary>
+    public event Action? FullscreenRequested;
+
+    /// <summary>Signal: Escape was pressed.</summary>
+    public event Action? QuitRequested;
+
+    /// <inheritdoc />
+    protected override bool Input(InputEvent e)
+    {
+        if (e is not KeyInput { Pressed: true } key)
+        {
+            return false;
+        }
+        switch (key.Key)
+        {
+            case Key.P:
+                Loop.TogglePause();
+                return true;
+            case Key.N:
+                // The Key enum has no period key; N is the single-step key.
+                Loop.RequestSingleStep();
+                return true;
+            case Key.H or Key.F1:
+                ShowHelp = !ShowHelp;
+                return true;
+            case Key.G:
+                ShowCollisionGeometry = !ShowCollisionGeometry;
+                return true;
+            case Key.F11:
+                FullscreenRequested?.Invoke();
+                return true;
+            case Key.Escape:
+                QuitRequested?.Invoke();
+                return true;
+            default:
+                return false;
+        }
+    }
+
+    /// <inheritdoc />
+    protected override void Draw(FrameBuilder frame) => frame.Frame.ShowCollisionGeometry = ShowCollisionGeometry;
+}

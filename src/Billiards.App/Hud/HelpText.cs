@@ -1,0 +1,25 @@
+namespace Billiards.App.Hud;
+
+/// <summary>The help overlay: every key and mouse action of the game.</summary>
+public static class HelpText
+{
+    /// <summary>The overlay's lines.</summary>
+    public static IReadOnlyList<string> Lines { get; } =
+    [
+        "Modes (seed 4.4)",
+        "  V            view: left-drag orbits the camera, right-drag or wheel zooms",
+        "  S            shot: hold the left button, pull the mouse back, push it forward past the start to strike",
+        "  E            effet: left-drag moves the tip on the cue ball",
+        "  M            move the cue ball: left-drag (the camera follows)",
+        "  While balls roll only view mode works.",
+        "Cue",
+        "  Up / Down    raise / lower the cue (also PageUp / PageDown, or the wheel in shot and effet mode)",
+        "Game",
+        "  P            pause / resume",
+        "  N            one physics step while paused",
+        "  G            show / hide the collision geometry",
+        "  H or F1      show / hide this help",
+        "  F11          fullscreen",
+        "  Escape       quit",
+    ];
+}

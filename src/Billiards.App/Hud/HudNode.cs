@@ -1,0 +1,88 @@
+using System.Globalization;
+using System.Numerics;
+using Billiards.App.Game;
+using Billiards.App.Input.Modes;
+using Billiards.App.Nodes;
+using Billiards.App.Rendering;
+
+namespace Billiards.App.Hud;
+
+/// <summary>
+/// The HUD: mode, last shot's speed, spin point (on the diagram), elevation, frame rate
+/// (Formel 4), pause state and the help overlay. It only reads other nodes.
+/// </summary>
+public sealed class HudNode : Node
+{
+    private readonly List<string> _lines = [];
+    private PhysicsNode? _physics;
+    private InputModeNode? _modes;
+    private CueNode? _cue;
+    private SystemKeysNode? _keys;
+    private RulesNode? _rules;
+
+    /// <summary>The frame-rate meter, fed every frame.</summary>
+    public FrameRateMeter FrameRate { get; } = new();
+
+    /// <summary>The lines of the last frame drawn.</summary>
+    public IReadOnlyList<string> Lines => _lines;
+
+    /// <inheritdoc />
+    protected override void Ready()
+    {
+        _physics = GetInTree<PhysicsNode>();
+        _modes = GetInTree<InputModeNode>();
+        _keys = GetInTree<SystemKeysNode>();
+        _cue = FindInTree<CueNode>();
+        _rules = FindInTree<RulesNode>();
+    }
+
+    /// <inheritdoc />
+    protected override void Process(double dt) => FrameRate.AddFrame(dt * 1000);
+
+    /// <inheritdoc />
+    protected override void Draw(FrameBuilder frame)
+    {
+        BuildLines();
+        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, HelpText.Lines);
+    }
+
+    private void BuildLines()
+    {
+        var c = CultureInfo.InvariantCulture;
+        _lines.Clear();
+        if (_modes is not null)
+        {
+            string locked = _modes.IsLocked ? " (balls rolling: view only)" : "";
+            _lines.Add($"Mode: {ModeName(_modes.Mode)}{locked}");
+        }
+        _lines.Add(_physics?.LastShot is { } shot
+            ? string.Create(c, $"Last shot: {shot.Speed:0.00} m/s")
+            : "Last shot: -");
+        if (_cue is not null)
+        {
+            _lines.Add(string.Create(c, $"Spin: side {_cue.Tip.SideFraction:+0.00;-0.00;0.00} R, height {_cue.Tip.HeightFraction:+0.00;-0.00;0.00} R"));
+            _lines.Add(string.Create(c, $"Elevation: {_cue.ElevationDegrees:0} deg"));
+        }
+        if (_rules is not null)
+        {
+            string potted = _rules.LastShotPotted.Count == 0 ? "none" : string.Join(", ", _rules.LastShotPotted);
+            _lines.Add($"Rules: {_rules.Rules} (not judged yet); potted last shot: {potted}");
+        }
+        _lines.Add(string.Create(c, $"FPS: {FrameRate.Smoothed:0}"));
+        if (_keys is { Loop.Paused: true })
+        {
+            _lines.Add("PAUSED (P resumes, N steps)");
+        }
+        _lines.Add("H or F1: help");
+    }
+
+    /// <summary>The HUD's name of a mode, with its key.</summary>
+    public static string ModeName(InputMode mode) => mode switch
+    {
+        InputMode.View => "view [V]",
+        InputMode.Shot => "shot [S]",
+        InputMode.Spin => "effet [E]",
+        InputMode.Move => "move cue ball [M]",
+        _ => mode.ToString(),
+    };
+}

@@ -1,0 +1,240 @@
+using Billiards.App.Camera;
+using Billiards.App.Game;
+using Billiards.App.Nodes;
+using Billiards.App.Platform;
+
+namespace Billiards.App.Input.Modes;
+
+/// <summary>
+/// The seed's control modes (seed 4.4) as a state machine. Keys switch modes (v, s, e, m); the
+/// mouse does the rest: in view mode left-drag orbits (Listing 5) and right-drag zooms
+/// (Listing 6); in shot mode left-drag strokes (Formel 31); in effet mode left-drag moves the tip
+/// (Formel 32-33); in move mode left-drag moves the cue ball (Formel 34-35). While balls roll only
+/// viewing works; a strike switches back to view mode, as the seed does.
+/// </summary>
+/// <remarks>
+/// Additions to the seed: the cue's elevation (Up/Down or PageUp/PageDown, or the wheel in shot and
+/// effet mode) feeds the strike; the wheel zooms in view mode; the mouse is captured while stroking
+/// so that the cursor can neither leave the window nor stop at the screen's edge.
+/// </remarks>
+public sealed class InputModeNode : Node
+{
+    private readonly StrokeTracker _stroke = new();
+    private PhysicsNode? _physics;
+    private CameraNode? _camera;
+    private CueNode? _cue;
+    private bool _leftDown;
+    private bool _rightDown;
+    private bool _captured;
+
+    /// <summary>The current mode.</summary>
+    public InputMode Mode { get; private set; } = InputMode.View;
+
+    /// <summary>True while balls roll: every action but viewing is locked.</summary>
+    public bool IsLocked => _physics is { IsRolling: true };
+
+    /// <summary>True while a stroke is under way (shot mode, button held).</summary>
+    public bool IsStroking => _stroke.IsActive;
+
+    /// <summary>Signal: the mode changed.</summary>
+    public event Action<InputMode>? ModeChanged;
+
+    /// <summary>Signal: the mouse should be captured (true) or released (false).</summary>
+    public event Action<bool>? MouseCaptureChanged;
+
+    /// <summary>
+    /// Switches mode; returns false (and stays) when the mode is not available: shot, effet and
+    /// move need a cue and are locked while balls roll.
+    /// </summary>
+    public bool TrySetMode(InputMode mode)
+    {
+        if (mode != InputMode.View && (_cue is null || IsLocked))
+        {
+            return false;
+        }
+        if (mode != Mode)
+        {
+            EndStroke();
+            Mode = mode;
+            ModeChanged?.Invoke(mode);
+        }
+        return true;
+    }
+
+    /// <inheritdoc />
+    protected override void Ready()
+    {
+        _physics = GetInTree<PhysicsNode>();
+        _camera = GetInTree<CameraNode>();
+        _cue = FindInTree<CueNode>();
+        // Seed 4.4: "at the latest after the strike it switches back to view mode".
+        _physics.Struck += _ => TrySetMode(InputMode.View);
+    }
+
+    /// <inheritdoc />
+    protected override bool Input(InputEvent e) => e switch
+    {
+        KeyInput { Pressed: true } key => OnKey(key.Key),
+        MouseButtonInput button => OnButton(button),
+        MouseMoveInput move => OnMove(move),
+        ScrollInput scroll => OnScroll(scroll.Amount),
+        _ => false,
+    };
+
+    private bool OnKey(Key key)
+    {
+        switch (key)
+        {
+            case Key.V:
+                TrySetMode(InputMode.View);
+                return true;
+            case Key.S:
+                TrySetMode(InputMode.Shot);
+                return true;
+            case Key.E:
+                TrySetMode(InputMode.Spin);
+                return true;
+            case Key.M:
+                TrySetMode(InputMode.Move);
+                return true;
+            case Key.Up or Key.PageUp:
+                ChangeElevation(+SeedControls.ElevationStepDegrees);
+                return true;
+            case Key.Down or Key.PageDown:
+                ChangeElevation(-SeedControls.ElevationStepDegrees);
+                return true;
+            default:
+                return false;
+        }
+    }
+
+    private bool OnButton(MouseButtonInput e)
+    {
+        switch (e.Button)
+        {
+            case MouseButton.Left:
+                _leftDown = e.Pressed;
+                if (e.Pressed && Mode == InputMode.Shot && !IsLocked && _cue is not null)
+                {
+                    // Seed 4.4.3: the mouse Y where the cue starts is the line where the tip touches the ball.
+                    _stroke.Begin(e.Position.Y, e.Time);
+                    SetCaptured(true);
+                }
+                else if (!e.Pressed)
+                {
+                    EndStroke();
+                }
+                return true;
+            case MouseButton.Right:
+                _rightDown = e.Pressed;
+                return true;
+            default:
+                return false;
+        }
+    }
+
+    private bool OnMove(MouseMoveInput e)
+    {
+        double dx = e.Delta.X, dy = e.Delta.Y;
+        if (_rightDown && Mode == InputMode.View)
+        {
+            _camera!.Camera.Zoom(dy);
+            return true;
+        }
+        if (!_leftDown)
+        {
+            return false;
+        }
+        switch (Mode)
+        {
+            case InputMode.View:
+                _camera!.Camera.Orbit(dx, dy);
+                break;
+            case InputMode.Shot:
+                Stroke(e);
+                break;
+            case InputMode.Spin when !IsLocked:
+                _cue!.Tip.Move(dx, dy);
+                break;
+            case InputMode.Move when !IsLocked:
+                MoveCueBall(dx, dy);
+                break;
+        }
+        return true;
+    }
+
+    private bool OnScroll(float notches)
+    {
+        if (Mode is InputMode.Shot or InputMode.Spin)
+        {
+            ChangeElevation(notches * SeedControls.ElevationStepDegrees);
+        }
+        else if (Mode == InputMode.View)
+        {
+            // Away from the user zooms in, as a downward drag does in Listing 6.
+            _camera!.Camera.Zoom(notches * SeedControls.ZoomPixelsPerNotch);
+        }
+        return true;
+    }
+
+    private void Stroke(MouseMoveInput e)
+    {
+        if (!_stroke.IsActive || _cue is null || _physics is null)
+        {
+            return;
+        }
+        double? seedSpeed = _stroke.Move(e.Position.Y, e.Time);
+        _cue.PullBackPixels = _stroke.PullBackPixels;
+        if (seedSpeed is not { } speed)
+        {
+            return;
+        }
+        EndStroke();
+        if (speed > 0 && !IsLocked && _physics.HasCueBall)
+        {
+            _physics.Strike(_cue.MakeShot(SeedControls.ToMetresPerSecond(speed)));
+        }
+    }
+
+    private void MoveCueBall(double dx, double dy)
+    {
+        if (_physics is null || _camera is null)
+        {
+            return;
+        }
+        var old = _physics.CueBallPosition;
+        var moved = CueBallMover.Move(old, _camera.Camera.Eye, dx, dy, _physics.Table, _physics.BallRadius);
+        if (_physics.TryPlaceCueBall(moved))
+        {
+            // Formel 35: camera = p + c with c = camera_old - ball_old, i.e. it moves with the ball.
+            _camera.Camera.Translate(moved - old);
+        }
+    }
+
+    private void ChangeElevation(double degrees)
+    {
+        if (_cue is not null && !IsLocked)
+        {
+            _cue.ChangeElevation(degrees);
+        }
+    }
+
+    private void EndStroke()
+    {
+        _stroke.Cancel();
+        if (_cue is not null)
+        {
+            _cue.PullBackPixels = 0;
+        }
+        SetCaptured(false);
+    }
+
+    private void SetCaptured(bool captured)
+    {
+        if (_captured != captured)
+        {
+            _captured = captured;
+            MouseCaptureChanged?.Invoke(captured);
+        }
+    }
+}

@@ -1,0 +1,202 @@
+using Billiards.App.Camera;
+using Billiards.App.Game;
+using Billiards.App.Hud;
+using Billiards.App.Input.Modes;
+using Billiards.App.Platform;
+using Billiards.Core.Balls;
+
+namespace Billiards.App.Tests.Game;
+
+public class GameSceneTests
+{
+    [Fact]
+    public void A_scene_with_rules_and_a_cue_ball_gets_every_node()
+    {
+        using var game = new TestGame(TestScenes.TwoBalls(rules: "eight-ball"));
+        var tree = game.World.Tree;
+        Assert.NotNull(tree.Find<TableNode>());
+        Assert.NotNull(tree.Find<PhysicsNode>());
+        Assert.NotNull(tree.Find<CameraNode>());
+        Assert.NotNull(tree.Find<CueNode>());
+        Assert.Equal("eight-ball", tree.Find<RulesNode>()!.Rules);
+        Assert.NotNull(tree.Find<InputModeNode>());
+        Assert.NotNull(tree.Find<SystemKeysNode>());
+        Assert.NotNull(tree.Find<HudNode>());
+    }
+
+    [Fact]
+    public void A_scene_without_rules_has_no_rules_node_and_without_a_cue_ball_no_cue()
+    {
+        using var noRules = new TestGame(TestScenes.TwoBalls());
+        Assert.Null(noRules.World.Tree.Find<RulesNode>());
+        using var noCue = new TestGame(TestScenes.TwoBalls(withCue: false));
+        Assert.Null(noCue.World.Tree.Find<CueNode>());
+        Assert.NotNull(noCue.World.Tree.Find<CameraNode>());
+    }
+
+    [Fact]
+    public void A_scene_with_a_shot_plays_it_when_the_game_starts()
+    {
+        using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
+        var shot = Assert.Single(game.Simulation.Strikes);
+        Assert.Equal(2.0, shot.Speed);
+        Assert.True(game.World.Physics.IsRolling);
+        using var quiet = new TestGame(TestScenes.TwoBalls());
+        Assert.Empty(quiet.Simulation.Strikes);
+        Assert.False(quiet.World.Physics.IsRolling);
+    }
+
+    [Fact]
+    public void The_camera_moves_with_the_cue_ball_when_the_balls_rest()
+    {
+        using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
+        var camera = game.World.Tree.Find<CameraNode>()!.Camera;
+        var eye = camera.Eye;
+        var start = game.World.Physics.CueBallPosition;
+        game.RunUntilRest();
+        var end = game.World.Physics.CueBallPosition;
+        Assert.True(end.X - start.X > 0.9, "the fake rolled the cue ball about v^2 / 2a = 1 m");
+        Assert.Equal(end.X, camera.Centre.X, 12);
+        Assert.Equal(eye.X + (end.X - start.X), camera.Eye.X, 12);
+    }
+
+    [Fact]
+    public void The_rules_node_collects_the_pocketed_balls_of_a_shot_and_pocketed_balls_vanish()
+    {
+        using var game = new TestGame(TestScenes.TwoBalls(rules: "eight-ball", withShot: true));
+        game.Frame();
+        game.Simulation.Pocket(new BallId(1));
+        var frame = game.Frame();
+        Assert.False(frame.Balls.Single(b => b.Id.Value == 1).Visible);
+        Assert.True(frame.Balls.Single(b => b.Id.IsCue).Visible);
+        game.RunUntilRest();
+        var rules = game.World.Tree.Find<RulesNode>()!;
+        Assert.Equal([new BallId(1)], rules.LastShotPotted);
+        Assert.Contains(game.Host.RunFrame().Hud!.Lines, l => l.Contains("potted last shot: 1", StringComparison.Ordinal));
+    }
+
+    [Fact]
+    public void The_frame_carries_table_camera_cue_and_hud()
+    {
+        using var game = new TestGame();
+        game.Window.FramebufferSize = (1024, 768);
+        var frame = game.Frame();
+        Assert.Equal((1024, 768), (frame.Width, frame.Height));
+        Assert.Equal("pool-9ft", frame.Table.Preset);
+        var camera = game.World.Tree.Find<CameraNode>()!.Camera;
+        Assert.Equal(camera.Eye.ToVector3(), frame.Eye);
+        Assert.Equal(camera.Centre.ToVector3(), frame.Target);
+        Assert.True(frame.Cue.Visible);
+        Assert.Equal(1, frame.Cue.AimDirection.X, 6);
+        Assert.Equal(SeedControls.CueRestGap, frame.Cue.PullBack, 6);
+        Assert.Equal(2, frame.Balls.Count);
+        Assert.NotNull(frame.Hud);
+    }
+}
+
+public class SystemKeysAndHudTests
+{
+    [Fact]
+    public void Escape_quits_and_F11_toggles_fullscreen()
+    {
+        using var game = new TestGame();
+        game.Window.Press(Key.F11);
+        Assert.Equal(1, game.Window.FullscreenToggles);
+        Assert.False(game.Window.Closed);
+        game.Window.Press(Key.Escape);
+        Assert.True(game.Window.Closed);
+    }
+
+    [Fact]
+    public void G_toggles_the_collision_geometry()
+    {
+        using var game = new TestGame();
+        Assert.False(game.Frame().ShowCollisionGeometry);
+        game.Window.Press(Key.G);
+        var frame = game.Frame();
+        Assert.True(frame.ShowCollisionGeometry);
+        Assert.Equal(8, frame.CollisionTriangles.Count); // four cushion planes, two triangles each
+    }
+
+    [Fact]
+    public void H_and_F1_toggle_the_help_which_lists_every_key()
+    {
+        using var game = new TestGame();
+        Assert.False(game.Frame().Hud!.ShowHelp);
+        game.Window.Press(Key.H);
+        var hud = game.Frame().Hud!;
+        Assert.True(hud.ShowHelp);
+        foreach (string key in new[] { "V ", "S ", "E ", "M ", "Up / Down", "P ", "N ", "G ", "H or F1", "F11", "Escape" })
+        {
+            Assert.Contains(hud.HelpLines, l => l.TrimStart().StartsWith(key, StringComparison.Ordinal));
+        }
+        game.Window.Press(Key.F1);
+        Assert.False(game.Frame().Hud!.ShowHelp);
+    }
+
+    [Fact]
+    public void P_pauses_and_N_steps_once()
+    {
+        using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
+        game.Window.Press(Key.P);
+        var frame = game.Frame(0.1);
+        Assert.Equal(0, game.Simulation.StepCount);
+        Assert.Contains("PAUSED (P resumes, N steps)", frame.Hud!.Lines);
+        game.Window.Press(Key.N);
+        game.Frame(0.1);
+        game.Frame(0.1);
+        Assert.Equal(1, game.Simulation.StepCount);
+        game.Window.Press(Key.P);
+        game.Frame(0.1);
+        Assert.True(game.Simulation.StepCount > 1);
+    }
+
+    [Fact]
+    public void The_hud_shows_mode_last_shot_spin_elevation_and_frame_rate()
+    {
+        using var game = new TestGame();
+        for (int i = 0; i < 5; i++)
+        {
+            game.Frame(1.0 / 64);
+        }
+        var lines = game.Frame(1.0 / 64).Hud!.Lines;
+        Assert.Equal(
+            ["Mode: view [V]", "Last shot: -", "Spin: side 0.00 R, height 0.00 R", "Elevation: 0 deg", "FPS: 64", "H or F1: help"],
+            lines);
+
+        game.Window.Press(Key.E);
+        game.Window.MoveTo(0, 0);
+        game.Window.Down();
+        game.Window.MoveTo(143, 0);                // e_x = 1.43 cm = 0.5 R
+        game.Window.Up();
+        game.Window.Press(Key.Up);
+        var hud = game.Frame(1.0 / 64).Hud!;
+        Assert.Equal("Mode: effet [E]", hud.Lines[0]);
+        Assert.Equal("Spin: side +0.50 R, height 0.00 R", hud.Lines[2]);
+        Assert.Equal("Elevation: 1 deg", hud.Lines[3]);
+        Assert.Equal(0.5f, hud.SpinPoint.X, 6);
+    }
+
+    [Fact]
+    public void The_hud_shows_the_last_shot_and_the_lock()
+    {
+        using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
+        var lines = game.Frame().Hud!.Lines;
+        Assert.Equal("Mode: view [V] (balls rolling: view only)", lines[0]);
+        Assert.Equal("Last shot: 2.00 m/s", lines[1]);
+    }
+
+    [Fact]
+    public void Formel_4_frame_rate_is_1000_over_the_frame_time_in_ms_smoothed()
+    {
+        var meter = new FrameRateMeter();
+        meter.AddFrame(20);                        // 1000 / 20 = 50
+        Assert.Equal(50, meter.Current);
+        Assert.Equal(50, meter.Smoothed);
+        meter.AddFrame(10);                        // 100; average 50 + 0.1 * (100 - 50) = 55
+        Assert.Equal(100, meter.Current);
+        Assert.Equal(55, meter.Smoothed, 12);
+        meter.AddFrame(0);                         // skipped
+        Assert.Equal(55, meter.Smoothed, 12);
+    }
+}

@@ -1,0 +1,69 @@
+using Billiards.App.Cli;
+using Billiards.App.Game;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Tests.Game;
+
+public class PlayCommandTests
+{
+    [Fact]
+    public void Play_runs_the_scene_in_the_platform_until_its_loop_ends()
+    {
+        string path = Path.Combine(Path.GetTempPath(), $"play-{Guid.NewGuid():N}.json");
+        File.WriteAllText(path, """
+            { "format": "billiards-scene/1", "name": "two balls", "table": { "preset": "pool-8ft" },
+              "balls": [ { "id": "cue", "position": [-0.5, 0.0] }, { "id": "1", "position": [0.5, 0.0] } ] }
+            """);
+        try
+        {
+            var clock = new ManualClock();
+            var window = new FakeWindow();
+            var loop = new FakeFrameLoop(clock, 3, 1.0 / 60);
+            var renderer = new RecordingRenderer();
+            string? title = null;
+            int code = PlayCommand.Play(path, t =>
+            {
+                title = t;
+                return new GamePlatform(window, loop, renderer);
+            }, TestScenes.Create, clock);
+            Assert.Equal(0, code);
+            Assert.Equal("Billiards: two balls", title);
+            Assert.Equal(3, renderer.Frames.Count);
+            Assert.All(renderer.Frames, f => Assert.Equal("pool-8ft", f.Table.Preset));
+            Assert.NotNull(renderer.Frames[^1].Hud);
+        }
+        finally
+        {
+            File.Delete(path);
+        }
+    }
+
+    [Fact]
+    public void A_bad_scene_is_one_line_and_a_non_zero_exit_before_any_window()
+    {
+        var stdout = new StringWriter();
+        var stderr = new StringWriter();
+        int code = CommandLine.Run(["play", "/nonexistent/scene.json"], stdout, stderr);
+        Assert.Equal(CommandLine.BadInput, code);
+        string error = stderr.ToString();
+        Assert.Single(error.Split('\n', StringSplitOptions.RemoveEmptyEntries));
+        Assert.Contains("/nonexistent/scene.json", error, StringComparison.Ordinal);
+        Assert.Empty(stdout.ToString());
+
+        Assert.Throws<SceneException>(() => PlayCommand.Play("/nonexistent/scene.json", _ => throw new InvalidOperationException("no window may open")));
+    }
+
+    [Fact]
+    public void Play_takes_at_most_one_scene()
+    {
+        var stderr = new StringWriter();
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["play", "a.json", "b.json"], new StringWriter(), stderr));
+        Assert.Single(stderr.ToString().Split('\n', StringSplitOptions.RemoveEmptyEntries));
+    }
+
+    [Fact]
+    public void The_default_scene_is_eight_ball()
+    {
+        Assert.EndsWith(Path.Combine("assets", "scenes", "eight-ball.json"), PlayCommand.FindDefaultScene(), StringComparison.Ordinal);
+    }
+}
