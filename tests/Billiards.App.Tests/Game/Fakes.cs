@@ -17,11 +17,12 @@ namespace Billiards.App.Tests.Game;
 internal sealed class FakeSimulation : Simulation
 {
     private readonly BallState[] _balls;
+    private readonly BallState[] _initial;
 
     public FakeSimulation(Scene scene)
         : base("fake", "fixed", scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
     {
-        _balls = scene.Balls.Select(b => new BallState
+        _initial = scene.Balls.Select(b => new BallState
         {
             Position = b.Position,
             Velocity = b.Velocity,
@@ -29,6 +30,15 @@ internal sealed class FakeSimulation : Simulation
             State = MotionState.Stationary,
             Pocket = -1,
         }).ToArray();
+        _balls = (BallState[])_initial.Clone();
+    }
+
+    public override void Reset()
+    {
+        _initial.CopyTo(_balls, 0);
+        Time = 0;
+        StepCount = 0;
+        Events.Clear();
     }
 
     /// <summary>Slowing down of every moving ball (m/s²); 0 keeps them moving until <see cref="StopAll"/>.</summary>
