@@ -358,7 +358,7 @@ public sealed class PhysicsEngine
     /// position + t * velocity is nearest to <paramref name="position"/> (either side of it), and
     /// the crossing; -1 when the line crosses none. Ties keep the first.
     /// </summary>
-    public static int FindNearestHit(IReadOnlyList<CollisionGeometry> rails, Vector3 position, Vector3 velocity, out Vector3 point)
+    public static int FindNearestHit(ReadOnlySpan<CollisionGeometry> rails, Vector3 position, Vector3 velocity, out Vector3 point)
     {
         point = position;
         if (velocity == Vector3.Zero)
@@ -367,7 +367,7 @@ public sealed class PhysicsEngine
         }
         int nearest = -1;
         float nearestDistance = float.MaxValue;
-        for (int k = 0; k < rails.Count; k++)
+        for (int k = 0; k < rails.Length; k++)
         {
             if (rails[k].Intersect(position, velocity, out _, out var hit) == RayHit.Hit)
             {
