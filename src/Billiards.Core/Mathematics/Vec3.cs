@@ -70,6 +70,11 @@ public readonly record struct Vec3(double X, double Y, double Z)
     /// <summary>True when every component is finite (no NaN, no infinity).</summary>
     public bool IsFinite => double.IsFinite(X) && double.IsFinite(Y) && double.IsFinite(Z);
 
+    /// <summary>"(x, y, z)" with round-trip numbers. (A record struct's own ToString would print
+    /// <see cref="XY"/>, itself a Vec3, and recurse without end.)</summary>
+    public override string ToString() =>
+        string.Create(System.Globalization.CultureInfo.InvariantCulture, $"({X:R}, {Y:R}, {Z:R})");
+
     /// <summary>A single-precision copy, for the renderer.</summary>
     public System.Numerics.Vector3 ToVector3() => new((float)X, (float)Y, (float)Z);
 }

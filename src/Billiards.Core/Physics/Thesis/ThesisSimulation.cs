@@ -1,28 +1,147 @@
+using System.Numerics;
 using Billiards.Core.Balls;
 using Billiards.Core.Cue;
+using Billiards.Core.Mathematics;
 using Billiards.Core.Scenes;
+using Billiards.Core.Setup;
 
 namespace Billiards.Core.Physics.Thesis;
 
-/// <summary>The thesis model (to be implemented).</summary>
-public sealed class ThesisSimulation(Scene scene)
-    : Simulation(Models.Thesis, Integrators.Fixed, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
+/// <summary>
+/// The thesis model (thesis-model.md) behind the common <see cref="Simulation"/> API: the
+/// scene's SI state is turned into the seed's units and frame (<see cref="SeedFrame"/>), stepped by
+/// the <see cref="PhysicsEngine"/>, and read back in SI.
+/// </summary>
+/// <remarks>
+/// The model has no spin and no sliding: a moving ball reports <see cref="MotionState.Rolling"/>
+/// with the spin of rolling without slip, w = z x v / R; a scene's initial spins are ignored.
+/// A ball reports <see cref="MotionState.Pocketed"/> from the step the pocket test catches it, while it
+/// still falls. The shot's end-of-shot rules (respot, reset) are applied when it comes to rest,
+/// see <see cref="PhysicsEngine.CheckForRest"/>; <see cref="Engine"/>'s
+/// <see cref="PhysicsEngine.LastShotEnd"/> tells which applied.
+/// </remarks>
+public sealed class ThesisSimulation : Simulation
 {
-    /// <inheritdoc />
-    public override ReadOnlySpan<BallState> Balls => throw new NotImplementedException();
+    /// <summary>Ball radius of the model (cm).</summary>
+    private const float Radius = PhysicsEngine.BallRadius;
+
+    private readonly BallState[] _states;
+    private readonly Vector3[] _startVelocities;
+    private bool _statesStale = true;
+
+    /// <summary>The scene's balls on its table, at rest unless the scene gives them velocities.</summary>
+    public ThesisSimulation(Scene scene)
+        : base(Models.Thesis, Integrators.Fixed, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
+    {
+        var balls = new Ball[scene.Balls.Count];
+        // Orientations are drawing state only; seed them from the rack so that runs repeat.
+        var random = new Random(scene.Rack?.Seed ?? 0);
+        for (int i = 0; i < balls.Length; i++)
+        {
+            var setup = scene.Balls[i];
+            balls[i] = new Ball(setup.Id.Value, SeedFrame.FromSi(setup.Position)) { Velocity = SeedFrame.FromSi(setup.Velocity) };
+            balls[i].RandomizeOrientation(random);
+        }
+        Queue = new Queue();
+        Engine = new PhysicsEngine(balls, Initializer.InitRails(scene.Table), ThesisTable.From(scene.Table), Queue, scene.Physics.Dt, random)
+        {
+            Events = Events,
+        };
+        _states = new BallState[balls.Length];
+        _startVelocities = balls.Select(b => b.Velocity).ToArray();
+    }
+
+    /// <summary>The engine, in the seed's units, for the game and for tests.</summary>
+    public PhysicsEngine Engine { get; }
+
+    /// <summary>The cue: its tip offset is the cue ball's effet.</summary>
+    public Queue Queue { get; }
 
     /// <inheritdoc />
-    public override bool IsAtRest => throw new NotImplementedException();
+    public override ReadOnlySpan<BallState> Balls
+    {
+        get
+        {
+            if (_statesStale)
+            {
+                RefreshStates();
+            }
+            return _states;
+        }
+    }
 
     /// <inheritdoc />
-    public override void Step() => throw new NotImplementedException();
+    public override bool IsAtRest => Engine.IsAtRest;
 
     /// <inheritdoc />
-    public override void Reset() => throw new NotImplementedException();
+    public override void Step()
+    {
+        Engine.TrackOrientation = TrackOrientation;
+        Engine.CalculatePhysics();
+        Time = Engine.Time;
+        StepCount = Engine.Steps;
+        _statesStale = true;
+    }
 
     /// <inheritdoc />
-    public override void Strike(ShotSpec shot) => throw new NotImplementedException();
+    public override void Reset()
+    {
+        Engine.Restart(_startVelocities);
+        Events.Clear();
+        Time = 0;
+        StepCount = 0;
+        _statesStale = true;
+    }
+
+    /// <summary>
+    /// Strikes the cue ball: speed * 100 cm/s capped at 800 (Formel 31's cap) along the aim; the
+    /// tip offset becomes the effet, e_x = side * 2.86 and e_y = height * 2.86 (cm); the elevation
+    /// only tilts the drawn cue, as in the seed.
+    /// </summary>
+    public override void Strike(ShotSpec shot)
+    {
+        double aim = shot.AimDeg * Math.PI / 180;
+        float speed = (float)Math.Min(shot.Speed * SeedFrame.CentimetresPerMetre, Queue.MaxStrokeSpeed);
+        var direction = SeedFrame.FromSi(new Vec3(Math.Cos(aim), Math.Sin(aim), 0));
+        Queue.EX = (float)shot.TipSide * Radius;
+        Queue.EY = (float)shot.TipHeight * Radius;
+        Queue.Grade = (float)shot.ElevationDeg;
+        Engine.Shoot(Vector3.Normalize(direction) * speed);
+        _statesStale = true;
+    }
 
     /// <inheritdoc />
-    public override string FeatureName(EventKind kind, int feature) => throw new NotImplementedException();
+    public override string FeatureName(EventKind kind, int feature) => kind switch
+    {
+        EventKind.BallCushion => Initializer.CushionNames[feature],
+        EventKind.BallPocket => Initializer.PocketNames[feature],
+        _ => "",
+    };
+
+    private void RefreshStates()
+    {
+        var balls = Engine.Balls;
+        for (int i = 0; i < _states.Length; i++)
+        {
+            var ball = balls[i];
+            var velocity = SeedFrame.ToSi(ball.Velocity);
+            ref var s = ref _states[i];
+            s.Position = SeedFrame.ToSi(ball.Position);
+            s.Velocity = velocity;
+            s.Orientation = SeedFrame.ToSi(ball.Orientation);
+            s.Pocket = ball.Pocket;
+            if (ball.Pocket >= 0)
+            {
+                s.State = MotionState.Pocketed;
+                s.Spin = Vec3.Zero;
+            }
+            else
+            {
+                bool moving = velocity != Vec3.Zero;
+                s.State = moving ? MotionState.Rolling : MotionState.Stationary;
+                s.Spin = moving ? Vec3.Cross(Vec3.UnitZ, velocity) / ThesisConstants.RadiusMetres : Vec3.Zero;
+            }
+        }
+        _statesStale = false;
+    }
 }

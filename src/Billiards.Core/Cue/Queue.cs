@@ -1,0 +1,97 @@
+namespace Billiards.Core.Cue;
+
+/// <summary>
+/// The cue of the thesis model (seed 4.1.5, 4.4.3, 4.4.4), in the seed's units. It holds the
+/// tip offset along the aim (<see cref="Position"/>, drawing only), the tip displacement from
+/// the cue ball's centre (<see cref="EX"/> sideways, <see cref="EY"/> up: the effet, which the
+/// physics engine reads and decays after each collision), and the elevation (drawing only).
+/// </summary>
+public sealed class Queue
+{
+    /// <summary>The ball radius (cm): the tip displacement is kept within it so the tip stays on the ball.</summary>
+    public const float BallRadius = Physics.Thesis.PhysicsEngine.BallRadius;
+
+    /// <summary>The strike speed cap of Formel 31 (cm/s).</summary>
+    public const float MaxStrokeSpeed = 800f;
+
+    /// <summary>The constant of Formel 31 that turns mouse travel per millisecond into cm/s.</summary>
+    public const float StrokeScale = 250f;
+
+    /// <summary>Mouse pixels to tip displacement (cm per pixel), Formel 32-33.</summary>
+    public const float TipPerPixel = 0.01f;
+
+    /// <summary>
+    /// Tip-to-ball distance at rest (cm). The seed does not give its value; the cue is drawn this
+    /// far behind the ball until the player pulls it back.
+    /// </summary>
+    public const float DefaultPosition = 5f;
+
+    /// <summary>Offset of the tip from the cue ball along the aim, d (cm); drawing only (seed 4.5.3).</summary>
+    public float Position { get; set; } = DefaultPosition;
+
+    /// <summary>Sideways tip displacement e_x (cm), positive to the right seen from behind the cue; bends cushion rebounds (Formel 24).</summary>
+    public float EX { get; set; }
+
+    /// <summary>Vertical tip displacement e_y (cm), positive above centre; follow or draw at the first ball contact (Formel 19).</summary>
+    public float EY { get; set; }
+
+    /// <summary>Cue elevation (deg above the bed). The seed draws it but the strike ignores it (seed 4.5.3).</summary>
+    public float Grade { get; set; }
+
+    /// <summary>
+    /// The strike speed of Formel 31, s = d / t * 250, capped at 800.
+    /// </summary>
+    /// <remarks>
+    /// The seed measures the stroke with the mouse (d, pixels of forward travel) and GLUT's clock
+    /// (t, milliseconds), and uses s as the cue ball's speed in cm/s. A stroke of 100 px in
+    /// 50 ms thus gives 500 cm/s. A zero or negative time counts as infinitely fast (the cap);
+    /// a stroke that did not move forward gives 0.
+    /// </remarks>
+    /// <param name="distance">Forward mouse travel d (pixels).</param>
+    /// <param name="milliseconds">Time t the forward travel took (ms).</param>
+    /// <returns>The cue ball's speed (cm/s), in [0, 800].</returns>
+    public static float StrokeSpeed(float distance, float milliseconds)
+    {
+        if (distance <= 0)
+        {
+            return 0;
+        }
+        if (milliseconds <= 0)
+        {
+            return MaxStrokeSpeed;
+        }
+        return MathF.Min(distance / milliseconds * StrokeScale, MaxStrokeSpeed);
+    }
+
+    /// <summary>
+    /// Moves the tip point with the mouse (Formel 32-33): e_x += dx * 0.01, e_y -= dy * 0.01
+    /// (screen y grows downwards), then pulls (e_x, e_y) back radially onto the ball's outline if
+    /// it left it, so the cue cannot miss the ball.
+    /// </summary>
+    /// <param name="dx">Mouse travel to the right (pixels).</param>
+    /// <param name="dy">Mouse travel down the screen (pixels).</param>
+    public void MoveTipPoint(float dx, float dy)
+    {
+        float ex = EX + dx * TipPerPixel;
+        float ey = EY - dy * TipPerPixel;
+        float length = MathF.Sqrt(ex * ex + ey * ey);
+        if (length > BallRadius)
+        {
+            // The seed only says "a limit keeps the cue from missing the ball"; a radial pull-back
+            // keeps the direction the player moved towards.
+            ex *= BallRadius / length;
+            ey *= BallRadius / length;
+        }
+        EX = ex;
+        EY = ey;
+    }
+
+    /// <summary>Back to the start of a shot: tip at rest distance, centred, level.</summary>
+    public void Reset()
+    {
+        Position = DefaultPosition;
+        EX = 0;
+        EY = 0;
+        Grade = 0;
+    }
+}

@@ -1,0 +1,46 @@
+using System.Numerics;
+using Billiards.Core.Cue;
+using Billiards.Core.Physics;
+using Billiards.Core.Physics.Thesis;
+using Billiards.Core.Setup;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Tests.Thesis;
+
+/// <summary>Builds small thesis-model set-ups in the seed's units (cm, Y up, bed height y = 2.86).</summary>
+internal static class ThesisKit
+{
+    public const float Y = 2.86f;
+
+    public static Ball At(int number, float x, float z, float vx = 0, float vz = 0) =>
+        new(number, new Vector3(x, Y, z)) { Velocity = new Vector3(vx, 0, vz) };
+
+    public static PhysicsEngine Engine(string preset, params Ball[] balls) => Engine(preset, 1.0 / 250, balls);
+
+    public static PhysicsEngine Engine(string preset, double dt, params Ball[] balls)
+    {
+        var table = TableSpec.FromPreset(preset);
+        return new PhysicsEngine(balls, Initializer.InitRails(table), ThesisTable.From(table), new Queue(), dt, new Random(1))
+        {
+            Events = new EventLog(),
+        };
+    }
+
+    public static void AssertVector(Vector3 expected, Vector3 actual, float tolerance = 1e-3f)
+    {
+        Assert.True(Vector3.Distance(expected, actual) <= tolerance, $"expected {expected}, got {actual}");
+    }
+
+    /// <summary>The folder holding Billiards.sln, found by walking up from the test binaries.</summary>
+    public static string RepoRoot()
+    {
+        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
+        {
+            if (File.Exists(Path.Combine(dir.FullName, "Billiards.sln")))
+            {
+                return dir.FullName;
+            }
+        }
+        throw new InvalidOperationException("Billiards.sln not found above " + AppContext.BaseDirectory);
+    }
+}
