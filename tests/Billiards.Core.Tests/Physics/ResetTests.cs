@@ -17,6 +17,8 @@ public class ResetTests
     [Theory]
     [InlineData("thesis-eight-ball-break.json")]
     [InlineData("thesis-nine-ball-break.json")]
+    [InlineData("eight-ball-break.json")]
+    [InlineData("nine-ball-break.json")]
     public void AResetTableReplaysTheShotBitForBit(string file)
     {
         var scene = SceneLoader.Load(RepoPaths.Scene(file));
