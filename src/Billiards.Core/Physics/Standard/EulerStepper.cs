@@ -84,7 +84,7 @@ public sealed class EulerStepper
                 Integrate(ref _balls[i], dt);
             }
         }
-        DetectAndResolve(timeAfter);
+        DetectAndResolve(dt, timeAfter);
     }
 
     private void Integrate(ref BallState b, double dt)
@@ -132,7 +132,7 @@ public sealed class EulerStepper
         }
     }
 
-    private void DetectAndResolve(double time)
+    private void DetectAndResolve(double dt, double time)
     {
         double r = _params.R;
         var balls = _balls.AsSpan();
@@ -180,8 +180,11 @@ public sealed class EulerStepper
                 double gap = Vec3.Dot(s.Normal, b.Position - s.Start) - r;
                 double along = Vec3.Dot(b.Position - s.Start, s.Direction);
                 double approach = -Vec3.Dot(b.Velocity, s.Normal);
-                // Overlapping, on the face, in front of its back half, and approaching.
-                if (gap < 0 && gap > -r && along >= 0 && along <= s.Length && approach > 0)
+                // Overlapping, on the face, approaching, and no deeper than this step's travel could
+                // take a ball that was in front of the face: a long step must not let a fast ball
+                // through the cushion, and the bound keeps balls in a pocket's mouth, behind the
+                // line of a neighbouring cushion, from being caught by it.
+                if (gap < 0 && gap > -r - approach * dt && along >= 0 && along <= s.Length && approach > 0)
                 {
                     Cushion(ref b, i, s.Normal, s.Feature, approach, time);
                 }
