@@ -119,7 +119,7 @@ internal static unsafe class Assimp
                     result.Add(new ImportedMesh(positions, norms, [.. indices], diffuse, specular, shininess, name));
                 }
             }
-            return result;
+            return result.Count > 0 ? result : throw new InvalidDataException($"{path}: no triangle meshes in the file");
         }
         finally
         {

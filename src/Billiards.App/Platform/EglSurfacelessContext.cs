@@ -45,13 +45,11 @@ internal sealed class EglSurfacelessContext : IGlContext
             string extensions = Egl.QueryString(display, Egl.Extensions);
             if (!extensions.Contains("EGL_KHR_surfaceless_context", StringComparison.Ordinal))
             {
-                Egl.Terminate(display);
                 error = "EGL: EGL_KHR_surfaceless_context missing";
                 return null;
             }
             if (!Egl.BindApi(Egl.OpenGlApi))
             {
-                Egl.Terminate(display);
                 error = "EGL: desktop OpenGL API not available";
                 return null;
             }
@@ -61,7 +59,6 @@ internal sealed class EglSurfacelessContext : IGlContext
             if (context == 0)
             {
                 error = $"EGL: cannot create an OpenGL 3.3 core context (0x{Egl.GetError():X})";
-                Egl.Terminate(display);
                 return null;
             }
             var result = new EglSurfacelessContext(display, context, "EGL surfaceless");
@@ -83,6 +80,8 @@ internal sealed class EglSurfacelessContext : IGlContext
         }
     }
 
+    public void ReleaseCurrent() => Egl.MakeCurrent(_display, 0, 0, 0);
+
     public nint GetProcAddress(string name) => Egl.GetProcAddress(name);
 
     public void Dispose()
@@ -91,7 +90,8 @@ internal sealed class EglSurfacelessContext : IGlContext
         {
             Egl.MakeCurrent(_display, 0, 0, 0);
             Egl.DestroyContext(_display, _context);
-            Egl.Terminate(_display);
+            // The platform display is one per process and shared by every context on it:
+            // eglTerminate would pull it from under the others, so it stays initialised.
             _context = 0;
         }
     }

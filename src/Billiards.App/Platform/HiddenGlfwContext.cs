@@ -44,6 +44,8 @@ internal sealed class HiddenGlfwContext : IGlContext
 
     public void MakeCurrent() => Glfw.MakeContextCurrent(_window);
 
+    public void ReleaseCurrent() => Glfw.MakeContextCurrent(0);
+
     public nint GetProcAddress(string name) => Glfw.GetProcAddress(name);
 
     public void Dispose()

@@ -9,6 +9,9 @@ internal interface IGlContext : IDisposable
     /// <summary>Makes the context current on the calling thread.</summary>
     void MakeCurrent();
 
+    /// <summary>Releases the context from the calling thread (so another thread may make it current).</summary>
+    void ReleaseCurrent();
+
     /// <summary>Address of a GL function by name, or 0.</summary>
     nint GetProcAddress(string name);
 }

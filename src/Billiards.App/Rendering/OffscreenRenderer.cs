@@ -21,6 +21,8 @@ internal sealed class OffscreenRenderer : IDisposable
         {
             _gl = new Gl(_context.GetProcAddress);
             _renderer = new Renderer(_gl, modelPath);
+            Description = $"{_context.Description}, {_gl.GetString(Gl.RendererName)}";
+            _context.ReleaseCurrent();
         }
         catch
         {
@@ -30,7 +32,7 @@ internal sealed class OffscreenRenderer : IDisposable
     }
 
     /// <summary>How the context was made and what draws, e.g. "EGL surfaceless, llvmpipe (LLVM 15.0.6, 256 bits)".</summary>
-    public string Description => $"{_context.Description}, {_gl.GetString(Gl.RendererName)}";
+    public string Description { get; }
 
     /// <summary>The table model file last drawn.</summary>
     public string? TableSource => _renderer.TableSource;
@@ -43,6 +45,18 @@ internal sealed class OffscreenRenderer : IDisposable
             throw new ArgumentException($"frame size {frame.Width} x {frame.Height}");
         }
         _context.MakeCurrent();
+        try
+        {
+            return Draw(frame);
+        }
+        finally
+        {
+            _context.ReleaseCurrent();
+        }
+    }
+
+    private byte[] Draw(RenderFrame frame)
+    {
         if (_target is null || _target.Width != frame.Width || _target.Height != frame.Height)
         {
             _target?.Dispose();
@@ -80,6 +94,7 @@ internal sealed class OffscreenRenderer : IDisposable
     {
         _context.MakeCurrent();
         _target?.Dispose();
+        _target = null;
         _renderer.Dispose();
         _context.Dispose();
     }

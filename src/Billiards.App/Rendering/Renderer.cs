@@ -90,7 +90,7 @@ internal sealed class Renderer : IDisposable
 
         if (frame.ShowCollisionGeometry && frame.CollisionTriangles.Count > 0)
         {
-            _lines.Draw(viewProjection, frame.CollisionTriangles);
+            _lines.Draw(viewProjection, frame.CollisionTriangles, frame.Width, frame.Height);
         }
 
         if (frame.Hud is { } hud)

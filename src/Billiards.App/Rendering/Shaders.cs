@@ -130,13 +130,12 @@ internal static class Shaders
 
     public const string LineVertex = """
         #version 330 core
-        in vec3 aPosition;
+        in vec4 aClip;
         in vec3 aColor;
-        uniform mat4 uViewProj;
         out vec3 vColor;
         void main() {
             vColor = aColor;
-            gl_Position = uViewProj * vec4(aPosition, 1.0);
+            gl_Position = aClip;
         }
         """;
 
