@@ -72,7 +72,7 @@ public static class RenderMath
     {
         float hx = (float)table.HalfLength + TableModelGenerator.CushionDepth + TableModelGenerator.RailWidth;
         float hy = (float)table.HalfWidth + TableModelGenerator.CushionDepth + TableModelGenerator.RailWidth;
-        const float Elevation = 38 * MathF.PI / 180;
+        const float Elevation = 44 * MathF.PI / 180;
         var direction = new Vector3(-MathF.Cos(Elevation), 0, MathF.Sin(Elevation));
         Vector3[] corners = [new(-hx, -hy, 0.04f), new(hx, -hy, 0.04f), new(hx, hy, 0.04f), new(-hx, hy, 0.04f)];
         var target = Vector3.Zero;

@@ -37,8 +37,8 @@ public static class TableModelGenerator
     {
         public static readonly MeshMaterial Cloth = new("cloth", new(0.07f, 0.42f, 0.20f), new(0.03f, 0.03f, 0.03f), 6);
         public static readonly MeshMaterial Cushion = new("cushion", new(0.06f, 0.38f, 0.18f), new(0.04f, 0.04f, 0.04f), 8);
-        public static readonly MeshMaterial Rail = new("rail", new(0.33f, 0.15f, 0.06f), new(0.35f, 0.3f, 0.25f), 60);
-        public static readonly MeshMaterial Frame = new("frame", new(0.25f, 0.11f, 0.045f), new(0.25f, 0.22f, 0.2f), 40);
+        public static readonly MeshMaterial Rail = new("rail", new(0.36f, 0.16f, 0.07f), new(0.12f, 0.1f, 0.09f), 120);
+        public static readonly MeshMaterial Frame = new("frame", new(0.26f, 0.11f, 0.045f), new(0.1f, 0.09f, 0.08f), 80);
         public static readonly MeshMaterial Sight = new("sight", new(0.95f, 0.93f, 0.86f), new(0.6f, 0.6f, 0.6f), 80);
         public static readonly MeshMaterial Pocket = new("pocket", new(0.025f, 0.025f, 0.025f), new(0.05f, 0.05f, 0.05f), 10);
         public static readonly MeshMaterial Trim = new("trim", new(0.06f, 0.05f, 0.045f), new(0.3f, 0.3f, 0.3f), 40);
