@@ -30,14 +30,15 @@ public static class SceneFrames
             }
             return frame;
         }
-        var simulation = SimulationFactory.Create(scene);
-        simulation.TrackOrientation = true;
-        if (scene.Shot is { } s)
-        {
-            simulation.Strike(s);
-        }
+        Billiards.Core.Physics.Simulation simulation;
         try
         {
+            simulation = SimulationFactory.Create(scene);
+            simulation.TrackOrientation = true;
+            if (scene.Shot is { } s)
+            {
+                simulation.Strike(s);
+            }
             simulation.AdvanceTo(time);
         }
         catch (NotImplementedException)

@@ -88,6 +88,26 @@ public class RenderCommandTests : IDisposable
     }
 
     [Fact]
+    public void Render_AtALaterTimeDrawsTheSimulationOrSaysItCannot()
+    {
+        // The physics models are written elsewhere: until they simulate, --at > 0 must fail cleanly.
+        string scene = Scene(EightBall);
+        string png = Path.Combine(_folder, "later.png");
+        var (code, _, err) = Run("render", scene, "--out", png, "--at", "0.5", "--width", "64", "--height", "36");
+        if (code == 0)
+        {
+            var (w, h, _) = PngDecoder.Decode(File.ReadAllBytes(png));
+            Assert.Equal((64, 36), (w, h));
+        }
+        else
+        {
+            Assert.Single(err.TrimEnd('\n').Split('\n'));
+            Assert.Contains("cannot simulate yet", err);
+            Assert.False(File.Exists(png));
+        }
+    }
+
+    [Fact]
     public void Render_RejectsAMissingOutputFolder()
     {
         string scene = Scene(EightBall);
