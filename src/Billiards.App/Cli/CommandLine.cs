@@ -21,6 +21,7 @@ public static class CommandLine
         var root = new RootCommand("Billiards: a pool game and billiards physics engine.")
         {
             SimulateCommand.Create(stdout),
+            RenderCommand.Create(stdout),
             ReportCommand.Create(stdout, stderr),
         };
         PlayCommand.AddTo(root);

@@ -1,24 +1,56 @@
-using Billiards.App.Cli;
+using Billiards.App.Platform;
+using Billiards.App.Rendering;
 
 namespace Billiards.App.Game;
 
 /// <summary>
-/// THE one place where <c>play</c> gets its window and renderer from the platform layer (the
-/// render branch's GLFW window and GL renderer). Nothing else in the game knows about them.
+/// The one place where <c>play</c> gets its window and renderer from the platform layer (the GLFW
+/// window and the GL renderer). Nothing else in the game knows about them.
 /// </summary>
 public static class PlatformWiring
 {
     /// <summary>Title of the game's window.</summary>
     public const string WindowTitle = "Billiards";
 
-    /// <summary>Opens the window and its renderer.</summary>
-    /// <exception cref="CliException">Until the platform layer is wired in.</exception>
+    /// <summary>Opens a 1280x720 window with 4x MSAA and a renderer on its GL context.</summary>
     public static GamePlatform Open(string title)
     {
-        // MERGE(render): replace the throw with, for example,
-        //   var window = new GlfwWindow(title, 1280, 720);      // : IGameWindow, and IFrameLoop via Run(Action)
-        //   var renderer = new Renderer(window);                // Draw(RenderFrame) -> IFrameRenderer (adapter if named otherwise)
-        //   return new GamePlatform(window, window, renderer, window);
-        throw new CliException($"play: no window in this build yet ('{title}'; the GLFW window and renderer plug in at Game/PlatformWiring.cs)");
+        var window = new GlfwWindow(title, 1280, 720);
+        try
+        {
+            var renderer = new Renderer(window.Gl);
+            var resources = new Resources(renderer, window);
+            return new GamePlatform(window, new WindowLoop(window), new FrameRenderer(renderer, window), resources);
+        }
+        catch
+        {
+            window.Dispose();
+            throw;
+        }
+    }
+
+    // The renderer draws at the framebuffer's current size.
+    private sealed class FrameRenderer(Renderer renderer, GlfwWindow window) : IFrameRenderer
+    {
+        public void Draw(RenderFrame frame)
+        {
+            (frame.Width, frame.Height) = window.FramebufferSize;
+            renderer.Draw(frame);
+        }
+    }
+
+    private sealed class WindowLoop(GlfwWindow window) : IFrameLoop
+    {
+        public void Run(Action frame) => window.Run(_ => frame());
+    }
+
+    // The renderer's GL objects go before the context that owns them.
+    private sealed class Resources(Renderer renderer, GlfwWindow window) : IDisposable
+    {
+        public void Dispose()
+        {
+            renderer.Dispose();
+            window.Dispose();
+        }
     }
 }

@@ -29,6 +29,9 @@ public sealed class RenderFrame
     /// <summary>Vertical field of view (deg).</summary>
     public float FovYDegrees { get; set; } = 45;
 
+    /// <summary>Ball radius (m); the scene's model decides it (standard 28.575 mm, thesis 28.6 mm).</summary>
+    public float BallRadius { get; set; } = 0.028575f;
+
     /// <summary>The balls; pocketed balls that have dropped out of sight have Visible = false.</summary>
     public List<BallVisual> Balls { get; } = [];
 

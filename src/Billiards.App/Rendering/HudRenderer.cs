@@ -1,0 +1,189 @@
+using System.Numerics;
+using Billiards.App.Native;
+
+namespace Billiards.App.Rendering;
+
+/// <summary>
+/// Draws <see cref="HudInfo"/> over the scene in pixel coordinates: the text lines on a dark
+/// panel (top left), the cue-ball diagram with the spin point (bottom right) and the help
+/// overlay (centred). Text uses <see cref="BitmapFont"/> from a small atlas texture.
+/// </summary>
+internal sealed class HudRenderer : IDisposable
+{
+    private const int AtlasColumns = 16, AtlasRows = 6;
+    private const int Floats = 9; // position 2, uv 2, colour 4, kind 1
+
+    private readonly Gl _gl;
+    private readonly uint _program, _vao, _vbo, _font;
+    private readonly int _screen, _fontSampler;
+    private readonly List<float> _vertices = [];
+
+    public HudRenderer(Gl gl)
+    {
+        _gl = gl;
+        _program = gl.LinkProgram(gl.CompileShader(Gl.VertexShader, Shaders.HudVertex),
+            gl.CompileShader(Gl.FragmentShader, Shaders.HudFragment), ["aPosition", "aUv", "aColor", "aKind"]);
+        _screen = gl.GetUniformLocation(_program, "uScreen");
+        _fontSampler = gl.GetUniformLocation(_program, "uFont");
+        _vao = gl.GenVertexArray();
+        _vbo = gl.GenBuffer();
+        gl.BindVertexArray(_vao);
+        gl.BindBuffer(Gl.ArrayBuffer, _vbo);
+        const int Bytes = Floats * sizeof(float);
+        gl.VertexAttribPointer(0, 2, Gl.Float, false, Bytes, 0);
+        gl.VertexAttribPointer(1, 2, Gl.Float, false, Bytes, 2 * sizeof(float));
+        gl.VertexAttribPointer(2, 4, Gl.Float, false, Bytes, 4 * sizeof(float));
+        gl.VertexAttribPointer(3, 1, Gl.Float, false, Bytes, 8 * sizeof(float));
+        for (uint i = 0; i < 4; i++)
+        {
+            gl.EnableVertexAttribArray(i);
+        }
+        gl.BindVertexArray(0);
+
+        _font = gl.GenTexture();
+        gl.BindTexture(Gl.Texture2D, _font);
+        gl.PixelStore(Gl.UnpackAlignment, 1);
+        gl.TexImage2D(Gl.Texture2D, 0, Gl.R8, AtlasColumns * BitmapFont.Advance, AtlasRows * BitmapFont.LineHeight, Gl.Red, Gl.UnsignedByte, Atlas());
+        gl.TexParameter(Gl.Texture2D, Gl.TextureMinFilter, Gl.Nearest);
+        gl.TexParameter(Gl.Texture2D, Gl.TextureMagFilter, Gl.Nearest);
+        gl.TexParameter(Gl.Texture2D, Gl.TextureWrapS, Gl.ClampToEdge);
+        gl.TexParameter(Gl.Texture2D, Gl.TextureWrapT, Gl.ClampToEdge);
+    }
+
+    /// <summary>The font atlas: 16 x 6 cells of <see cref="BitmapFont.Advance"/> x <see cref="BitmapFont.LineHeight"/> pixels, characters 32..127, one byte a pixel.</summary>
+    public static byte[] Atlas()
+    {
+        int width = AtlasColumns * BitmapFont.Advance, height = AtlasRows * BitmapFont.LineHeight;
+        var pixels = new byte[width * height];
+        for (int c = 32; c < 128; c++)
+        {
+            int cell = c - 32;
+            int ox = cell % AtlasColumns * BitmapFont.Advance, oy = cell / AtlasColumns * BitmapFont.LineHeight;
+            for (int y = 0; y < BitmapFont.GlyphHeight; y++)
+            {
+                for (int x = 0; x < BitmapFont.GlyphWidth; x++)
+                {
+                    if (c < 127 && BitmapFont.Pixel((char)c, x, y))
+                    {
+                        pixels[((oy + y + 1) * width) + ox + x] = 255;
+                    }
+                }
+            }
+        }
+        return pixels;
+    }
+
+    /// <summary>Text scale (pixels per font pixel) for a framebuffer height.</summary>
+    public static int Scale(int height) => Math.Max(1, height / 360);
+
+    public void Draw(HudInfo hud, int width, int height)
+    {
+        _vertices.Clear();
+        int scale = Scale(height);
+        int lineHeight = BitmapFont.LineHeight * scale;
+        int margin = 8 * scale;
+        var textColor = new Vector4(0.95f, 0.95f, 0.9f, 1);
+        var panel = new Vector4(0, 0, 0, 0.45f);
+
+        if (hud.Lines.Count > 0)
+        {
+            int longest = hud.Lines.Max(l => l.Length);
+            Rect(margin, margin, (longest * BitmapFont.Advance * scale) + (2 * margin), (hud.Lines.Count * lineHeight) + (2 * margin) - (2 * scale), panel);
+            for (int i = 0; i < hud.Lines.Count; i++)
+            {
+                Text(hud.Lines[i], 2 * margin, 2 * margin + (i * lineHeight), scale, textColor);
+            }
+        }
+
+        // The cue-ball diagram with the tip's contact point.
+        float r = 34 * scale;
+        var centre = new Vector2(width - margin - r - (4 * scale), height - margin - r - (4 * scale));
+        Disc(centre, r + (3 * scale), new Vector4(0, 0, 0, 0.45f), 2);
+        Disc(centre, r, new Vector4(0.93f, 0.93f, 0.88f, 1), 2);
+        Rect(centre.X - r, centre.Y - (0.5f * scale), 2 * r, scale, new Vector4(0.6f, 0.6f, 0.6f, 0.8f));
+        Rect(centre.X - (0.5f * scale), centre.Y - r, scale, 2 * r, new Vector4(0.6f, 0.6f, 0.6f, 0.8f));
+        var spin = new Vector2(Math.Clamp(hud.SpinPoint.X, -1, 1), Math.Clamp(hud.SpinPoint.Y, -1, 1));
+        var point = centre + new Vector2(spin.X * r, -spin.Y * r);
+        Disc(point, 5 * scale, new Vector4(0.85f, 0.1f, 0.1f, 1), 2);
+        Disc(point, 6.5f * scale, new Vector4(0.2f, 0, 0, 1), 3);
+
+        if (hud.ShowHelp && hud.HelpLines.Count > 0)
+        {
+            int longest = hud.HelpLines.Max(l => l.Length);
+            float w = (longest * BitmapFont.Advance * scale) + (4 * margin);
+            float h = (hud.HelpLines.Count * lineHeight) + (4 * margin);
+            float x = MathF.Max(0, (width - w) / 2), y = MathF.Max(0, (height - h) / 2);
+            Rect(x, y, w, h, new Vector4(0.02f, 0.03f, 0.02f, 0.82f));
+            Rect(x, y, w, scale, new Vector4(0.8f, 0.7f, 0.3f, 1));
+            for (int i = 0; i < hud.HelpLines.Count; i++)
+            {
+                Text(hud.HelpLines[i], x + (2 * margin), y + (2 * margin) + (i * lineHeight), scale, textColor);
+            }
+        }
+
+        _gl.Disable(Gl.DepthTest);
+        _gl.Enable(Gl.Blend);
+        _gl.BlendFunc(Gl.SrcAlpha, Gl.OneMinusSrcAlpha);
+        _gl.UseProgram(_program);
+        _gl.Uniform2(_screen, width, height);
+        _gl.Uniform1(_fontSampler, 0);
+        _gl.ActiveTexture(Gl.Texture0);
+        _gl.BindTexture(Gl.Texture2D, _font);
+        _gl.BindVertexArray(_vao);
+        _gl.BindBuffer(Gl.ArrayBuffer, _vbo);
+        var data = System.Runtime.InteropServices.CollectionsMarshal.AsSpan(_vertices);
+        _gl.BufferData<float>(Gl.ArrayBuffer, data, Gl.DynamicDraw);
+        _gl.DrawArrays(Gl.Triangles, 0, _vertices.Count / Floats);
+        _gl.Disable(Gl.Blend);
+        _gl.Enable(Gl.DepthTest);
+    }
+
+    private void Vertex(float x, float y, float u, float v, Vector4 c, float kind)
+    {
+        _vertices.Add(x); _vertices.Add(y); _vertices.Add(u); _vertices.Add(v);
+        _vertices.Add(c.X); _vertices.Add(c.Y); _vertices.Add(c.Z); _vertices.Add(c.W);
+        _vertices.Add(kind);
+    }
+
+    private void Quad(float x, float y, float w, float h, float u0, float v0, float u1, float v1, Vector4 c, float kind)
+    {
+        Vertex(x, y, u0, v0, c, kind);
+        Vertex(x + w, y, u1, v0, c, kind);
+        Vertex(x + w, y + h, u1, v1, c, kind);
+        Vertex(x, y, u0, v0, c, kind);
+        Vertex(x + w, y + h, u1, v1, c, kind);
+        Vertex(x, y + h, u0, v1, c, kind);
+    }
+
+    private void Rect(float x, float y, float w, float h, Vector4 c) => Quad(x, y, w, h, 0, 0, 0, 0, c, 0);
+
+    private void Disc(Vector2 centre, float radius, Vector4 c, int kind) =>
+        Quad(centre.X - radius, centre.Y - radius, 2 * radius, 2 * radius, -1, -1, 1, 1, c, kind);
+
+    private void Text(string text, float x, float y, int scale, Vector4 color)
+    {
+        float atlasW = AtlasColumns * BitmapFont.Advance, atlasH = AtlasRows * BitmapFont.LineHeight;
+        foreach (char ch in text)
+        {
+            int c = ch is >= ' ' and <= '~' ? ch : '?';
+            if (c != ' ')
+            {
+                int cell = c - 32;
+                float u0 = cell % AtlasColumns * BitmapFont.Advance / atlasW, v0 = cell / AtlasColumns * BitmapFont.LineHeight / atlasH;
+                float u1 = u0 + (BitmapFont.Advance / atlasW), v1 = v0 + (BitmapFont.LineHeight / atlasH);
+                // A one-pixel drop shadow keeps text readable on the bright cloth.
+                Quad(x + scale, y + scale, BitmapFont.Advance * scale, BitmapFont.LineHeight * scale, u0, v0, u1, v1, new Vector4(0, 0, 0, 0.8f), 1);
+                Quad(x, y, BitmapFont.Advance * scale, BitmapFont.LineHeight * scale, u0, v0, u1, v1, color, 1);
+            }
+            x += BitmapFont.Advance * scale;
+        }
+    }
+
+    public void Dispose()
+    {
+        _gl.DeleteBuffer(_vbo);
+        _gl.DeleteVertexArray(_vao);
+        _gl.DeleteTexture(_font);
+        _gl.DeleteProgram(_program);
+    }
+}

@@ -1,0 +1,112 @@
+using System.Numerics;
+
+namespace Billiards.App.Rendering;
+
+/// <summary>
+/// The camera matrices the renderer uses (System.Numerics row vectors: clip = p * View * Projection),
+/// and the projection of a world point to pixels, so that tests aim exactly where the renderer draws.
+/// </summary>
+public static class RenderMath
+{
+    /// <summary>Near clipping distance (m).</summary>
+    public const float Near = 0.02f;
+
+    /// <summary>Far clipping distance (m).</summary>
+    public const float Far = 40f;
+
+    /// <summary>A right-handed look-at view with z up (x up when looking straight down or up).</summary>
+    public static Matrix4x4 View(Vector3 eye, Vector3 target)
+    {
+        var forward = target - eye;
+        if (forward.LengthSquared() < 1e-12f)
+        {
+            forward = Vector3.UnitX;
+            target = eye + forward;
+        }
+        var dir = Vector3.Normalize(forward);
+        var up = MathF.Abs(dir.Z) > 0.9999f ? Vector3.UnitX : Vector3.UnitZ;
+        return Matrix4x4.CreateLookAt(eye, target, up);
+    }
+
+    /// <summary>An OpenGL perspective projection (clip z in [-w, w]) with vertical field of view in degrees.</summary>
+    public static Matrix4x4 Projection(float fovYDegrees, float aspect, float near = Near, float far = Far)
+    {
+        float f = 1 / MathF.Tan(fovYDegrees * MathF.PI / 360);
+        return new Matrix4x4(
+            f / aspect, 0, 0, 0,
+            0, f, 0, 0,
+            0, 0, (far + near) / (near - far), -1,
+            0, 0, 2 * far * near / (near - far), 0);
+    }
+
+    /// <summary>The view-projection of a frame.</summary>
+    public static Matrix4x4 ViewProjection(RenderFrame frame) =>
+        View(frame.Eye, frame.Target) * Projection(frame.FovYDegrees, (float)frame.Width / Math.Max(1, frame.Height));
+
+    /// <summary>
+    /// Pixel coordinates (x right, y down from the top-left corner) of a world point, or null
+    /// when it is behind the camera.
+    /// </summary>
+    public static Vector2? ToPixel(Matrix4x4 viewProjection, Vector3 point, int width, int height)
+    {
+        var clip = Vector4.Transform(new Vector4(point, 1), viewProjection);
+        if (clip.W <= 1e-6f)
+        {
+            return null;
+        }
+        float x = clip.X / clip.W, y = clip.Y / clip.W;
+        return new Vector2((x + 1) / 2 * width, (1 - y) / 2 * height);
+    }
+
+    /// <summary>Converts an sRGB colour component to linear light.</summary>
+    public static float ToLinear(float c) => c <= 0.04045f ? c / 12.92f : MathF.Pow((c + 0.055f) / 1.055f, 2.4f);
+
+    /// <summary>Converts an sRGB colour to linear light.</summary>
+    public static Vector3 ToLinear(Vector3 c) => new(ToLinear(c.X), ToLinear(c.Y), ToLinear(c.Z));
+
+    /// <summary>
+    /// The default camera for a table: behind the head rail, raised, looking down the table, as
+    /// close as lets the rails fill 94% of the frame, the table centred in the picture.
+    /// </summary>
+    public static (Vector3 Eye, Vector3 Target) DefaultCamera(Billiards.Core.Table.TableSpec table, float aspect, float fovYDegrees)
+    {
+        float hx = (float)table.HalfLength + TableModelGenerator.CushionDepth + TableModelGenerator.RailWidth;
+        float hy = (float)table.HalfWidth + TableModelGenerator.CushionDepth + TableModelGenerator.RailWidth;
+        const float Elevation = 44 * MathF.PI / 180;
+        var direction = new Vector3(-MathF.Cos(Elevation), 0, MathF.Sin(Elevation));
+        Vector3[] corners = [new(-hx, -hy, 0.04f), new(hx, -hy, 0.04f), new(hx, hy, 0.04f), new(-hx, hy, 0.04f)];
+        var target = Vector3.Zero;
+        float distance = 3;
+        for (int pass = 0; pass < 4; pass++)
+        {
+            float lo = 0.3f, hi = 40f;
+            for (int iteration = 0; iteration < 40; iteration++)
+            {
+                float mid = (lo + hi) / 2;
+                var (min, max) = NdcBounds(View(target + (mid * direction), target) * Projection(fovYDegrees, aspect), corners);
+                bool fits = min.X > -0.94f && min.Y > -0.94f && max.X < 0.94f && max.Y < 0.94f;
+                (lo, hi) = fits ? (lo, mid) : (mid, hi);
+            }
+            distance = hi;
+            // Centre the table vertically: move the target along the bed by the picture's offset.
+            var (low, high) = NdcBounds(View(target + (distance * direction), target) * Projection(fovYDegrees, aspect), corners);
+            float offset = (low.Y + high.Y) / 2;
+            target.X += offset * distance * MathF.Tan(fovYDegrees * MathF.PI / 360) / MathF.Sin(Elevation);
+        }
+        return (target + (distance * direction), target);
+    }
+
+    private static (Vector2 Min, Vector2 Max) NdcBounds(Matrix4x4 viewProjection, Vector3[] points)
+    {
+        var min = new Vector2(float.MaxValue);
+        var max = new Vector2(float.MinValue);
+        foreach (var p in points)
+        {
+            var clip = Vector4.Transform(new Vector4(p, 1), viewProjection);
+            var ndc = clip.W > 1e-6f ? new Vector2(clip.X, clip.Y) / clip.W : new Vector2(float.MaxValue);
+            min = Vector2.Min(min, ndc);
+            max = Vector2.Max(max, ndc);
+        }
+        return (min, max);
+    }
+}

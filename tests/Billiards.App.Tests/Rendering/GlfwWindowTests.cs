@@ -1,0 +1,53 @@
+using Billiards.App.Platform;
+using Billiards.App.Rendering;
+using Billiards.Core.Table;
+
+namespace Billiards.App.Tests.Rendering;
+
+[Collection("GL")]
+public class GlfwWindowTests
+{
+    [Fact]
+    public void Window_OpensDrawsFramesAndTogglesFullscreen()
+    {
+        TestDisplay.Ensure();
+        using var window = new GlfwWindow("smoke", 640, 360);
+        using var renderer = new Renderer(window.Gl);
+        int frames = 0;
+        int resized = 0;
+        window.Resize += (_, _) => resized++;
+        window.Run(dt =>
+        {
+            var (w, h) = window.FramebufferSize;
+            renderer.Draw(new RenderFrame { Table = TableSpec.FromPreset("pool-9ft"), Width = w, Height = h, Hud = new HudInfo(["fps"], default, false, []) });
+            if (++frames == 5)
+            {
+                window.ToggleFullscreen();
+            }
+            if (frames == 10)
+            {
+                window.ToggleFullscreen();
+            }
+            if (frames >= 20)
+            {
+                window.Close();
+            }
+        });
+        Assert.Equal(20, frames);
+    }
+
+    [Theory]
+    [InlineData(65, Key.A)]
+    [InlineData(90, Key.Z)]
+    [InlineData(48, Key.D0)]
+    [InlineData(32, Key.Space)]
+    [InlineData(256, Key.Escape)]
+    [InlineData(265, Key.Up)]
+    [InlineData(300, Key.F11)]
+    [InlineData(334, Key.Plus)]
+    [InlineData(999, Key.Unknown)]
+    public void MapKey_TranslatesGlfwKeyCodes(int glfwKey, Key expected)
+    {
+        Assert.Equal(expected, GlfwWindow.MapKey(glfwKey));
+    }
+}

@@ -1,0 +1,185 @@
+using System.Numerics;
+using Billiards.App.Rendering;
+using Billiards.Core.Balls;
+using Billiards.Core.Table;
+using Xunit.Abstractions;
+
+namespace Billiards.App.Tests.Rendering;
+
+[Collection("GL")]
+public class OffscreenRenderTests(GlFixture gl, ITestOutputHelper output)
+{
+    private const int Width = 640, Height = 400;
+
+    private enum Hue { Other, White, Black, Yellow, Blue, Red, Green }
+
+    // The number discs are on the ball's x axis: turned to +-y they face neither the camera nor the lamps.
+    private static readonly Quaternion s_sideways = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, MathF.PI / 2);
+
+    private static RenderFrame KnownFrame()
+    {
+        const float R = 0.028575f;
+        var frame = new RenderFrame
+        {
+            Table = TableSpec.FromPreset("pool-9ft"),
+            Width = Width,
+            Height = Height,
+            Eye = new Vector3(-1.7f, 0, 1.3f),
+            Target = new Vector3(0.15f, 0, 0),
+        };
+        frame.Balls.Add(new BallVisual(BallId.Cue, new Vector3(-0.5f, 0, R), s_sideways));
+        frame.Balls.Add(new BallVisual(new BallId(1), new Vector3(0.3f, -0.3f, R), s_sideways));
+        frame.Balls.Add(new BallVisual(new BallId(2), new Vector3(0.3f, 0, R), s_sideways));
+        frame.Balls.Add(new BallVisual(new BallId(3), new Vector3(0.3f, 0.3f, R), s_sideways));
+        frame.Balls.Add(new BallVisual(new BallId(8), new Vector3(0.7f, 0.1f, R), s_sideways));
+        return frame;
+    }
+
+    [Fact]
+    public void Render_DrawsEachBallInItsColourOnGreenCloth()
+    {
+        var frame = KnownFrame();
+        byte[] pixels = gl.Renderer.Render(frame);
+        output.WriteLine(gl.Renderer.Description);
+        Assert.Equal(Width * Height * 4, pixels.Length);
+        var vp = RenderMath.ViewProjection(frame);
+        var expected = new Dictionary<int, Hue> { [0] = Hue.White, [1] = Hue.Yellow, [2] = Hue.Blue, [3] = Hue.Red, [8] = Hue.Black };
+        foreach (var ball in frame.Balls)
+        {
+            var centre = RenderMath.ToPixel(vp, ball.Position, Width, Height)!.Value;
+            var hue = Dominant(pixels, centre, 2);
+            Assert.True(expected[ball.Id.Value] == hue, $"ball {ball.Id} at pixel {centre}: expected {expected[ball.Id.Value]}, found {hue}");
+        }
+        foreach (var spot in new[] { new Vector3(-0.2f, 0.35f, 0), new Vector3(0.9f, -0.4f, 0), new Vector3(-0.9f, 0, 0) })
+        {
+            var pixel = RenderMath.ToPixel(vp, spot, Width, Height)!.Value;
+            Assert.Equal(Hue.Green, Dominant(pixels, pixel, 2));
+        }
+        // Not a blank frame: many different colours.
+        var distinct = new HashSet<int>();
+        for (int i = 0; i < pixels.Length; i += 4)
+        {
+            distinct.Add((pixels[i] << 16) | (pixels[i + 1] << 8) | pixels[i + 2]);
+        }
+        Assert.True(distinct.Count > 500, $"only {distinct.Count} colours");
+    }
+
+    [Fact]
+    public void Render_HidesInvisibleBallsAndDrawsTheCue()
+    {
+        var frame = KnownFrame();
+        var vp = RenderMath.ViewProjection(frame);
+        var two = frame.Balls[2];
+        frame.Balls[2] = two with { Visible = false };
+        var cueBall = frame.Balls[0];
+        // The cue points along +x at the cue ball, so it lies behind it (towards the camera).
+        frame.Cue = new CueVisual(true, cueBall.Position, Vector3.UnitX, 8, 0.1f, Vector2.Zero);
+        byte[] pixels = gl.Renderer.Render(frame);
+        var at = RenderMath.ToPixel(vp, two.Position, Width, Height)!.Value;
+        Assert.Equal(Hue.Green, Dominant(pixels, at, 1));
+        // A point on the cue's shaft, 0.25 m behind the tip, is drawn in maple, not cloth.
+        var shaft = Vector3.Transform(new Vector3(-0.25f, 0, 0), Primitives.CuePlacement(frame.Cue, frame.BallRadius));
+        var pixel = RenderMath.ToPixel(vp, shaft, Width, Height)!.Value;
+        var (r, g, b) = Pixel(pixels, (int)pixel.X, (int)pixel.Y);
+        Assert.True(r > g && g > b && r > 120, $"cue shaft pixel ({r},{g},{b})");
+    }
+
+    [Fact]
+    public void Render_DrawsTheHudAndTheCollisionDebugLines()
+    {
+        var frame = KnownFrame();
+        byte[] plain = gl.Renderer.Render(frame);
+        frame.Hud = new HudInfo(["Mode: SHOT", "Speed 2.50 m/s"], new Vector2(0.5f, 0.5f), true, ["v  view", "s  shot", "e  effet"]);
+        frame.ShowCollisionGeometry = true;
+        var a = new Vector3(-0.3f, -0.4f, 0.001f);
+        frame.CollisionTriangles = [new DebugTriangle(a, a + new Vector3(0.4f, 0, 0), a + new Vector3(0, 0.3f, 0), Vector3.UnitZ)];
+        byte[] drawn = gl.Renderer.Render(frame);
+
+        // The text panel at the top left darkens or lights pixels there.
+        int changed = 0;
+        for (int y = 4; y < 40; y++)
+        {
+            for (int x = 4; x < 150; x++)
+            {
+                int i = ((y * Width) + x) * 4;
+                changed += Math.Abs(plain[i] - drawn[i]) + Math.Abs(plain[i + 1] - drawn[i + 1]) > 30 ? 1 : 0;
+            }
+        }
+        Assert.True(changed > 200, $"HUD changed {changed} pixels");
+
+        // The spin point is a red dot on the white diagram at the bottom right.
+        bool redDot = false;
+        for (int y = Height - 100; y < Height; y++)
+        {
+            for (int x = Width - 100; x < Width; x++)
+            {
+                var (r, g, b) = Pixel(drawn, x, y);
+                redDot |= r > 180 && g < 60 && b < 60;
+            }
+        }
+        Assert.True(redDot, "no spin point");
+
+        // The debug triangle's edge from a to a + 0.4 x is red.
+        var vp = RenderMath.ViewProjection(frame);
+        var mid = RenderMath.ToPixel(vp, a + new Vector3(0.2f, 0, 0), Width, Height)!.Value;
+        bool redLine = false;
+        for (int dy = -2; dy <= 2; dy++)
+        {
+            var (r, g, b) = Pixel(drawn, (int)mid.X, (int)mid.Y + dy);
+            redLine |= r > 150 && g < 90 && b < 90;
+        }
+        Assert.True(redLine, "no red collision edge");
+    }
+
+    private static (int R, int G, int B) Pixel(byte[] pixels, int x, int y)
+    {
+        int i = ((y * Width) + x) * 4;
+        return (pixels[i], pixels[i + 1], pixels[i + 2]);
+    }
+
+    private static Hue Classify(int r, int g, int b)
+    {
+        int max = Math.Max(r, Math.Max(g, b)), min = Math.Min(r, Math.Min(g, b));
+        if (min > 150)
+        {
+            return Hue.White;
+        }
+        if (max < 50)
+        {
+            return Hue.Black;
+        }
+        if (r > 120 && g > 90 && b < g * 0.6)
+        {
+            return Hue.Yellow;
+        }
+        if (b > r + 30 && b > g + 15)
+        {
+            return Hue.Blue;
+        }
+        if (r > 100 && g < r * 0.45 && b < r * 0.45)
+        {
+            return Hue.Red;
+        }
+        if (g > r + 25 && g > b + 10)
+        {
+            return Hue.Green;
+        }
+        return Hue.Other;
+    }
+
+    /// <summary>The most frequent hue in a square around a pixel.</summary>
+    private static Hue Dominant(byte[] pixels, Vector2 at, int radius)
+    {
+        var counts = new Dictionary<Hue, int>();
+        for (int dy = -radius; dy <= radius; dy++)
+        {
+            for (int dx = -radius; dx <= radius; dx++)
+            {
+                var (r, g, b) = Pixel(pixels, Math.Clamp((int)at.X + dx, 0, Width - 1), Math.Clamp((int)at.Y + dy, 0, Height - 1));
+                var hue = Classify(r, g, b);
+                counts[hue] = counts.GetValueOrDefault(hue) + 1;
+            }
+        }
+        return counts.MaxBy(kv => kv.Value).Key;
+    }
+}

@@ -1,0 +1,149 @@
+using System.Numerics;
+using Billiards.App.Native;
+using Billiards.App.Rendering;
+using Billiards.Core.Table;
+
+namespace Billiards.App.Tests.Rendering;
+
+public class TableModelTests
+{
+    /// <summary>The presets with a committed model in assets/models.</summary>
+    public static TheoryData<string> Presets => new(TableSpec.PresetNames);
+
+    /// <summary>
+    /// The committed model matches the generator. To regenerate after changing the generator:
+    /// BILLIARDS_WRITE_MODELS=1 dotnet test --filter CommittedModel_MatchesTheGenerator
+    /// </summary>
+    [Theory]
+    [MemberData(nameof(Presets))]
+    public void CommittedModel_MatchesTheGenerator(string preset)
+    {
+        var spec = TableSpec.FromPreset(preset);
+        if (Environment.GetEnvironmentVariable("BILLIARDS_WRITE_MODELS") == "1")
+        {
+            Directory.CreateDirectory(TableModels.ModelsDirectory);
+            TableModels.Export(spec, TableModels.ModelsDirectory, preset);
+        }
+        var (obj, mtl) = TableModels.Text(spec, preset);
+        string objPath = Path.Combine(TableModels.ModelsDirectory, preset + ".obj");
+        Assert.True(File.Exists(objPath), $"{objPath} is missing");
+        Assert.True(SameModel(obj, File.ReadAllText(objPath)), $"{objPath} differs from the generator; regenerate it with BILLIARDS_WRITE_MODELS=1");
+        Assert.True(SameModel(mtl, File.ReadAllText(Path.ChangeExtension(objPath, ".mtl"))), $"{preset}.mtl differs from the generator");
+        Assert.Equal(objPath, TableModels.PathFor(spec));
+    }
+
+    /// <summary>Same tokens, numbers equal to the last written digit or so (libm's sines may differ by an ulp between machines).</summary>
+    private static bool SameModel(string expected, string actual)
+    {
+        string[] a = expected.Split((char[]?)null, StringSplitOptions.RemoveEmptyEntries);
+        string[] b = actual.Split((char[]?)null, StringSplitOptions.RemoveEmptyEntries);
+        if (a.Length != b.Length)
+        {
+            return false;
+        }
+        var ci = System.Globalization.CultureInfo.InvariantCulture;
+        for (int i = 0; i < a.Length; i++)
+        {
+            if (a[i] == b[i])
+            {
+                continue;
+            }
+            if (!double.TryParse(a[i], ci, out double x) || !double.TryParse(b[i], ci, out double y) || Math.Abs(x - y) > 2e-4)
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    [Fact]
+    public void PathFor_GeneratesAModelForAChangedTable()
+    {
+        var spec = TableSpec.FromPreset("pool-9ft") with { Length = 2.0, Width = 1.0 };
+        string path = TableModels.PathFor(spec);
+        Assert.StartsWith(Path.GetTempPath(), path);
+        Assert.True(File.Exists(path));
+        Assert.True(File.Exists(Path.ChangeExtension(path, ".mtl")));
+    }
+
+    [Fact]
+    public void Assimp_ImportsTheGeneratedModelWithItsMaterials()
+    {
+        var spec = TableSpec.FromPreset("pool-9ft");
+        var generated = TableModelGenerator.Generate(spec);
+        var imported = Assimp.Import(TableModels.PathFor(spec));
+        var names = imported.Select(m => m.MaterialName).ToHashSet();
+        Assert.Superset(new HashSet<string> { "cloth", "cushion", "rail", "sight", "pocket" }, names);
+        Assert.Equal(generated.Sum(m => m.Indices.Count), imported.Sum(m => m.Indices.Length));
+        var cloth = imported.Single(m => m.MaterialName == "cloth");
+        var expected = TableModelGenerator.Materials.Cloth.Diffuse;
+        Assert.Equal(expected.Y, cloth.Diffuse.Y, 3);
+        Assert.All(cloth.Normals, n => Assert.Equal(1, n.Z, 3));
+        // The bed reaches the cushions' noses and lies at z = 0.
+        Assert.All(cloth.Positions, p => Assert.Equal(0, p.Z, 5));
+        Assert.True(cloth.Positions.Max(p => p.X) > spec.HalfLength);
+    }
+
+    [Fact]
+    public void Assimp_ReportsAnUnreadableFile()
+    {
+        string path = Path.Combine(Path.GetTempPath(), $"not-a-model-{Environment.ProcessId}.obj");
+        File.WriteAllText(path, "this is not a model\n");
+        try
+        {
+            Assert.ThrowsAny<InvalidDataException>(() => Assimp.Import(path));
+        }
+        finally
+        {
+            File.Delete(path);
+        }
+    }
+
+    [Theory]
+    [MemberData(nameof(Presets))]
+    public void Generate_CutsSixPocketsIntoTheBed(string preset)
+    {
+        var spec = TableSpec.FromPreset(preset);
+        var cloth = TableModelGenerator.Generate(spec).Single(m => m.Material.Name == "cloth");
+        float hx = (float)spec.HalfLength + TableModelGenerator.CushionDepth, hy = (float)spec.HalfWidth + TableModelGenerator.CushionDepth;
+        float area = 0;
+        for (int i = 0; i < cloth.Indices.Count; i += 3)
+        {
+            var a = cloth.Positions[(int)cloth.Indices[i]];
+            var b = cloth.Positions[(int)cloth.Indices[i + 1]];
+            var c = cloth.Positions[(int)cloth.Indices[i + 2]];
+            var cross = Vector3.Cross(b - a, c - a);
+            Assert.True(cross.Z > 0, "bed triangles face up");
+            area += cross.Z / 2;
+        }
+        float rectangle = 4 * hx * hy;
+        if (spec.HasPockets)
+        {
+            // Less than the rectangle by the pockets' near halves, but not by much more.
+            Assert.InRange(area, rectangle - 0.05f, rectangle - 0.01f);
+            Assert.False(CoveredBy(cloth, new Vector2(hx, hy) - new Vector2(0.03f)), "the corner pocket is open");
+            Assert.False(CoveredBy(cloth, new Vector2(0, hy - 0.02f)), "the side pocket is open");
+        }
+        else
+        {
+            Assert.Equal(rectangle, area, 3);
+        }
+        Assert.True(CoveredBy(cloth, Vector2.Zero));
+    }
+
+    private static bool CoveredBy(MeshBuilder mesh, Vector2 point)
+    {
+        static float Cross(Vector2 u, Vector2 v) => (u.X * v.Y) - (u.Y * v.X);
+        for (int i = 0; i < mesh.Indices.Count; i += 3)
+        {
+            var a = new Vector2(mesh.Positions[(int)mesh.Indices[i]].X, mesh.Positions[(int)mesh.Indices[i]].Y);
+            var b = new Vector2(mesh.Positions[(int)mesh.Indices[i + 1]].X, mesh.Positions[(int)mesh.Indices[i + 1]].Y);
+            var c = new Vector2(mesh.Positions[(int)mesh.Indices[i + 2]].X, mesh.Positions[(int)mesh.Indices[i + 2]].Y);
+            if (Cross(b - a, point - a) >= 0 && Cross(c - b, point - b) >= 0 && Cross(a - c, point - c) >= 0)
+            {
+                return true;
+            }
+        }
+        return false;
+    }
+}
