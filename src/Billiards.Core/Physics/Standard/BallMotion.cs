@@ -1,0 +1,257 @@
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
+
+namespace Billiards.Core.Physics.Standard;
+
+/// <summary>
+/// The constants of ball-cloth motion, precomputed once from <see cref="PhysicsParams"/>.
+/// </summary>
+public readonly struct MotionConstants
+{
+    /// <summary>Takes the constants from the parameters.</summary>
+    public MotionConstants(PhysicsParams p)
+    {
+        R = p.R;
+        SlidingDeceleration = p.MuS * p.G;
+        RollingDeceleration = p.MuR * p.G;
+        SpinDeceleration = 5 * p.MuSp * p.G / (2 * p.R);
+    }
+
+    /// <summary>Ball radius R (m).</summary>
+    public double R { get; }
+
+    /// <summary>mu_s g (m/s^2): the linear deceleration of a sliding ball.</summary>
+    public double SlidingDeceleration { get; }
+
+    /// <summary>mu_r g (m/s^2): the deceleration of a rolling ball.</summary>
+    public double RollingDeceleration { get; }
+
+    /// <summary>5 mu_sp g / (2R) (rad/s^2): the decay of spin about z, in every state.</summary>
+    public double SpinDeceleration { get; }
+}
+
+/// <summary>
+/// Closed-form motion of one ball on the cloth between collisions (physics-standard-model.md,
+/// "Motion between collisions"): within a motion state the centre is an exact quadratic in time,
+/// which is what lets the engine find contact times as polynomial roots.
+/// </summary>
+/// <remarks>
+/// Equations from Leckie and Greenspan (2005) and Alciatore TP A-4 (sliding to rolling), as
+/// pooltool's <c>evolve_ball_motion</c> uses them. Slip of the contact point:
+/// u = v + R (z x w). Sliding: a = -mu_s g u_hat, dw_xy/dt = (5 mu_s g / 2R)(z x u_hat), and u
+/// shrinks at 7/2 mu_s g along a fixed direction. Rolling: a = -mu_r g v_hat, w_xy = (z x v)/R.
+/// </remarks>
+public static class BallMotion
+{
+    /// <summary>Speeds (m/s) below this are zero when a state is classified after an impulse.</summary>
+    public const double SpeedEpsilon = 1e-10;
+
+    /// <summary>Spin rates (rad/s) below this are zero when a state is classified.</summary>
+    public const double SpinEpsilon = 1e-10;
+
+    /// <summary>Velocity of the contact point with the cloth, u = v + R (z x w), in the bed plane (m/s).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Vec3 Slip(in BallState b, double radius) =>
+        new(b.Velocity.X - radius * b.Spin.Y, b.Velocity.Y + radius * b.Spin.X, 0);
+
+    /// <summary>True for the states in which the centre moves.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static bool Translates(MotionState s) => s is MotionState.Sliding or MotionState.Rolling;
+
+    /// <summary>True for the states that end by themselves (sliding, rolling, spinning).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static bool IsActive(MotionState s) => s is MotionState.Sliding or MotionState.Rolling or MotionState.Spinning;
+
+    /// <summary>
+    /// Sets the state from the velocities after an impulse (strike or collision): sliding when
+    /// the contact point slips, rolling when it does not, spinning when only w_z remains,
+    /// stationary otherwise. Snaps the quantities the state implies (w_xy = z x v / R when rolling).
+    /// </summary>
+    public static void Classify(ref BallState b, in MotionConstants k)
+    {
+        if (b.State == MotionState.Pocketed)
+        {
+            return;
+        }
+        b.Velocity = b.Velocity.XY;
+        var u = Slip(b, k.R);
+        if (u.LengthXY > SpeedEpsilon)
+        {
+            b.State = MotionState.Sliding;
+        }
+        else if (b.Velocity.LengthXY > SpeedEpsilon)
+        {
+            b.State = MotionState.Rolling;
+            b.Spin = new Vec3(-b.Velocity.Y / k.R, b.Velocity.X / k.R, b.Spin.Z);
+        }
+        else
+        {
+            b.Velocity = Vec3.Zero;
+            b.State = Math.Abs(b.Spin.Z) > SpinEpsilon ? MotionState.Spinning : MotionState.Stationary;
+            b.Spin = new Vec3(0, 0, b.State == MotionState.Spinning ? b.Spin.Z : 0);
+        }
+    }
+
+    /// <summary>
+    /// Time (s) until the current state ends by itself: sliding lasts 2|u|/(7 mu_s g), rolling
+    /// |v|/(mu_r g), spinning |w_z| / (5 mu_sp g / 2R). Infinite for stationary and pocketed
+    /// balls, or when the friction that would end the state is zero.
+    /// </summary>
+    public static double StateDuration(in BallState b, in MotionConstants k) => b.State switch
+    {
+        MotionState.Sliding => Duration(Slip(b, k.R).LengthXY, 3.5 * k.SlidingDeceleration),
+        MotionState.Rolling => Duration(b.Velocity.LengthXY, k.RollingDeceleration),
+        MotionState.Spinning => Duration(Math.Abs(b.Spin.Z), k.SpinDeceleration),
+        _ => double.PositiveInfinity,
+    };
+
+    private static double Duration(double amount, double rate) => rate > 0 ? amount / rate : double.PositiveInfinity;
+
+    /// <summary>
+    /// Acceleration of the centre in the current state (m/s^2), constant until the state ends:
+    /// r(t) = r0 + v0 t + a t^2 / 2.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Vec3 Acceleration(in BallState b, in MotionConstants k)
+    {
+        switch (b.State)
+        {
+            case MotionState.Sliding:
+                {
+                    var u = Slip(b, k.R);
+                    double s = u.LengthXY;
+                    return s > 0 ? u * (-k.SlidingDeceleration / s) : Vec3.Zero;
+                }
+            case MotionState.Rolling:
+                {
+                    double s = b.Velocity.LengthXY;
+                    return s > 0 ? b.Velocity * (-k.RollingDeceleration / s) : Vec3.Zero;
+                }
+            default:
+                return Vec3.Zero;
+        }
+    }
+
+    /// <summary>
+    /// Advances the ball by <paramref name="dt"/> seconds in closed form, assuming its state does
+    /// not end before then (the engine stops at state transitions). Spin about z decays to zero
+    /// and then stays there. Integrates the orientation when <paramref name="trackOrientation"/>.
+    /// </summary>
+    public static void Advance(ref BallState b, double dt, in MotionConstants k, bool trackOrientation)
+    {
+        if (dt <= 0)
+        {
+            return;
+        }
+        var spin0 = b.Spin;
+        switch (b.State)
+        {
+            case MotionState.Sliding:
+                {
+                    var u = Slip(b, k.R);
+                    double s = u.LengthXY;
+                    if (s > 0)
+                    {
+                        var uHat = u / s;
+                        var a = uHat * -k.SlidingDeceleration;
+                        b.Position += b.Velocity * dt + a * (0.5 * dt * dt);
+                        b.Velocity += a * dt;
+                        // dw_xy/dt = (5 mu_s g / 2R) (z x u_hat), z x u_hat = (-u_y, u_x).
+                        double alpha = 2.5 * k.SlidingDeceleration / k.R * dt;
+                        b.Spin = new Vec3(b.Spin.X - alpha * uHat.Y, b.Spin.Y + alpha * uHat.X, b.Spin.Z);
+                    }
+                    else
+                    {
+                        b.Position += b.Velocity * dt;
+                    }
+                    break;
+                }
+            case MotionState.Rolling:
+                {
+                    double s = b.Velocity.LengthXY;
+                    if (s > 0)
+                    {
+                        var vHat = b.Velocity / s;
+                        double d = k.RollingDeceleration;
+                        b.Position += b.Velocity * dt - vHat * (0.5 * d * dt * dt);
+                        b.Velocity -= vHat * (d * dt);
+                        b.Spin = new Vec3(-b.Velocity.Y / k.R, b.Velocity.X / k.R, b.Spin.Z);
+                    }
+                    break;
+                }
+            case MotionState.Spinning:
+                break;
+            default:
+                return;
+        }
+        DecaySpinZ(ref b, dt, k);
+        if (trackOrientation)
+        {
+            Rotate(ref b.Orientation, (spin0 + b.Spin) * (0.5 * dt));
+        }
+    }
+
+    /// <summary>Decays the spin about z by 5 mu_sp g / (2R) over <paramref name="dt"/> (s), stopping at zero.</summary>
+    public static void DecaySpinZ(ref BallState b, double dt, in MotionConstants k)
+    {
+        double wz = b.Spin.Z;
+        double decay = k.SpinDeceleration * dt;
+        b.Spin = new Vec3(b.Spin.X, b.Spin.Y, Math.Abs(wz) > decay ? wz - Math.CopySign(decay, wz) : 0);
+    }
+
+    /// <summary>
+    /// Rotates an orientation by the angle vector <paramref name="phi"/> (rad: axis times angle),
+    /// in the table frame. Callers pass the mean angular velocity times the interval, which is exact
+    /// for a spin along a fixed axis; its small change of axis while sliding does not matter for drawing.
+    /// </summary>
+    public static void Rotate(ref Quaternion q, Vec3 phi)
+    {
+        double angle = phi.Length;
+        if (angle < 1e-12)
+        {
+            return;
+        }
+        var axis = phi / angle;
+        var dq = Quaternion.CreateFromAxisAngle(new Vector3((float)axis.X, (float)axis.Y, (float)axis.Z), (float)angle);
+        q = Quaternion.Normalize(dq * q);
+    }
+
+    /// <summary>
+    /// Ends the current state at its transition time: sliding becomes rolling (or spinning or
+    /// stationary when no velocity is left), rolling and spinning become spinning or stationary.
+    /// Snaps the small remainders that round-off leaves, so the new state starts exactly.
+    /// </summary>
+    public static void EndState(ref BallState b, in MotionConstants k)
+    {
+        switch (b.State)
+        {
+            case MotionState.Sliding:
+                if (b.Velocity.LengthXY > SpeedEpsilon)
+                {
+                    b.State = MotionState.Rolling;
+                    b.Spin = new Vec3(-b.Velocity.Y / k.R, b.Velocity.X / k.R, b.Spin.Z);
+                }
+                else
+                {
+                    StopTranslation(ref b);
+                }
+                break;
+            case MotionState.Rolling:
+                StopTranslation(ref b);
+                break;
+            case MotionState.Spinning:
+                b.Spin = Vec3.Zero;
+                b.State = MotionState.Stationary;
+                break;
+        }
+    }
+
+    private static void StopTranslation(ref BallState b)
+    {
+        b.Velocity = Vec3.Zero;
+        b.Spin = new Vec3(0, 0, Math.Abs(b.Spin.Z) > SpinEpsilon ? b.Spin.Z : 0);
+        b.State = b.Spin.Z != 0 ? MotionState.Spinning : MotionState.Stationary;
+    }
+}

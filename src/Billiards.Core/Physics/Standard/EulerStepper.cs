@@ -1,0 +1,215 @@
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Physics.Collisions;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Physics.Standard;
+
+/// <summary>
+/// The naive baseline of the accuracy report: explicit Euler on the same forces as the closed
+/// form, with collisions found by overlap at the end of each step and resolved by the same
+/// collision models. First order in dt; it can tunnel and it detects contacts late.
+/// </summary>
+/// <remarks>
+/// A state ends when its step would overshoot: sliding when the slip would reverse, rolling when
+/// the velocity would, spin about z when it would change sign. Nothing else is clever on purpose.
+/// </remarks>
+public sealed class EulerStepper
+{
+    private readonly BallState[] _balls;
+    private readonly BallId[] _ids;
+    private readonly PhysicsParams _params;
+    private readonly MotionConstants _k;
+    private readonly TableGeometry _geometry;
+    private readonly IBallBallModel _ballBall;
+    private readonly IBallCushionModel _ballCushion;
+    private readonly EventLog _log;
+
+    /// <summary>Creates a stepper over the balls (shared, changed in place).</summary>
+    public EulerStepper(BallState[] balls, IReadOnlyList<BallId> ids, PhysicsParams parameters, TableGeometry geometry,
+        IBallBallModel ballBall, IBallCushionModel ballCushion, EventLog log)
+    {
+        _balls = balls;
+        _ids = [.. ids];
+        _params = parameters;
+        _k = new MotionConstants(parameters);
+        _geometry = geometry;
+        _ballBall = ballBall;
+        _ballCushion = ballCushion;
+        _log = log;
+        for (int i = 0; i < balls.Length; i++)
+        {
+            BallMotion.Classify(ref _balls[i], _k);
+        }
+    }
+
+    /// <summary>When true, orientations are integrated.</summary>
+    public bool TrackOrientation { get; set; }
+
+    /// <summary>True when no ball moves or spins.</summary>
+    public bool IsAtRest
+    {
+        get
+        {
+            foreach (ref readonly var b in _balls.AsSpan())
+            {
+                if (BallMotion.IsActive(b.State))
+                {
+                    return false;
+                }
+            }
+            return true;
+        }
+    }
+
+    /// <summary>Re-classifies a ball after an outside change (a cue strike).</summary>
+    public void BallChanged(int index) => BallMotion.Classify(ref _balls[index], _k);
+
+    /// <summary>One explicit Euler step of <paramref name="dt"/> seconds ending at <paramref name="timeAfter"/>.</summary>
+    public void Step(double dt, double timeAfter)
+    {
+        for (int i = 0; i < _balls.Length; i++)
+        {
+            if (BallMotion.IsActive(_balls[i].State))
+            {
+                Integrate(ref _balls[i], dt);
+            }
+        }
+        DetectAndResolve(timeAfter);
+    }
+
+    private void Integrate(ref BallState b, double dt)
+    {
+        double r = _k.R;
+        var spin0 = b.Spin;
+        switch (b.State)
+        {
+            case MotionState.Sliding:
+                {
+                    var u = BallMotion.Slip(b, r);
+                    var uHat = u.Normalized();
+                    var a = uHat * -_k.SlidingDeceleration;
+                    double alpha = 2.5 * _k.SlidingDeceleration / r;
+                    b.Position += b.Velocity * dt;
+                    b.Velocity += a * dt;
+                    b.Spin = new Vec3(b.Spin.X - alpha * uHat.Y * dt, b.Spin.Y + alpha * uHat.X * dt, b.Spin.Z);
+                    if (Vec3.Dot(BallMotion.Slip(b, r), u) <= 0)
+                    {
+                        BallMotion.EndState(ref b, _k);
+                    }
+                    break;
+                }
+            case MotionState.Rolling:
+                {
+                    var v0 = b.Velocity;
+                    b.Position += b.Velocity * dt;
+                    b.Velocity -= v0.Normalized() * (_k.RollingDeceleration * dt);
+                    b.Spin = new Vec3(-b.Velocity.Y / r, b.Velocity.X / r, b.Spin.Z);
+                    if (Vec3.Dot(b.Velocity, v0) <= 0)
+                    {
+                        BallMotion.EndState(ref b, _k);
+                    }
+                    break;
+                }
+        }
+        BallMotion.DecaySpinZ(ref b, dt, _k);
+        if (b.State == MotionState.Spinning && b.Spin.Z == 0)
+        {
+            BallMotion.EndState(ref b, _k);
+        }
+        if (TrackOrientation)
+        {
+            BallMotion.Rotate(ref b.Orientation, (spin0 + b.Spin) * (0.5 * dt));
+        }
+    }
+
+    private void DetectAndResolve(double time)
+    {
+        double r = _params.R;
+        var balls = _balls.AsSpan();
+        for (int i = 0; i < balls.Length; i++)
+        {
+            ref var a = ref balls[i];
+            if (a.State == MotionState.Pocketed)
+            {
+                continue;
+            }
+            for (int j = i + 1; j < balls.Length; j++)
+            {
+                ref var b = ref balls[j];
+                if (b.State == MotionState.Pocketed || !(BallMotion.Translates(a.State) || BallMotion.Translates(b.State)))
+                {
+                    continue;
+                }
+                var d = (b.Position - a.Position).XY;
+                if (d.LengthSquared >= 4 * r * r)
+                {
+                    continue;
+                }
+                var n = d.Normalized();
+                double approach = Vec3.Dot(a.Velocity - b.Velocity, n);
+                if (approach <= 0)
+                {
+                    continue;
+                }
+                _ballBall.Resolve(ref a, ref b, _params);
+                BallMotion.Classify(ref a, _k);
+                BallMotion.Classify(ref b, _k);
+                _log.Add(new SimEvent(time, EventKind.BallBall, _ids[i], _ids[j], -1, approach));
+            }
+        }
+
+        for (int i = 0; i < balls.Length; i++)
+        {
+            ref var b = ref balls[i];
+            if (!BallMotion.Translates(b.State))
+            {
+                continue;
+            }
+            foreach (ref readonly var s in _geometry.Segments)
+            {
+                double gap = Vec3.Dot(s.Normal, b.Position - s.Start) - r;
+                double along = Vec3.Dot(b.Position - s.Start, s.Direction);
+                double approach = -Vec3.Dot(b.Velocity, s.Normal);
+                // Overlapping, on the face, in front of its back half, and approaching.
+                if (gap < 0 && gap > -r && along >= 0 && along <= s.Length && approach > 0)
+                {
+                    Cushion(ref b, i, s.Normal, s.Feature, approach, time);
+                }
+            }
+            foreach (ref readonly var nose in _geometry.Noses)
+            {
+                var d = (b.Position - nose.Centre).XY;
+                double reach = r + nose.Radius;
+                if (d.LengthSquared < reach * reach)
+                {
+                    var n = d.Normalized();
+                    double approach = -Vec3.Dot(b.Velocity, n);
+                    if (approach > 0)
+                    {
+                        Cushion(ref b, i, n, nose.Feature, approach, time);
+                    }
+                }
+            }
+            foreach (ref readonly var pocket in _geometry.Pockets)
+            {
+                if ((b.Position - pocket.Centre).XY.LengthSquared < pocket.Radius * pocket.Radius)
+                {
+                    b.Velocity = Vec3.Zero;
+                    b.Spin = Vec3.Zero;
+                    b.State = MotionState.Pocketed;
+                    b.Pocket = pocket.Pocket;
+                    _log.Add(new SimEvent(time, EventKind.BallPocket, _ids[i], _ids[i], pocket.Pocket, 0));
+                    break;
+                }
+            }
+        }
+    }
+
+    private void Cushion(ref BallState b, int i, Vec3 normal, int feature, double approach, double time)
+    {
+        _ballCushion.Resolve(ref b, normal, _geometry.CushionHeight, _params);
+        BallMotion.Classify(ref b, _k);
+        _log.Add(new SimEvent(time, EventKind.BallCushion, _ids[i], _ids[i], feature, approach));
+    }
+}

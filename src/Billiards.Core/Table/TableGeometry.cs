@@ -1,0 +1,195 @@
+using Billiards.Core.Mathematics;
+
+namespace Billiards.Core.Table;
+
+/// <summary>
+/// A straight, one-sided cushion face (a rail's nose line or a pocket jaw) in the bed plane. A
+/// ball touches it when its centre is R from the line on the <see cref="Normal"/> side and the
+/// foot of the perpendicular lies between <see cref="Start"/> and <see cref="End"/>.
+/// </summary>
+/// <param name="Start">One end of the face (m, z = 0).</param>
+/// <param name="End">The other end (m, z = 0).</param>
+/// <param name="Normal">Unit normal in the bed plane, pointing to where the balls are.</param>
+/// <param name="Feature">Index of the cushion's name, <see cref="TableGeometry.CushionNames"/>.</param>
+public readonly record struct CushionSegment(Vec3 Start, Vec3 End, Vec3 Normal, int Feature)
+{
+    /// <summary>Unit direction from <see cref="Start"/> to <see cref="End"/>.</summary>
+    public Vec3 Direction => (End - Start).Normalized();
+
+    /// <summary>Length of the face (m).</summary>
+    public double Length => (End - Start).Length;
+}
+
+/// <summary>
+/// A circular cushion nose (the rounded tip where a rail meets a pocket jaw), as a vertical
+/// cylinder; a ball touches it when its centre is R + <see cref="Radius"/> from the axis.
+/// </summary>
+/// <param name="Centre">Axis of the nose in the bed plane (m, z = 0).</param>
+/// <param name="Radius">Radius of the nose (m).</param>
+/// <param name="Feature">Index of the name of the jaw it rounds off.</param>
+public readonly record struct CushionNose(Vec3 Centre, double Radius, int Feature);
+
+/// <summary>
+/// A pocket's capture circle: a ball is pocketed when its centre enters it.
+/// </summary>
+/// <param name="Centre">Centre (m, z = 0).</param>
+/// <param name="Radius">Radius (m).</param>
+/// <param name="Pocket">Index of the pocket's name, <see cref="TableGeometry.PocketNames"/>.</param>
+public readonly record struct PocketCircle(Vec3 Centre, double Radius, int Pocket);
+
+/// <summary>
+/// The collision geometry of a table, built from its <see cref="TableSpec"/>: cushion faces, jaw
+/// faces, jaw noses and pocket capture circles, with the names results use. Coordinates as in
+/// scene-format.md: origin at the bed's centre, +x towards the foot rail, +y to the left.
+/// </summary>
+/// <remarks>
+/// Pockets (physics-standard-model.md, WPA): the mouth is measured between the points where the
+/// rail's nose line meets the jaw's face. Each jaw leaves the rail at the WPA jaw angle (142 deg
+/// corner, 104 deg side, measured through the cushion rubber), so the jaws converge towards the
+/// back of the pocket. The sharp corner is rounded by a nose of <see cref="NoseRadius"/>. The
+/// capture circle of radius R sits R behind the middle of the mouth line: a ball is pocketed once
+/// its centre is past the mouth line and more than half of it hangs over the hole, or it rattles
+/// off a jaw first.
+/// </remarks>
+public sealed class TableGeometry
+{
+    /// <summary>Radius of the rounded jaw tips (m).</summary>
+    public const double NoseRadius = 0.005;
+
+    /// <summary>Length of a jaw face from the rail into the pocket (m).</summary>
+    public const double JawLength = 0.1;
+
+    /// <summary>The pockets' names, by pocket index.</summary>
+    public static IReadOnlyList<string> PocketNames { get; } =
+        ["head-left", "head-right", "side-left", "side-right", "foot-left", "foot-right"];
+
+    private readonly CushionSegment[] _segments;
+    private readonly CushionNose[] _noses;
+    private readonly PocketCircle[] _pockets;
+    private readonly string[] _cushionNames;
+
+    private TableGeometry(TableSpec spec, List<CushionSegment> segments, List<CushionNose> noses, List<PocketCircle> pockets, List<string> names)
+    {
+        Spec = spec;
+        _segments = [.. segments];
+        _noses = [.. noses];
+        _pockets = [.. pockets];
+        _cushionNames = [.. names];
+    }
+
+    /// <summary>The table this geometry was built from.</summary>
+    public TableSpec Spec { get; }
+
+    /// <summary>Height of the cushion's contact point above the bed (m).</summary>
+    public double CushionHeight => Spec.CushionHeight;
+
+    /// <summary>The straight faces: the six rail cushions, then the jaws.</summary>
+    public ReadOnlySpan<CushionSegment> Segments => _segments;
+
+    /// <summary>The rounded jaw tips.</summary>
+    public ReadOnlySpan<CushionNose> Noses => _noses;
+
+    /// <summary>The pockets' capture circles (empty for a pocketless table).</summary>
+    public ReadOnlySpan<PocketCircle> Pockets => _pockets;
+
+    /// <summary>Names of cushions and jaws, by feature index: "head", "foot", "left-head", ..., "foot-left-jaw-foot".</summary>
+    public IReadOnlyList<string> CushionNames => _cushionNames;
+
+    /// <summary>The name of a cushion or jaw feature, or "?" for an unknown index.</summary>
+    public string CushionName(int feature) => (uint)feature < (uint)_cushionNames.Length ? _cushionNames[feature] : "?";
+
+    /// <summary>The name of a pocket, or "?" for an unknown index.</summary>
+    public static string PocketName(int pocket) => (uint)pocket < (uint)PocketNames.Count ? PocketNames[pocket] : "?";
+
+    /// <summary>Builds the geometry of a table for balls of radius <paramref name="ballRadius"/> (m).</summary>
+    public static TableGeometry Build(TableSpec spec, double ballRadius)
+    {
+        double hx = spec.HalfLength;
+        double hy = spec.HalfWidth;
+        var segments = new List<CushionSegment>();
+        var noses = new List<CushionNose>();
+        var pockets = new List<PocketCircle>();
+        var names = new List<string> { "head", "foot", "left-head", "left-foot", "right-head", "right-foot" };
+
+        // How far each rail stops short of the corner and of the middle of a long rail.
+        double corner = spec.HasPockets ? spec.CornerPocketMouth / Math.Sqrt(2) : 0;
+        double side = spec.HasPockets ? spec.SidePocketMouth / 2 : 0;
+
+        // Rail faces, walked so that each runs from its head or right end to its foot or left end.
+        var rails = new (Vec3 A, Vec3 B, Vec3 N)[]
+        {
+            (new Vec3(-hx, -hy + corner, 0), new Vec3(-hx, hy - corner, 0), new Vec3(1, 0, 0)),   // head
+            (new Vec3(hx, -hy + corner, 0), new Vec3(hx, hy - corner, 0), new Vec3(-1, 0, 0)),    // foot
+            (new Vec3(-hx + corner, hy, 0), new Vec3(-side, hy, 0), new Vec3(0, -1, 0)),          // left-head
+            (new Vec3(side, hy, 0), new Vec3(hx - corner, hy, 0), new Vec3(0, -1, 0)),            // left-foot
+            (new Vec3(-hx + corner, -hy, 0), new Vec3(-side, -hy, 0), new Vec3(0, 1, 0)),         // right-head
+            (new Vec3(side, -hy, 0), new Vec3(hx - corner, -hy, 0), new Vec3(0, 1, 0)),           // right-foot
+        };
+        if (!spec.HasPockets)
+        {
+            for (int i = 0; i < rails.Length; i++)
+            {
+                segments.Add(new CushionSegment(rails[i].A, rails[i].B, rails[i].N, i));
+            }
+            return new TableGeometry(spec, segments, noses, pockets, names);
+        }
+
+        // Each rail end at a pocket: (rail, which end, pocket, rail word of the jaw name).
+        var ends = new (int Rail, bool AtB, int Pocket, string RailWord)[]
+        {
+            (0, true, 0, "head"), (0, false, 1, "head"),
+            (1, true, 4, "foot"), (1, false, 5, "foot"),
+            (2, false, 0, "left"), (2, true, 2, "head"),
+            (3, false, 2, "foot"), (3, true, 4, "left"),
+            (4, false, 1, "right"), (4, true, 3, "head"),
+            (5, false, 3, "foot"), (5, true, 5, "right"),
+        };
+        var trimmed = rails.Select(r => (r.A, r.B)).ToArray();
+        foreach (var (rail, atB, pocket, railWord) in ends)
+        {
+            var (a, b, nIn) = rails[rail];
+            var tip = atB ? b : a;
+            var back = ((atB ? a : b) - tip).Normalized(); // along the rail, away from the pocket
+            bool isSide = pocket is 2 or 3;
+            double angle = (isSide ? spec.SideJawAngleDeg : spec.CornerJawAngleDeg) * Math.PI / 180;
+            // The jaw turns from the rail through the cushion body (away from the balls) by the
+            // jaw angle measured from the direction back along the rail.
+            var jaw = back * Math.Cos(angle) - nIn * Math.Sin(angle);
+            // Its face looks to the same side of the boundary as the rail's face does.
+            var walk = -back;
+            bool leftHanded = walk.X * nIn.Y - walk.Y * nIn.X > 0;
+            var jawNormal = leftHanded ? new Vec3(-jaw.Y, jaw.X, 0) : new Vec3(jaw.Y, -jaw.X, 0);
+
+            // Round the corner with a nose tangent to both faces, inside the cushion body.
+            double tangent = NoseRadius / Math.Tan(angle / 2);
+            var bisector = (back + jaw).Normalized();
+            var noseCentre = tip + bisector * (NoseRadius / Math.Sin(angle / 2));
+            int feature = names.Count;
+            names.Add($"{PocketNames[pocket]}-jaw-{railWord}");
+            noses.Add(new CushionNose(noseCentre, NoseRadius, feature));
+            segments.Add(new CushionSegment(tip + jaw * tangent, tip + jaw * JawLength, jawNormal, feature));
+            var rt = trimmed[rail];
+            trimmed[rail] = atB ? (rt.A, tip + back * tangent) : (tip + back * tangent, rt.B);
+        }
+        for (int i = 0; i < rails.Length; i++)
+        {
+            segments.Insert(i, new CushionSegment(trimmed[i].A, trimmed[i].B, rails[i].N, i));
+        }
+
+        // Capture circles: R behind the middle of each mouth line, radius R.
+        var mouths = new (Vec3 Middle, Vec3 Out)[]
+        {
+            (new Vec3(-hx + corner / 2, hy - corner / 2, 0), new Vec3(-1, 1, 0).Normalized()),
+            (new Vec3(-hx + corner / 2, -hy + corner / 2, 0), new Vec3(-1, -1, 0).Normalized()),
+            (new Vec3(0, hy, 0), new Vec3(0, 1, 0)),
+            (new Vec3(0, -hy, 0), new Vec3(0, -1, 0)),
+            (new Vec3(hx - corner / 2, hy - corner / 2, 0), new Vec3(1, 1, 0).Normalized()),
+            (new Vec3(hx - corner / 2, -hy + corner / 2, 0), new Vec3(1, -1, 0).Normalized()),
+        };
+        for (int i = 0; i < mouths.Length; i++)
+        {
+            pockets.Add(new PocketCircle(mouths[i].Middle + mouths[i].Out * ballRadius, ballRadius, i));
+        }
+        return new TableGeometry(spec, segments, noses, pockets, names);
+    }
+}
