@@ -99,11 +99,16 @@ public sealed class EulerStepper
                     var uHat = u.Normalized();
                     var a = uHat * -_k.SlidingDeceleration;
                     double alpha = 2.5 * _k.SlidingDeceleration / r;
+                    var v0 = b.Velocity;
                     b.Position += b.Velocity * dt;
                     b.Velocity += a * dt;
                     b.Spin = new Vec3(b.Spin.X - alpha * uHat.Y * dt, b.Spin.Y + alpha * uHat.X * dt, b.Spin.Z);
                     if (Vec3.Dot(BallMotion.Slip(b, r), u) <= 0)
                     {
+                        // The slip would reverse inside the step: friction only ever brings it to
+                        // zero, where the ball rolls at v0 - 2/7 u0 (the slip law). Without this a
+                        // step longer than the sliding phase reverses the ball and adds energy.
+                        b.Velocity = v0 - u * (2.0 / 7.0);
                         BallMotion.EndState(ref b, _k);
                     }
                     break;
@@ -162,6 +167,11 @@ public sealed class EulerStepper
                     continue;
                 }
                 _ballBall.Resolve(ref a, ref b, _params);
+                // Overlap detection finds balls inside each other: put them back in touch, half
+                // each along the line of centres (as the thesis model's Formel 11 does).
+                var correction = n * (0.5 * (2 * r - d.Length));
+                a.Position -= correction;
+                b.Position += correction;
                 BallMotion.Classify(ref a, _k);
                 BallMotion.Classify(ref b, _k);
                 _log.Add(new SimEvent(time, EventKind.BallBall, _ids[i], _ids[j], -1, approach));
@@ -186,6 +196,7 @@ public sealed class EulerStepper
                 // line of a neighbouring cushion, from being caught by it.
                 if (gap < 0 && gap > -r - approach * dt && along >= 0 && along <= s.Length && approach > 0)
                 {
+                    b.Position -= s.Normal * gap; // back onto the face
                     Cushion(ref b, i, s.Normal, s.Feature, approach, time);
                 }
             }
@@ -199,6 +210,8 @@ public sealed class EulerStepper
                     double approach = -Vec3.Dot(b.Velocity, n);
                     if (approach > 0)
                     {
+                        var touching = nose.Centre + n * reach;
+                        b.Position = new Vec3(touching.X, touching.Y, b.Position.Z);
                         Cushion(ref b, i, n, nose.Feature, approach, time);
                     }
                 }

@@ -39,13 +39,23 @@ public sealed class EventEngine
     public const int MaxEventsPerInstant = 64;
 
     /// <summary>
-    /// Smallest normal separation speed after any collision (m/s). A ballistic contact cannot
-    /// represent balls pushing each other (a sliding cue ball following its object ball, a ball
-    /// sliding along a rail): resolved as collisions they chatter with ever smaller gaps (inelastic
-    /// collapse, Zeno). Like the TC model of McNamara and Luding (1998) we make such contacts
-    /// separate at this small speed; the energy it may add, m (5 mm/s)^2 / 4, is negligible.
+    /// Contact duration of the TC model (s). A ballistic contact cannot represent balls pushing
+    /// each other (a sliding cue ball driving its object ball, a ball driven along a rail by its
+    /// spin): resolved as inelastic collisions they chatter with ever smaller gaps and speeds
+    /// (inelastic collapse, a Zeno point), and a contact met with no approach speed at all would
+    /// be missed and the balls would overlap. Following McNamara and Luding (1998), a contact of the
+    /// same two bodies again within this time is a repeat: it is resolved elastically (e = 1) in
+    /// the normal direction and leaves at no less than <see cref="RepeatSeparationSpeed"/>.
+    /// First contacts keep e_b and e_c exactly.
     /// </summary>
-    public const double MinSeparationSpeed = 0.005;
+    public const double ContactDuration = 1e-3;
+
+    /// <summary>
+    /// Smallest normal separation speed after a repeat contact (m/s): pushing contacts then
+    /// re-touch at most every few milliseconds. The energy this may add is at most m (5 mm/s)^2 / 4
+    /// = 1.1e-6 J per repeat, and only ever in a pushing contact.
+    /// </summary>
+    public const double RepeatSeparationSpeed = 0.005;
 
     // Longest look-ahead (s) when no friction would ever end a state.
     private const double MaxHorizon = 1e4;
@@ -79,6 +89,12 @@ public sealed class EventEngine
     private readonly double[] _pairTime; // [i * n + j], i < j
     private readonly (double X0, double Y0, double X1, double Y1)[] _pathBox;
     private readonly Vec3[] _accel;
+
+    // The TC model's memory: each ball's last contact partner (a ball index, or _n + cushion
+    // feature) and its time; and the parameters with elastic restitution for repeat contacts.
+    private readonly int[] _lastPartner;
+    private readonly double[] _lastContactTime;
+    private readonly PhysicsParams _elastic;
 
     private double _lastEventTime = double.NaN;
     private int _eventsThisInstant;
@@ -135,6 +151,10 @@ public sealed class EventEngine
         _pairTime = new double[_n * _n];
         _pathBox = new (double, double, double, double)[_n];
         _accel = new Vec3[_n];
+        _lastPartner = new int[_n];
+        _lastContactTime = new double[_n];
+        _elastic = parameters with { EB = 1, EC = 1 };
+        ForgetContacts();
         _pairTime.AsSpan().Fill(double.PositiveInfinity);
         for (int i = 0; i < _n; i++)
         {
@@ -178,6 +198,7 @@ public sealed class EventEngine
         EventCapHits = 0;
         _lastEventTime = double.NaN;
         _eventsThisInstant = 0;
+        ForgetContacts();
         _pairTime.AsSpan().Fill(double.PositiveInfinity);
         for (int i = 0; i < _n; i++)
         {
@@ -315,14 +336,17 @@ public sealed class EventEngine
         ref var b = ref _balls[j];
         var n = (b.Position - a.Position).XY.Normalized();
         double approach = Vec3.Dot(a.Velocity - b.Velocity, n);
-        _ballBall.Resolve(ref a, ref b, _params);
+        bool repeat = IsRepeat(i, j) || IsRepeat(j, i);
+        _ballBall.Resolve(ref a, ref b, repeat ? _elastic : _params);
         double separation = Vec3.Dot(b.Velocity - a.Velocity, n);
-        if (separation < MinSeparationSpeed)
+        if (repeat && separation < RepeatSeparationSpeed)
         {
-            var push = n * (0.5 * (MinSeparationSpeed - separation));
+            var push = n * (0.5 * (RepeatSeparationSpeed - separation));
             a.Velocity -= push;
             b.Velocity += push;
         }
+        Remember(i, j);
+        Remember(j, i);
         BallMotion.Classify(ref a, _k);
         BallMotion.Classify(ref b, _k);
         _log.Add(new SimEvent(Time, EventKind.BallBall, _ids[i], _ids[j], -1, approach));
@@ -334,15 +358,32 @@ public sealed class EventEngine
     {
         ref var ball = ref _balls[i];
         double approach = -Vec3.Dot(ball.Velocity, normal);
-        _ballCushion.Resolve(ref ball, normal, _geometry.CushionHeight, _params);
+        bool repeat = IsRepeat(i, _n + feature);
+        _ballCushion.Resolve(ref ball, normal, _geometry.CushionHeight, repeat ? _elastic : _params);
         double separation = Vec3.Dot(ball.Velocity, normal);
-        if (separation < MinSeparationSpeed)
+        if (repeat && separation < RepeatSeparationSpeed)
         {
-            ball.Velocity += normal * (MinSeparationSpeed - separation);
+            ball.Velocity += normal * (RepeatSeparationSpeed - separation);
         }
+        Remember(i, _n + feature);
         BallMotion.Classify(ref ball, _k);
         _log.Add(new SimEvent(Time, EventKind.BallCushion, _ids[i], _ids[i], feature, approach));
         Repredict(i);
+    }
+
+    private bool IsRepeat(int ball, int partner) =>
+        _lastPartner[ball] == partner && Time - _lastContactTime[ball] < ContactDuration;
+
+    private void Remember(int ball, int partner)
+    {
+        _lastPartner[ball] = partner;
+        _lastContactTime[ball] = Time;
+    }
+
+    private void ForgetContacts()
+    {
+        _lastPartner.AsSpan().Fill(-1);
+        _lastContactTime.AsSpan().Fill(double.NegativeInfinity);
     }
 
     private void Pocket(int i, int pocket)
