@@ -22,36 +22,56 @@ public static class SceneFrames
             {
                 frame.Balls.Add(new BallVisual(ball.Id, ToVector(ball.Position), RestingOrientation(ball.Id)));
             }
-            if (scene.Shot is { } shot && scene.Balls.FirstOrDefault(b => b.Id.IsCue) is { } cueBall)
+            if (scene.Balls.FirstOrDefault(b => b.Id.IsCue) is { } cueBall)
             {
-                float aim = (float)(shot.AimDeg * Math.PI / 180);
-                frame.Cue = new CueVisual(true, ToVector(cueBall.Position), new Vector3(MathF.Cos(aim), MathF.Sin(aim), 0),
-                    (float)shot.ElevationDeg, 0.06f, new Vector2((float)shot.TipSide, (float)shot.TipHeight));
+                var centre = ToVector(cueBall.Position);
+                frame.Cue = scene.Shot is { } shot
+                    ? new CueVisual(true, centre, AimOf(shot.AimDeg), (float)shot.ElevationDeg, 0.06f, new Vector2((float)shot.TipSide, (float)shot.TipHeight))
+                    : AddressingCue(frame, centre);
             }
             return frame;
         }
-        Billiards.Core.Physics.Simulation simulation;
-        try
+        var simulation = SimulationFactory.Create(scene);
+        simulation.TrackOrientation = true;
+        if (scene.Shot is { } s)
         {
-            simulation = SimulationFactory.Create(scene);
-            simulation.TrackOrientation = true;
-            if (scene.Shot is { } s)
-            {
-                simulation.Strike(s);
-            }
-            simulation.AdvanceTo(time);
+            simulation.Strike(s);
         }
-        catch (NotImplementedException)
-        {
-            throw new Cli.CliException($"--at {time}: the '{scene.Physics.Model}' physics model cannot simulate yet");
-        }
+        simulation.AdvanceTo(time);
         var states = simulation.Balls;
         for (int i = 0; i < states.Length; i++)
         {
             var state = states[i];
             frame.Balls.Add(new BallVisual(simulation.Ids[i], ToVector(state.Position), state.Orientation, !state.IsPocketed));
         }
+        // As in the game, the cue is back, addressing the cue ball, once every ball rests.
+        int cue = simulation.IndexOf(BallId.Cue);
+        if (simulation.IsAtRest && cue >= 0 && !states[cue].IsPocketed)
+        {
+            frame.Cue = AddressingCue(frame, ToVector(states[cue].Position));
+        }
         return frame;
+    }
+
+    /// <summary>Elevation of a cue that addresses the ball before a shot is chosen (deg): clear of the rail.</summary>
+    public const float AddressElevationDegrees = 5;
+
+    /// <summary>
+    /// The cue addressing the cue ball along the view, as the seed aims it (direction = ball - camera
+    /// in the bed plane), a little raised and pulled back, hitting the centre.
+    /// </summary>
+    public static CueVisual AddressingCue(RenderFrame frame, Vector3 cueBall)
+    {
+        var along = cueBall - frame.Eye;
+        along.Z = 0;
+        var aim = along.LengthSquared() > 1e-12f ? Vector3.Normalize(along) : Vector3.UnitX;
+        return new CueVisual(true, cueBall, aim, AddressElevationDegrees, 0.06f, Vector2.Zero);
+    }
+
+    private static Vector3 AimOf(double aimDeg)
+    {
+        float aim = (float)(aimDeg * Math.PI / 180);
+        return new Vector3(MathF.Cos(aim), MathF.Sin(aim), 0);
     }
 
     /// <summary>
