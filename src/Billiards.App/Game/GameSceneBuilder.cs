@@ -27,7 +27,7 @@ public static class GameSceneBuilder
     public static GameWorld Build(Scene scene, Func<Scene, Simulation> createSimulation)
     {
         var root = new Node("Game");
-        root.AddChild(new TableNode(scene.Table));
+        root.AddChild(new TableNode(scene));
         var physics = root.AddChild(new PhysicsNode(scene, createSimulation));
         var loop = new FixedStepLoop(physics.Simulation.Dt);
         root.AddChild(new CameraNode());

@@ -199,8 +199,11 @@ internal sealed class TestGame : IDisposable
     {
         Window = new FakeWindow();
         Clock = new ManualClock();
-        Host = new GameHost(scene ?? TestScenes.TwoBalls(), s => Simulation = new FakeSimulation(s), Window, Clock);
+        Scene = scene ?? TestScenes.TwoBalls();
+        Host = new GameHost(Scene, s => Simulation = new FakeSimulation(s), Window, Clock);
     }
+
+    public Scene Scene { get; }
 
     public FakeWindow Window { get; }
 
