@@ -77,14 +77,20 @@ public sealed class EulerStepper
     /// <summary>One explicit Euler step of <paramref name="dt"/> seconds ending at <paramref name="timeAfter"/>.</summary>
     public void Step(double dt, double timeAfter)
     {
+        bool translating = false;
         for (int i = 0; i < _balls.Length; i++)
         {
             if (BallMotion.IsActive(_balls[i].State))
             {
                 Integrate(ref _balls[i], dt);
+                translating |= BallMotion.Translates(_balls[i].State);
             }
         }
-        DetectAndResolve(timeAfter);
+        // Every contact needs a ball that moves (a resting or spinning pair never overlaps anew).
+        if (translating)
+        {
+            DetectAndResolve(timeAfter);
+        }
     }
 
     private void Integrate(ref BallState b, double dt)

@@ -109,9 +109,12 @@ public sealed class StandardSimulation : Simulation
         }
         else
         {
-            _euler!.TrackOrientation = TrackOrientation;
             Time += Dt;
-            _euler.Step(Dt, Time);
+            if (!_euler!.IsAtRest)
+            {
+                _euler.TrackOrientation = TrackOrientation;
+                _euler.Step(Dt, Time);
+            }
         }
         StepCount++;
     }
