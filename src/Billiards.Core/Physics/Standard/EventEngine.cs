@@ -703,6 +703,9 @@ public sealed class EventEngine
                     best = t;
                     _railKind[i] = Kind.Segment;
                     _railIndex[i] = s;
+                    // Nothing after the first contact matters: look no further than it.
+                    horizon = t;
+                    box = PathBox(b.Position, b.Velocity, acc, horizon);
                 }
             }
         }
@@ -721,6 +724,8 @@ public sealed class EventEngine
                 best = t;
                 _railKind[i] = Kind.Nose;
                 _railIndex[i] = s;
+                horizon = t;
+                box = PathBox(b.Position, b.Velocity, acc, horizon);
             }
         }
         var pockets = _geometry.Pockets;
