@@ -535,7 +535,7 @@ public sealed class EventEngine
         double dt = Time - _baseTime[i];
         if (dt > 0 && BallMotion.IsActive(_balls[i].State))
         {
-            BallMotion.Advance(ref _balls[i], dt, _k, TrackOrientation);
+            BallMotion.Advance(ref _balls[i], dt, _k, TrackOrientation, _accel[i]);
         }
         _baseTime[i] = Time;
     }
