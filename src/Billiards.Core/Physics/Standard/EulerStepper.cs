@@ -184,10 +184,14 @@ public sealed class EulerStepper
             foreach (ref readonly var s in _geometry.Segments)
             {
                 double gap = Vec3.Dot(s.Normal, b.Position - s.Start) - r;
+                if (!(gap < 0 && gap > -r))
+                {
+                    continue; // the common case: not overlapping this face's line (no square root spent)
+                }
                 double along = Vec3.Dot(b.Position - s.Start, s.Direction);
                 double approach = -Vec3.Dot(b.Velocity, s.Normal);
                 // Overlapping, on the face, in front of its back half, and approaching.
-                if (gap < 0 && gap > -r && along >= 0 && along <= s.Length && approach > 0)
+                if (along >= 0 && along <= s.Length && approach > 0)
                 {
                     Cushion(ref b, i, s.Normal, s.Feature, approach, time);
                 }
