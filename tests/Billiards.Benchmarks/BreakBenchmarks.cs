@@ -11,6 +11,7 @@ namespace Billiards.Benchmarks;
 /// and with the event-based solver.
 /// </summary>
 [MemoryDiagnoser]
+[MedianColumn]
 public class BreakBenchmarks
 {
     private Simulation _eight = null!;

@@ -9,6 +9,7 @@ namespace Billiards.Benchmarks;
 /// density stays that of 16 balls on a 9 ft table: a broad phase keeps the cost near linear.
 /// </summary>
 [MemoryDiagnoser]
+[MedianColumn]
 public class ScalingBenchmarks
 {
     private const int StepsPerInvoke = 4;

@@ -10,6 +10,7 @@ namespace Billiards.Benchmarks;
 /// copy of 16 states) is shared by 16 steps and the balls never run down.
 /// </summary>
 [MemoryDiagnoser]
+[MedianColumn]
 public class StepBenchmarks
 {
     private const int StepsPerInvoke = 16;

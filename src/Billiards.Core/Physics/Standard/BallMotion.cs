@@ -139,7 +139,15 @@ public static class BallMotion
     /// not end before then (the engine stops at state transitions). Spin about z decays to zero
     /// and then stays there. Integrates the orientation when <paramref name="trackOrientation"/>.
     /// </summary>
-    public static void Advance(ref BallState b, double dt, in MotionConstants k, bool trackOrientation)
+    public static void Advance(ref BallState b, double dt, in MotionConstants k, bool trackOrientation) =>
+        Advance(ref b, dt, k, trackOrientation, Acceleration(b, k));
+
+    /// <summary>
+    /// As <see cref="Advance(ref BallState, double, in MotionConstants, bool)"/>, with the state's
+    /// acceleration already known (<see cref="Acceleration"/> when the state began, constant until
+    /// it ends): no square root or normalisation per call, which is what a fixed step costs.
+    /// </summary>
+    public static void Advance(ref BallState b, double dt, in MotionConstants k, bool trackOrientation, Vec3 acceleration)
     {
         if (dt <= 0)
         {
@@ -150,37 +158,18 @@ public static class BallMotion
         {
             case MotionState.Sliding:
                 {
-                    var u = Slip(b, k.R);
-                    double s = u.LengthXY;
-                    if (s > 0)
-                    {
-                        var uHat = u / s;
-                        var a = uHat * -k.SlidingDeceleration;
-                        b.Position += b.Velocity * dt + a * (0.5 * dt * dt);
-                        b.Velocity += a * dt;
-                        // dw_xy/dt = (5 mu_s g / 2R) (z x u_hat), z x u_hat = (-u_y, u_x).
-                        double alpha = 2.5 * k.SlidingDeceleration / k.R * dt;
-                        b.Spin = new Vec3(b.Spin.X - alpha * uHat.Y, b.Spin.Y + alpha * uHat.X, b.Spin.Z);
-                    }
-                    else
-                    {
-                        b.Position += b.Velocity * dt;
-                    }
+                    b.Position += b.Velocity * dt + acceleration * (0.5 * dt * dt);
+                    b.Velocity += acceleration * dt;
+                    // dw_xy/dt = (5 mu_s g / 2R) (z x u_hat) with a = -mu_s g u_hat: (5 / 2R) (a_y, -a_x).
+                    double alpha = 2.5 / k.R * dt;
+                    b.Spin = new Vec3(b.Spin.X + alpha * acceleration.Y, b.Spin.Y - alpha * acceleration.X, b.Spin.Z);
                     break;
                 }
             case MotionState.Rolling:
-                {
-                    double s = b.Velocity.LengthXY;
-                    if (s > 0)
-                    {
-                        var vHat = b.Velocity / s;
-                        double d = k.RollingDeceleration;
-                        b.Position += b.Velocity * dt - vHat * (0.5 * d * dt * dt);
-                        b.Velocity -= vHat * (d * dt);
-                        b.Spin = new Vec3(-b.Velocity.Y / k.R, b.Velocity.X / k.R, b.Spin.Z);
-                    }
-                    break;
-                }
+                b.Position += b.Velocity * dt + acceleration * (0.5 * dt * dt);
+                b.Velocity += acceleration * dt;
+                b.Spin = new Vec3(-b.Velocity.Y / k.R, b.Velocity.X / k.R, b.Spin.Z);
+                break;
             case MotionState.Spinning:
                 break;
             default:

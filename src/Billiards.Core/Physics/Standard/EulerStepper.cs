@@ -77,14 +77,20 @@ public sealed class EulerStepper
     /// <summary>One explicit Euler step of <paramref name="dt"/> seconds ending at <paramref name="timeAfter"/>.</summary>
     public void Step(double dt, double timeAfter)
     {
+        bool translating = false;
         for (int i = 0; i < _balls.Length; i++)
         {
             if (BallMotion.IsActive(_balls[i].State))
             {
                 Integrate(ref _balls[i], dt);
+                translating |= BallMotion.Translates(_balls[i].State);
             }
         }
-        DetectAndResolve(dt, timeAfter);
+        // Every contact needs a ball that moves (a resting or spinning pair never overlaps anew).
+        if (translating)
+        {
+            DetectAndResolve(dt, timeAfter);
+        }
     }
 
     private void Integrate(ref BallState b, double dt)
@@ -188,13 +194,17 @@ public sealed class EulerStepper
             foreach (ref readonly var s in _geometry.Segments)
             {
                 double gap = Vec3.Dot(s.Normal, b.Position - s.Start) - r;
+                if (gap >= 0)
+                {
+                    continue; // the common case: not overlapping this face's line
+                }
                 double along = Vec3.Dot(b.Position - s.Start, s.Direction);
                 double approach = -Vec3.Dot(b.Velocity, s.Normal);
                 // Overlapping, on the face, approaching, and no deeper than this step's travel could
                 // take a ball that was in front of the face: a long step must not let a fast ball
                 // through the cushion, and the bound keeps balls in a pocket's mouth, behind the
                 // line of a neighbouring cushion, from being caught by it.
-                if (gap < 0 && gap > -r - approach * dt && along >= 0 && along <= s.Length && approach > 0)
+                if (gap > -r - approach * dt && along >= 0 && along <= s.Length && approach > 0)
                 {
                     b.Position -= s.Normal * gap; // back onto the face
                     Cushion(ref b, i, s.Normal, s.Feature, approach, time);

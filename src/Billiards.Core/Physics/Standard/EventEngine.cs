@@ -18,9 +18,20 @@
 // only difference is that "exact" re-bases the quadratics at step boundaries, so they agree to
 // round-off at every dt, and no contact can be stepped over whatever dt is.
 //
-// Cost: a step without events only advances the active balls in closed form; predictions are made
-// once per change of a ball, not per step, and an axis-aligned box around each ball's path until
-// its state ends is a broad phase that keeps far pairs and far cushions from the root solver.
+// Cost (what keeps a step at what the scene needs):
+//   - Balls are advanced lazily: each keeps the time its state refers to, and is brought forward
+//     in closed form only when an event involves it, a prediction needs it, or a step ends (only
+//     the active balls then: resting and pocketed balls are never touched).
+//   - Each ball keeps its earliest prediction (time, then rank transition < rail < pair, then ball
+//     indices: the deterministic tie order both integrators share) in an indexed binary min-heap,
+//     so finding the next event is O(1) and a change costs O(log n). Finite pair predictions are
+//     stored sparsely with both balls (no n x n matrix); when a ball changes, its pairs are dropped
+//     and only the partners whose earliest event that was are re-keyed.
+//   - Broad phase: a uniform grid in which each ball is listed under the cells of its pair window
+//     box, the box around its path until the window ends; only balls sharing a cell are solved.
+//     The window ends at the state's end, and on large tables (more than SmallTable balls) also
+//     after about one cell of travel, when a "refresh" (rank after pairs, not an event, no state
+//     change) predicts that ball's pairs one window further. Small tables use one cell.
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics.Collisions;
@@ -64,6 +75,23 @@ public sealed class EventEngine
     // for squared gaps): a few ulps of table coordinates, far less than anything physical.
     private const double OverlapTolerance = 1e-9;
 
+    // Up to this many balls the grid is one cell and pairs look ahead to the end of the states:
+    // every pair is a candidate anyway, and refreshes would only add work.
+    private const int SmallTable = 32;
+
+    // Balls per grid cell aimed at on larger tables (the cell is also the look-ahead distance).
+    private const double BallsPerCell = 2;
+
+    // Shortest pair look-ahead (s), so that a refresh always moves the clock on.
+    private const double MinWindow = 1e-6;
+
+    // Tie order of simultaneous predictions: transitions, rails, pairs, then look-ahead refreshes
+    // (which change no state), each in ball index order.
+    private const byte RankTransition = 0;
+    private const byte RankRail = 1;
+    private const byte RankPair = 2;
+    private const byte RankRefresh = 3;
+
     private enum Kind : byte { None, Transition, Segment, Nose, Pocket, Pair }
 
     private readonly BallState[] _balls;
@@ -81,13 +109,14 @@ public sealed class EventEngine
     private readonly (double X0, double Y0, double X1, double Y1)[] _noseBoxes;
     private readonly (double X0, double Y0, double X1, double Y1)[] _pocketBoxes;
 
-    // Predictions, in absolute time.
+    // Per ball: the time its state refers to (balls are advanced lazily, when something needs them).
+    private readonly double[] _baseTime;
+
+    // Per ball predictions, in absolute time.
     private readonly double[] _transitionTime;
     private readonly double[] _railTime;
     private readonly Kind[] _railKind;
     private readonly int[] _railIndex;
-    private readonly double[] _pairTime; // [i * n + j], i < j
-    private readonly (double X0, double Y0, double X1, double Y1)[] _pathBox;
     private readonly Vec3[] _accel;
 
     // The TC model's memory: each ball's last contact partner (a ball index, or _n + cushion
@@ -95,6 +124,45 @@ public sealed class EventEngine
     private readonly int[] _lastPartner;
     private readonly double[] _lastContactTime;
     private readonly PhysicsParams _elastic;
+
+    // Per ball pair look-ahead: pairs are predicted until _windowEnd (the state's end, or the
+    // refresh time _refreshTime when the path is cut to about one grid cell); _windowBox bounds
+    // the path until then.
+    private readonly double[] _windowEnd;
+    private readonly double[] _refreshTime;
+    private readonly (double X0, double Y0, double X1, double Y1)[] _windowBox;
+
+    // Finite pair predictions, stored with both balls: partner and absolute time.
+    private readonly int[][] _pairPartner;
+    private readonly double[][] _pairAt;
+    private readonly int[] _pairCount;
+
+    // Each ball's earliest prediction (time, rank, a, b), and a binary min-heap of the balls on it.
+    private readonly double[] _keyTime;
+    private readonly byte[] _keyRank;
+    private readonly int[] _keyA;
+    private readonly int[] _keyB;
+    private readonly int[] _heap;
+    private readonly int[] _heapPos;
+
+    // Balls sliding, rolling or spinning, in no particular order.
+    private readonly int[] _active;
+    private readonly int[] _activePos;
+
+    // Uniform grid over the table: each ball is listed in the cells its pair window box (grown by
+    // R) touches; two balls can only meet if they share a cell.
+    private readonly double _gridX0;
+    private readonly double _gridY0;
+    private readonly double _invCell;
+    private readonly int _nx;
+    private readonly int _ny;
+    private readonly double _lookAhead;
+    private readonly int[][] _cells;
+    private readonly int[] _cellCount;
+    private readonly (int X0, int Y0, int X1, int Y1)[] _cellRect;
+    private readonly int[] _stamp;
+    private readonly int[] _candidates;
+    private int _stampValue;
 
     private double _lastEventTime = double.NaN;
     private int _eventsThisInstant;
@@ -144,22 +212,66 @@ public sealed class EventEngine
             _pocketBoxes[s] = (pockets[s].Centre.X - e, pockets[s].Centre.Y - e, pockets[s].Centre.X + e, pockets[s].Centre.Y + e);
         }
 
+        _baseTime = new double[_n];
         _transitionTime = new double[_n];
         _railTime = new double[_n];
         _railKind = new Kind[_n];
         _railIndex = new int[_n];
-        _pairTime = new double[_n * _n];
-        _pathBox = new (double, double, double, double)[_n];
         _accel = new Vec3[_n];
         _lastPartner = new int[_n];
         _lastContactTime = new double[_n];
         _elastic = parameters with { EB = 1, EC = 1 };
         ForgetContacts();
-        _pairTime.AsSpan().Fill(double.PositiveInfinity);
+        _windowEnd = new double[_n];
+        _refreshTime = new double[_n];
+        _windowBox = new (double, double, double, double)[_n];
+        _pairPartner = new int[_n][];
+        _pairAt = new double[_n][];
+        _pairCount = new int[_n];
         for (int i = 0; i < _n; i++)
         {
-            BallMotion.Classify(ref _balls[i], _k);
+            _pairPartner[i] = new int[4];
+            _pairAt[i] = new double[4];
         }
+        _keyTime = new double[_n];
+        _keyRank = new byte[_n];
+        _keyA = new int[_n];
+        _keyB = new int[_n];
+        _heap = new int[_n];
+        _heapPos = new int[_n];
+        _active = new int[_n];
+        _activePos = new int[_n];
+
+        // The grid covers the bed and a margin for the pockets; anything outside lands in the
+        // border cells (clamping keeps overlapping boxes in shared cells).
+        double halfX = geometry.Spec.HalfLength + 0.25;
+        double halfY = geometry.Spec.HalfWidth + 0.25;
+        if (_n > SmallTable)
+        {
+            double cell = Math.Max(Math.Sqrt(4 * halfX * halfY * BallsPerCell / _n), 8 * r);
+            _nx = Math.Max(1, (int)Math.Ceiling(2 * halfX / cell));
+            _ny = Math.Max(1, (int)Math.Ceiling(2 * halfY / cell));
+            _invCell = 1 / cell;
+            _lookAhead = cell - 2 * r;
+        }
+        else
+        {
+            _nx = 1;
+            _ny = 1;
+            _invCell = 0;
+            _lookAhead = double.PositiveInfinity;
+        }
+        _gridX0 = -halfX;
+        _gridY0 = -halfY;
+        _cells = new int[_nx * _ny][];
+        for (int c = 0; c < _cells.Length; c++)
+        {
+            _cells[c] = new int[_n > SmallTable ? 8 : _n];
+        }
+        _cellCount = new int[_cells.Length];
+        _cellRect = new (int, int, int, int)[_n];
+        _stamp = new int[_n];
+        _candidates = new int[_n];
         PredictAll();
     }
 
@@ -181,8 +293,27 @@ public sealed class EventEngine
     /// <summary>True when no ball moves or spins.</summary>
     public bool IsAtRest => ActiveCount == 0;
 
-    /// <summary>Time of the next event (s), or +infinity when nothing will happen.</summary>
-    public double NextEventTime => FindNext(out _, out _, out _);
+    /// <summary>
+    /// Time of the next event (s) among the current predictions, or +infinity when nothing will
+    /// happen. On large tables pairs are only predicted a short way ahead, so a contact beyond that
+    /// shows up later.
+    /// </summary>
+    public double NextEventTime
+    {
+        get
+        {
+            double best = double.PositiveInfinity;
+            for (int i = 0; i < _n; i++)
+            {
+                best = Math.Min(best, Math.Min(_transitionTime[i], _railTime[i]));
+                for (int p = 0; p < _pairCount[i]; p++)
+                {
+                    best = Math.Min(best, _pairAt[i][p]);
+                }
+            }
+            return best;
+        }
+    }
 
     /// <summary>The model parameters.</summary>
     public PhysicsParams Parameters => _params;
@@ -199,11 +330,6 @@ public sealed class EventEngine
         _lastEventTime = double.NaN;
         _eventsThisInstant = 0;
         ForgetContacts();
-        _pairTime.AsSpan().Fill(double.PositiveInfinity);
-        for (int i = 0; i < _n; i++)
-        {
-            BallMotion.Classify(ref _balls[i], _k);
-        }
         PredictAll();
     }
 
@@ -213,9 +339,10 @@ public sealed class EventEngine
     /// </summary>
     public void BallChanged(int index)
     {
+        _baseTime[index] = Time;
         BallMotion.Classify(ref _balls[index], _k);
         Repredict(index);
-        CountActive();
+        UpdateActive(index);
     }
 
     /// <summary>
@@ -227,16 +354,25 @@ public sealed class EventEngine
     {
         while (ActiveCount > 0)
         {
-            double t = FindNext(out var kind, out int a, out int b);
-            if (t > time)
+            int top = _heap[0];
+            if (_keyTime[top] > time)
             {
                 break;
             }
-            Process(t, kind, a, b);
+            Process(top);
         }
         if (ActiveCount > 0 || !stopAtRest)
         {
-            AdvanceAll(time - Time);
+            Time = time;
+            SyncActive();
+        }
+    }
+
+    /// <summary>Moves the clock of a table at rest to <paramref name="time"/> (s); nothing else changes.</summary>
+    public void IdleTo(double time)
+    {
+        if (ActiveCount == 0)
+        {
             Time = time;
         }
     }
@@ -250,21 +386,37 @@ public sealed class EventEngine
         {
             return;
         }
-        double t = FindNext(out var kind, out int a, out int b);
-        if (double.IsFinite(t))
+        while (double.IsFinite(_keyTime[_heap[0]]))
         {
-            Process(t, kind, a, b);
+            int top = _heap[0];
+            bool refresh = _keyRank[top] == RankRefresh;
+            Process(top);
+            if (!refresh)
+            {
+                break;
+            }
         }
+        SyncActive();
     }
 
-    private void Process(double t, Kind kind, int a, int b)
+    // Resolves ball `top`'s earliest prediction, the earliest of all.
+    private void Process(int top)
     {
+        double t = _keyTime[top];
         if (t < Time)
         {
             t = Time; // a contact found "now" after round-off
         }
-        AdvanceAll(t - Time);
         Time = t;
+        byte rank = _keyRank[top];
+        int a = _keyA[top];
+        int b = _keyB[top];
+        if (rank == RankRefresh)
+        {
+            // Not an event: the ball's pair look-ahead ran out; look further.
+            RefreshPairs(a);
+            return;
+        }
         EventCount++;
 
         if (t == _lastEventTime)
@@ -275,7 +427,7 @@ public sealed class EventEngine
                 // comes back when either ball next changes. Counted, so it is never silent.
                 EventCapHits++;
                 _eventsThisInstant = 0;
-                Suppress(kind, a, b);
+                Suppress(rank, a, b);
                 return;
             }
         }
@@ -285,53 +437,70 @@ public sealed class EventEngine
             _eventsThisInstant = 0;
         }
 
-        switch (kind)
+        switch (rank)
         {
-            case Kind.Transition:
+            case RankTransition:
+                Sync(a);
                 BallMotion.EndState(ref _balls[a], _k);
                 Repredict(a);
+                UpdateActive(a);
                 break;
-            case Kind.Pair:
+            case RankPair:
                 ResolvePair(a, b);
                 break;
-            case Kind.Segment:
+            default:
                 {
-                    var s = _geometry.Segments[b];
-                    ResolveCushion(a, s.Normal, s.Feature);
+                    Sync(a);
+                    int feature = _railIndex[a];
+                    switch (_railKind[a])
+                    {
+                        case Kind.Segment:
+                            {
+                                var s = _geometry.Segments[feature];
+                                ResolveCushion(a, s.Normal, s.Feature);
+                                break;
+                            }
+                        case Kind.Nose:
+                            {
+                                var nose = _geometry.Noses[feature];
+                                var normal = (_balls[a].Position - nose.Centre).XY.Normalized();
+                                ResolveCushion(a, normal, nose.Feature);
+                                break;
+                            }
+                        case Kind.Pocket:
+                            Pocket(a, _geometry.Pockets[feature].Pocket);
+                            break;
+                    }
                     break;
                 }
-            case Kind.Nose:
-                {
-                    var nose = _geometry.Noses[b];
-                    var normal = (_balls[a].Position - nose.Centre).XY.Normalized();
-                    ResolveCushion(a, normal, nose.Feature);
-                    break;
-                }
-            case Kind.Pocket:
-                Pocket(a, _geometry.Pockets[b].Pocket);
-                break;
         }
-        CountActive();
     }
 
-    private void Suppress(Kind kind, int a, int b)
+    private void Suppress(byte rank, int a, int b)
     {
-        switch (kind)
+        switch (rank)
         {
-            case Kind.Pair:
-                _pairTime[a * _n + b] = double.PositiveInfinity;
+            case RankPair:
+                RemovePair(a, b);
+                RemovePair(b, a);
+                UpdateKey(a);
+                UpdateKey(b);
                 break;
-            case Kind.Transition:
+            case RankTransition:
                 _transitionTime[a] = double.PositiveInfinity;
+                RefreshPairs(a); // its pair window ended here
                 break;
             default:
                 _railTime[a] = double.PositiveInfinity;
+                RefreshPairs(a);
                 break;
         }
     }
 
     private void ResolvePair(int i, int j)
     {
+        Sync(i);
+        Sync(j);
         ref var a = ref _balls[i];
         ref var b = ref _balls[j];
         var n = (b.Position - a.Position).XY.Normalized();
@@ -352,6 +521,8 @@ public sealed class EventEngine
         _log.Add(new SimEvent(Time, EventKind.BallBall, _ids[i], _ids[j], -1, approach));
         Repredict(i);
         Repredict(j);
+        UpdateActive(i);
+        UpdateActive(j);
     }
 
     private void ResolveCushion(int i, Vec3 normal, int feature)
@@ -369,6 +540,7 @@ public sealed class EventEngine
         BallMotion.Classify(ref ball, _k);
         _log.Add(new SimEvent(Time, EventKind.BallCushion, _ids[i], _ids[i], feature, approach));
         Repredict(i);
+        UpdateActive(i);
     }
 
     private bool IsRepeat(int ball, int partner) =>
@@ -395,110 +567,132 @@ public sealed class EventEngine
         ball.Pocket = pocket;
         _log.Add(new SimEvent(Time, EventKind.BallPocket, _ids[i], _ids[i], pocket, 0));
         Repredict(i);
+        UpdateActive(i);
     }
 
-    private void AdvanceAll(double dt)
+    // Brings a ball's state to the engine's time, in closed form.
+    private void Sync(int i)
     {
-        if (dt <= 0 || ActiveCount == 0)
+        double dt = Time - _baseTime[i];
+        if (dt > 0 && BallMotion.IsActive(_balls[i].State))
         {
-            return;
+            BallMotion.Advance(ref _balls[i], dt, _k, TrackOrientation, _accel[i]);
         }
-        bool track = TrackOrientation;
-        for (int i = 0; i < _n; i++)
+        _baseTime[i] = Time;
+    }
+
+    // Brings every moving ball to the engine's time (resting balls need nothing).
+    private void SyncActive()
+    {
+        for (int k = 0; k < ActiveCount; k++)
         {
-            if (BallMotion.IsActive(_balls[i].State))
-            {
-                BallMotion.Advance(ref _balls[i], dt, _k, track);
-            }
+            Sync(_active[k]);
         }
     }
 
-    private void CountActive()
+    private void UpdateActive(int i)
     {
-        int count = 0;
-        for (int i = 0; i < _n; i++)
+        bool active = BallMotion.IsActive(_balls[i].State);
+        int pos = _activePos[i];
+        if (active && pos < 0)
         {
-            if (BallMotion.IsActive(_balls[i].State))
-            {
-                count++;
-            }
+            _activePos[i] = ActiveCount;
+            _active[ActiveCount++] = i;
         }
-        ActiveCount = count;
-    }
-
-    // The earliest prediction; ties go to transitions, then rails, then pairs, each in index order,
-    // so that both integrators resolve simultaneous events in the same order.
-    private double FindNext(out Kind kind, out int a, out int b)
-    {
-        double best = double.PositiveInfinity;
-        kind = Kind.None;
-        a = -1;
-        b = -1;
-        for (int i = 0; i < _n; i++)
+        else if (!active && pos >= 0)
         {
-            if (_transitionTime[i] < best)
-            {
-                best = _transitionTime[i];
-                kind = Kind.Transition;
-                a = i;
-            }
+            int last = _active[--ActiveCount];
+            _active[pos] = last;
+            _activePos[last] = pos;
+            _activePos[i] = -1;
         }
-        for (int i = 0; i < _n; i++)
-        {
-            if (_railTime[i] < best)
-            {
-                best = _railTime[i];
-                kind = _railKind[i];
-                a = i;
-                b = _railIndex[i];
-            }
-        }
-        for (int i = 0; i < _n; i++)
-        {
-            int row = i * _n;
-            for (int j = i + 1; j < _n; j++)
-            {
-                if (_pairTime[row + j] < best)
-                {
-                    best = _pairTime[row + j];
-                    kind = Kind.Pair;
-                    a = i;
-                    b = j;
-                }
-            }
-        }
-        return best;
     }
 
     private void PredictAll()
     {
+        Array.Clear(_cellCount);
+        ActiveCount = 0;
         for (int i = 0; i < _n; i++)
         {
+            _cellRect[i] = (-1, -1, -1, -1);
+            _pairCount[i] = 0;
+            _baseTime[i] = Time;
+            _activePos[i] = -1;
+            BallMotion.Classify(ref _balls[i], _k);
+            UpdateActive(i);
             PredictBall(i);
         }
         for (int i = 0; i < _n; i++)
         {
-            for (int j = i + 1; j < _n; j++)
+            int count = Candidates(i);
+            for (int c = 0; c < count; c++)
             {
-                PredictPair(i, j);
+                int j = _candidates[c];
+                if (j > i)
+                {
+                    double t = PredictPair(i, j);
+                    if (t < double.PositiveInfinity)
+                    {
+                        AddPair(i, j, t);
+                        AddPair(j, i, t);
+                    }
+                }
             }
         }
-        CountActive();
+        for (int i = 0; i < _n; i++)
+        {
+            ComputeKey(i);
+            _heap[i] = i;
+            _heapPos[i] = i;
+        }
+        for (int k = _n / 2 - 1; k >= 0; k--)
+        {
+            SiftDown(k);
+        }
     }
 
+    // Everything that involves ball i, after its state changed (at the engine's time).
     private void Repredict(int i)
     {
+        Sync(i);
+        ClearPairs(i);
         PredictBall(i);
-        for (int j = 0; j < _n; j++)
+        PredictPairsOf(i);
+        UpdateKey(i);
+    }
+
+    // The pair look-ahead of ball i ran out: predict its pairs a window further (state unchanged).
+    private void RefreshPairs(int i)
+    {
+        Sync(i);
+        ClearPairs(i);
+        PredictWindow(i, Math.Min(_transitionTime[i], _railTime[i]) - Time);
+        PredictPairsOf(i);
+        UpdateKey(i);
+    }
+
+    private void PredictPairsOf(int i)
+    {
+        int count = Candidates(i);
+        for (int c = 0; c < count; c++)
         {
-            if (j != i)
+            int j = _candidates[c];
+            double t = i < j ? PredictPair(i, j) : PredictPair(j, i);
+            if (t < double.PositiveInfinity)
             {
-                PredictPair(Math.Min(i, j), Math.Max(i, j));
+                AddPair(i, j, t);
+                AddPair(j, i, t);
+                int lo = Math.Min(i, j), hi = Math.Max(i, j);
+                if (Less(t, RankPair, lo, hi, _keyTime[j], _keyRank[j], _keyA[j], _keyB[j]))
+                {
+                    SetKey(j, t, RankPair, lo, hi);
+                    SiftUp(_heapPos[j]);
+                }
             }
         }
     }
 
-    // State end, path box and first rail / jaw / pocket contact of one ball.
+    // State end, first rail / jaw / pocket contact and pair window of one ball (synced to Time).
     private void PredictBall(int i)
     {
         ref readonly var b = ref _balls[i];
@@ -508,21 +702,21 @@ public sealed class EventEngine
         {
             _transitionTime[i] = double.PositiveInfinity;
             _accel[i] = Vec3.Zero;
-            _pathBox[i] = (b.Position.X, b.Position.Y, b.Position.X, b.Position.Y);
+            PredictWindow(i, double.PositiveInfinity);
             return;
         }
         double duration = BallMotion.StateDuration(b, _k);
         _transitionTime[i] = Time + duration;
         var acc = BallMotion.Acceleration(b, _k);
         _accel[i] = acc;
-        double horizon = Math.Min(duration, MaxHorizon);
-        _pathBox[i] = PathBox(b.Position, b.Velocity, acc, horizon);
         if (!BallMotion.Translates(b.State))
         {
+            PredictWindow(i, duration);
             return;
         }
 
-        var box = _pathBox[i];
+        double horizon = Math.Min(duration, MaxHorizon);
+        var box = PathBox(b.Position, b.Velocity, acc, horizon);
         double r = _params.R;
         Span<double> c = stackalloc double[5];
         double best = double.PositiveInfinity;
@@ -550,6 +744,9 @@ public sealed class EventEngine
                     best = t;
                     _railKind[i] = Kind.Segment;
                     _railIndex[i] = s;
+                    // Nothing after the first contact matters: look no further than it.
+                    horizon = t;
+                    box = PathBox(b.Position, b.Velocity, acc, horizon);
                 }
             }
         }
@@ -568,6 +765,8 @@ public sealed class EventEngine
                 best = t;
                 _railKind[i] = Kind.Nose;
                 _railIndex[i] = s;
+                horizon = t;
+                box = PathBox(b.Position, b.Velocity, acc, horizon);
             }
         }
         var pockets = _geometry.Pockets;
@@ -588,31 +787,335 @@ public sealed class EventEngine
             }
         }
         _railTime[i] = Time + best;
+        PredictWindow(i, Math.Min(duration, best));
     }
 
-    private void PredictPair(int i, int j)
+    // How far ahead ball i's pairs are predicted (until its state ends or it meets a cushion, after
+    // which its path changes anyway, or on large tables until it has travelled about one grid
+    // cell), the box around that path, and its grid cells. `remaining`: time to the first of the
+    // state's end and the cushion (s).
+    private void PredictWindow(int i, double remaining)
     {
-        int slot = i * _n + j;
-        _pairTime[slot] = double.PositiveInfinity;
+        ref readonly var b = ref _balls[i];
+        _refreshTime[i] = double.PositiveInfinity;
+        _windowEnd[i] = Math.Min(_transitionTime[i], _railTime[i]);
+        if (b.State == MotionState.Pocketed)
+        {
+            Unregister(i);
+            return;
+        }
+        if (!BallMotion.Translates(b.State))
+        {
+            _windowBox[i] = (b.Position.X, b.Position.Y, b.Position.X, b.Position.Y);
+            Register(i);
+            return;
+        }
+        double horizon = Math.Min(remaining, MaxHorizon);
+        var acc = _accel[i];
+        if (_lookAhead < double.PositiveInfinity)
+        {
+            double reach = Math.Max(_lookAhead / Math.Max(b.Velocity.LengthXY, Math.Sqrt(_lookAhead * acc.LengthXY)), MinWindow);
+            if (reach < horizon)
+            {
+                horizon = reach;
+                _refreshTime[i] = Time + reach;
+                _windowEnd[i] = _refreshTime[i];
+            }
+        }
+        _windowBox[i] = PathBox(b.Position, b.Velocity, acc, horizon);
+        Register(i);
+    }
+
+    // Time of the first contact of balls i < j, both synced to Time, or +infinity.
+    private double PredictPair(int i, int j)
+    {
         ref readonly var a = ref _balls[i];
         ref readonly var b = ref _balls[j];
         if (a.State == MotionState.Pocketed || b.State == MotionState.Pocketed
             || !(BallMotion.Translates(a.State) || BallMotion.Translates(b.State)))
         {
-            return;
+            return double.PositiveInfinity;
         }
         double r = _params.R;
-        var ba = _pathBox[i];
-        var bb = _pathBox[j];
+        var ba = _windowBox[i];
+        var bb = _windowBox[j];
         if (ba.X0 - bb.X1 > 2 * r || bb.X0 - ba.X1 > 2 * r || ba.Y0 - bb.Y1 > 2 * r || bb.Y0 - ba.Y1 > 2 * r)
+        {
+            return double.PositiveInfinity;
+        }
+        Sync(i);
+        Sync(j);
+        double horizon = Math.Min(Math.Min(_windowEnd[i], _windowEnd[j]) - Time, MaxHorizon);
+        var d = b.Position - a.Position;
+        var dv = b.Velocity - a.Velocity;
+        var da = _accel[j] - _accel[i];
+        if (ClearOf(d, dv, da, horizon, 2 * r))
+        {
+            return double.PositiveInfinity;
+        }
+        Span<double> c = stackalloc double[5];
+        CircleGap(d, dv, da, 2 * r, c);
+        double t = Polynomial.FirstEntry(c, horizon, 4 * r * OverlapTolerance);
+        return Time + t;
+    }
+
+    private void AddPair(int i, int j, double t)
+    {
+        int count = _pairCount[i];
+        if (count == _pairPartner[i].Length)
+        {
+            Array.Resize(ref _pairPartner[i], 2 * count);
+            Array.Resize(ref _pairAt[i], 2 * count);
+        }
+        _pairPartner[i][count] = j;
+        _pairAt[i][count] = t;
+        _pairCount[i] = count + 1;
+    }
+
+    private void RemovePair(int i, int j)
+    {
+        var partners = _pairPartner[i];
+        int count = _pairCount[i];
+        for (int p = 0; p < count; p++)
+        {
+            if (partners[p] == j)
+            {
+                partners[p] = partners[count - 1];
+                _pairAt[i][p] = _pairAt[i][count - 1];
+                _pairCount[i] = count - 1;
+                return;
+            }
+        }
+    }
+
+    // Drops every pair prediction of ball i, re-keying the partners whose earliest event it was.
+    private void ClearPairs(int i)
+    {
+        var partners = _pairPartner[i];
+        for (int p = 0; p < _pairCount[i]; p++)
+        {
+            int j = partners[p];
+            RemovePair(j, i);
+            if (_keyRank[j] == RankPair && (_keyA[j] == i || _keyB[j] == i))
+            {
+                UpdateKey(j);
+            }
+        }
+        _pairCount[i] = 0;
+    }
+
+    // Balls whose grid cells ball i shares, into _candidates; returns their number.
+    private int Candidates(int i)
+    {
+        var rect = _cellRect[i];
+        if (rect.X0 < 0)
+        {
+            return 0;
+        }
+        if (++_stampValue == int.MaxValue)
+        {
+            Array.Clear(_stamp);
+            _stampValue = 1;
+        }
+        _stamp[i] = _stampValue;
+        int count = 0;
+        for (int y = rect.Y0; y <= rect.Y1; y++)
+        {
+            for (int x = rect.X0; x <= rect.X1; x++)
+            {
+                int cell = y * _nx + x;
+                var list = _cells[cell];
+                for (int k = 0; k < _cellCount[cell]; k++)
+                {
+                    int j = list[k];
+                    if (_stamp[j] != _stampValue)
+                    {
+                        _stamp[j] = _stampValue;
+                        _candidates[count++] = j;
+                    }
+                }
+            }
+        }
+        return count;
+    }
+
+    private void Register(int i)
+    {
+        double r = _params.R;
+        var box = _windowBox[i];
+        var rect = (CellOf(box.X0 - r - _gridX0, _nx), CellOf(box.Y0 - r - _gridY0, _ny),
+            CellOf(box.X1 + r - _gridX0, _nx), CellOf(box.Y1 + r - _gridY0, _ny));
+        if (rect == _cellRect[i])
         {
             return;
         }
-        double horizon = Math.Min(Math.Min(_transitionTime[i], _transitionTime[j]) - Time, MaxHorizon);
-        Span<double> c = stackalloc double[5];
-        CircleGap(b.Position - a.Position, b.Velocity - a.Velocity, _accel[j] - _accel[i], 2 * r, c);
-        double t = Polynomial.FirstEntry(c, horizon, 4 * r * OverlapTolerance);
-        _pairTime[slot] = Time + t;
+        Unregister(i);
+        _cellRect[i] = rect;
+        for (int y = rect.Item2; y <= rect.Item4; y++)
+        {
+            for (int x = rect.Item1; x <= rect.Item3; x++)
+            {
+                int cell = y * _nx + x;
+                int count = _cellCount[cell];
+                if (count == _cells[cell].Length)
+                {
+                    Array.Resize(ref _cells[cell], 2 * count);
+                }
+                _cells[cell][count] = i;
+                _cellCount[cell] = count + 1;
+            }
+        }
+    }
+
+    private void Unregister(int i)
+    {
+        var rect = _cellRect[i];
+        if (rect.X0 < 0)
+        {
+            return;
+        }
+        for (int y = rect.Y0; y <= rect.Y1; y++)
+        {
+            for (int x = rect.X0; x <= rect.X1; x++)
+            {
+                int cell = y * _nx + x;
+                var list = _cells[cell];
+                int count = _cellCount[cell];
+                for (int k = 0; k < count; k++)
+                {
+                    if (list[k] == i)
+                    {
+                        list[k] = list[count - 1];
+                        _cellCount[cell] = count - 1;
+                        break;
+                    }
+                }
+            }
+        }
+        _cellRect[i] = (-1, -1, -1, -1);
+    }
+
+    private int CellOf(double offset, int cells)
+    {
+        double f = offset * _invCell;
+        return f <= 0 ? 0 : f >= cells - 1 ? cells - 1 : (int)f;
+    }
+
+    // Ball i's earliest prediction, from scratch.
+    private void ComputeKey(int i)
+    {
+        double t = _transitionTime[i];
+        byte rank = RankTransition;
+        int a = i, b = 0;
+        if (_railTime[i] < t)
+        {
+            t = _railTime[i];
+            rank = RankRail;
+        }
+        var partners = _pairPartner[i];
+        var times = _pairAt[i];
+        for (int p = 0; p < _pairCount[i]; p++)
+        {
+            int j = partners[p];
+            int lo = Math.Min(i, j), hi = Math.Max(i, j);
+            if (Less(times[p], RankPair, lo, hi, t, rank, a, b))
+            {
+                t = times[p];
+                rank = RankPair;
+                a = lo;
+                b = hi;
+            }
+        }
+        if (_refreshTime[i] < t)
+        {
+            t = _refreshTime[i];
+            rank = RankRefresh;
+            a = i;
+            b = 0;
+        }
+        SetKey(i, t, rank, a, b);
+    }
+
+    private void SetKey(int i, double t, byte rank, int a, int b)
+    {
+        _keyTime[i] = t;
+        _keyRank[i] = rank;
+        _keyA[i] = a;
+        _keyB[i] = b;
+    }
+
+    private void UpdateKey(int i)
+    {
+        ComputeKey(i);
+        int pos = _heapPos[i];
+        SiftUp(pos);
+        SiftDown(_heapPos[i]);
+    }
+
+    private static bool Less(double t1, byte r1, int a1, int b1, double t2, byte r2, int a2, int b2) =>
+        t1 != t2 ? t1 < t2 : r1 != r2 ? r1 < r2 : a1 != a2 ? a1 < a2 : b1 < b2;
+
+    private bool Before(int x, int y) =>
+        Less(_keyTime[x], _keyRank[x], _keyA[x], _keyB[x], _keyTime[y], _keyRank[y], _keyA[y], _keyB[y]);
+
+    private void SiftUp(int pos)
+    {
+        int ball = _heap[pos];
+        while (pos > 0)
+        {
+            int parent = (pos - 1) >> 1;
+            int other = _heap[parent];
+            if (!Before(ball, other))
+            {
+                break;
+            }
+            _heap[pos] = other;
+            _heapPos[other] = pos;
+            pos = parent;
+        }
+        _heap[pos] = ball;
+        _heapPos[ball] = pos;
+    }
+
+    private void SiftDown(int pos)
+    {
+        int ball = _heap[pos];
+        while (true)
+        {
+            int child = 2 * pos + 1;
+            if (child >= _n)
+            {
+                break;
+            }
+            if (child + 1 < _n && Before(_heap[child + 1], _heap[child]))
+            {
+                child++;
+            }
+            int other = _heap[child];
+            if (!Before(other, ball))
+            {
+                break;
+            }
+            _heap[pos] = other;
+            _heapPos[other] = pos;
+            pos = child;
+        }
+        _heap[pos] = ball;
+        _heapPos[ball] = pos;
+    }
+
+    // True when d + v t + a t^2 / 2 provably stays longer than reach on [0, t] (bed plane): its
+    // length is at least |d + v t| - |a| t^2 / 2, and the first term's minimum is a point-segment
+    // distance. Sharper than the boxes (it knows both balls' timing), and far cheaper than the
+    // quartic it saves; the margin keeps touching pairs for the root finder.
+    private static bool ClearOf(Vec3 d, Vec3 v, Vec3 a, double t, double reach)
+    {
+        double vv = v.X * v.X + v.Y * v.Y;
+        double s = vv > 0 ? Math.Clamp(-(d.X * v.X + d.Y * v.Y) / vv, 0, t) : 0;
+        double x = d.X + v.X * s, y = d.Y + v.Y * s;
+        double drift = 0.5 * Math.Sqrt(a.X * a.X + a.Y * a.Y) * t * t;
+        double clear = reach * (1 + 1e-9) + drift;
+        return x * x + y * y > clear * clear;
     }
 
     // |d + v t + a t^2 / 2|^2 - reach^2 as ascending coefficients (bed plane only).

@@ -21,6 +21,7 @@ public sealed class StandardSimulation : Simulation
     private readonly BallState[] _initial;
     private readonly EventEngine? _engine;
     private readonly EulerStepper? _euler;
+    private readonly bool _eventIntegrator;
 
     /// <summary>Creates the simulation of a scene at t = 0, before its shot.</summary>
     public StandardSimulation(Scene scene)
@@ -48,6 +49,7 @@ public sealed class StandardSimulation : Simulation
             };
         }
         _initial = (BallState[])_balls.Clone();
+        _eventIntegrator = Integrator == Integrators.Event;
         if (Integrator == Integrators.Euler)
         {
             _euler = new EulerStepper(_balls, Ids, Parameters, Geometry, ballBall, ballCushion, Events);
@@ -78,8 +80,20 @@ public sealed class StandardSimulation : Simulation
     {
         if (_engine is { } engine)
         {
+            if (engine.IsAtRest)
+            {
+                // A table waiting for the player: only the clock moves ("event" has nothing to
+                // step to, "exact" stays on its fixed grid).
+                if (!_eventIntegrator)
+                {
+                    Time += Dt;
+                    engine.IdleTo(Time);
+                }
+                StepCount++;
+                return;
+            }
             engine.TrackOrientation = TrackOrientation;
-            if (Integrator == Integrators.Event)
+            if (_eventIntegrator)
             {
                 engine.StepToNextEvent();
                 Time = engine.Time;
@@ -95,9 +109,12 @@ public sealed class StandardSimulation : Simulation
         }
         else
         {
-            _euler!.TrackOrientation = TrackOrientation;
             Time += Dt;
-            _euler.Step(Dt, Time);
+            if (!_euler!.IsAtRest)
+            {
+                _euler.TrackOrientation = TrackOrientation;
+                _euler.Step(Dt, Time);
+            }
         }
         StepCount++;
     }
@@ -109,7 +126,7 @@ public sealed class StandardSimulation : Simulation
     /// </summary>
     public override void AdvanceTo(double time)
     {
-        if (_engine is { } engine && Integrator == Integrators.Event)
+        if (_engine is { } engine && _eventIntegrator)
         {
             engine.TrackOrientation = TrackOrientation;
             long before = engine.EventCount;

@@ -100,6 +100,8 @@ public sealed class PhysicsEngine
 
     private readonly Ball[] _balls;
     private readonly CollisionGeometry[] _rails;
+    private readonly Footprint[] _footprints;
+    private readonly float _extent;
     private readonly Vector3[] _startPositions;
     private readonly Random _random;
     private readonly float _dt;
@@ -117,6 +119,16 @@ public sealed class PhysicsEngine
         ArgumentOutOfRangeException.ThrowIfNegativeOrZero(dt);
         _balls = balls;
         _rails = rails;
+        _footprints = new Footprint[rails.Length];
+        for (int k = 0; k < rails.Length; k++)
+        {
+            var g = rails[k];
+            _footprints[k] = new Footprint(g.P1.X, g.P1.Z, g.P2.X, g.P2.Z, g.P3.X, g.P3.Z);
+            foreach (var p in (ReadOnlySpan<Vector3>)[g.P1, g.P2, g.P3])
+            {
+                _extent = MathF.Max(_extent, MathF.Abs(p.X) + MathF.Abs(p.Z));
+            }
+        }
         Table = table;
         Queue = queue;
         Dt = dt;
@@ -362,7 +374,7 @@ public sealed class PhysicsEngine
     /// <returns>The triangle the ball rebounded from, or -1.</returns>
     public int CalculateRailCollision(Ball ball)
     {
-        int nearest = FindNearestHit(_rails, ball.Position, ball.Velocity, out var point);
+        int nearest = FindNearestHit(_rails, _footprints, _extent, ball.Position, ball.Velocity, out var point);
         if (nearest < 0)
         {
             return -1;
@@ -384,17 +396,39 @@ public sealed class PhysicsEngine
     /// position + t * velocity is nearest to <paramref name="position"/> (either side of it), and
     /// the crossing; -1 when the line crosses none. Ties keep the first.
     /// </summary>
-    public static int FindNearestHit(ReadOnlySpan<CollisionGeometry> rails, Vector3 position, Vector3 velocity, out Vector3 point)
+    public static int FindNearestHit(ReadOnlySpan<CollisionGeometry> rails, Vector3 position, Vector3 velocity, out Vector3 point) =>
+        FindNearestHit(rails, [], 0, position, velocity, out point);
+
+    // The same, skipping the triangles whose footprint on the bed lies clearly on one side of a
+    // level line: a speed-up only. A skipped triangle is one the ray test would miss too (the
+    // margin, 1e-4 of the table's extent, is far above float round-off), so the result is the same
+    // bit for bit. Without footprints nothing is skipped.
+    private static int FindNearestHit(ReadOnlySpan<CollisionGeometry> rails, ReadOnlySpan<Footprint> footprints, float extent,
+        Vector3 position, Vector3 velocity, out Vector3 point)
     {
         point = position;
         if (velocity == Vector3.Zero)
         {
             return -1; // every triangle would report Parallel
         }
+        bool cull = footprints.Length == rails.Length && velocity.Y == 0;
+        float px = position.X, pz = position.Z, vx = velocity.X, vz = velocity.Z;
+        float margin = 1e-4f * (MathF.Abs(vx) + MathF.Abs(vz)) * (extent + MathF.Abs(px) + MathF.Abs(pz));
         int nearest = -1;
         float nearestDistance = float.MaxValue;
         for (int k = 0; k < rails.Length; k++)
         {
+            if (cull)
+            {
+                ref readonly var f = ref footprints[k];
+                float s1 = (f.X1 - px) * vz - (f.Z1 - pz) * vx;
+                float s2 = (f.X2 - px) * vz - (f.Z2 - pz) * vx;
+                float s3 = (f.X3 - px) * vz - (f.Z3 - pz) * vx;
+                if ((s1 > margin && s2 > margin && s3 > margin) || (s1 < -margin && s2 < -margin && s3 < -margin))
+                {
+                    continue;
+                }
+            }
             if (rails[k].Intersect(position, velocity, out _, out var hit) == RayHit.Hit)
             {
                 float distance = (hit - position).Length();
@@ -564,4 +598,7 @@ public sealed class PhysicsEngine
     {
         Events?.Add(new SimEvent(Time, kind, new BallId(a.Number), new BallId(b.Number), feature, approachCmPerS / 100.0));
     }
+
+    // A triangle's corners on the bed (x, z), for the level-line cull of FindNearestHit.
+    private readonly record struct Footprint(float X1, float Z1, float X2, float Z2, float X3, float Z3);
 }
