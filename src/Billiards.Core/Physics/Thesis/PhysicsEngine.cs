@@ -103,6 +103,9 @@ public sealed class PhysicsEngine
     private readonly Ball[] _balls;
     private readonly CollisionGeometry[] _rails;
     private readonly RailCull _cull;
+
+    // (1.001 D)^2: below it CalculateBallCollision decides, above it the balls are clearly apart.
+    private const float ClearlyApartSquared = 1.002001f * BallDiameter * BallDiameter;
     private readonly Vector3[] _startPositions;
     private readonly Random _random;
     private readonly float _dt;
@@ -256,7 +259,9 @@ public sealed class PhysicsEngine
             {
                 for (int j = 0; j < _balls.Length; j++)
                 {
-                    if (j != i && _balls[j].IsOnBed)
+                    // Balls clearly apart (squared distance beyond D^2 by far more than round-off)
+                    // cannot collide: skip the call and its square root; the result is the same.
+                    if (j != i && _balls[j].IsOnBed && Vector3.DistanceSquared(_balls[j].Position, ball.Position) < ClearlyApartSquared)
                     {
                         CalculateBallCollision(ball, _balls[j]);
                     }
