@@ -1,4 +1,6 @@
 using System.Numerics;
+using System.Runtime.InteropServices;
+using System.Runtime.Intrinsics;
 using Billiards.Core.Balls;
 using Billiards.Core.Cue;
 using Billiards.Core.Setup;
@@ -100,8 +102,10 @@ public sealed class PhysicsEngine
 
     private readonly Ball[] _balls;
     private readonly CollisionGeometry[] _rails;
-    private readonly Footprint[] _footprints;
-    private readonly float _extent;
+    private readonly RailCull _cull;
+
+    // (1.001 D)^2: below it CalculateBallCollision decides, above it the balls are clearly apart.
+    private const float ClearlyApartSquared = 1.002001f * BallDiameter * BallDiameter;
     private readonly Vector3[] _startPositions;
     private readonly Random _random;
     private readonly float _dt;
@@ -119,16 +123,7 @@ public sealed class PhysicsEngine
         ArgumentOutOfRangeException.ThrowIfNegativeOrZero(dt);
         _balls = balls;
         _rails = rails;
-        _footprints = new Footprint[rails.Length];
-        for (int k = 0; k < rails.Length; k++)
-        {
-            var g = rails[k];
-            _footprints[k] = new Footprint(g.P1.X, g.P1.Z, g.P2.X, g.P2.Z, g.P3.X, g.P3.Z);
-            foreach (var p in (ReadOnlySpan<Vector3>)[g.P1, g.P2, g.P3])
-            {
-                _extent = MathF.Max(_extent, MathF.Abs(p.X) + MathF.Abs(p.Z));
-            }
-        }
+        _cull = new RailCull(rails);
         Table = table;
         Queue = queue;
         Dt = dt;
@@ -264,7 +259,9 @@ public sealed class PhysicsEngine
             {
                 for (int j = 0; j < _balls.Length; j++)
                 {
-                    if (j != i && _balls[j].IsOnBed)
+                    // Balls clearly apart (squared distance beyond D^2 by far more than round-off)
+                    // cannot collide: skip the call and its square root; the result is the same.
+                    if (j != i && _balls[j].IsOnBed && Vector3.DistanceSquared(_balls[j].Position, ball.Position) < ClearlyApartSquared)
                     {
                         CalculateBallCollision(ball, _balls[j]);
                     }
@@ -374,7 +371,7 @@ public sealed class PhysicsEngine
     /// <returns>The triangle the ball rebounded from, or -1.</returns>
     public int CalculateRailCollision(Ball ball)
     {
-        int nearest = FindNearestHit(_rails, _footprints, _extent, ball.Position, ball.Velocity, out var point);
+        int nearest = FindNearestHit(_rails, _cull, ball.Position, ball.Velocity, out var point);
         if (nearest < 0)
         {
             return -1;
@@ -397,13 +394,13 @@ public sealed class PhysicsEngine
     /// the crossing; -1 when the line crosses none. Ties keep the first.
     /// </summary>
     public static int FindNearestHit(ReadOnlySpan<CollisionGeometry> rails, Vector3 position, Vector3 velocity, out Vector3 point) =>
-        FindNearestHit(rails, [], 0, position, velocity, out point);
+        FindNearestHit(rails, null, position, velocity, out point);
 
-    // The same, skipping the triangles whose footprint on the bed lies clearly on one side of a
-    // level line: a speed-up only. A skipped triangle is one the ray test would miss too (the
-    // margin, 1e-4 of the table's extent, is far above float round-off), so the result is the same
-    // bit for bit. Without footprints nothing is skipped.
-    private static int FindNearestHit(ReadOnlySpan<CollisionGeometry> rails, ReadOnlySpan<Footprint> footprints, float extent,
+    // The same, skipping (eight at a time) the triangles whose footprint on the bed lies clearly on
+    // one side of a level line: a speed-up only. A skipped triangle is one the ray test would miss
+    // too (the margin, 1e-4 of the table's extent, is far above float round-off), and the rest are
+    // tested in index order, so the result is the same bit for bit. Without a cull nothing is skipped.
+    private static int FindNearestHit(ReadOnlySpan<CollisionGeometry> rails, RailCull? cull,
         Vector3 position, Vector3 velocity, out Vector3 point)
     {
         point = position;
@@ -411,36 +408,54 @@ public sealed class PhysicsEngine
         {
             return -1; // every triangle would report Parallel
         }
-        bool cull = footprints.Length == rails.Length && velocity.Y == 0;
-        float px = position.X, pz = position.Z, vx = velocity.X, vz = velocity.Z;
-        float margin = 1e-4f * (MathF.Abs(vx) + MathF.Abs(vz)) * (extent + MathF.Abs(px) + MathF.Abs(pz));
         int nearest = -1;
         float nearestDistance = float.MaxValue;
-        for (int k = 0; k < rails.Length; k++)
+        if (cull is null || cull.Count != rails.Length || velocity.Y != 0)
         {
-            if (cull)
+            for (int k = 0; k < rails.Length; k++)
             {
-                ref readonly var f = ref footprints[k];
-                float s1 = (f.X1 - px) * vz - (f.Z1 - pz) * vx;
-                float s2 = (f.X2 - px) * vz - (f.Z2 - pz) * vx;
-                float s3 = (f.X3 - px) * vz - (f.Z3 - pz) * vx;
-                if ((s1 > margin && s2 > margin && s3 > margin) || (s1 < -margin && s2 < -margin && s3 < -margin))
-                {
-                    continue;
-                }
+                Consider(rails[k], k, position, velocity, ref nearest, ref nearestDistance, ref point);
             }
-            if (rails[k].Intersect(position, velocity, out _, out var hit) == RayHit.Hit)
+            return nearest;
+        }
+        float margin = 1e-4f * (MathF.Abs(velocity.X) + MathF.Abs(velocity.Z)) * (cull.Extent + MathF.Abs(position.X) + MathF.Abs(position.Z));
+        var px = Vector256.Create(position.X);
+        var pz = Vector256.Create(position.Z);
+        var vx = Vector256.Create(velocity.X);
+        var vz = Vector256.Create(velocity.Z);
+        var above = Vector256.Create(margin);
+        var below = Vector256.Create(-margin);
+        for (int k = 0; k < rails.Length; k += RailCull.Lanes)
+        {
+            uint near = cull.Near(k, px, pz, vx, vz, above, below);
+            while (near != 0)
             {
-                float distance = (hit - position).Length();
-                if (distance < nearestDistance)
+                int index = k + BitOperations.TrailingZeroCount(near);
+                near &= near - 1;
+                if (index >= rails.Length)
                 {
-                    nearestDistance = distance;
-                    nearest = k;
-                    point = hit;
+                    break;
                 }
+                Consider(rails[index], index, position, velocity, ref nearest, ref nearestDistance, ref point);
             }
         }
         return nearest;
+    }
+
+    // Listing 2's test of one triangle; keeps the nearest crossing (ties keep the first).
+    private static void Consider(CollisionGeometry rail, int k, Vector3 position, Vector3 velocity,
+        ref int nearest, ref float nearestDistance, ref Vector3 point)
+    {
+        if (rail.Intersect(position, velocity, out _, out var hit) == RayHit.Hit)
+        {
+            float distance = (hit - position).Length();
+            if (distance < nearestDistance)
+            {
+                nearestDistance = distance;
+                nearest = k;
+                point = hit;
+            }
+        }
     }
 
     /// <summary>
@@ -599,6 +614,52 @@ public sealed class PhysicsEngine
         Events?.Add(new SimEvent(Time, kind, new BallId(a.Number), new BallId(b.Number), feature, approachCmPerS / 100.0));
     }
 
-    // A triangle's corners on the bed (x, z), for the level-line cull of FindNearestHit.
-    private readonly record struct Footprint(float X1, float Z1, float X2, float Z2, float X3, float Z3);
+    // The triangles' corners on the bed (x, z) in lanes of eight, for the level-line cull of
+    // FindNearestHit (structure of arrays, padded to whole lanes).
+    private sealed class RailCull
+    {
+        public const int Lanes = 8;
+
+        private readonly float[] _x1, _z1, _x2, _z2, _x3, _z3;
+
+        public RailCull(ReadOnlySpan<CollisionGeometry> rails)
+        {
+            Count = rails.Length;
+            int padded = (Count + Lanes - 1) / Lanes * Lanes;
+            _x1 = new float[padded];
+            _z1 = new float[padded];
+            _x2 = new float[padded];
+            _z2 = new float[padded];
+            _x3 = new float[padded];
+            _z3 = new float[padded];
+            for (int k = 0; k < Count; k++)
+            {
+                var g = rails[k];
+                (_x1[k], _z1[k], _x2[k], _z2[k], _x3[k], _z3[k]) = (g.P1.X, g.P1.Z, g.P2.X, g.P2.Z, g.P3.X, g.P3.Z);
+                Extent = MathF.Max(Extent, MathF.Max(MathF.Abs(g.P1.X) + MathF.Abs(g.P1.Z),
+                    MathF.Max(MathF.Abs(g.P2.X) + MathF.Abs(g.P2.Z), MathF.Abs(g.P3.X) + MathF.Abs(g.P3.Z))));
+            }
+        }
+
+        public int Count { get; }
+
+        // Largest |x| + |z| of any corner (cm).
+        public float Extent { get; }
+
+        // Bit b set: triangle k + b is not clearly beside the level line through p along v (its
+        // three corners' sides, (c - p) x v, are not all beyond the margin with one sign).
+        public uint Near(int k, Vector256<float> px, Vector256<float> pz, Vector256<float> vx, Vector256<float> vz,
+            Vector256<float> above, Vector256<float> below)
+        {
+            var s1 = (Load(_x1, k) - px) * vz - (Load(_z1, k) - pz) * vx;
+            var s2 = (Load(_x2, k) - px) * vz - (Load(_z2, k) - pz) * vx;
+            var s3 = (Load(_x3, k) - px) * vz - (Load(_z3, k) - pz) * vx;
+            var left = Vector256.GreaterThan(s1, above) & Vector256.GreaterThan(s2, above) & Vector256.GreaterThan(s3, above);
+            var right = Vector256.LessThan(s1, below) & Vector256.LessThan(s2, below) & Vector256.LessThan(s3, below);
+            return ~(left | right).ExtractMostSignificantBits() & 0xFFu;
+        }
+
+        private static Vector256<float> Load(float[] lane, int k) =>
+            Vector256.LoadUnsafe(ref MemoryMarshal.GetArrayDataReference(lane), (nuint)k);
+    }
 }
