@@ -1,7 +1,8 @@
 namespace Billiards.App.Input.Modes;
 
 /// <summary>
-/// The constants of the seed's cue controls (seed 4.4.3-4.4.5) in one place, with their units.
+/// The constants of the seed's cue controls (seed 4.4.3-4.4.5) in one place, with their units;
+/// Formel 31's belong to the thesis cue, <see cref="Billiards.Core.Cue.Queue"/>.
 /// The seed works in centimetres and milliseconds (GLUT_ELAPSED_TIME); the game converts to
 /// Core's metres only where it hands a value to Core. The camera's constants (Listings 5 and 6)
 /// live in <see cref="Camera.OrbitCamera"/>.
@@ -10,12 +11,6 @@ public static class SeedControls
 {
     /// <summary>Centimetres per metre: the seed's length unit to Core's.</summary>
     public const double CentimetresPerMetre = 100;
-
-    /// <summary>Formel 31: s = d / t * 250, d in pixels of mouse Y, t in ms, s in the seed's cm/s.</summary>
-    public const double StrokeSpeedFactor = 250;
-
-    /// <summary>Seed 4.4.3: the stroke speed is capped at 800 cm/s (8 m/s for Core).</summary>
-    public const double StrokeSpeedCap = 800;
 
     /// <summary>Formel 32-33: the tip offset moves 0.01 cm per pixel of mouse movement.</summary>
     public const double SpinCentimetresPerPixel = 0.01;

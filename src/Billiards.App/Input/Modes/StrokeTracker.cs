@@ -1,3 +1,5 @@
+using Billiards.Core.Cue;
+
 namespace Billiards.App.Input.Modes;
 
 /// <summary>
@@ -105,18 +107,10 @@ public sealed class StrokeTracker
         return speed;
     }
 
-    /// <summary>Formel 31, s = d / t * 250, capped at 800; d in pixels, t in ms, s in cm/s.</summary>
-    public static double Formel31(double distancePixels, double milliseconds)
-    {
-        if (distancePixels <= 0)
-        {
-            return 0;
-        }
-        // Two events with the same timestamp: infinitely fast, i.e. the cap.
-        if (milliseconds <= 0)
-        {
-            return SeedControls.StrokeSpeedCap;
-        }
-        return Math.Min(distancePixels / milliseconds * SeedControls.StrokeSpeedFactor, SeedControls.StrokeSpeedCap);
-    }
+    /// <summary>
+    /// Formel 31, s = d / t * 250, capped at 800; d in pixels, t in ms, s in cm/s. The thesis
+    /// model's cue owns the formula (<see cref="Queue.StrokeSpeed"/>); the game only measures d and t.
+    /// </summary>
+    public static double Formel31(double distancePixels, double milliseconds) =>
+        Queue.StrokeSpeed((float)distancePixels, (float)milliseconds);
 }
