@@ -9,12 +9,9 @@ namespace Billiards.Benchmarks;
 /// <summary>Seeded scenes for the benchmarks; the whole-shot ones come from assets/scenes.</summary>
 public static class BenchmarkScenes
 {
-    /// <summary>The folder holding Billiards.sln (BenchmarkDotNet runs from a generated project deep below it).</summary>
-    public static string Root { get; } = FindRoot();
-
     /// <summary>A shipped scene with the given model and integrator.</summary>
     public static Scene Load(string file, string model, string integrator) =>
-        SceneLoader.Load(Path.Combine(Root, "assets", "scenes", file), new SceneOverrides(model, integrator));
+        SceneLoader.Load(AssetFolder.Scene(file), new SceneOverrides(model, integrator));
 
     /// <summary>
     /// <paramref name="total"/> balls on a grid over a table of the 9 ft table's density (16 balls on
@@ -46,20 +43,5 @@ public static class BenchmarkScenes
         }
         var physics = PhysicsConfig.Default with { Model = model, Integrator = integrator };
         return new Scene("benchmark", $"{total} balls, {moving} moving", table, physics, null, balls, null, null);
-    }
-
-    private static string FindRoot()
-    {
-        foreach (string start in new[] { AppContext.BaseDirectory, Directory.GetCurrentDirectory() })
-        {
-            for (var dir = new DirectoryInfo(start); dir is not null; dir = dir.Parent)
-            {
-                if (File.Exists(Path.Combine(dir.FullName, "Billiards.sln")))
-                {
-                    return dir.FullName;
-                }
-            }
-        }
-        throw new InvalidOperationException("Billiards.sln not found above " + AppContext.BaseDirectory);
     }
 }

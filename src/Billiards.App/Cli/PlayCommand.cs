@@ -46,23 +46,9 @@ public static class PlayCommand
     }
 
     /// <summary>
-    /// The default scene: relative to the working directory, else in the nearest folder above the
-    /// executable that has it (so the game starts from the repository and from a build folder).
+    /// The default scene: relative to the working directory, else in the shipped assets
+    /// (<see cref="AssetFolder"/>), so the game starts from the repository and from a build folder.
     /// </summary>
-    public static string FindDefaultScene()
-    {
-        if (File.Exists(DefaultScene))
-        {
-            return DefaultScene;
-        }
-        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-        {
-            string candidate = Path.Combine(dir.FullName, DefaultScene);
-            if (File.Exists(candidate))
-            {
-                return candidate;
-            }
-        }
-        return DefaultScene; // the loader reports it missing, naming the path
-    }
+    public static string FindDefaultScene() =>
+        File.Exists(DefaultScene) ? DefaultScene : AssetFolder.Scene(Path.GetFileName(DefaultScene));
 }

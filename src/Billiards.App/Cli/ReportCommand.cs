@@ -1,3 +1,4 @@
+using Billiards.Core.Scenes;
 using System.CommandLine;
 using System.Text;
 using Billiards.App.Reports;
@@ -15,7 +16,7 @@ public static class ReportCommand
         var accuracy = new Command("accuracy", "Measure each integrator and step against the event-based reference solver.") { output, scenes };
         accuracy.SetAction(parse =>
         {
-            string folder = parse.GetValue(scenes) ?? Path.Combine(AssetPaths.Root, "assets", "scenes", "accuracy");
+            string folder = parse.GetValue(scenes) ?? AssetFolder.Scene("accuracy");
             if (!Directory.Exists(folder))
             {
                 throw new CliException($"--scenes {folder}: no such folder");

@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Security.Cryptography;
 using System.Text;
+using Billiards.Core.Scenes;
 using Billiards.Core.Table;
 
 namespace Billiards.App.Rendering;
@@ -12,8 +13,8 @@ namespace Billiards.App.Rendering;
 /// </summary>
 public static class TableModels
 {
-    /// <summary>The repository's assets folder: found by walking up from the executable to the folder holding Billiards.sln, else ./assets.</summary>
-    public static string AssetsDirectory { get; } = FindAssets();
+    /// <summary>The assets folder (<see cref="AssetFolder"/>).</summary>
+    public static string AssetsDirectory => AssetFolder.Assets;
 
     /// <summary>The folder of the committed table models.</summary>
     public static string ModelsDirectory => Path.Combine(AssetsDirectory, "models");
@@ -65,17 +66,5 @@ public static class TableModels
         string text = string.Create(CultureInfo.InvariantCulture,
             $"{spec.Length:R}|{spec.Width:R}|{spec.CushionHeight:R}|{spec.HasPockets}|{spec.CornerPocketMouth:R}|{spec.SidePocketMouth:R}|{spec.CornerJawAngleDeg:R}|{spec.SideJawAngleDeg:R}|{spec.SightOffset:R}|v1");
         return Convert.ToHexString(SHA256.HashData(Encoding.UTF8.GetBytes(text)))[..12].ToLowerInvariant();
-    }
-
-    private static string FindAssets()
-    {
-        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-        {
-            if (File.Exists(Path.Combine(dir.FullName, "Billiards.sln")) && Directory.Exists(Path.Combine(dir.FullName, "assets")))
-            {
-                return Path.Combine(dir.FullName, "assets");
-            }
-        }
-        return Path.Combine(Directory.GetCurrentDirectory(), "assets");
     }
 }

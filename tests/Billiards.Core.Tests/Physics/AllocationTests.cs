@@ -1,6 +1,5 @@
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
-using Billiards.Core.Tests.Support;
 
 namespace Billiards.Core.Tests.Physics;
 
@@ -12,7 +11,7 @@ public class AllocationTests
 {
     private static Simulation Break(string file, string integrator)
     {
-        var scene = SceneLoader.Load(RepoPaths.Scene(file), new SceneOverrides(Models.Standard, integrator));
+        var scene = SceneLoader.Load(AssetFolder.Scene(file), new SceneOverrides(Models.Standard, integrator));
         return SimulationFactory.Create(scene);
     }
 
@@ -33,7 +32,7 @@ public class AllocationTests
     public void AWholeBreakAllocatesNothingAfterWarmUp(string file, string integrator)
     {
         var sim = Break(file, integrator);
-        var scene = SceneLoader.Load(RepoPaths.Scene(file));
+        var scene = SceneLoader.Load(AssetFolder.Scene(file));
         long bytes = BytesOf(() =>
         {
             sim.Reset();
@@ -50,7 +49,7 @@ public class AllocationTests
     [InlineData(Models.Thesis, Integrators.Fixed)]
     public void AStepAllocatesNothingAfterWarmUp(string model, string integrator)
     {
-        var scene = SceneLoader.Load(RepoPaths.Scene(model == Models.Thesis ? "thesis-eight-ball-break.json" : "eight-ball-break.json"), new SceneOverrides(model, integrator));
+        var scene = SceneLoader.Load(AssetFolder.Scene(model == Models.Thesis ? "thesis-eight-ball-break.json" : "eight-ball-break.json"), new SceneOverrides(model, integrator));
         var sim = SimulationFactory.Create(scene);
         sim.Strike(scene.Shot!);
         long bytes = BytesOf(() =>

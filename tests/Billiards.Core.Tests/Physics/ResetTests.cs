@@ -1,7 +1,6 @@
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Scenes;
-using Billiards.Core.Tests.Support;
 
 namespace Billiards.Core.Tests.Physics;
 
@@ -21,7 +20,7 @@ public class ResetTests
     [InlineData("nine-ball-break.json")]
     public void AResetTableReplaysTheShotBitForBit(string file)
     {
-        var scene = SceneLoader.Load(RepoPaths.Scene(file));
+        var scene = SceneLoader.Load(AssetFolder.Scene(file));
         var sim = SimulationFactory.Create(scene);
         var first = Play(sim, scene);
         Assert.True(sim.IsAtRest);

@@ -2,7 +2,6 @@ using Billiards.Core.Balls;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
 using Billiards.Core.Setup;
-using Billiards.Core.Tests.Support;
 
 namespace Billiards.Core.Tests.Scenes;
 
@@ -149,7 +148,7 @@ public class SceneLoaderTests
     [Fact]
     public void EveryShippedSceneLoads()
     {
-        var files = Directory.GetFiles(Path.Combine(RepoPaths.Root, "assets", "scenes"), "*.json", SearchOption.AllDirectories);
+        var files = Directory.GetFiles(AssetFolder.Scene(""), "*.json", SearchOption.AllDirectories);
         Assert.NotEmpty(files);
         Assert.All(files, f => SceneLoader.Load(f));
     }

@@ -43,23 +43,13 @@ internal static class StandardTestKit
 
     public static StandardSimulation Load(string sceneFile, string? integrator = null, double? dt = null)
     {
-        var scene = SceneLoader.Load(Path.Combine(RepoRoot(), "assets", "scenes", sceneFile), new SceneOverrides(null, integrator, dt));
+        var scene = SceneLoader.Load(AssetFolder.Scene(sceneFile), new SceneOverrides(null, integrator, dt));
         var sim = new StandardSimulation(scene);
         if (scene.Shot is { } s)
         {
             sim.Strike(s);
         }
         return sim;
-    }
-
-    public static string RepoRoot()
-    {
-        var dir = new DirectoryInfo(AppContext.BaseDirectory);
-        while (dir is not null && !File.Exists(Path.Combine(dir.FullName, "Billiards.sln")))
-        {
-            dir = dir.Parent;
-        }
-        return dir?.FullName ?? throw new InvalidOperationException("repository root not found");
     }
 
     public static void RunToRest(StandardSimulation sim, double limit = 600)

@@ -30,17 +30,4 @@ internal static class ThesisKit
     {
         Assert.True(Vector3.Distance(expected, actual) <= tolerance, $"expected {expected}, got {actual}");
     }
-
-    /// <summary>The folder holding Billiards.sln, found by walking up from the test binaries.</summary>
-    public static string RepoRoot()
-    {
-        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-        {
-            if (File.Exists(Path.Combine(dir.FullName, "Billiards.sln")))
-            {
-                return dir.FullName;
-            }
-        }
-        throw new InvalidOperationException("Billiards.sln not found above " + AppContext.BaseDirectory);
-    }
 }

@@ -10,7 +10,7 @@ namespace Billiards.Core.Tests.Thesis;
 public class ThesisSimulationTests
 {
     private static Scene LoadScene(string name) =>
-        SceneLoader.Load(Path.Combine(ThesisKit.RepoRoot(), "assets", "scenes", name));
+        SceneLoader.Load(AssetFolder.Scene(name));
 
     [Fact]
     public void Balls_read_back_in_SI_where_the_scene_put_them()
