@@ -63,6 +63,11 @@ public static class ResultWriter
             w.WriteNumber("t", e.Time);
             switch (e.Kind)
             {
+                case EventKind.CueStrike:
+                    w.WriteString("type", "cue-strike");
+                    WriteIds(w, e.A);
+                    w.WriteNumber("speed", e.Speed);
+                    break;
                 case EventKind.BallBall:
                     w.WriteString("type", "ball-ball");
                     WriteIds(w, e.A, e.B);
@@ -78,6 +83,7 @@ public static class ResultWriter
                     w.WriteString("type", "ball-pocket");
                     WriteIds(w, e.A);
                     w.WriteString("pocket", sim.FeatureName(e.Kind, e.Feature));
+                    w.WriteNumber("speed", e.Speed);
                     break;
             }
             w.WriteEndObject();
