@@ -1,0 +1,221 @@
+using System.Text.Json;
+using Billiards.Core.Ai;
+using Billiards.Core.Cue;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Physics;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+using Billiards.Core.Table;
+
+namespace Billiards.App.Cli;
+
+/// <summary>
+/// Writes a played game as a "billiards-game/1" record (scene-format.md): the table, the physics,
+/// the rack, then per shot the game block before it, the placement, the call, the shot struck and
+/// the ruling. The shot is the one the physics ran (the player's error included), so replaying the
+/// record reproduces every ruling; the planned shot is kept beside it.
+/// </summary>
+public static class GameRecordWriter
+{
+    /// <summary>The format name.</summary>
+    public const string Format = "billiards-game/1";
+
+    /// <summary>The record on one line of UTF-8 JSON.</summary>
+    public static byte[] ToUtf8(PlayedGame game, TableSpec table, PhysicsParams physics)
+    {
+        ArgumentNullException.ThrowIfNull(game);
+        ArgumentNullException.ThrowIfNull(table);
+        using var stream = new MemoryStream();
+        using (var w = new Utf8JsonWriter(stream))
+        {
+            w.WriteStartObject();
+            w.WriteString("format", Format);
+            w.WriteStartObject("table");
+            w.WriteString("preset", table.Preset);
+            w.WriteEndObject();
+            w.WriteStartObject("physics");
+            w.WriteString("model", Models.Standard);
+            w.WriteString("integrator", Integrators.Event);
+            w.WriteNumber("dt", PhysicsConfig.DefaultDt);
+            w.WriteEndObject();
+            w.WriteStartObject("rack");
+            w.WriteString("game", game.Rules.ToName());
+            w.WriteNumber("seed", game.Racks[0]);
+            w.WriteEndObject();
+            w.WriteStartArray("racks");
+            foreach (int seed in game.Racks)
+            {
+                w.WriteNumberValue(seed);
+            }
+            w.WriteEndArray();
+            w.WriteString("rules", game.Rules.ToName());
+            w.WriteStartArray("levels");
+            w.WriteNumberValue(game.Levels.First);
+            w.WriteNumberValue(game.Levels.Second);
+            w.WriteEndArray();
+            if (game.Winner is { } winner)
+            {
+                w.WriteNumber("winner", winner);
+            }
+            else
+            {
+                w.WriteNull("winner");
+            }
+            w.WriteStartArray("shots");
+            foreach (var s in game.Shots)
+            {
+                w.WriteStartObject();
+                WriteGame(w, s.Before);
+                if (s.Place is { } p)
+                {
+                    WritePoint(w, "place", p);
+                }
+                else
+                {
+                    w.WriteNull("place");
+                }
+                WriteCall(w, s.Before.Call);
+                WriteShot(w, "shot", s.Executed);
+                WriteShot(w, "planned", s.Planned);
+                WriteRuling(w, s.Ruling);
+                if (s.Option is { } option)
+                {
+                    w.WriteString("option", option.ToName());
+                }
+                w.WriteEndObject();
+            }
+            w.WriteEndArray();
+            w.WriteEndObject();
+        }
+        return stream.ToArray();
+    }
+
+    /// <summary>A shot as scenes write it: speed, aim, tip, elevation.</summary>
+    public static void WriteShot(Utf8JsonWriter w, string name, ShotSpec shot)
+    {
+        ArgumentNullException.ThrowIfNull(w);
+        ArgumentNullException.ThrowIfNull(shot);
+        w.WriteStartObject(name);
+        w.WriteNumber("speed", shot.Speed);
+        w.WriteNumber("aim_deg", shot.AimDeg);
+        w.WriteStartArray("tip");
+        w.WriteNumberValue(shot.TipSide);
+        w.WriteNumberValue(shot.TipHeight);
+        w.WriteEndArray();
+        w.WriteNumber("elevation_deg", shot.ElevationDeg);
+        w.WriteEndObject();
+    }
+
+    /// <summary>The call: {"ball", "pocket"}, {"safety": true} or null.</summary>
+    public static void WriteCall(Utf8JsonWriter w, Call? call)
+    {
+        ArgumentNullException.ThrowIfNull(w);
+        if (call is null)
+        {
+            w.WriteNull("call");
+            return;
+        }
+        w.WriteStartObject("call");
+        if (call.IsSafety)
+        {
+            w.WriteBoolean("safety", true);
+        }
+        else
+        {
+            w.WriteString("ball", call.Ball.ToString());
+            w.WriteString("pocket", call.Pocket.ToName());
+        }
+        w.WriteEndObject();
+    }
+
+    /// <summary>The ruling as results write it (scene-format.md).</summary>
+    public static void WriteRuling(Utf8JsonWriter w, Ruling ruling)
+    {
+        ArgumentNullException.ThrowIfNull(w);
+        ArgumentNullException.ThrowIfNull(ruling);
+        w.WriteStartObject("ruling");
+        w.WriteBoolean("legal", ruling.Legal);
+        w.WriteStartArray("fouls");
+        foreach (var f in ruling.Fouls)
+        {
+            w.WriteStringValue(f.ToName());
+        }
+        w.WriteEndArray();
+        w.WriteStartArray("pocketed");
+        foreach (var b in ruling.Pocketed)
+        {
+            w.WriteStringValue(b.ToString());
+        }
+        w.WriteEndArray();
+        w.WriteBoolean("continue", ruling.Continue);
+        if (ruling.BallInHand == BallInHand.None)
+        {
+            w.WriteNull("ball_in_hand");
+        }
+        else
+        {
+            w.WriteString("ball_in_hand", ruling.BallInHand.ToName());
+        }
+        w.WriteStartArray("spot");
+        foreach (var b in ruling.Spot)
+        {
+            w.WriteStringValue(b.ToString());
+        }
+        w.WriteEndArray();
+        w.WriteStartArray("options");
+        foreach (var o in ruling.Options)
+        {
+            w.WriteStringValue(o.ToName());
+        }
+        w.WriteEndArray();
+        w.WriteBoolean("game_over", ruling.GameOver);
+        if (ruling.Winner is { } winner)
+        {
+            w.WriteNumber("winner", winner);
+        }
+        else
+        {
+            w.WriteNull("winner");
+        }
+        w.WriteString("message", ruling.Message);
+        w.WriteEndObject();
+    }
+
+    private static void WriteGame(Utf8JsonWriter w, GameState s)
+    {
+        w.WriteStartObject("game");
+        w.WriteString("rules", s.Rules.ToName());
+        w.WriteNumber("shooter", s.Shooter);
+        w.WriteNumber("shot", s.Shot);
+        if (s.Groups is { } g)
+        {
+            w.WriteStartArray("groups");
+            w.WriteStringValue(g.First.ToName());
+            w.WriteStringValue(g.Second.ToName());
+            w.WriteEndArray();
+        }
+        else
+        {
+            w.WriteNull("groups");
+        }
+        WriteCall(w, s.Call);
+        w.WriteBoolean("push_out", s.PushOut);
+        w.WriteStartArray("fouls_in_row");
+        w.WriteNumberValue(s.FoulsInRow.First);
+        w.WriteNumberValue(s.FoulsInRow.Second);
+        w.WriteEndArray();
+        if (s.BallInHand != BallInHand.None)
+        {
+            w.WriteString("ball_in_hand", s.BallInHand.ToName());
+        }
+        w.WriteEndObject();
+    }
+
+    private static void WritePoint(Utf8JsonWriter w, string name, Vec3 p)
+    {
+        w.WriteStartArray(name);
+        w.WriteNumberValue(p.X);
+        w.WriteNumberValue(p.Y);
+        w.WriteEndArray();
+    }
+}
