@@ -18,7 +18,7 @@ public static class ShotAudio
     public const double Tail = 1.4;
 
     /// <summary>Longest shot rendered (s).</summary>
-    public const double MaxDuration = 120;
+    public const double MaxDuration = 60;
 
     /// <summary>The listener of an offline render: the eye of <c>render</c>'s default camera (16:9, 45 degrees).</summary>
     public static Listener DefaultListener(Scene scene)

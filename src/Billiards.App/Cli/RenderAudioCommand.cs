@@ -32,18 +32,10 @@ public static class RenderAudioCommand
             {
                 throw new CliException($"--rate {sampleRate}: expected {MinRate} to {MaxRate} Hz");
             }
-            if (!outPath.EndsWith(".wav", StringComparison.OrdinalIgnoreCase))
-            {
-                throw new CliException($"--out {outPath}: expected a .wav file");
-            }
-            string? folder = Path.GetDirectoryName(Path.GetFullPath(outPath));
-            if (folder is not null && !Directory.Exists(folder))
-            {
-                throw new CliException($"--out {outPath}: the folder {folder} does not exist");
-            }
+            outPath = OutputFiles.Check("--out", outPath, ".wav");
             var loaded = SceneLoader.Load(parse.GetValue(scene)!);
             float[] samples = ShotAudio.Render(loaded, sampleRate);
-            CommandLine.WriteAtomically(outPath, WavFile.Encode(samples, sampleRate, 2));
+            OutputFiles.Write(outPath, WavFile.Encode(samples, sampleRate, 2));
             return 0;
         });
         return command;
