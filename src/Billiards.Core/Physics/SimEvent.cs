@@ -1,10 +1,13 @@
 using Billiards.Core.Balls;
+using Billiards.Core.Table;
 
 namespace Billiards.Core.Physics;
 
 /// <summary>The kinds of event a shot's log holds.</summary>
 public enum EventKind : byte
 {
+    /// <summary>The cue strikes the cue ball: a shot starts. <see cref="SimEvent.Speed"/> is the cue's speed.</summary>
+    CueStrike,
     /// <summary>Two balls collide; <see cref="SimEvent.B"/> is the second ball.</summary>
     BallBall,
     /// <summary>A ball hits a cushion or a pocket jaw; <see cref="SimEvent.Feature"/> names which.</summary>
@@ -20,9 +23,16 @@ public enum EventKind : byte
 /// <param name="Kind">What happened.</param>
 /// <param name="A">The (first) ball.</param>
 /// <param name="B">The second ball of a ball-ball event; equal to <paramref name="A"/> otherwise.</param>
-/// <param name="Feature">Cushion or pocket index, named by <see cref="Simulation.FeatureName"/>; -1 for ball-ball.</param>
-/// <param name="Speed">Normal approach speed at impact (m/s); 0 for a pocket drop.</param>
-public readonly record struct SimEvent(double Time, EventKind Kind, BallId A, BallId B, int Feature, double Speed);
+/// <param name="Feature">Cushion or pocket index, named by <see cref="Simulation.FeatureName"/>; -1 for ball-ball and cue-strike.</param>
+/// <param name="Speed">
+/// Normal approach speed at impact (m/s); for a pocket drop the ball's speed as it drops; for a
+/// cue strike the cue's speed.
+/// </param>
+public readonly record struct SimEvent(double Time, EventKind Kind, BallId A, BallId B, int Feature, double Speed)
+{
+    /// <summary>The pocket of a <see cref="EventKind.BallPocket"/> event.</summary>
+    public PocketId Pocket => Kind == EventKind.BallPocket ? (PocketId)Feature : PocketId.None;
+}
 
 /// <summary>
 /// An append-only list of events that reuses its buffer between shots: after warm-up, logging an

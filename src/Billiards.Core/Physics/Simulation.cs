@@ -89,8 +89,24 @@ public abstract class Simulation
     /// </summary>
     public abstract void Reset();
 
-    /// <summary>Strikes the cue ball with the cue at the current time.</summary>
-    public abstract void Strike(ShotSpec shot);
+    /// <summary>
+    /// Strikes the cue ball with the cue at the current time and opens a shot: logs a
+    /// <see cref="EventKind.CueStrike"/> event (speed = the cue's speed), then applies the model's
+    /// strike. Does nothing without a cue ball in play.
+    /// </summary>
+    public void Strike(ShotSpec shot)
+    {
+        int cue = IndexOf(BallId.Cue);
+        if (cue < 0 || Balls[cue].IsPocketed)
+        {
+            return;
+        }
+        Events.Add(new SimEvent(Time, EventKind.CueStrike, BallId.Cue, BallId.Cue, -1, shot.Speed));
+        ApplyStrike(cue, shot);
+    }
+
+    /// <summary>The model's cue strike on the ball at index <paramref name="cue"/>, which is in play.</summary>
+    protected abstract void ApplyStrike(int cue, ShotSpec shot);
 
     /// <summary>Name of a cushion (or jaw) or pocket feature of an event, as results write it.</summary>
     public abstract string FeatureName(EventKind kind, int feature);

@@ -63,6 +63,11 @@ public static class ResultWriter
             w.WriteNumber("t", e.Time);
             switch (e.Kind)
             {
+                case EventKind.CueStrike:
+                    w.WriteString("type", "cue-strike");
+                    WriteIds(w, e.A);
+                    w.WriteNumber("speed", e.Speed);
+                    break;
                 case EventKind.BallBall:
                     w.WriteString("type", "ball-ball");
                     WriteIds(w, e.A, e.B);
@@ -78,6 +83,7 @@ public static class ResultWriter
                     w.WriteString("type", "ball-pocket");
                     WriteIds(w, e.A);
                     w.WriteString("pocket", sim.FeatureName(e.Kind, e.Feature));
+                    w.WriteNumber("speed", e.Speed);
                     break;
             }
             w.WriteEndObject();
@@ -110,6 +116,7 @@ public static class ResultWriter
         w.WriteNumber("events", sim.Events.Count);
         w.WriteNumber("wall_ms", Math.Round(outcome.WallMilliseconds, 3));
         w.WriteBoolean("at_rest", outcome.AtRest);
+        w.WriteString("stop", SimulationRunner.Name(outcome.Stop));
         w.WriteNumber("event_cap_hits", sim.EventCapHits);
         w.WriteEndObject();
         w.WriteEndObject();

@@ -70,10 +70,9 @@ internal sealed class FakeSimulation : Simulation
         StepCount++;
     }
 
-    public override void Strike(ShotSpec shot)
+    protected override void ApplyStrike(int cue, ShotSpec shot)
     {
         Strikes.Add(shot);
-        int cue = IndexOf(BallId.Cue);
         double a = shot.AimDeg * Math.PI / 180;
         _balls[cue].Velocity = new Vec3(Math.Cos(a), Math.Sin(a), 0) * shot.Speed;
         _balls[cue].State = MotionState.Sliding;

@@ -22,7 +22,8 @@ public class ShotTests
     {
         var sim = StraightShot(-0.6);
         sim.AdvanceTo(2.0);
-        Assert.Equal(EventKind.BallBall, sim.Events[0].Kind);
+        Assert.Equal(EventKind.CueStrike, sim.Events[0].Kind);
+        Assert.Equal(EventKind.BallBall, sim.Events[1].Kind);
         // Contact happens with the cue ball's centre at x = -2R; draw brings it well behind that.
         Assert.True(sim.Balls[0].Position.X < -2 * R - 0.2, $"cue ball at {sim.Balls[0].Position.X}");
     }
@@ -32,7 +33,8 @@ public class ShotTests
     {
         var sim = StraightShot(0.6);
         sim.AdvanceTo(0.8);
-        Assert.Equal(EventKind.BallBall, sim.Events[0].Kind);
+        Assert.Equal(EventKind.CueStrike, sim.Events[0].Kind);
+        Assert.Equal(EventKind.BallBall, sim.Events[1].Kind);
         Assert.True(sim.Balls[0].Velocity.X > 0.1, $"vx = {sim.Balls[0].Velocity.X}");
         Assert.True(sim.Balls[0].Position.X > -2 * R + 0.05);
     }

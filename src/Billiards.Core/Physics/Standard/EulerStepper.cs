@@ -230,11 +230,12 @@ public sealed class EulerStepper
             {
                 if ((b.Position - pocket.Centre).XY.LengthSquared < pocket.Radius * pocket.Radius)
                 {
+                    double dropSpeed = b.Velocity.Length;
                     b.Velocity = Vec3.Zero;
                     b.Spin = Vec3.Zero;
                     b.State = MotionState.Pocketed;
                     b.Pocket = pocket.Pocket;
-                    _log.Add(new SimEvent(time, EventKind.BallPocket, _ids[i], _ids[i], pocket.Pocket, 0));
+                    _log.Add(new SimEvent(time, EventKind.BallPocket, _ids[i], _ids[i], pocket.Pocket, dropSpeed));
                     break;
                 }
             }

@@ -561,11 +561,12 @@ public sealed class EventEngine
     private void Pocket(int i, int pocket)
     {
         ref var ball = ref _balls[i];
+        double dropSpeed = ball.Velocity.Length;
         ball.Velocity = Vec3.Zero;
         ball.Spin = Vec3.Zero;
         ball.State = MotionState.Pocketed;
         ball.Pocket = pocket;
-        _log.Add(new SimEvent(Time, EventKind.BallPocket, _ids[i], _ids[i], pocket, 0));
+        _log.Add(new SimEvent(Time, EventKind.BallPocket, _ids[i], _ids[i], pocket, dropSpeed));
         Repredict(i);
         UpdateActive(i);
     }

@@ -151,17 +151,9 @@ public sealed class StandardSimulation : Simulation
         EventCapHits = 0;
     }
 
-    /// <summary>
-    /// Strikes the cue ball (TP, <see cref="CueStrike"/>). Does nothing without a cue
-    /// ball or when it is pocketed.
-    /// </summary>
-    public override void Strike(ShotSpec shot)
+    /// <summary>Strikes the cue ball (TP, <see cref="CueStrike"/>).</summary>
+    protected override void ApplyStrike(int cue, ShotSpec shot)
     {
-        int cue = IndexOf(BallId.Cue);
-        if (cue < 0 || _balls[cue].IsPocketed)
-        {
-            return;
-        }
         var outcome = CueStrike.Strike(shot, Parameters);
         _balls[cue].Velocity = outcome.Velocity;
         _balls[cue].Spin = outcome.Spin;

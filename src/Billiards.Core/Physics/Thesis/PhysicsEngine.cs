@@ -530,11 +530,13 @@ public sealed class PhysicsEngine
         {
             return -1;
         }
+        // The speed it drops with is its speed on the bed as the pocket test catches it.
+        float dropSpeed = ball.Velocity.Length();
         ball.Velocity = ball.Velocity with { Y = -Gravity * Ball.Mass };
         if (ball.Pocket < 0)
         {
             ball.Pocket = pocket;
-            Log(EventKind.BallPocket, ball, ball, pocket, 0);
+            Log(EventKind.BallPocket, ball, ball, pocket, dropSpeed);
         }
         return pocket;
     }

@@ -98,7 +98,7 @@ public sealed class ThesisSimulation : Simulation
     /// tip offset becomes the effet, e_x = side * 2.86 and e_y = height * 2.86 (cm); the elevation
     /// only tilts the drawn cue, as in the seed.
     /// </summary>
-    public override void Strike(ShotSpec shot)
+    protected override void ApplyStrike(int cue, ShotSpec shot)
     {
         double aim = shot.AimDeg * Math.PI / 180;
         float speed = (float)Math.Min(shot.Speed * SeedFrame.CentimetresPerMetre, Queue.MaxStrokeSpeed);
