@@ -118,6 +118,11 @@ public static class ResultWriter
         w.WriteBoolean("at_rest", outcome.AtRest);
         w.WriteNumber("event_cap_hits", sim.EventCapHits);
         w.WriteEndObject();
+        if (outcome.Ruling is { } ruling)
+        {
+            w.WritePropertyName("ruling");
+            GameBlockWriter.WriteRuling(w, ruling);
+        }
         w.WriteEndObject();
     }
 
