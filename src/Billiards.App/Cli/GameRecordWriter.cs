@@ -65,7 +65,8 @@ public static class GameRecordWriter
             foreach (var s in game.Shots)
             {
                 w.WriteStartObject();
-                WriteGame(w, s.Before);
+                w.WritePropertyName("game");
+                GameBlockWriter.WriteGame(w, s.Before);
                 if (s.Place is { } p)
                 {
                     WritePoint(w, "place", p);
@@ -77,7 +78,8 @@ public static class GameRecordWriter
                 WriteCall(w, s.Before.Call);
                 WriteShot(w, "shot", s.Executed);
                 WriteShot(w, "planned", s.Planned);
-                WriteRuling(w, s.Ruling);
+                w.WritePropertyName("ruling");
+                GameBlockWriter.WriteRuling(w, s.Ruling);
                 if (s.Option is { } option)
                 {
                     w.WriteString("option", option.ToName());
@@ -113,102 +115,11 @@ public static class GameRecordWriter
         if (call is null)
         {
             w.WriteNull("call");
-            return;
-        }
-        w.WriteStartObject("call");
-        if (call.IsSafety)
-        {
-            w.WriteBoolean("safety", true);
         }
         else
         {
-            w.WriteString("ball", call.Ball.ToString());
-            w.WriteString("pocket", call.Pocket.ToName());
+            GameBlockWriter.WriteCall(w, "call", call);
         }
-        w.WriteEndObject();
-    }
-
-    /// <summary>The ruling as results write it (scene-format.md).</summary>
-    public static void WriteRuling(Utf8JsonWriter w, Ruling ruling)
-    {
-        ArgumentNullException.ThrowIfNull(w);
-        ArgumentNullException.ThrowIfNull(ruling);
-        w.WriteStartObject("ruling");
-        w.WriteBoolean("legal", ruling.Legal);
-        w.WriteStartArray("fouls");
-        foreach (var f in ruling.Fouls)
-        {
-            w.WriteStringValue(f.ToName());
-        }
-        w.WriteEndArray();
-        w.WriteStartArray("pocketed");
-        foreach (var b in ruling.Pocketed)
-        {
-            w.WriteStringValue(b.ToString());
-        }
-        w.WriteEndArray();
-        w.WriteBoolean("continue", ruling.Continue);
-        if (ruling.BallInHand == BallInHand.None)
-        {
-            w.WriteNull("ball_in_hand");
-        }
-        else
-        {
-            w.WriteString("ball_in_hand", ruling.BallInHand.ToName());
-        }
-        w.WriteStartArray("spot");
-        foreach (var b in ruling.Spot)
-        {
-            w.WriteStringValue(b.ToString());
-        }
-        w.WriteEndArray();
-        w.WriteStartArray("options");
-        foreach (var o in ruling.Options)
-        {
-            w.WriteStringValue(o.ToName());
-        }
-        w.WriteEndArray();
-        w.WriteBoolean("game_over", ruling.GameOver);
-        if (ruling.Winner is { } winner)
-        {
-            w.WriteNumber("winner", winner);
-        }
-        else
-        {
-            w.WriteNull("winner");
-        }
-        w.WriteString("message", ruling.Message);
-        w.WriteEndObject();
-    }
-
-    private static void WriteGame(Utf8JsonWriter w, GameState s)
-    {
-        w.WriteStartObject("game");
-        w.WriteString("rules", s.Rules.ToName());
-        w.WriteNumber("shooter", s.Shooter);
-        w.WriteNumber("shot", s.Shot);
-        if (s.Groups is { } g)
-        {
-            w.WriteStartArray("groups");
-            w.WriteStringValue(g.First.ToName());
-            w.WriteStringValue(g.Second.ToName());
-            w.WriteEndArray();
-        }
-        else
-        {
-            w.WriteNull("groups");
-        }
-        WriteCall(w, s.Call);
-        w.WriteBoolean("push_out", s.PushOut);
-        w.WriteStartArray("fouls_in_row");
-        w.WriteNumberValue(s.FoulsInRow.First);
-        w.WriteNumberValue(s.FoulsInRow.Second);
-        w.WriteEndArray();
-        if (s.BallInHand != BallInHand.None)
-        {
-            w.WriteString("ball_in_hand", s.BallInHand.ToName());
-        }
-        w.WriteEndObject();
     }
 
     private static void WritePoint(Utf8JsonWriter w, string name, Vec3 p)

@@ -23,7 +23,7 @@ public static class SelfplayCommand
     /// <summary>Builds the verb.</summary>
     public static Command Create(TextWriter stdout, TextWriter stderr)
     {
-        var rules = new Option<string>("--rules") { Description = "The game: eight-ball or nine-ball.", Required = true };
+        var rules = new Option<string>("--rules") { Description = "The game: eight-ball, nine-ball or ten-ball.", Required = true };
         var games = new Option<int>("--games") { Description = "Number of games.", Required = true };
         var levels = new Option<string>("--levels") { Description = "The two players' levels, 1-5, e.g. 5,3 (the first is player 0).", Required = true };
         var seed = new Option<long>("--seed") { Description = "Seed of every rack and every error.", Required = true };
@@ -41,7 +41,7 @@ public static class SelfplayCommand
             }
             if (SelfPlay.RackOf(game) is null)
             {
-                throw new CliException($"--rules {rulesName}: self-play plays eight-ball and nine-ball (no {rulesName} rack yet)");
+                throw new CliException($"--rules {rulesName}: self-play plays eight-ball, nine-ball and ten-ball (not yet {rulesName})");
             }
             int count = parse.GetValue(games);
             if (count < 1 || count > MaxGames)

@@ -13,9 +13,9 @@ namespace Billiards.App.Cli;
 /// <c>{"shot": {...}, "place": [x, y] or null, "call": {...}, "expected": {"pot": p, "ruling": ...}, "simulations": n, "ms": t}</c>.
 /// </summary>
 /// <remarks>
-/// The game comes from the scene's "rules" (8-ball when it has none): a scene with a rack is a
-/// break, one without is a position after the break with an open table. The decision is seeded,
-/// so the same scene gives the same suggestion.
+/// The game state is the scene's "game" block. Without one it comes from the scene's "rules"
+/// (8-ball when it has none): a scene with a rack is a break, one without is a position after the
+/// break with an open table. The decision is seeded, so the same scene gives the same suggestion.
 /// </remarks>
 public static class SuggestCommand
 {
@@ -63,6 +63,10 @@ public static class SuggestCommand
     public static GameState StateOf(Scene scene)
     {
         ArgumentNullException.ThrowIfNull(scene);
+        if (scene.Game is { } game)
+        {
+            return game;
+        }
         var rules = GameRules.EightBall;
         if (scene.Rules is { } name && !RuleNames.TryParseGame(name, out rules))
         {
@@ -96,7 +100,8 @@ public static class SuggestCommand
             w.WriteNumber("pot", Math.Round(decision.ExpectedPot, 4));
             if (decision.ExpectedRuling is { } ruling)
             {
-                GameRecordWriter.WriteRuling(w, ruling);
+                w.WritePropertyName("ruling");
+                GameBlockWriter.WriteRuling(w, ruling);
             }
             else
             {

@@ -60,11 +60,12 @@ public sealed class SelfPlay
     /// <summary>The planner both players use.</summary>
     public ShotPlanner Planner => _planner;
 
-    /// <summary>The rack a game of <paramref name="rules"/> is played with, or null when the Initializer cannot rack it.</summary>
+    /// <summary>The rack a game of <paramref name="rules"/> is played with, or null for 14.1, whose reracks of 14 balls self-play does not place yet.</summary>
     public static RackGame? RackOf(GameRules rules) => rules switch
     {
         GameRules.EightBall => RackGame.EightBall,
         GameRules.NineBall => RackGame.NineBall,
+        GameRules.TenBall => RackGame.TenBall,
         _ => null,
     };
 

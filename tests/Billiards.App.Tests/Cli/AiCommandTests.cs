@@ -115,6 +115,7 @@ public sealed class AiCommandTests : IDisposable
     [InlineData("--levels", "5", "--levels 5")]
     [InlineData("--levels", "5,9", "--levels 5,9")]
     [InlineData("--rules", "snooker", "--rules snooker")]
+    [InlineData("--rules", "straight-pool", "--rules straight-pool")]
     [InlineData("--games", "0", "--games 0")]
     public void SelfplayRefusesABadArgumentInOneLine(string option, string value, string expected)
     {
