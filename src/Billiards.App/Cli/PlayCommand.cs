@@ -1,4 +1,5 @@
 using System.CommandLine;
+using Billiards.App.Audio;
 using Billiards.App.Game;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
@@ -24,9 +25,9 @@ public static class PlayCommand
             Arity = ArgumentArity.ZeroOrOne,
         };
         var command = new Command("play", "Play a scene in a window (the default verb).") { scene };
-        command.SetAction(parse => Play(parse.GetValue(scene), PlatformWiring.Open));
+        command.SetAction(parse => Play(parse.GetValue(scene), PlatformWiring.Open, openAudio: OpenAudio));
         root.Add(command);
-        root.SetAction(_ => Play(null, PlatformWiring.Open));
+        root.SetAction(_ => Play(null, PlatformWiring.Open, openAudio: OpenAudio));
     }
 
     /// <summary>Loads the scene, opens the platform and runs the game until the window closes.</summary>
@@ -34,16 +35,22 @@ public static class PlayCommand
     /// <param name="openPlatform">Opens the window and renderer for a window title.</param>
     /// <param name="createSimulation">Makes the simulation; <see cref="SimulationFactory.Create"/> by default.</param>
     /// <param name="clock">The clock; the real one by default.</param>
+    /// <param name="openAudio">Opens the sound output; silence by default (tests).</param>
     /// <returns>The exit code.</returns>
-    public static int Play(string? scenePath, Func<string, GamePlatform> openPlatform, Func<Scene, Simulation>? createSimulation = null, IClock? clock = null)
+    public static int Play(string? scenePath, Func<string, GamePlatform> openPlatform, Func<Scene, Simulation>? createSimulation = null, IClock? clock = null, Func<IAudioOutput>? openAudio = null)
     {
         var scene = SceneLoader.Load(scenePath ?? FindDefaultScene());
         string title = scene.Name is { } name ? $"{PlatformWiring.WindowTitle}: {name}" : PlatformWiring.WindowTitle;
         using var platform = OpenOrExplain(openPlatform, title);
+        using var audio = openAudio?.Invoke() ?? new SilentAudio();
         using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, platform.Window, clock ?? new StopwatchClock());
+        host.Tree.Root.AddChild(new AudioNode(audio));
         host.Run(platform.Loop, platform.Renderer);
         return 0;
     }
+
+    // No audio device (a server, CI): the game plays silently after one line on stderr.
+    private static IAudioOutput OpenAudio() => AudioOutputs.Open(Console.Error);
 
     // No display, no GL driver, no GLFW: an environment problem, one line and exit code 1.
     private static GamePlatform OpenOrExplain(Func<string, GamePlatform> openPlatform, string title)
