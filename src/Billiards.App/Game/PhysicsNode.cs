@@ -6,6 +6,7 @@ using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
+using Billiards.Core.Setup;
 using Billiards.Core.Table;
 
 namespace Billiards.App.Game;
@@ -20,12 +21,10 @@ public sealed class PhysicsNode : Node
     /// <summary>Seed 4.3.5: a pocketed ball stops being drawn once it has dropped below y = -20 cm (m).</summary>
     public const double DropOutOfSightZ = -0.20;
 
-    private readonly Func<Scene, Simulation> _createSimulation;
     private readonly Scene _scene;
-    private Simulation _simulation;
-    private BallState[] _previous;
+    private readonly Simulation _simulation;
+    private readonly BallState[] _previous;
     private int _eventsSeen;
-    private Vec3? _cuePlacement;
     private Vec3 _cueAtStrike;
 
     /// <summary>Creates the node and its simulation from the scene.</summary>
@@ -33,9 +32,10 @@ public sealed class PhysicsNode : Node
     /// <param name="createSimulation">Makes a simulation of a scene (<see cref="SimulationFactory.Create"/> in the game).</param>
     public PhysicsNode(Scene scene, Func<Scene, Simulation> createSimulation)
     {
+        ArgumentNullException.ThrowIfNull(createSimulation);
         _scene = scene;
-        _createSimulation = createSimulation;
-        _simulation = CreateSimulation(scene);
+        _simulation = createSimulation(scene);
+        _simulation.TrackOrientation = true; // the game draws the balls' numbers turning
         _previous = _simulation.Balls.ToArray();
     }
 
@@ -48,14 +48,14 @@ public sealed class PhysicsNode : Node
     /// <summary>Signal: every ball is at rest after a shot; the argument is the cue ball's displacement over the shot (m).</summary>
     public event Action<Vec3>? CameToRest;
 
-    /// <summary>The running simulation (replaced when the cue ball is placed by hand).</summary>
+    /// <summary>The running simulation.</summary>
     public Simulation Simulation => _simulation;
 
     /// <summary>The table.</summary>
     public TableSpec Table => _scene.Table;
 
     /// <summary>Ball radius of the scene's model (m).</summary>
-    public double BallRadius => _scene.BallRadius;
+    public double BallRadius => _simulation.BallRadius;
 
     /// <summary>True from a strike until every ball rests: all actions but viewing are locked.</summary>
     public bool IsRolling { get; private set; }
@@ -66,36 +66,23 @@ public sealed class PhysicsNode : Node
     /// <summary>True when there is a cue ball on the table.</summary>
     public bool HasCueBall => CueIndex is int i && !_simulation.Balls[i].IsPocketed;
 
-    /// <summary>The cue ball's centre (m), including a placement not yet handed to the simulation.</summary>
-    public Vec3 CueBallPosition => _cuePlacement ?? (CueIndex is int i ? _simulation.Balls[i].Position : Vec3.Zero);
+    /// <summary>The cue ball's centre (m).</summary>
+    public Vec3 CueBallPosition => CueIndex is int i ? _simulation.Balls[i].Position : Vec3.Zero;
 
     private int? CueIndex => _simulation.IndexOf(BallId.Cue) is var i and >= 0 ? i : null;
 
     /// <summary>
-    /// Places the cue ball by hand (move mode). Refused (false) while balls roll, off the bed, or
-    /// overlapping another ball. The placement is handed to Core at the next strike.
+    /// Places the cue ball by hand (move mode) through Core's placement, which refuses (false) a
+    /// place off the bed, over a pocket or overlapping another ball; refused too while balls roll.
     /// </summary>
     public bool TryPlaceCueBall(Vec3 position)
     {
-        if (IsRolling || CueIndex is not int cue)
+        if (IsRolling || !HasCueBall || !_simulation.TryPlaceBall(BallId.Cue, position, PlacementRegion.Table, out _))
         {
             return false;
         }
-        double r = BallRadius;
-        const double Tolerance = 1e-9;
-        if (Math.Abs(position.X) > Table.HalfLength - r + Tolerance || Math.Abs(position.Y) > Table.HalfWidth - r + Tolerance)
-        {
-            return false;
-        }
-        var balls = _simulation.Balls;
-        for (int i = 0; i < balls.Length; i++)
-        {
-            if (i != cue && !balls[i].IsPocketed && (balls[i].Position - position).XY.Length < 2 * r)
-            {
-                return false;
-            }
-        }
-        _cuePlacement = position with { Z = r };
+        // A hand-placed ball jumps: interpolation must not slide it from its old place.
+        _simulation.Balls.CopyTo(_previous);
         return true;
     }
 
@@ -111,7 +98,6 @@ public sealed class PhysicsNode : Node
         {
             throw new InvalidOperationException("there is no cue ball on the table");
         }
-        CommitCuePlacement();
         _cueAtStrike = CueBallPosition;
         _simulation.Strike(shot);
         LastShot = shot;
@@ -161,10 +147,6 @@ public sealed class PhysicsNode : Node
             ref readonly var previous = ref _previous[i];
             var position = Vector3.Lerp(previous.Position.ToVector3(), current.Position.ToVector3(), alpha);
             var orientation = Quaternion.Slerp(Valid(previous.Orientation), Valid(current.Orientation), alpha);
-            if (_cuePlacement is { } placed && _simulation.Ids[i].IsCue)
-            {
-                position = placed.ToVector3();
-            }
             frame.Frame.Balls.Add(new BallVisual(_simulation.Ids[i], position, orientation, IsVisible(current)));
         }
     }
@@ -187,41 +169,5 @@ public sealed class PhysicsNode : Node
         {
             EventOccurred?.Invoke(log[_eventsSeen]);
         }
-    }
-
-    /// <summary>
-    /// Core has no call to move a ball, so a placed cue ball is handed over by starting a new
-    /// simulation from the balls as they rest now. Pocketed balls are left out (they are out of
-    /// play); orientations start afresh. MERGE: replace with a Core placement call once there is one.
-    /// </summary>
-    private void CommitCuePlacement()
-    {
-        if (_cuePlacement is not { } placed)
-        {
-            return;
-        }
-        var balls = _simulation.Balls;
-        var setups = new List<BallSetup>(balls.Length);
-        for (int i = 0; i < balls.Length; i++)
-        {
-            if (balls[i].IsPocketed)
-            {
-                continue;
-            }
-            var id = _simulation.Ids[i];
-            setups.Add(new BallSetup(id, id.IsCue ? placed : balls[i].Position, Vec3.Zero, Vec3.Zero));
-        }
-        // No rack (its balls are already placed above) and no opening shot.
-        _simulation = CreateSimulation(_scene with { Balls = setups, Rack = null, Shot = null });
-        _previous = _simulation.Balls.ToArray();
-        _eventsSeen = 0;
-        _cuePlacement = null;
-    }
-
-    private Simulation CreateSimulation(Scene scene)
-    {
-        var simulation = _createSimulation(scene);
-        simulation.TrackOrientation = true; // the game draws the balls' numbers turning
-        return simulation;
     }
 }

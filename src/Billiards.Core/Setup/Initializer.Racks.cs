@@ -38,23 +38,36 @@ public static partial class Initializer
     public static IReadOnlyList<(BallId Id, Vec3 Position)> Rack(RackSpec rack, TableSpec table, double radius)
     {
         var random = new Random(rack.Seed);
-        int[] rowSizes = rack.Game == RackGame.EightBall ? [1, 2, 3, 4, 5] : [1, 2, 3, 2, 1];
         int[] numbers = rack.Game == RackGame.EightBall ? EightBallOrder(random) : NineBallOrder(random);
+        var spots = RackSpots(rack.Game, table, radius);
+        var placed = new List<(BallId, Vec3)>(numbers.Length);
+        for (int k = 0; k < spots.Count; k++)
+        {
+            placed.Add((new BallId(numbers[k]), Jittered(spots[k], placed, radius, random)));
+        }
+        return placed;
+    }
 
+    /// <summary>
+    /// The spots of a rack's shape before jitter (z = radius), in the order racks fill them: the
+    /// apex on the foot spot first, then row by row towards the foot rail, each row from -y to +y,
+    /// neighbours 2R + <see cref="RackGap"/> apart.
+    /// </summary>
+    public static IReadOnlyList<Vec3> RackSpots(RackGame game, TableSpec table, double radius)
+    {
+        int[] rowSizes = game == RackGame.EightBall ? [1, 2, 3, 4, 5] : [1, 2, 3, 2, 1];
         double spacing = 2 * radius + RackGap;
         double rowStep = spacing * Math.Sqrt(3) / 2;
         var foot = FootSpot(table, radius);
-        var placed = new List<(BallId, Vec3)>(numbers.Length);
-        int k = 0;
+        var spots = new List<Vec3>(rowSizes.Sum());
         for (int row = 0; row < rowSizes.Length; row++)
         {
             for (int j = 0; j < rowSizes[row]; j++)
             {
-                var ideal = new Vec3(foot.X + row * rowStep, (j - (rowSizes[row] - 1) / 2.0) * spacing, radius);
-                placed.Add((new BallId(numbers[k++]), Jittered(ideal, placed, radius, random)));
+                spots.Add(new Vec3(foot.X + row * rowStep, (j - (rowSizes[row] - 1) / 2.0) * spacing, radius));
             }
         }
-        return placed;
+        return spots;
     }
 
     private static Vec3 Jittered(Vec3 ideal, List<(BallId, Vec3)> placed, double radius, Random random)

@@ -111,6 +111,34 @@ public sealed class ThesisSimulation : Simulation
     }
 
     /// <inheritdoc />
+    public override double BallRadius => ThesisConstants.RadiusMetres;
+
+    /// <summary>
+    /// Puts the seed's ball at the SI position in its frame (cm, y = 2.86 on the bed), at rest
+    /// and in play. The engine's start positions (where the seed's end-of-shot rules put a
+    /// pocketed cue ball back, or the whole game) stay those of the scene.
+    /// </summary>
+    protected override void PutBall(int index, Vec3 position)
+    {
+        var ball = Engine.Balls[index];
+        ball.Position = SeedFrame.FromSi(position);
+        ball.Velocity = Vector3.Zero;
+        ball.Pocket = -1;
+        ball.IsPocketed = false;
+        _statesStale = true;
+    }
+
+    /// <summary>Takes the seed's ball out of play: its pocketed flag without a pocket, at rest where it was.</summary>
+    protected override void TakeOut(int index)
+    {
+        var ball = Engine.Balls[index];
+        ball.Velocity = Vector3.Zero;
+        ball.Pocket = -1;
+        ball.IsPocketed = true;
+        _statesStale = true;
+    }
+
+    /// <inheritdoc />
     public override string FeatureName(EventKind kind, int feature) => kind switch
     {
         EventKind.BallCushion => Initializer.CushionNames[feature],
@@ -130,7 +158,7 @@ public sealed class ThesisSimulation : Simulation
             s.Velocity = velocity;
             s.Orientation = SeedFrame.ToSi(ball.Orientation);
             s.Pocket = ball.Pocket;
-            if (ball.Pocket >= 0)
+            if (ball.Pocket >= 0 || ball.IsPocketed)
             {
                 s.State = MotionState.Pocketed;
                 s.Spin = Vec3.Zero;
