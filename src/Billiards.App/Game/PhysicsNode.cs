@@ -6,7 +6,6 @@ using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
-using Billiards.Core.Setup;
 using Billiards.Core.Table;
 
 namespace Billiards.App.Game;
@@ -63,8 +62,14 @@ public sealed class PhysicsNode : Node
     /// <summary>The last shot played, or null before the first.</summary>
     public ShotSpec? LastShot { get; private set; }
 
-    /// <summary>True when there is a cue ball on the table.</summary>
+    /// <summary>True when there is a cue ball on the table (a scratched one is placed back by hand).</summary>
     public bool HasCueBall => CueIndex is int i && !_simulation.Balls[i].IsPocketed;
+
+    /// <summary>True from a scratch until the cue ball is struck: it is in hand and may be placed anywhere on the bed.</summary>
+    public bool BallInHand { get; private set; }
+
+    /// <summary>Signal: the cue ball was pocketed and came back in hand at this position (m).</summary>
+    public event Action<Vec3>? CueBallReturned;
 
     /// <summary>The cue ball's centre (m).</summary>
     public Vec3 CueBallPosition => CueIndex is int i ? _simulation.Balls[i].Position : Vec3.Zero;
@@ -72,18 +77,53 @@ public sealed class PhysicsNode : Node
     private int? CueIndex => _simulation.IndexOf(BallId.Cue) is var i and >= 0 ? i : null;
 
     /// <summary>
-    /// Places the cue ball by hand (move mode) through Core's placement, which refuses (false) a
-    /// place off the bed, over a pocket or overlapping another ball; refused too while balls roll.
+    /// Places the cue ball by hand (move mode). Refused (false) while balls roll, off the bed, or
+    /// overlapping another ball. The placement is handed to Core at the next strike.
     /// </summary>
     public bool TryPlaceCueBall(Vec3 position)
     {
-        if (IsRolling || !HasCueBall || !_simulation.TryPlaceBall(BallId.Cue, position, PlacementRegion.Table, out _))
+        if (IsRolling || CueIndex is not int cue || (!BallInHand && _simulation.Balls[cue].IsPocketed))
         {
             return false;
         }
-        // A hand-placed ball jumps: interpolation must not slide it from its old place.
+        return IsFreeSpot(position) && Place(position);
+    }
+
+    // Core places the ball (back in play, at rest); a hand-placed ball jumps, so interpolation
+    // must not slide it from its old place.
+    private bool Place(Vec3 position)
+    {
+        _simulation.PlaceBall(BallId.Cue, position);
         _simulation.Balls.CopyTo(_previous);
         return true;
+    }
+
+    // Core's placement test: on the bed inside the cushions, over no pocket, clear of every other ball.
+    private bool IsFreeSpot(Vec3 position) => _simulation.PlacementProblem(BallId.Cue, position) is null;
+
+    /// <summary>
+    /// Where a scratched cue ball comes back: the head spot (a quarter of the length from the head
+    /// rail), or the free point nearest to it along the head string and then anywhere on the bed.
+    /// </summary>
+    public Vec3 ReturnSpot()
+    {
+        double r = BallRadius;
+        var head = new Vec3(-Table.Length / 4, 0, r);
+        for (int ring = 0; ring < 200; ring++)
+        {
+            double radius = ring * r;
+            int count = ring == 0 ? 1 : 8 * ring;
+            for (int k = 0; k < count; k++)
+            {
+                double a = 2 * Math.PI * k / count;
+                var p = head + new Vec3(radius * Math.Cos(a), radius * Math.Sin(a), 0);
+                if (IsFreeSpot(p))
+                {
+                    return p;
+                }
+            }
+        }
+        return head;
     }
 
     /// <summary>Strikes the cue ball; refused while balls roll.</summary>
@@ -98,6 +138,7 @@ public sealed class PhysicsNode : Node
         {
             throw new InvalidOperationException("there is no cue ball on the table");
         }
+        BallInHand = false;
         _cueAtStrike = CueBallPosition;
         _simulation.Strike(shot);
         LastShot = shot;
@@ -131,6 +172,13 @@ public sealed class PhysicsNode : Node
             IsRolling = false;
             // Nothing moves any more: interpolation must not pull the picture back a step.
             _simulation.Balls.CopyTo(_previous);
+            if (CueIndex is int cue && _simulation.Balls[cue].IsPocketed)
+            {
+                // A scratch: the cue ball comes back in hand instead of leaving the game without one.
+                BallInHand = true;
+                Place(ReturnSpot());
+                CueBallReturned?.Invoke(CueBallPosition);
+            }
             var displacement = HasCueBall ? CueBallPosition - _cueAtStrike : Vec3.Zero;
             CameToRest?.Invoke(displacement);
         }
