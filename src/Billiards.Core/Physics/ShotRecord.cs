@@ -73,6 +73,29 @@ public sealed class ShotRecord
         EndTime = simulation.Time;
     }
 
+    /// <summary>
+    /// A record made from given events and balls rather than a simulation: for shots logged
+    /// elsewhere and for hand-made cases.
+    /// </summary>
+    /// <param name="events">The shot's events in time order.</param>
+    /// <param name="ids">Ball ids, index-aligned with <paramref name="ballsAfter"/>.</param>
+    /// <param name="ballsAfter">Every ball after the shot, in SI.</param>
+    /// <param name="shot">The strike, or null.</param>
+    public static ShotRecord Of(ReadOnlySpan<SimEvent> events, IReadOnlyList<BallId> ids, ReadOnlySpan<BallState> ballsAfter, ShotSpec? shot = null)
+    {
+        ArgumentNullException.ThrowIfNull(ids);
+        if (ids.Count != ballsAfter.Length)
+        {
+            throw new ArgumentException($"{ids.Count} ids for {ballsAfter.Length} balls", nameof(ids));
+        }
+        var record = new ShotRecord { _events = events.ToArray(), _ids = [.. ids], _balls = ballsAfter.ToArray() };
+        record.EventCount = events.Length;
+        record.Shot = shot;
+        record.StartTime = events.Length > 0 ? events[0].Time : 0;
+        record.EndTime = events.Length > 0 ? events[^1].Time : 0;
+        return record;
+    }
+
     /// <summary>A new record of the shot that the simulation's last <see cref="EventKind.CueStrike"/> opened (or of all its events without one).</summary>
     public static ShotRecord LastShot(Simulation simulation, ShotSpec? shot)
     {

@@ -1,0 +1,144 @@
+namespace Billiards.Core.Rules;
+
+/// <summary>The games the referee judges (rules.md).</summary>
+public enum GameRules
+{
+    /// <summary>8-ball: solids and stripes, the 8 last, called shots.</summary>
+    EightBall,
+    /// <summary>9-ball: the lowest ball first, the 9 wins, push-out and three fouls.</summary>
+    NineBall,
+    /// <summary>10-ball: 9-ball's rules with called shots and the 10.</summary>
+    TenBall,
+    /// <summary>14.1 continuous (straight pool): called balls score a point each, reracks of 14.</summary>
+    StraightPool,
+}
+
+/// <summary>A group of 8-ball.</summary>
+public enum BallGroup
+{
+    /// <summary>Balls 1-7.</summary>
+    Solids,
+    /// <summary>Balls 9-15.</summary>
+    Stripes,
+}
+
+/// <summary>Where the next shooter may place the cue ball.</summary>
+public enum BallInHand
+{
+    /// <summary>No ball in hand: the cue ball stays where it lies.</summary>
+    None,
+    /// <summary>Anywhere on the bed.</summary>
+    Table,
+    /// <summary>Behind the head string (x &lt; -L/4).</summary>
+    Kitchen,
+}
+
+/// <summary>A choice the incoming player (the ruling's next shooter) may make after a shot.</summary>
+public enum RefereeOption
+{
+    /// <summary>Accept the table as it lies and shoot.</summary>
+    Accept,
+    /// <summary>Rack the balls again and break.</summary>
+    Rerack,
+    /// <summary>Spot the 8 pocketed on the break and go on.</summary>
+    SpotEight,
+    /// <summary>Shoot from the position a push-out left.</summary>
+    Shoot,
+    /// <summary>Hand the table back to the player who pushed out.</summary>
+    PassBack,
+}
+
+/// <summary>The referee's codes for what went wrong on a shot (rules.md).</summary>
+public enum Foul
+{
+    /// <summary>Ball in hand placed outside its region or overlapping a ball.</summary>
+    BadPlacement,
+    /// <summary>The cue ball was pocketed (a scratch).</summary>
+    CueBallPocketed,
+    /// <summary>The cue ball touched no object ball.</summary>
+    NoContact,
+    /// <summary>The first contact was not a legal target.</summary>
+    WrongBallFirst,
+    /// <summary>After a legal first contact no ball was pocketed and none touched a cushion.</summary>
+    NoRail,
+    /// <summary>The break did not meet the game's requirement.</summary>
+    BadBreak,
+    /// <summary>8-ball: the 8 pocketed while the shooter's group was on the table (loss).</summary>
+    EightBallEarly,
+    /// <summary>8-ball: the 8 pocketed on a shot with a foul (loss).</summary>
+    EightBallFoul,
+    /// <summary>8-ball: the 8 pocketed in another pocket than the one called (loss).</summary>
+    EightBallUncalled,
+    /// <summary>Three fouls in a row: a loss in 9-ball and 10-ball, -15 points in 14.1.</summary>
+    ThreeFouls,
+}
+
+/// <summary>
+/// The shooter's call: a ball and a pocket, or a safety (<see cref="Pocket"/> is
+/// <see cref="Table.PocketId.None"/>).
+/// </summary>
+/// <param name="Ball">The called ball (the cue ball for a safety).</param>
+/// <param name="Pocket">The called pocket, or <see cref="Table.PocketId.None"/> for a safety.</param>
+public sealed record Call(Balls.BallId Ball, Table.PocketId Pocket)
+{
+    /// <summary>A declared safety: no ball is called.</summary>
+    public static Call Safety { get; } = new(Balls.BallId.Cue, Table.PocketId.None);
+
+    /// <summary>True for a declared safety.</summary>
+    public bool IsSafety => Pocket == Table.PocketId.None;
+}
+
+/// <summary>The names scene and result files use for the referee's enums (scene-format.md).</summary>
+public static class RuleNames
+{
+    private static readonly string[] Games = ["eight-ball", "nine-ball", "ten-ball", "straight-pool"];
+    private static readonly string[] Groups = ["solids", "stripes"];
+    private static readonly string[] Hands = ["none", "table", "kitchen"];
+    private static readonly string[] Options = ["accept", "rerack", "spot-eight", "shoot", "pass-back"];
+    private static readonly string[] Fouls =
+    [
+        "bad-placement", "cue-ball-pocketed", "no-contact", "wrong-ball-first", "no-rail", "bad-break",
+        "eight-ball-early", "eight-ball-foul", "eight-ball-uncalled", "three-fouls",
+    ];
+
+    /// <summary>The game names in <see cref="GameRules"/> order.</summary>
+    public static IReadOnlyList<string> GameNames => Games;
+
+    /// <summary>"eight-ball", "nine-ball", "ten-ball" or "straight-pool".</summary>
+    public static string ToName(this GameRules rules) => Games[(int)rules];
+
+    /// <summary>"solids" or "stripes".</summary>
+    public static string ToName(this BallGroup group) => Groups[(int)group];
+
+    /// <summary>"none", "table" or "kitchen" (results write null for none).</summary>
+    public static string ToName(this BallInHand hand) => Hands[(int)hand];
+
+    /// <summary>"accept", "rerack", "spot-eight", "shoot" or "pass-back".</summary>
+    public static string ToName(this RefereeOption option) => Options[(int)option];
+
+    /// <summary>The foul's code, e.g. "cue-ball-pocketed".</summary>
+    public static string ToName(this Foul foul) => Fouls[(int)foul];
+
+    /// <summary>Parses a game name.</summary>
+    public static bool TryParseGame(string? name, out GameRules rules) => TryParse(Games, name, out rules);
+
+    /// <summary>Parses a group name.</summary>
+    public static bool TryParseGroup(string? name, out BallGroup group) => TryParse(Groups, name, out group);
+
+    /// <summary>Parses "table" or "kitchen" (not "none").</summary>
+    public static bool TryParseBallInHand(string? name, out BallInHand hand) =>
+        TryParse(Hands, name, out hand) && hand != BallInHand.None;
+
+    /// <summary>Parses an option name.</summary>
+    public static bool TryParseOption(string? name, out RefereeOption option) => TryParse(Options, name, out option);
+
+    /// <summary>Parses a foul code.</summary>
+    public static bool TryParseFoul(string? name, out Foul foul) => TryParse(Fouls, name, out foul);
+
+    private static bool TryParse<T>(string[] names, string? name, out T value) where T : struct, Enum
+    {
+        int i = Array.IndexOf(names, name);
+        value = (T)(object)Math.Max(i, 0);
+        return i >= 0;
+    }
+}

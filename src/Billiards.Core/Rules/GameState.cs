@@ -1,0 +1,91 @@
+using Billiards.Core.Mathematics;
+
+namespace Billiards.Core.Rules;
+
+/// <summary>
+/// One value per player of a two-player game, with value equality (so that a whole
+/// <see cref="GameState"/> compares by value).
+/// </summary>
+/// <param name="First">Player 0's value.</param>
+/// <param name="Second">Player 1's value.</param>
+public readonly record struct PerPlayer<T>(T First, T Second)
+{
+    /// <summary>Player <paramref name="player"/>'s value (0 or 1).</summary>
+    public T this[int player] => player switch
+    {
+        0 => First,
+        1 => Second,
+        _ => throw new ArgumentOutOfRangeException(nameof(player), player, "a game has players 0 and 1"),
+    };
+
+    /// <summary>A copy with player <paramref name="player"/>'s value replaced.</summary>
+    public PerPlayer<T> With(int player, T value) => player == 0 ? this with { First = value } : this with { Second = value };
+}
+
+/// <summary>
+/// The state of a game before a shot: what scene files carry as the "game" block
+/// (scene-format.md) and what the referee needs besides the shot itself. Every member but
+/// <see cref="Rules"/> defaults to the start of a game.
+/// </summary>
+public sealed record GameState
+{
+    /// <summary>The default target score of 14.1 (points).</summary>
+    public const int DefaultTarget = 100;
+
+    /// <summary>The default player names.</summary>
+    public static PerPlayer<string> DefaultPlayers { get; } = new("Player 1", "Player 2");
+
+    /// <summary>The start of a game of <paramref name="rules"/>: player 0 breaks.</summary>
+    public GameState(GameRules rules) => Rules = rules;
+
+    /// <summary>Which game is played.</summary>
+    public GameRules Rules { get; init; }
+
+    /// <summary>The players' names.</summary>
+    public PerPlayer<string> Players { get; init; } = DefaultPlayers;
+
+    /// <summary>Index (0 or 1) of the player at the table.</summary>
+    public int Shooter { get; init; }
+
+    /// <summary>The index of the player waiting: the incoming player if the turn passes.</summary>
+    public int Incoming => 1 - Shooter;
+
+    /// <summary>The shot's number in this rack; 0 is the break.</summary>
+    public int Shot { get; init; }
+
+    /// <summary>8-ball: each player's group, or null while the table is open.</summary>
+    public PerPlayer<BallGroup>? Groups { get; init; }
+
+    /// <summary>The shooter's call, or null when none was made (counts as calling nothing).</summary>
+    public Call? Call { get; init; }
+
+    /// <summary>9-ball and 10-ball: this shot is a declared push-out (only on shot 1).</summary>
+    public bool PushOut { get; init; }
+
+    /// <summary>Consecutive fouls of each player.</summary>
+    public PerPlayer<int> FoulsInRow { get; init; }
+
+    /// <summary>14.1: each player's points.</summary>
+    public PerPlayer<int> Score { get; init; }
+
+    /// <summary>14.1: the points that win (default 100).</summary>
+    public int Target { get; init; } = DefaultTarget;
+
+    /// <summary>
+    /// Where the shooter may place the cue ball before this shot (the previous ruling's
+    /// ball in hand). The break always places behind the head string.
+    /// </summary>
+    public BallInHand BallInHand { get; init; }
+
+    /// <summary>
+    /// Where the shooter placed the cue ball with ball in hand (m, z = R), or null when it was
+    /// not placed; the referee checks it against <see cref="BallInHand"/>.
+    /// </summary>
+    public Vec3? Placement { get; init; }
+
+    /// <summary>The shooter's name.</summary>
+    public string ShooterName => Players[Shooter];
+
+    /// <summary>The incoming player's name.</summary>
+    public string IncomingName => Players[Incoming];
+}

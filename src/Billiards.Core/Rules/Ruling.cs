@@ -1,0 +1,69 @@
+using Billiards.Core.Balls;
+
+namespace Billiards.Core.Rules;
+
+/// <summary>
+/// The referee's decision on one shot, as results write it under "ruling" (scene-format.md).
+/// <see cref="Next"/> is the state for the next shot when the incoming player takes the first of
+/// <see cref="Options"/> (or when there are none); <see cref="Choose"/> gives the others.
+/// </summary>
+/// <param name="Legal">No foul on the shot.</param>
+/// <param name="Fouls">Every foul code of the shot, loss codes included; empty when legal.</param>
+/// <param name="Pocketed">Object balls pocketed on this shot, in the order they dropped.</param>
+/// <param name="Continue">The shooter stays at the table.</param>
+/// <param name="BallInHand">Where the next shooter may place the cue ball.</param>
+/// <param name="Spot">Balls to put on the foot spot before the next shot, in number order.</param>
+/// <param name="Options">The incoming player's choices; the first is the default that <see cref="Next"/> assumes.</param>
+/// <param name="GameOver">The game is decided.</param>
+/// <param name="Winner">The winner's index, or null.</param>
+/// <param name="Message">One sentence for the HUD.</param>
+/// <param name="Next">The game state before the next shot.</param>
+public sealed record Ruling(
+    bool Legal,
+    IReadOnlyList<Foul> Fouls,
+    IReadOnlyList<BallId> Pocketed,
+    bool Continue,
+    BallInHand BallInHand,
+    IReadOnlyList<BallId> Spot,
+    IReadOnlyList<RefereeOption> Options,
+    bool GameOver,
+    int? Winner,
+    string Message,
+    GameState Next)
+{
+    /// <summary>
+    /// 14.1: the balls to rack again with the apex spot empty before the next shot (the 14
+    /// pocketed balls, or all 15), empty otherwise. The game places them; the ruling's JSON does
+    /// not carry them because every reader can tell them from the balls on the table.
+    /// </summary>
+    public IReadOnlyList<BallId> Rerack { get; init; } = [];
+
+    /// <summary>
+    /// The state and table work that follow when the next shooter takes <paramref name="option"/>.
+    /// </summary>
+    /// <exception cref="ArgumentException">When the ruling does not offer the option.</exception>
+    public OptionOutcome Choose(RefereeOption option)
+    {
+        if (!Options.Contains(option))
+        {
+            throw new ArgumentException($"the ruling offers no \"{option.ToName()}\" (it offers {string.Join(", ", Options.Select(o => o.ToName()))})", nameof(option));
+        }
+        return option switch
+        {
+            // A rerack of 8-ball is broken by the player who chose it; 14.1's by the offender, who is
+            // the player that is not choosing.
+            RefereeOption.Rerack when Next.Rules == GameRules.StraightPool =>
+                new OptionOutcome(Next with { Shooter = Next.Incoming, Shot = 0, BallInHand = BallInHand.None }, true, []),
+            RefereeOption.Rerack =>
+                new OptionOutcome(Next with { Shot = 0, BallInHand = BallInHand.None, Groups = null }, true, []),
+            RefereeOption.PassBack => new OptionOutcome(Next with { Shooter = Next.Incoming, BallInHand = BallInHand.None }, false, Spot),
+            _ => new OptionOutcome(Next, false, Spot),
+        };
+    }
+}
+
+/// <summary>What follows an option of the incoming player.</summary>
+/// <param name="Next">The game state before the next shot.</param>
+/// <param name="Rerack">Rack all the game's balls again (the next shot is a break).</param>
+/// <param name="Spot">Balls to spot before the next shot.</param>
+public sealed record OptionOutcome(GameState Next, bool Rerack, IReadOnlyList<BallId> Spot);
