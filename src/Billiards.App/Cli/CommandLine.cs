@@ -7,70 +7,94 @@ namespace Billiards.App.Cli;
 /// The verbs of the executable (scene-format.md). A bad scene or argument gives one line on
 /// stderr naming what is wrong and a non-zero exit; nothing is written half-way.
 /// </summary>
+/// <remarks>
+/// The one error path of every verb, present and future: a verb's action throws, and
+/// <see cref="Run"/> turns the exception into one line on stderr and an exit code, so no stack
+/// trace ever reaches a user.
+/// <list type="bullet">
+/// <item><see cref="SceneException"/> and <see cref="CliException"/>: bad input, exit <see cref="BadInput"/> (2).</item>
+/// <item><see cref="EnvironmentException"/>, I/O and access errors (a read-only disk, a full disk),
+/// missing native libraries: an environment problem, exit <see cref="Failure"/> (1).</item>
+/// <item>Anything else is a defect of the program: one line naming it, exit <see cref="Failure"/>.</item>
+/// </list>
+/// A verb checks its arguments and every output path (<see cref="OutputFiles.Check"/>) before it
+/// starts working, and writes its files with <see cref="OutputFiles.Write"/> (temporary file beside
+/// the target, then a rename).
+/// </remarks>
 public static class CommandLine
 {
     /// <summary>Exit code for bad input (scene or arguments).</summary>
     public const int BadInput = 2;
 
-    /// <summary>Exit code for a failure that is not the input's fault.</summary>
+    /// <summary>Exit code for a failure that is not the input's fault (the environment, or a defect).</summary>
     public const int Failure = 1;
 
     /// <summary>Parses and runs a command line; returns the exit code.</summary>
     public static int Run(string[] args, TextWriter stdout, TextWriter stderr)
     {
-        var root = new RootCommand("Billiards: a pool game and billiards physics engine.")
-        {
-            SimulateCommand.Create(stdout),
-            RenderCommand.Create(stdout),
-            ReportCommand.Create(stdout, stderr),
-        };
-        PlayCommand.AddTo(root);
-        var parse = root.Parse(args);
-        if (parse.Errors.Count > 0)
-        {
-            stderr.WriteLine($"billiards: {Plain(parse.Errors[0].Message)}");
-            return BadInput;
-        }
         try
         {
+            var root = new RootCommand("Billiards: a pool game and billiards physics engine.")
+            {
+                SimulateCommand.Create(stdout),
+                RenderCommand.Create(stdout),
+                ReportCommand.Create(stdout, stderr),
+            };
+            PlayCommand.AddTo(root);
+            var parse = root.Parse(args);
+            if (parse.Errors.Count > 0)
+            {
+                return Fail(stderr, $"billiards: {Plain(parse.Errors[0].Message)}", BadInput);
+            }
             return parse.Invoke(new InvocationConfiguration { Output = stdout, Error = stderr, EnableDefaultExceptionHandler = false });
         }
-        catch (SceneException e)
+        catch (Exception e)
         {
-            stderr.WriteLine(e.Message);
-            return BadInput;
-        }
-        catch (CliException e)
-        {
-            stderr.WriteLine($"billiards: {e.Message}");
-            return BadInput;
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            stderr.WriteLine($"billiards: {e.Message}");
-            return Failure;
+            var (message, code) = Classify(e);
+            return Fail(stderr, message, code);
         }
     }
+
+    /// <summary>The line a user sees for an exception, and the exit code (see the remarks of <see cref="CommandLine"/>).</summary>
+    public static (string Message, int Code) Classify(Exception e) => e switch
+    {
+        SceneException => (e.Message, BadInput),
+        CliException => ($"billiards: {e.Message}", BadInput),
+        EnvironmentException => ($"billiards: {e.Message}", Failure),
+        IOException or UnauthorizedAccessException => ($"billiards: {e.Message}", Failure),
+        DllNotFoundException or EntryPointNotFoundException or BadImageFormatException => ($"billiards: a native library is missing or unusable: {e.Message}", Failure),
+        OutOfMemoryException or InsufficientExecutionStackException => ($"billiards: out of memory ({e.Message})", Failure),
+        _ => ($"billiards: internal error ({e.GetType().Name}): {e.Message}", Failure),
+    };
+
+    private static int Fail(TextWriter stderr, string message, int code)
+    {
+        try
+        {
+            stderr.WriteLine(OneLine(message));
+        }
+        catch (IOException)
+        {
+            // stderr itself is gone: the exit code is all that is left.
+        }
+        return code;
+    }
+
+    /// <summary>A message on one line: line breaks become spaces.</summary>
+    public static string OneLine(string message) =>
+        message.Replace("\r\n", " ", StringComparison.Ordinal).Replace('\n', ' ').Replace('\r', ' ');
 
     // System.CommandLine names CLR types in its messages ("System.Nullable`1[System.Double]").
     private static string Plain(string message) =>
         message.Replace("'System.Nullable`1[System.Double]'", "number").Replace("'System.Double'", "number")
-               .Replace("'System.Int32'", "whole number");
-
-    /// <summary>Writes bytes to a file only once they are complete: a temporary file renamed into place.</summary>
-    public static void WriteAtomically(string path, ReadOnlySpan<byte> bytes)
-    {
-        string full = Path.GetFullPath(path);
-        string? dir = Path.GetDirectoryName(full);
-        if (dir is not null && !Directory.Exists(dir))
-        {
-            throw new CliException($"--out {path}: the folder {dir} does not exist");
-        }
-        string temp = full + ".tmp-" + Environment.ProcessId;
-        File.WriteAllBytes(temp, bytes.ToArray());
-        File.Move(temp, full, overwrite: true);
-    }
+               .Replace("'System.Nullable`1[System.Int32]'", "whole number").Replace("'System.Int32'", "whole number");
 }
 
-/// <summary>A bad command-line argument, reported as one line.</summary>
+/// <summary>A bad command-line argument, reported as one line with exit code 2.</summary>
 public sealed class CliException(string message) : Exception(message);
+
+/// <summary>
+/// A problem of the environment rather than of the input (no display, no audio device, a folder
+/// that cannot be written), reported as one line with exit code 1.
+/// </summary>
+public sealed class EnvironmentException(string message, Exception? inner = null) : Exception(message, inner);

@@ -39,10 +39,23 @@ public static class PlayCommand
     {
         var scene = SceneLoader.Load(scenePath ?? FindDefaultScene());
         string title = scene.Name is { } name ? $"{PlatformWiring.WindowTitle}: {name}" : PlatformWiring.WindowTitle;
-        using var platform = openPlatform(title);
+        using var platform = OpenOrExplain(openPlatform, title);
         using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, platform.Window, clock ?? new StopwatchClock());
         host.Run(platform.Loop, platform.Renderer);
         return 0;
+    }
+
+    // No display, no GL driver, no GLFW: an environment problem, one line and exit code 1.
+    private static GamePlatform OpenOrExplain(Func<string, GamePlatform> openPlatform, string title)
+    {
+        try
+        {
+            return openPlatform(title);
+        }
+        catch (Exception e) when (e is InvalidOperationException or DllNotFoundException or EntryPointNotFoundException)
+        {
+            throw new EnvironmentException($"play: cannot open the game's window: {e.Message}", e);
+        }
     }
 
     /// <summary>

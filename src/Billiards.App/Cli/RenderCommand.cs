@@ -45,9 +45,9 @@ public static class RenderCommand
                 throw new CliException($"--height {h}: expected 1 to {MaxSize} pixels");
             }
             double time = parse.GetValue(at) ?? 0;
-            if (!double.IsFinite(time) || time < 0)
+            if (!double.IsFinite(time) || time < 0 || time > RunOptions.MaxUntil)
             {
-                throw new CliException($"--at {time}: expected a time of 0 s or more");
+                throw new CliException(string.Create(CultureInfo.InvariantCulture, $"--at {time}: expected a time from 0 to {RunOptions.MaxUntil} s"));
             }
             (Vector3 Eye, Vector3 Target, float Fov)? cameraValue = parse.GetValue(camera) is { } text ? ParseCamera(text) : null;
             string? modelPath = parse.GetValue(model);
@@ -55,15 +55,7 @@ public static class RenderCommand
             {
                 throw new CliException($"--model {modelPath}: no such file");
             }
-            if (!outPath.EndsWith(".png", StringComparison.OrdinalIgnoreCase))
-            {
-                throw new CliException($"--out {outPath}: expected a .png file");
-            }
-            string? folder = Path.GetDirectoryName(Path.GetFullPath(outPath));
-            if (folder is not null && !Directory.Exists(folder))
-            {
-                throw new CliException($"--out {outPath}: the folder {folder} does not exist");
-            }
+            outPath = OutputFiles.Check("--out", outPath, ".png");
 
             var loaded = SceneLoader.Load(parse.GetValue(scene)!);
             var frame = SceneFrames.Build(loaded, time, w, h);
@@ -80,11 +72,15 @@ public static class RenderCommand
                 using var renderer = new OffscreenRenderer(modelPath is null ? null : _ => Path.GetFullPath(modelPath));
                 png = PngEncoder.Encode(renderer.Render(frame), w, h);
             }
-            catch (Exception e) when (e is InvalidOperationException or InvalidDataException or DllNotFoundException or EntryPointNotFoundException)
+            catch (Exception e) when (e is InvalidOperationException or DllNotFoundException or EntryPointNotFoundException)
+            {
+                throw new EnvironmentException($"render: {e.Message}", e);
+            }
+            catch (InvalidDataException e)
             {
                 throw new CliException($"render: {e.Message}");
             }
-            CommandLine.WriteAtomically(outPath, png);
+            OutputFiles.Write(outPath, png);
             return 0;
         });
         return command;

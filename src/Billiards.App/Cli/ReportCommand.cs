@@ -8,6 +8,9 @@ namespace Billiards.App.Cli;
 /// <summary><c>report accuracy [--out DIR]</c>: the error-against-run-time report (CSV, SVG plot, Markdown summary).</summary>
 public static class ReportCommand
 {
+    /// <summary>The files the report writes into its folder.</summary>
+    public static IReadOnlyList<string> FileNames { get; } = ["accuracy.csv", "accuracy.svg", "accuracy.md"];
+
     /// <summary>Builds the verb.</summary>
     public static Command Create(TextWriter stdout, TextWriter stderr)
     {
@@ -16,7 +19,13 @@ public static class ReportCommand
         var accuracy = new Command("accuracy", "Measure each integrator and step against the event-based reference solver.") { output, scenes };
         accuracy.SetAction(parse =>
         {
+            // Everything is checked before the first measurement: the suite, every scene in every
+            // configuration measured, and the output folder.
             string folder = parse.GetValue(scenes) ?? AssetFolder.Scene("accuracy");
+            if (string.IsNullOrWhiteSpace(folder))
+            {
+                throw new CliException("--scenes: the path is empty");
+            }
             if (!Directory.Exists(folder))
             {
                 throw new CliException($"--scenes {folder}: no such folder");
@@ -26,13 +35,19 @@ public static class ReportCommand
             {
                 throw new CliException($"--scenes {folder}: no scene files");
             }
-            string dir = parse.GetValue(output)!;
+            string dir = OutputFiles.CheckFolder("--out", parse.GetValue(output)!, [.. FileNames]);
+            AccuracyReport.Validate(files);
+
             var rows = AccuracyReport.Measure(files, stderr);
-            Directory.CreateDirectory(dir);
-            CommandLine.WriteAtomically(Path.Combine(dir, "accuracy.csv"), Encoding.UTF8.GetBytes(AccuracyReport.ToCsv(rows)));
-            CommandLine.WriteAtomically(Path.Combine(dir, "accuracy.svg"), Encoding.UTF8.GetBytes(AccuracyReport.ToSvg(rows)));
             string summary = AccuracyReport.ToMarkdown(rows, files.Count);
-            CommandLine.WriteAtomically(Path.Combine(dir, "accuracy.md"), Encoding.UTF8.GetBytes(summary));
+            byte[][] contents =
+            [
+                Encoding.UTF8.GetBytes(AccuracyReport.ToCsv(rows)),
+                Encoding.UTF8.GetBytes(AccuracyReport.ToSvg(rows)),
+                Encoding.UTF8.GetBytes(summary),
+            ];
+            Directory.CreateDirectory(dir);
+            OutputFiles.WriteAll([.. FileNames.Select((name, i) => (Path.Combine(dir, name), contents[i]))]);
             stdout.Write(summary);
             return 0;
         });

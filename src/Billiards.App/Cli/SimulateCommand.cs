@@ -1,4 +1,5 @@
 using System.CommandLine;
+using System.Globalization;
 using System.Text;
 using Billiards.Core.Scenes;
 
@@ -17,7 +18,7 @@ public static class SimulateCommand
         var model = new Option<string?>("--model") { Description = "Override the physics model: standard or thesis." };
         var integrator = new Option<string?>("--integrator") { Description = "Override the integrator: exact, euler or event (standard); fixed (thesis)." };
         var dt = new Option<double?>("--dt") { Description = "Override the fixed step (s)." };
-        var until = new Option<double?>("--until") { Description = "Stop at this simulated time (s) instead of at rest." };
+        var until = new Option<double?>("--until") { Description = "Stop at this simulated time (s, at most 3600) instead of at rest." };
         var sample = new Option<double?>("--sample") { Description = "Record positions every DT seconds." };
         var output = new Option<string?>("--out") { Description = "Write the result to FILE instead of standard output." };
 
@@ -29,24 +30,27 @@ public static class SimulateCommand
         {
             double? untilValue = parse.GetValue(until);
             double? sampleValue = parse.GetValue(sample);
-            if (untilValue is { } u && (!double.IsFinite(u) || u < 0))
+            if (untilValue is { } u && (!double.IsFinite(u) || u < 0 || u > RunOptions.MaxUntil))
             {
-                throw new CliException($"--until {u}: expected a time of 0 s or more");
+                throw new CliException(string.Create(CultureInfo.InvariantCulture,
+                    $"--until {u}: expected a time from 0 to {RunOptions.MaxUntil} s (the longest run simulated)"));
             }
             if (sampleValue is { } s && (!double.IsFinite(s) || s <= 0))
             {
                 throw new CliException($"--sample {s}: expected a positive interval (s)");
             }
+            string? outPath = parse.GetValue(output) is { } o ? OutputFiles.Check("--out", o) : null;
             var loaded = SceneLoader.Load(parse.GetValue(scene)!, new SceneOverrides(parse.GetValue(model), parse.GetValue(integrator), parse.GetValue(dt)));
-            if (sampleValue is { } interval && (untilValue ?? 600) / interval > 1_000_000)
+            var options = new RunOptions(untilValue, sampleValue);
+            if (sampleValue is { } interval && (untilValue ?? options.MaxTime) / interval > 1_000_000)
             {
                 throw new CliException($"--sample {interval}: more than a million samples; choose a larger interval");
             }
-            var outcome = SimulationRunner.Run(loaded, new RunOptions(untilValue, sampleValue));
+            var outcome = SimulationRunner.Run(loaded, options);
             byte[] json = ResultWriter.ToUtf8(outcome);
-            if (parse.GetValue(output) is { } path)
+            if (outPath is not null)
             {
-                CommandLine.WriteAtomically(path, json);
+                OutputFiles.Write(outPath, json);
             }
             else
             {

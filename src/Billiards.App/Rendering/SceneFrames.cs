@@ -37,7 +37,8 @@ public static class SceneFrames
         {
             simulation.Strike(s);
         }
-        simulation.AdvanceTo(time);
+        // Bounded as every run is (events, wall clock): a frictionless table never rests.
+        SimulationRunner.Advance(simulation, time, new RunOptions(), System.Diagnostics.Stopwatch.StartNew());
         var states = simulation.Balls;
         for (int i = 0; i < states.Length; i++)
         {

@@ -40,13 +40,7 @@ public static class AccuracyReport
     /// <param name="minTotalMilliseconds">Keep repeating until this much time was measured (or 50 repeats).</param>
     public static List<AccuracyRow> Measure(IReadOnlyList<string> scenePaths, TextWriter progress, int minRepeats = 5, double minTotalMilliseconds = 20)
     {
-        var configs = new List<(string Model, string Integrator, double Dt)>();
-        foreach (double dt in Steps)
-        {
-            configs.Add((Models.Standard, Integrators.Exact, dt));
-            configs.Add((Models.Standard, Integrators.Euler, dt));
-            configs.Add((Models.Thesis, Integrators.Fixed, dt));
-        }
+        var configs = Configurations();
         int total = scenePaths.Count * (configs.Count + 1), done = 0;
         var rows = new List<AccuracyRow>();
         foreach (string path in scenePaths)
@@ -66,6 +60,40 @@ public static class AccuracyReport
             }
         }
         return rows;
+    }
+
+    /// <summary>
+    /// Checks every scene of the suite before anything is measured: as written, in every
+    /// configuration the report runs, and that it has a shot to measure.
+    /// </summary>
+    /// <exception cref="SceneException">For the first scene that cannot be measured.</exception>
+    public static void Validate(IReadOnlyList<string> scenePaths)
+    {
+        foreach (string path in scenePaths)
+        {
+            var scene = SceneLoader.Load(path);
+            if (scene.Shot is null)
+            {
+                throw new SceneException(path, "$", "the accuracy report measures a shot, and the scene has no \"shot\"");
+            }
+            SceneLoader.Load(path, new SceneOverrides(Models.Standard, Integrators.Event));
+            foreach (var (model, integrator, dt) in Configurations())
+            {
+                SceneLoader.Load(path, new SceneOverrides(model, integrator, dt));
+            }
+        }
+    }
+
+    private static List<(string Model, string Integrator, double Dt)> Configurations()
+    {
+        var configs = new List<(string Model, string Integrator, double Dt)>();
+        foreach (double dt in Steps)
+        {
+            configs.Add((Models.Standard, Integrators.Exact, dt));
+            configs.Add((Models.Standard, Integrators.Euler, dt));
+            configs.Add((Models.Thesis, Integrators.Fixed, dt));
+        }
+        return configs;
     }
 
     private static void Report(TextWriter progress, int done, int total, string scene, string series, double? dt, double error, double micros) =>

@@ -116,6 +116,7 @@ public static class ResultWriter
         w.WriteNumber("events", sim.Events.Count);
         w.WriteNumber("wall_ms", Math.Round(outcome.WallMilliseconds, 3));
         w.WriteBoolean("at_rest", outcome.AtRest);
+        w.WriteString("stop", SimulationRunner.Name(outcome.Stop));
         w.WriteNumber("event_cap_hits", sim.EventCapHits);
         w.WriteEndObject();
         w.WriteEndObject();

@@ -4,11 +4,38 @@ using Billiards.Core.Physics;
 
 namespace Billiards.Core.Scenes;
 
-/// <summary>Options of a headless run.</summary>
-/// <param name="Until">Stop at this time (s) even if balls still move; null runs until everything rests.</param>
+/// <summary>What ended a headless run; results write it as <c>stats.stop</c>.</summary>
+public enum StopReason
+{
+    /// <summary>Every ball came to rest ("rest").</summary>
+    Rest,
+    /// <summary>The requested time was reached ("until").</summary>
+    Until,
+    /// <summary>The bound on simulated time was reached without rest ("max-time").</summary>
+    MaxTime,
+    /// <summary>The bound on the number of events was reached ("max-events").</summary>
+    MaxEvents,
+    /// <summary>The bound on wall-clock time was reached ("wall-clock").</summary>
+    WallClock,
+}
+
+/// <summary>Options of a headless run, with the bounds every run has.</summary>
+/// <param name="Until">Stop at this time (s) even if balls still move; null runs until everything rests. At most <see cref="RunOptions.MaxUntil"/>.</param>
 /// <param name="SampleDt">Record every ball's position every this many seconds; null records none.</param>
-/// <param name="MaxTime">Safety limit (s) when <paramref name="Until"/> is null.</param>
-public sealed record RunOptions(double? Until = null, double? SampleDt = null, double MaxTime = 600);
+/// <param name="MaxTime">Bound on simulated time (s) when <paramref name="Until"/> is null.</param>
+/// <param name="MaxEvents">Bound on the number of events of the run.</param>
+/// <param name="MaxWallSeconds">Bound on the wall-clock time of the run (s).</param>
+public sealed record RunOptions(double? Until = null, double? SampleDt = null, double MaxTime = 600, int MaxEvents = RunOptions.DefaultMaxEvents, double MaxWallSeconds = RunOptions.DefaultMaxWallSeconds)
+{
+    /// <summary>The largest accepted <see cref="Until"/> (s): one hour of simulated time.</summary>
+    public const double MaxUntil = 3600;
+
+    /// <summary>Default bound on events: far above any real shot (a break has about 100).</summary>
+    public const int DefaultMaxEvents = 200_000;
+
+    /// <summary>Default bound on wall-clock time (s).</summary>
+    public const double DefaultMaxWallSeconds = 60;
+}
 
 /// <summary>Positions of every ball at one time, for trajectories and replays.</summary>
 /// <param name="Time">Simulated time of the sample (s).</param>
@@ -20,14 +47,24 @@ public sealed record Sample(double Time, Vec3[] Positions);
 /// <param name="Samples">Position samples (empty without <see cref="RunOptions.SampleDt"/>).</param>
 /// <param name="WallMilliseconds">Wall-clock time of the run (ms).</param>
 /// <param name="AtRest">True when every ball came to rest.</param>
-public sealed record RunOutcome(Simulation Simulation, IReadOnlyList<Sample> Samples, double WallMilliseconds, bool AtRest);
+/// <param name="Stop">Which bound ended the run.</param>
+public sealed record RunOutcome(Simulation Simulation, IReadOnlyList<Sample> Samples, double WallMilliseconds, bool AtRest, StopReason Stop = StopReason.Rest);
 
-/// <summary>Runs a scene headless: create, strike, advance to rest (or a time), sample.</summary>
+/// <summary>Runs a scene headless: create, strike, advance to rest (or a time), sample; always bounded.</summary>
 public static class SimulationRunner
 {
+    // Simulated time between two checks of the event and wall-clock bounds (s): long enough that
+    // a normal shot is advanced in one piece, short enough that a bound is noticed promptly.
+    private const double Chunk = 10;
+
     /// <summary>Runs the scene with the options.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">When <see cref="RunOptions.Until"/> is not in [0, <see cref="RunOptions.MaxUntil"/>].</exception>
     public static RunOutcome Run(Scene scene, RunOptions options)
     {
+        if (options.Until is { } u && !(u >= 0 && u <= RunOptions.MaxUntil))
+        {
+            throw new ArgumentOutOfRangeException(nameof(options), u, $"until must lie in [0, {RunOptions.MaxUntil}] s");
+        }
         var clock = Stopwatch.StartNew();
         var sim = SimulationFactory.Create(scene);
         if (scene.Shot is { } shot)
@@ -36,21 +73,67 @@ public static class SimulationRunner
         }
         double limit = options.Until ?? options.MaxTime;
         var samples = new List<Sample>();
+        StopReason? stop = null;
         if (options.SampleDt is { } sampleDt)
         {
             for (long k = 0; k * sampleDt <= limit + 1e-12; k++)
             {
-                sim.AdvanceTo(k * sampleDt);
+                stop = Advance(sim, k * sampleDt, options, clock);
                 samples.Add(new Sample(sim.Time, Positions(sim)));
-                if (sim.IsAtRest)
+                if (stop is StopReason.Rest or StopReason.MaxEvents or StopReason.WallClock)
                 {
                     break;
                 }
+                stop = null;
             }
         }
-        sim.AdvanceTo(limit);
-        return new RunOutcome(sim, samples, clock.Elapsed.TotalMilliseconds, sim.IsAtRest);
+        stop ??= Advance(sim, limit, options, clock);
+        if (stop == StopReason.Until && options.Until is null)
+        {
+            stop = StopReason.MaxTime;
+        }
+        return new RunOutcome(sim, samples, clock.Elapsed.TotalMilliseconds, sim.IsAtRest, stop.Value);
     }
+
+    /// <summary>
+    /// Advances <paramref name="sim"/> towards <paramref name="time"/> as <see cref="Simulation.AdvanceTo"/>
+    /// does, but stops early at rest, after <see cref="RunOptions.MaxEvents"/> events or
+    /// <see cref="RunOptions.MaxWallSeconds"/> of <paramref name="clock"/>; returns why it stopped
+    /// (<see cref="StopReason.Until"/> when the time was reached).
+    /// </summary>
+    public static StopReason Advance(Simulation sim, double time, RunOptions options, Stopwatch clock)
+    {
+        while (true)
+        {
+            if (sim.IsAtRest)
+            {
+                return StopReason.Rest;
+            }
+            if (sim.Time >= time - 1e-12)
+            {
+                return StopReason.Until;
+            }
+            if (sim.Events.Count >= options.MaxEvents)
+            {
+                return StopReason.MaxEvents;
+            }
+            if (clock.Elapsed.TotalSeconds >= options.MaxWallSeconds)
+            {
+                return StopReason.WallClock;
+            }
+            sim.AdvanceTo(Math.Min(time, sim.Time + Chunk));
+        }
+    }
+
+    /// <summary>The name results write for a stop reason.</summary>
+    public static string Name(StopReason reason) => reason switch
+    {
+        StopReason.Rest => "rest",
+        StopReason.Until => "until",
+        StopReason.MaxTime => "max-time",
+        StopReason.MaxEvents => "max-events",
+        _ => "wall-clock",
+    };
 
     private static Vec3[] Positions(Simulation sim)
     {

@@ -8,13 +8,7 @@ public sealed class SimulateCommandErrorTests : IDisposable
 
     public void Dispose() => Directory.Delete(_dir, recursive: true);
 
-    private (int Code, string Out, string Err) Run(params string[] args)
-    {
-        var stdout = new StringWriter();
-        var stderr = new StringWriter();
-        int code = CommandLine.Run(args, stdout, stderr);
-        return (code, stdout.ToString(), stderr.ToString());
-    }
+    private static (int Code, string Out, string Err) Run(params string[] args) => CliRun.Run(args);
 
     private string Write(string name, string json)
     {
@@ -68,7 +62,8 @@ public sealed class SimulateCommandErrorTests : IDisposable
     }
 
     [Theory]
-    [InlineData("--until", "-1", "--until -1: expected a time of 0 s or more")]
+    [InlineData("--until", "-1", "--until -1: expected a time from 0 to 3600 s")]
+    [InlineData("--until", "1e308", "--until 1E+308: expected a time from 0 to 3600 s")]
     [InlineData("--sample", "0", "--sample 0: expected a positive interval (s)")]
     [InlineData("--dt", "5", "--dt: $: dt 5 is out of range")]
     [InlineData("--integrator", "rk4", "--integrator: $: integrator \"rk4\" is not available for model \"standard\"")]
