@@ -26,9 +26,7 @@
 // state's end, and on large tables also after about one grid cell of travel, when a "refresh"
 // (not an event, no state change) predicts that ball's pairs one window further.
 using Billiards.Core.Balls;
-using Billiards.Core.Physics.Collisions;
 using Billiards.Core.Physics.Standard.Events;
-using Billiards.Core.Table;
 
 namespace Billiards.Core.Physics.Standard;
 
@@ -84,24 +82,20 @@ public sealed class EventEngine
     /// <summary>Creates an engine over the balls (shared, not copied: the engine changes them in place).</summary>
     /// <param name="balls">The balls' state, which the engine owns from now on.</param>
     /// <param name="ids">The balls' ids, for the event log.</param>
-    /// <param name="parameters">Model parameters.</param>
-    /// <param name="geometry">The table's collision geometry.</param>
-    /// <param name="ballBall">Ball-ball collision model.</param>
-    /// <param name="ballCushion">Ball-cushion collision model.</param>
+    /// <param name="model">The table, parameters and collision models (shared, immutable).</param>
     /// <param name="log">Where events are logged.</param>
-    public EventEngine(BallState[] balls, IReadOnlyList<BallId> ids, PhysicsParams parameters, TableGeometry geometry,
-        IBallBallModel ballBall, IBallCushionModel ballCushion, EventLog log)
+    public EventEngine(BallState[] balls, IReadOnlyList<BallId> ids, StandardTableModel model, EventLog log)
     {
         _balls = balls;
         _n = balls.Length;
-        Parameters = parameters;
-        _k = new MotionConstants(parameters);
+        Parameters = model.Parameters;
+        _k = model.Constants;
         _queue = new EventQueue(_n);
-        _grid = new BroadPhase(_n, geometry.Spec, parameters.R);
+        _grid = new BroadPhase(_n, model.Table, Parameters.R);
         _pairs = new PairCache(_n);
         _contacts = new ContactMemory(_n);
-        _predictor = new Predictor(balls, _k, geometry, _grid);
-        _resolver = new Resolver(balls, [.. ids], parameters, _k, geometry, ballBall, ballCushion, _contacts, log);
+        _predictor = new Predictor(balls, model, _grid);
+        _resolver = new Resolver(balls, [.. ids], model, _contacts, log);
         _baseTime = new double[_n];
         _active = new int[_n];
         _activePos = new int[_n];
@@ -142,6 +136,30 @@ public sealed class EventEngine
         _eventsThisInstant = 0;
         _contacts.Forget();
         PredictAll();
+    }
+
+    /// <summary>
+    /// Takes over another engine's whole per-run state (clock, counters, predictions, queue, grid,
+    /// pair cache, contact memory), not its balls: the caller copies those into this engine's
+    /// array. Both engines must be over the same number of balls on the same table model.
+    /// Allocates nothing once this engine's rows are as long as the other's.
+    /// </summary>
+    internal void CopyStateFrom(EventEngine other)
+    {
+        Time = other.Time;
+        EventCount = other.EventCount;
+        EventCapHits = other.EventCapHits;
+        ActiveCount = other.ActiveCount;
+        _lastEventTime = other._lastEventTime;
+        _eventsThisInstant = other._eventsThisInstant;
+        other._baseTime.CopyTo(_baseTime, 0);
+        other._active.CopyTo(_active, 0);
+        other._activePos.CopyTo(_activePos, 0);
+        _queue.CopyFrom(other._queue);
+        _grid.CopyFrom(other._grid);
+        _pairs.CopyFrom(other._pairs);
+        _contacts.CopyFrom(other._contacts);
+        _predictor.CopyFrom(other._predictor);
     }
 
     /// <summary>

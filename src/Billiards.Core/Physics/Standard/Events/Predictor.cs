@@ -44,10 +44,7 @@ internal sealed class Predictor
     private readonly TableGeometry _geometry;
     private readonly BroadPhase _grid;
 
-    // Feature boxes (xmin, ymin, xmax, ymax) grown by R, for the broad phase.
-    private readonly (double X0, double Y0, double X1, double Y1)[] _segmentBoxes;
-    private readonly (double X0, double Y0, double X1, double Y1)[] _noseBoxes;
-    private readonly (double X0, double Y0, double X1, double Y1)[] _pocketBoxes;
+    private readonly FeatureBoxes _features;
 
     private readonly double[] _transitionTime;
     private readonly double[] _railTime;
@@ -63,37 +60,14 @@ internal sealed class Predictor
     private readonly (double X0, double Y0, double X1, double Y1)[] _windowBox;
 
     /// <summary>A predictor over the balls (read, never changed) that registers windows with the grid.</summary>
-    public Predictor(BallState[] balls, in MotionConstants k, TableGeometry geometry, BroadPhase grid)
+    public Predictor(BallState[] balls, StandardTableModel model, BroadPhase grid)
     {
         _balls = balls;
-        _k = k;
-        _r = k.R;
-        _geometry = geometry;
+        _k = model.Constants;
+        _r = _k.R;
+        _geometry = model.Geometry;
+        _features = model.Features;
         _grid = grid;
-
-        double r = _r;
-        var segments = geometry.Segments;
-        _segmentBoxes = new (double, double, double, double)[segments.Length];
-        for (int s = 0; s < segments.Length; s++)
-        {
-            var g = segments[s];
-            _segmentBoxes[s] = (Math.Min(g.Start.X, g.End.X) - r, Math.Min(g.Start.Y, g.End.Y) - r,
-                Math.Max(g.Start.X, g.End.X) + r, Math.Max(g.Start.Y, g.End.Y) + r);
-        }
-        var noses = geometry.Noses;
-        _noseBoxes = new (double, double, double, double)[noses.Length];
-        for (int s = 0; s < noses.Length; s++)
-        {
-            double e = noses[s].Radius + r;
-            _noseBoxes[s] = (noses[s].Centre.X - e, noses[s].Centre.Y - e, noses[s].Centre.X + e, noses[s].Centre.Y + e);
-        }
-        var pockets = geometry.Pockets;
-        _pocketBoxes = new (double, double, double, double)[pockets.Length];
-        for (int s = 0; s < pockets.Length; s++)
-        {
-            double e = pockets[s].Radius;
-            _pocketBoxes[s] = (pockets[s].Centre.X - e, pockets[s].Centre.Y - e, pockets[s].Centre.X + e, pockets[s].Centre.Y + e);
-        }
 
         int n = balls.Length;
         _transitionTime = new double[n];
@@ -162,7 +136,7 @@ internal sealed class Predictor
         var segments = _geometry.Segments;
         for (int s = 0; s < segments.Length; s++)
         {
-            if (!Overlaps(box, _segmentBoxes[s]))
+            if (!Overlaps(box, _features.Segments[s]))
             {
                 continue;
             }
@@ -191,7 +165,7 @@ internal sealed class Predictor
         var noses = _geometry.Noses;
         for (int s = 0; s < noses.Length; s++)
         {
-            if (!Overlaps(box, _noseBoxes[s]))
+            if (!Overlaps(box, _features.Noses[s]))
             {
                 continue;
             }
@@ -210,7 +184,7 @@ internal sealed class Predictor
         var pockets = _geometry.Pockets;
         for (int s = 0; s < pockets.Length; s++)
         {
-            if (!Overlaps(box, _pocketBoxes[s]))
+            if (!Overlaps(box, _features.Pockets[s]))
             {
                 continue;
             }

@@ -25,19 +25,18 @@ internal sealed class Resolver
     private readonly EventLog _log;
 
     /// <summary>A resolver over the balls (changed in place), logging to <paramref name="log"/>.</summary>
-    public Resolver(BallState[] balls, BallId[] ids, PhysicsParams parameters, in MotionConstants k, TableGeometry geometry,
-        IBallBallModel ballBall, IBallCushionModel ballCushion, ContactMemory contacts, EventLog log)
+    public Resolver(BallState[] balls, BallId[] ids, StandardTableModel model, ContactMemory contacts, EventLog log)
     {
         _balls = balls;
         _ids = ids;
         _n = balls.Length;
-        _params = parameters;
+        _params = model.Parameters;
         // Repeat contacts of the TC model are elastic in the normal direction.
-        _elastic = parameters with { EB = 1, EC = 1 };
-        _k = k;
-        _geometry = geometry;
-        _ballBall = ballBall;
-        _ballCushion = ballCushion;
+        _elastic = _params with { EB = 1, EC = 1 };
+        _k = model.Constants;
+        _geometry = model.Geometry;
+        _ballBall = model.BallBall;
+        _ballCushion = model.BallCushion;
         _contacts = contacts;
         _log = log;
     }
