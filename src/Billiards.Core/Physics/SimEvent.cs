@@ -61,6 +61,17 @@ public sealed class EventLog
         _items[Count++] = e;
     }
 
+    /// <summary>Makes this log hold the events of <paramref name="other"/>; grows the buffer only when too small.</summary>
+    public void CopyFrom(EventLog other)
+    {
+        if (_items.Length < other.Count)
+        {
+            _items = new SimEvent[other._items.Length];
+        }
+        Array.Copy(other._items, _items, other.Count);
+        Count = other.Count;
+    }
+
     /// <summary>Forgets every event but keeps the buffer.</summary>
     public void Clear() => Count = 0;
 }

@@ -111,6 +111,68 @@ public abstract partial class Simulation
     /// <summary>Name of a cushion (or jaw) or pocket feature of an event, as results write it.</summary>
     public abstract string FeatureName(EventKind kind, int feature);
 
+    /// <summary>
+    /// The shared, immutable part of this simulation (table geometry, parameters, collision
+    /// models): more simulations made from it run side by side and take each other's snapshots.
+    /// Simulations that do not support snapshots (test doubles) throw <see cref="NotSupportedException"/>.
+    /// </summary>
+    public virtual TableModel TableModel => throw new NotSupportedException(Unsupported);
+
+    /// <summary>A new snapshot holding this simulation's current state (allocates; reuse it with <see cref="Capture"/>).</summary>
+    public SimulationSnapshot CreateSnapshot()
+    {
+        var snapshot = NewSnapshot();
+        Capture(snapshot);
+        return snapshot;
+    }
+
+    /// <summary>Copies this simulation's whole dynamic state into <paramref name="snapshot"/>. Allocates nothing after the first capture into it.</summary>
+    /// <exception cref="ArgumentException">The snapshot is of another table model or other balls.</exception>
+    public void Capture(SimulationSnapshot snapshot)
+    {
+        Check(snapshot);
+        snapshot.Time = Time;
+        snapshot.StepCount = StepCount;
+        snapshot.EventCapHits = EventCapHits;
+        snapshot.Events.CopyFrom(Events);
+        CaptureState(snapshot);
+    }
+
+    /// <summary>
+    /// Puts this simulation back in the state captured in <paramref name="snapshot"/>; it then runs
+    /// on bit for bit as from the capture. Allocates nothing when the snapshot came from this
+    /// simulation.
+    /// </summary>
+    /// <exception cref="ArgumentException">The snapshot is of another table model or other balls.</exception>
+    public void Restore(SimulationSnapshot snapshot)
+    {
+        Check(snapshot);
+        Time = snapshot.Time;
+        StepCount = snapshot.StepCount;
+        EventCapHits = snapshot.EventCapHits;
+        Events.CopyFrom(snapshot.Events);
+        RestoreState(snapshot);
+    }
+
+    /// <summary>An empty snapshot of the model's own type, sized for this simulation.</summary>
+    protected virtual SimulationSnapshot NewSnapshot() => throw new NotSupportedException(Unsupported);
+
+    /// <summary>Copies the model's own state (balls included) into the snapshot.</summary>
+    protected virtual void CaptureState(SimulationSnapshot snapshot) => throw new NotSupportedException(Unsupported);
+
+    /// <summary>Restores the model's own state (balls included) from the snapshot.</summary>
+    protected virtual void RestoreState(SimulationSnapshot snapshot) => throw new NotSupportedException(Unsupported);
+
+    private const string Unsupported = "this simulation keeps no snapshots";
+
+    private void Check(SimulationSnapshot snapshot)
+    {
+        if (!snapshot.Fits(this))
+        {
+            throw new ArgumentException("the snapshot was taken from a simulation of another table model or other balls", nameof(snapshot));
+        }
+    }
+
     /// <summary>Index of a ball in <see cref="Balls"/>, or -1.</summary>
     public int IndexOf(BallId id)
     {

@@ -15,7 +15,7 @@ public class AllocationTests
         return SimulationFactory.Create(scene);
     }
 
-    private static long BytesOf(Action action)
+    internal static long BytesOf(Action action)
     {
         action(); // warm-up: buffers reach their size, the JIT has compiled everything
         action();

@@ -15,8 +15,9 @@ namespace Billiards.Core.Physics.Standard;
 /// "exact" and "event" share one <see cref="EventEngine"/>; "euler" shares the collision models
 /// and the table geometry.
 /// </summary>
-public sealed class StandardSimulation : Simulation
+public sealed partial class StandardSimulation : Simulation
 {
+    private readonly StandardTableModel _model;
     private readonly BallState[] _balls;
     private readonly BallState[] _initial;
     private readonly EventEngine? _engine;
@@ -31,10 +32,15 @@ public sealed class StandardSimulation : Simulation
 
     /// <summary>Creates the simulation of a scene with the given collision models.</summary>
     public StandardSimulation(Scene scene, IBallBallModel ballBall, IBallCushionModel ballCushion)
+        : this(new StandardTableModel(scene.Table, scene.Physics, ballBall, ballCushion), scene)
+    {
+    }
+
+    /// <summary>Creates the simulation of a scene's balls on a shared table model (the scene's table and physics are the model's).</summary>
+    internal StandardSimulation(StandardTableModel model, Scene scene)
         : base(Models.Standard, scene.Physics.Integrator, scene.Physics.Dt, scene.Table, [.. scene.Balls.Select(b => b.Id)])
     {
-        Parameters = scene.Physics.Params;
-        Geometry = TableGeometry.Build(scene.Table, Parameters.R);
+        _model = model;
         _balls = new BallState[scene.Balls.Count];
         for (int i = 0; i < _balls.Length; i++)
         {
@@ -52,19 +58,22 @@ public sealed class StandardSimulation : Simulation
         _eventIntegrator = Integrator == Integrators.Event;
         if (Integrator == Integrators.Euler)
         {
-            _euler = new EulerStepper(_balls, Ids, Parameters, Geometry, ballBall, ballCushion, Events);
+            _euler = new EulerStepper(_balls, Ids, Parameters, Geometry, model.BallBall, model.BallCushion, Events);
         }
         else
         {
-            _engine = new EventEngine(_balls, Ids, Parameters, Geometry, ballBall, ballCushion, Events);
+            _engine = new EventEngine(_balls, Ids, model, Events);
         }
     }
 
+    /// <inheritdoc />
+    public override TableModel TableModel => _model;
+
     /// <summary>The model parameters.</summary>
-    public PhysicsParams Parameters { get; }
+    public PhysicsParams Parameters => _model.Parameters;
 
     /// <summary>The table's collision geometry.</summary>
-    public TableGeometry Geometry { get; }
+    public TableGeometry Geometry => _model.Geometry;
 
     /// <inheritdoc />
     public override ReadOnlySpan<BallState> Balls => _balls;
@@ -159,18 +168,6 @@ public sealed class StandardSimulation : Simulation
         _balls[cue].Spin = outcome.Spin;
         _engine?.BallChanged(cue);
         _euler?.BallChanged(cue);
-    }
-
-    /// <summary>
-    /// Sets a ball's velocity (m/s) and spin (rad/s) from outside, as a strike would, and
-    /// re-predicts what involves it. For tests and tools.
-    /// </summary>
-    public void SetMotion(int index, Mathematics.Vec3 velocity, Mathematics.Vec3 spin)
-    {
-        _balls[index].Velocity = velocity.XY;
-        _balls[index].Spin = spin;
-        _engine?.BallChanged(index);
-        _euler?.BallChanged(index);
     }
 
     /// <inheritdoc />

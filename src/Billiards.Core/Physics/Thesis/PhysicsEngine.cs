@@ -48,7 +48,7 @@ public enum ShotEnd : byte
 /// Events (ball-ball, ball-cushion, ball-pocket) go to <see cref="Events"/> when one is given,
 /// stamped with the time at the end of the step that found them. Nothing allocates per step.</para>
 /// </remarks>
-public sealed class PhysicsEngine
+public sealed partial class PhysicsEngine
 {
     /// <summary>The seed's physics rate (steps per second, seed 4.1.4).</summary>
     public const float SeedStepsPerSecond = 250f;
@@ -119,11 +119,17 @@ public sealed class PhysicsEngine
     /// <param name="dt">Fixed step (s); the seed's is 1/250.</param>
     /// <param name="random">Source of orientations when the game is reset.</param>
     public PhysicsEngine(Ball[] balls, CollisionGeometry[] rails, ThesisTable table, Queue queue, double dt, Random random)
+        : this(balls, rails, new RailCull(rails), table, queue, dt, random)
+    {
+    }
+
+    // The rails, their cull and the table are immutable: simulations of one table share them.
+    internal PhysicsEngine(Ball[] balls, CollisionGeometry[] rails, RailCull cull, ThesisTable table, Queue queue, double dt, Random random)
     {
         ArgumentOutOfRangeException.ThrowIfNegativeOrZero(dt);
         _balls = balls;
         _rails = rails;
-        _cull = new RailCull(rails);
+        _cull = cull;
         Table = table;
         Queue = queue;
         Dt = dt;
@@ -614,54 +620,5 @@ public sealed class PhysicsEngine
     private void Log(EventKind kind, Ball a, Ball b, int feature, float approachCmPerS)
     {
         Events?.Add(new SimEvent(Time, kind, new BallId(a.Number), new BallId(b.Number), feature, approachCmPerS / 100.0));
-    }
-
-    // The triangles' corners on the bed (x, z) in lanes of eight, for the level-line cull of
-    // FindNearestHit (structure of arrays, padded to whole lanes).
-    private sealed class RailCull
-    {
-        public const int Lanes = 8;
-
-        private readonly float[] _x1, _z1, _x2, _z2, _x3, _z3;
-
-        public RailCull(ReadOnlySpan<CollisionGeometry> rails)
-        {
-            Count = rails.Length;
-            int padded = (Count + Lanes - 1) / Lanes * Lanes;
-            _x1 = new float[padded];
-            _z1 = new float[padded];
-            _x2 = new float[padded];
-            _z2 = new float[padded];
-            _x3 = new float[padded];
-            _z3 = new float[padded];
-            for (int k = 0; k < Count; k++)
-            {
-                var g = rails[k];
-                (_x1[k], _z1[k], _x2[k], _z2[k], _x3[k], _z3[k]) = (g.P1.X, g.P1.Z, g.P2.X, g.P2.Z, g.P3.X, g.P3.Z);
-                Extent = MathF.Max(Extent, MathF.Max(MathF.Abs(g.P1.X) + MathF.Abs(g.P1.Z),
-                    MathF.Max(MathF.Abs(g.P2.X) + MathF.Abs(g.P2.Z), MathF.Abs(g.P3.X) + MathF.Abs(g.P3.Z))));
-            }
-        }
-
-        public int Count { get; }
-
-        // Largest |x| + |z| of any corner (cm).
-        public float Extent { get; }
-
-        // Bit b set: triangle k + b is not clearly beside the level line through p along v (its
-        // three corners' sides, (c - p) x v, are not all beyond the margin with one sign).
-        public uint Near(int k, Vector256<float> px, Vector256<float> pz, Vector256<float> vx, Vector256<float> vz,
-            Vector256<float> above, Vector256<float> below)
-        {
-            var s1 = (Load(_x1, k) - px) * vz - (Load(_z1, k) - pz) * vx;
-            var s2 = (Load(_x2, k) - px) * vz - (Load(_z2, k) - pz) * vx;
-            var s3 = (Load(_x3, k) - px) * vz - (Load(_z3, k) - pz) * vx;
-            var left = Vector256.GreaterThan(s1, above) & Vector256.GreaterThan(s2, above) & Vector256.GreaterThan(s3, above);
-            var right = Vector256.LessThan(s1, below) & Vector256.LessThan(s2, below) & Vector256.LessThan(s3, below);
-            return ~(left | right).ExtractMostSignificantBits() & 0xFFu;
-        }
-
-        private static Vector256<float> Load(float[] lane, int k) =>
-            Vector256.LoadUnsafe(ref MemoryMarshal.GetArrayDataReference(lane), (nuint)k);
     }
 }

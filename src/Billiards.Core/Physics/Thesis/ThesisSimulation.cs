@@ -20,22 +20,30 @@ namespace Billiards.Core.Physics.Thesis;
 /// see <see cref="PhysicsEngine.CheckForRest"/>; <see cref="Engine"/>'s
 /// <see cref="PhysicsEngine.LastShotEnd"/> tells which applied.
 /// </remarks>
-public sealed class ThesisSimulation : Simulation
+public sealed partial class ThesisSimulation : Simulation
 {
     /// <summary>Ball radius of the model (cm).</summary>
     private const float Radius = PhysicsEngine.BallRadius;
 
+    private readonly ThesisTableModel _model;
     private readonly BallState[] _states;
     private readonly Vector3[] _startVelocities;
     private bool _statesStale = true;
 
     /// <summary>The scene's balls on its table, at rest unless the scene gives them velocities.</summary>
     public ThesisSimulation(Scene scene)
+        : this(new ThesisTableModel(scene.Table, scene.Physics), scene)
+    {
+    }
+
+    /// <summary>The scene's balls on a shared table model (the scene's table and physics are the model's).</summary>
+    internal ThesisSimulation(ThesisTableModel model, Scene scene)
         : base(Models.Thesis, Integrators.Fixed, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
     {
+        _model = model;
         var balls = new Ball[scene.Balls.Count];
         // Orientations are drawing state only; seed them from the rack so that runs repeat.
-        var random = new Random(scene.Rack?.Seed ?? 0);
+        var random = new SeededRandom(scene.Rack?.Seed ?? 0);
         for (int i = 0; i < balls.Length; i++)
         {
             var setup = scene.Balls[i];
@@ -43,13 +51,16 @@ public sealed class ThesisSimulation : Simulation
             balls[i].RandomizeOrientation(random);
         }
         Queue = new Queue();
-        Engine = new PhysicsEngine(balls, Initializer.InitRails(scene.Table), ThesisTable.From(scene.Table), Queue, scene.Physics.Dt, random)
+        Engine = new PhysicsEngine(balls, model.RailArray, model.Cull, model.SeedTable, Queue, scene.Physics.Dt, random)
         {
             Events = Events,
         };
         _states = new BallState[balls.Length];
         _startVelocities = balls.Select(b => b.Velocity).ToArray();
     }
+
+    /// <inheritdoc />
+    public override TableModel TableModel => _model;
 
     /// <summary>The engine, in the seed's units, for the game and for tests.</summary>
     public PhysicsEngine Engine { get; }

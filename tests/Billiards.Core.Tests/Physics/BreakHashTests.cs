@@ -1,0 +1,31 @@
+using Billiards.Core.Physics;
+using Billiards.Core.Scenes;
+
+namespace Billiards.Core.Tests.Physics;
+
+/// <summary>
+/// The expected-hash test of Box2D: the final state of the 8-ball break (every ball's position,
+/// velocity, spin, state and pocket, bit for bit, and the event count) hashed and pinned, for
+/// both models and every integrator. It is a guard, not a reference: the pinned values are what
+/// the engine computed when they were set, and any change of physics, of the order of floating
+/// point operations or of the compiler's code for them shows here first. A change that alters
+/// them on purpose updates them and says why in its commit message; the other tests tell whether
+/// the physics is still right.
+/// </summary>
+public class BreakHashTests
+{
+    [Theory]
+    [InlineData("thesis-eight-ball-break.json", Models.Thesis, Integrators.Fixed, 0xD0E3B603DB3D0310UL)]
+    [InlineData("eight-ball-break.json", Models.Standard, Integrators.Exact, 0xEEE0D52A0869A515UL)]
+    [InlineData("eight-ball-break.json", Models.Standard, Integrators.Event, 0x540B1732DE6A59A1UL)]
+    [InlineData("eight-ball-break.json", Models.Standard, Integrators.Euler, 0x4D7BB36B494D9FBBUL)]
+    public void TheBreakEndsInThePinnedState(string file, string model, string integrator, ulong expected)
+    {
+        var scene = SimulationKit.Load(file, model, integrator);
+        var sim = SimulationFactory.Create(scene);
+        sim.Strike(scene.Shot!);
+        sim.AdvanceTo(600);
+        Assert.True(sim.IsAtRest);
+        Assert.Equal($"0x{expected:X16}", $"0x{SimulationKit.Hash(sim):X16}");
+    }
+}
