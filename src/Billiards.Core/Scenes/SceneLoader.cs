@@ -92,6 +92,10 @@ public static class SceneLoader
                 ? ReadTable(t)
                 : TableSpec.FromPreset(physics.Model == Models.Thesis ? "thesis" : "pool-9ft");
             double radius = physics.Model == Models.Thesis ? ThesisConstants.RadiusMetres : physics.Params.R;
+            if (physics.Model == Models.Standard && RadiusLimits.Problem(table, radius) is { } radiusProblem)
+            {
+                throw Error("$.physics.params.R", radiusProblem);
+            }
 
             RackSpec? rack = fields.TryGetValue("rack", out var r) ? ReadRack(r) : null;
             var balls = new SortedDictionary<int, (BallSetup Ball, string Path)>();
@@ -136,14 +140,17 @@ public static class SceneLoader
 
         private void ValidatePlacement(List<(BallSetup Ball, string Path)> balls, TableSpec table, double radius)
         {
-            const double Tolerance = 1e-9;
+            const double Tolerance = TableBounds.Tolerance;
             foreach (var (ball, path) in balls)
             {
-                if (Math.Abs(ball.Position.X) > table.HalfLength - radius + Tolerance
-                    || Math.Abs(ball.Position.Y) > table.HalfWidth - radius + Tolerance)
+                // Both models start every ball on the bed, clear of the cushions. A ball in a pocket's
+                // mouth is refused in both: the standard model's jaws and capture circles and the
+                // thesis model's rail triangles and pocket test are built for balls arriving from the
+                // bed, and a start between them would be neither on the table nor in a pocket.
+                if (!TableBounds.OnBed(table, ball.Position, radius))
                 {
                     throw Error(path, string.Create(CultureInfo.InvariantCulture,
-                        $"ball \"{ball.Id}\" at [{ball.Position.X}, {ball.Position.Y}] is off the table (the centre must stay within [{-(table.HalfLength - radius):0.######}, {table.HalfLength - radius:0.######}] x [{-(table.HalfWidth - radius):0.######}, {table.HalfWidth - radius:0.######}])"));
+                        $"ball \"{ball.Id}\" at [{ball.Position.X}, {ball.Position.Y}] is off the table (the centre must stay within [{-(table.HalfLength - radius):0.######}, {table.HalfLength - radius:0.######}] x [{-(table.HalfWidth - radius):0.######}, {table.HalfWidth - radius:0.######}]: on the bed, R inside the cushion noses; in both models a scene places balls on the bed, never in a pocket's mouth)"));
                 }
             }
             for (int i = 0; i < balls.Count; i++)

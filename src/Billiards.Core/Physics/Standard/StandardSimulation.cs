@@ -117,6 +117,7 @@ public sealed class StandardSimulation : Simulation
             }
         }
         StepCount++;
+        StateChecker.Check(this, Parameters.R, checkOverlap: _euler is null);
     }
 
     /// <summary>
@@ -134,6 +135,7 @@ public sealed class StandardSimulation : Simulation
             Time = engine.Time;
             StepCount += engine.EventCount - before;
             EventCapHits = engine.EventCapHits;
+            StateChecker.Check(this, Parameters.R, checkOverlap: true);
             return;
         }
         base.AdvanceTo(time);

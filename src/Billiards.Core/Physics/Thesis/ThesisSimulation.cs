@@ -81,6 +81,7 @@ public sealed class ThesisSimulation : Simulation
         Time = Engine.Time;
         StepCount = Engine.Steps;
         _statesStale = true;
+        StateChecker.Check(this, ThesisConstants.RadiusMetres, checkOverlap: false);
     }
 
     /// <inheritdoc />
