@@ -38,6 +38,7 @@ public static class CommandLine
             {
                 SimulateCommand.Create(stdout),
                 RenderCommand.Create(stdout),
+                RenderAudioCommand.Create(),
                 ReportCommand.Create(stdout, stderr),
             };
             PlayCommand.AddTo(root);

@@ -13,6 +13,7 @@ internal sealed unsafe class Gl
     public const uint DepthBufferBit = 0x100, ColorBufferBit = 0x4000;
     public const uint Lines = 0x1, Triangles = 0x4;
     public const uint DepthTest = 0x0B71, Blend = 0x0BE2, CullFace = 0x0B44, Multisample = 0x809D, PolygonOffsetFill = 0x8037;
+    public const uint Zero = 0, SrcColor = 0x0300;
     public const uint SrcAlpha = 0x0302, OneMinusSrcAlpha = 0x0303, Less = 0x0201, LessEqual = 0x0203, Back = 0x0405;
     public const uint Byte = 0x1400, UnsignedByte = 0x1401, UnsignedInt = 0x1405, Float = 0x1406;
     public const uint ArrayBuffer = 0x8892, ElementArrayBuffer = 0x8893, StaticDraw = 0x88E4, DynamicDraw = 0x88E8;

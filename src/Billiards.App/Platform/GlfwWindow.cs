@@ -27,6 +27,7 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
         Glfw.DefaultWindowHints();
         Glfw.WindowHint(Glfw.Resizable, Glfw.True);
         Glfw.WindowHint(Glfw.Samples, samples);
+        Samples = samples;
         GlfwRuntime.CoreProfileHints();
         _window = Glfw.CreateWindow(width, height, title, 0, 0);
         if (_window == 0)
@@ -53,6 +54,16 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
     public event Action<MouseButton>? MouseUp;
     public event Action<float>? Scroll;
     public event Action<int, int>? Resize;
+
+    /// <summary>MSAA samples asked for when the window was opened.</summary>
+    public int Samples { get; }
+
+    /// <summary>True when the context renders in software (Mesa llvmpipe or softpipe): every pixel is paid in CPU time.</summary>
+    public bool IsSoftwareRenderer => IsSoftware(Gl.GetString(Gl.RendererName));
+
+    /// <summary>True for the renderer strings of Mesa's CPU rasterisers.</summary>
+    public static bool IsSoftware(string renderer) =>
+        renderer.Contains("llvmpipe", StringComparison.OrdinalIgnoreCase) || renderer.Contains("softpipe", StringComparison.OrdinalIgnoreCase);
 
     /// <summary>The GL functions of this window's context.</summary>
     public Gl Gl { get; }
@@ -83,6 +94,10 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
             first = false;
             last = now;
             Glfw.SwapBuffers(_window);
+            // At most one frame in flight: the frame just swapped is finished before the next
+            // frame's input is read, so input shows on the next frame. Without it a driver may
+            // queue frames (or, without vsync, pile them up) between the input and the screen.
+            Gl.Finish();
         }
     }
 

@@ -8,7 +8,8 @@ namespace Billiards.App.Rendering;
 /// <summary>
 /// Draws a <see cref="RenderFrame"/> into the framebuffer bound when <see cref="Draw"/> is called
 /// (the window's, or an offscreen one): the table loaded through Assimp, textured balls, the cue,
-/// per-pixel lighting from the seed's four lights with soft ball shadows, the debug collision
+/// lighting from the seed's four lights (per vertex on the table, per pixel on balls and cue) with
+/// soft ball shadows as decals on the bed, the debug collision
 /// view and the HUD. The same code serves `play` and `render`. Needs a current GL 3.3 context.
 /// </summary>
 internal sealed class Renderer : IDisposable
@@ -18,10 +19,12 @@ internal sealed class Renderer : IDisposable
     private readonly Gl _gl;
     private readonly Func<TableSpec, string> _modelPath;
     private readonly LitProgram _lit;
+    private readonly LitProgram _gouraud;
     private readonly GpuMesh _sphere;
     private readonly GpuMesh _cue;
     private readonly Dictionary<int, uint> _ballTextures = [];
     private readonly DebugLines _lines;
+    private readonly ShadowDecals _shadows;
     private readonly HudRenderer _hud;
     private TableModel? _table;
     private TableSpec? _tableSpec;
@@ -34,9 +37,14 @@ internal sealed class Renderer : IDisposable
         _lit = new LitProgram(gl, gl.LinkProgram(
             gl.CompileShader(Gl.VertexShader, Shaders.LitVertex),
             gl.CompileShader(Gl.FragmentShader, Shaders.LitFragment), s_meshAttributes));
-        _sphere = GpuMesh.From(gl, Primitives.Sphere());
+        _gouraud = new LitProgram(gl, gl.LinkProgram(
+            gl.CompileShader(Gl.VertexShader, Shaders.GouraudVertex),
+            gl.CompileShader(Gl.FragmentShader, Shaders.GouraudFragment), s_meshAttributes));
+        // 32 x 24 is smooth at the size a ball is ever drawn; llvmpipe sets up every triangle on one thread.
+        _sphere = GpuMesh.From(gl, Primitives.Sphere(32, 24));
         _cue = GpuMesh.From(gl, Primitives.Cue());
         _lines = new DebugLines(gl);
+        _shadows = new ShadowDecals(gl);
         _hud = new HudRenderer(gl);
     }
 
@@ -64,28 +72,34 @@ internal sealed class Renderer : IDisposable
         gl.Enable(Gl.Multisample);
 
         var viewProjection = RenderMath.ViewProjection(frame);
-        var balls = frame.Balls.Where(b => b.Visible).ToList();
         float radius = frame.BallRadius;
-        _lit.Begin(viewProjection, frame.Eye, frame.Table, balls, radius);
-
+        Span<float> lamps = stackalloc float[12];
+        Lamps(frame.Table, lamps);
+        _gouraud.Begin(viewProjection, frame.Eye, lamps);
         foreach (var part in _table!.Parts)
         {
-            _lit.Material(part.Diffuse, part.Specular, part.Shininess, reflect: 0);
-            _lit.Draw(Matrix4x4.Identity, texture: 0, self: -1, part.Mesh);
+            _gouraud.Material(part.Diffuse, part.Specular, part.Shininess, reflect: 0);
+            _gouraud.Draw(Matrix4x4.Identity, texture: 0, part.Mesh);
         }
 
-        for (int i = 0; i < balls.Count && i < Shaders.MaxShadowBalls; i++)
+        _shadows.Draw(viewProjection, frame.Balls, radius, lamps, LampRadius, Ambient);
+
+        _lit.Begin(viewProjection, frame.Eye, lamps);
+        foreach (var ball in frame.Balls)
         {
-            var ball = balls[i];
+            if (!ball.Visible)
+            {
+                continue;
+            }
             var model = Matrix4x4.CreateScale(radius) * Matrix4x4.CreateFromQuaternion(Normalized(ball.Orientation)) * Matrix4x4.CreateTranslation(ball.Position);
             _lit.Material(Vector4.One, new Vector3(0.55f), 160, reflect: 0.045f);
-            _lit.Draw(model, BallTexture(ball.Id), i, _sphere);
+            _lit.Draw(model, BallTexture(ball.Id), _sphere);
         }
 
         if (frame.Cue.Visible)
         {
             _lit.Material(Vector4.One, new Vector3(0.25f), 40, reflect: 0.02f);
-            _lit.Draw(Primitives.CuePlacement(frame.Cue, radius), texture: 0, self: -1, _cue);
+            _lit.Draw(Primitives.CuePlacement(frame.Cue, radius), texture: 0, _cue);
         }
 
         if (frame.ShowCollisionGeometry && frame.CollisionTriangles.Count > 0)
@@ -98,6 +112,25 @@ internal sealed class Renderer : IDisposable
             _hud.Draw(hud, frame.Width, frame.Height);
         }
         gl.BindVertexArray(0);
+    }
+
+    /// <summary>Radius of a lamp's shade as a light source (m).</summary>
+    public const float LampRadius = 0.14f;
+
+    /// <summary>Ambient light of the room (linear, relative to the lamps).</summary>
+    public const float Ambient = 0.10f;
+
+    /// <summary>Three lamps along the table's length, 90 cm above the bed (seed 3.2): x, y, z and intensity each.</summary>
+    public static void Lamps(TableSpec table, Span<float> lamps)
+    {
+        float spacing = (float)table.Length / 3;
+        for (int k = 0; k < 3; k++)
+        {
+            lamps[(4 * k) + 0] = (k - 1) * spacing;
+            lamps[(4 * k) + 1] = 0;
+            lamps[(4 * k) + 2] = LampHeight;
+            lamps[(4 * k) + 3] = 0.95f;
+        }
     }
 
     private static Quaternion Normalized(Quaternion q) =>
@@ -144,8 +177,10 @@ internal sealed class Renderer : IDisposable
             _gl.DeleteTexture(texture);
         }
         _lines.Dispose();
+        _shadows.Dispose();
         _hud.Dispose();
         _gl.DeleteProgram(_lit.Program);
+        _gl.DeleteProgram(_gouraud.Program);
     }
 
     /// <summary>The lit program's uniforms.</summary>
@@ -155,7 +190,6 @@ internal sealed class Renderer : IDisposable
         private readonly int _viewProj = gl.GetUniformLocation(program, "uViewProj");
         private readonly int _eye = gl.GetUniformLocation(program, "uEye");
         private readonly int _lamps = gl.GetUniformLocation(program, "uLamps");
-        private readonly int _lampRadius = gl.GetUniformLocation(program, "uLampRadius");
         private readonly int _fill = gl.GetUniformLocation(program, "uFill");
         private readonly int _baseColor = gl.GetUniformLocation(program, "uBaseColor");
         private readonly int _specular = gl.GetUniformLocation(program, "uSpecular");
@@ -163,45 +197,20 @@ internal sealed class Renderer : IDisposable
         private readonly int _reflect = gl.GetUniformLocation(program, "uReflect");
         private readonly int _useTexture = gl.GetUniformLocation(program, "uUseTexture");
         private readonly int _texture = gl.GetUniformLocation(program, "uTexture");
-        private readonly int _balls = gl.GetUniformLocation(program, "uBalls");
-        private readonly int _ballCount = gl.GetUniformLocation(program, "uBallCount");
-        private readonly int _self = gl.GetUniformLocation(program, "uSelf");
         private readonly int _ambient = gl.GetUniformLocation(program, "uAmbient");
         private readonly int _exposure = gl.GetUniformLocation(program, "uExposure");
 
         public uint Program { get; } = program;
 
-        public void Begin(Matrix4x4 viewProjection, Vector3 eye, TableSpec table, List<BallVisual> balls, float radius)
+        public void Begin(Matrix4x4 viewProjection, Vector3 eye, ReadOnlySpan<float> lamps)
         {
             gl.UseProgram(Program);
             gl.UniformMatrix4(_viewProj, viewProjection);
             gl.Uniform3(_eye, eye.X, eye.Y, eye.Z);
-            // Three lamps along the table's length, 90 cm above the bed (seed 3.2).
-            float spacing = (float)table.Length / 3;
-            Span<float> lamps = stackalloc float[12];
-            for (int k = 0; k < 3; k++)
-            {
-                lamps[(4 * k) + 0] = (k - 1) * spacing;
-                lamps[(4 * k) + 1] = 0;
-                lamps[(4 * k) + 2] = LampHeight;
-                lamps[(4 * k) + 3] = 0.95f;
-            }
             gl.Uniform4Array(_lamps, lamps);
-            gl.Uniform1(_lampRadius, 0.14f);
             gl.Uniform4(_fill, 0, 0, FillHeight, 0.06f);
-            gl.Uniform1(_ambient, 0.10f);
+            gl.Uniform1(_ambient, Ambient);
             gl.Uniform1(_exposure, 1.15f);
-            int count = Math.Min(balls.Count, Shaders.MaxShadowBalls);
-            Span<float> packed = stackalloc float[4 * Shaders.MaxShadowBalls];
-            for (int i = 0; i < count; i++)
-            {
-                packed[4 * i] = balls[i].Position.X;
-                packed[(4 * i) + 1] = balls[i].Position.Y;
-                packed[(4 * i) + 2] = balls[i].Position.Z;
-                packed[(4 * i) + 3] = radius;
-            }
-            gl.Uniform4Array(_balls, packed);
-            gl.Uniform1(_ballCount, count);
             gl.Uniform1(_texture, 0);
         }
 
@@ -213,10 +222,9 @@ internal sealed class Renderer : IDisposable
             gl.Uniform1(_reflect, reflect);
         }
 
-        public void Draw(Matrix4x4 model, uint texture, int self, GpuMesh mesh)
+        public void Draw(Matrix4x4 model, uint texture, GpuMesh mesh)
         {
             gl.UniformMatrix4(_model, model);
-            gl.Uniform1(_self, self);
             gl.Uniform1(_useTexture, texture != 0 ? 1 : 0);
             gl.ActiveTexture(Gl.Texture0);
             gl.BindTexture(Gl.Texture2D, texture);

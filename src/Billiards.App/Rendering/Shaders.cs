@@ -3,9 +3,6 @@ namespace Billiards.App.Rendering;
 /// <summary>GLSL 3.30 core sources of the renderer's programs.</summary>
 internal static class Shaders
 {
-    /// <summary>Most balls a frame's shadows take into account.</summary>
-    public const int MaxShadowBalls = 24;
-
     public const string LitVertex = """
         #version 330 core
         in vec3 aPosition;
@@ -30,91 +27,38 @@ internal static class Shaders
         """;
 
     // Lighting (linear light, then an exponential tone curve and gamma): the seed's four lights.
-    // Three lamps over the bed shade per pixel (Lambert + Blinn-Phong highlights) and cast soft
-    // shadows of the balls, found analytically: a lamp is a disc of angular radius atan(r/d) and a
-    // ball a disc of angular radius asin(R/|c-p|); the covered part of the lamp is estimated from
-    // the angle between their centres. The fourth light, 1 cm over the centre of the bed, is a
-    // weak fill without falloff. Ambient light is darkened by each ball's sphere occlusion.
-    public const string LitFragment = """
-        #version 330 core
-        in vec3 vWorld;
-        in vec3 vNormal;
-        in vec2 vUv;
-        in vec3 vColor;
+    // Three lamps over the bed (Lambert + Blinn-Phong highlights); the fourth light, 1 cm over the
+    // centre of the bed, is a weak fill without falloff. Nothing here loops over the balls: a
+    // software rasteriser (Mesa llvmpipe) runs every iteration of such a loop for every pixel
+    // whether a lane needs it or not, which made a 1280x720 frame cost over a second of CPU. The
+    // balls' shadows are small decals on the bed instead (ShadowFragment).
+    private const string Shade = """
         uniform vec3 uEye;
         uniform vec4 uLamps[3];
-        uniform float uLampRadius;
         uniform vec4 uFill;
         uniform vec4 uBaseColor;
         uniform vec3 uSpecular;
         uniform float uShininess;
         uniform float uReflect;
-        uniform int uUseTexture;
-        uniform sampler2D uTexture;
-        uniform vec4 uBalls[24];
-        uniform int uBallCount;
-        uniform int uSelf;
         uniform float uAmbient;
         uniform float uExposure;
-        out vec4 fragColor;
 
-        float ballVisibility(vec3 p, vec3 lampPos, float lampAngle) {
-            vec3 toLamp = lampPos - p;
-            float lampDist = length(toLamp);
-            vec3 l = toLamp / lampDist;
-            float visible = 1.0;
-            for (int i = 0; i < uBallCount; i++) {
-                if (i == uSelf) continue;
-                vec3 toBall = uBalls[i].xyz - p;
-                float dist = length(toBall);
-                float r = uBalls[i].w;
-                if (dist <= r || dot(toBall, l) <= 0.0 || dist >= lampDist) continue;
-                float ballAngle = asin(min(r / dist, 1.0));
-                float separation = acos(clamp(dot(toBall / dist, l), -1.0, 1.0));
-                float covered = 1.0 - smoothstep(ballAngle - lampAngle, ballAngle + lampAngle, separation);
-                float most = min(1.0, (ballAngle * ballAngle) / (lampAngle * lampAngle));
-                visible *= 1.0 - covered * most;
-            }
-            return visible;
-        }
-
-        float ambientOcclusion(vec3 p, vec3 n) {
-            float occlusion = 0.0;
-            for (int i = 0; i < uBallCount; i++) {
-                if (i == uSelf) continue;
-                vec3 toBall = uBalls[i].xyz - p;
-                float dist = max(length(toBall), uBalls[i].w);
-                float ratio = uBalls[i].w / dist;
-                occlusion += max(dot(n, toBall / dist), 0.0) * ratio * ratio;
-            }
-            return clamp(1.0 - occlusion, 0.0, 1.0);
-        }
-
-        void main() {
-            vec3 n = normalize(vNormal);
-            vec3 v = normalize(uEye - vWorld);
-            if (dot(n, v) < 0.0 && uUseTexture == 0) n = -n;
-            vec4 base = uBaseColor * vec4(vColor, 1.0);
-            if (uUseTexture != 0) base *= texture(uTexture, vUv);
-            vec3 albedo = base.rgb;
-
-            vec3 color = albedo * uAmbient * ambientOcclusion(vWorld, n);
+        vec3 shade(vec3 world, vec3 normal, vec3 albedo) {
+            vec3 n = normalize(normal);
+            vec3 v = normalize(uEye - world);
+            if (dot(n, v) < 0.0 && uReflect == 0.0) n = -n;
+            vec3 color = albedo * uAmbient;
             for (int k = 0; k < 3; k++) {
-                vec3 toLamp = uLamps[k].xyz - vWorld;
+                vec3 toLamp = uLamps[k].xyz - world;
                 float d2 = dot(toLamp, toLamp);
                 vec3 l = toLamp * inversesqrt(d2);
-                float ndotl = dot(n, l);
-                if (ndotl <= 0.0) continue;
-                float lampAngle = atan(uLampRadius / sqrt(d2));
-                float shadow = ballVisibility(vWorld, uLamps[k].xyz, lampAngle);
-                float irradiance = uLamps[k].w * ndotl / d2 * shadow;
+                float ndotl = max(dot(n, l), 0.0);
                 vec3 h = normalize(l + v);
                 float spec = pow(max(dot(n, h), 0.0), uShininess) * (uShininess + 8.0) / 25.0;
-                color += irradiance * (albedo + uSpecular * spec);
+                color += (uLamps[k].w * ndotl / d2) * (albedo + uSpecular * spec);
             }
-            vec3 lf = normalize(uFill.xyz - vWorld);
+            vec3 lf = normalize(uFill.xyz - world);
             color += uFill.w * max(dot(n, lf), 0.0) * albedo;
-
             // A dim room reflected by glossy surfaces (balls), stronger at grazing angles.
             if (uReflect > 0.0) {
                 vec3 r = reflect(-v, n);
@@ -122,9 +66,106 @@ internal static class Shaders
                 float fresnel = uReflect + (1.0 - uReflect) * pow(1.0 - max(dot(n, v), 0.0), 5.0);
                 color = mix(color, room, fresnel * 0.5);
             }
-
             vec3 mapped = vec3(1.0) - exp(-color * uExposure);
-            fragColor = vec4(pow(mapped, vec3(1.0 / 2.2)), base.a);
+            return pow(mapped, vec3(1.0 / 2.2));
+        }
+        """;
+
+    // Balls and the cue: lit per pixel (they are small on screen; their highlights need it).
+    public const string LitFragment = """
+        #version 330 core
+        in vec3 vWorld;
+        in vec3 vNormal;
+        in vec2 vUv;
+        in vec3 vColor;
+        uniform int uUseTexture;
+        uniform sampler2D uTexture;
+        out vec4 fragColor;
+        """ + Shade + """
+        void main() {
+            vec4 base = uBaseColor * vec4(vColor, 1.0);
+            if (uUseTexture != 0) base *= texture(uTexture, vUv);
+            fragColor = vec4(shade(vWorld, vNormal, base.rgb), base.a);
+        }
+        """;
+
+    // The table: lit at the vertices (its mesh is refined so that the light varies smoothly), so a
+    // pixel costs only the interpolation. The table covers most of the screen; lit per pixel it
+    // cost several times the budget of a frame on a two-core software rasteriser.
+    public const string GouraudVertex = """
+        #version 330 core
+        in vec3 aPosition;
+        in vec3 aNormal;
+        in vec2 aUv;
+        in vec3 aColor;
+        uniform mat4 uModel;
+        uniform mat4 uViewProj;
+        out vec4 vShaded;
+        """ + Shade + """
+        void main() {
+            vec4 world = uModel * vec4(aPosition, 1.0);
+            vec4 base = uBaseColor * vec4(aColor, 1.0);
+            vShaded = vec4(shade(world.xyz, mat3(uModel) * aNormal, base.rgb), base.a);
+            gl_Position = uViewProj * world;
+        }
+        """;
+
+    public const string GouraudFragment = """
+        #version 330 core
+        in vec4 vShaded;
+        out vec4 fragColor;
+        void main() { fragColor = vShaded; }
+        """;
+
+    // A ball's shadow on the bed: a quad around the ball at bed height, multiplied into the frame.
+    // The soft shadow is found analytically: a lamp is a disc of angular radius atan(r/d) and the
+    // ball a disc of angular radius asin(R/|c-p|); the covered part of the lamp is estimated from
+    // the angle between their centres. The bed's ambient light is darkened by the ball's sphere
+    // occlusion. The factor is the ratio of the shadowed to the unshadowed light on the cloth,
+    // taken through the display gamma because it multiplies tone-mapped colour.
+    public const string ShadowVertex = """
+        #version 330 core
+        in vec3 aPosition;
+        uniform mat4 uViewProj;
+        out vec3 vWorld;
+        void main() {
+            vWorld = aPosition;
+            gl_Position = uViewProj * vec4(aPosition, 1.0);
+        }
+        """;
+
+    public const string ShadowFragment = """
+        #version 330 core
+        in vec3 vWorld;
+        uniform vec4 uBall;
+        uniform vec4 uLamps[3];
+        uniform float uLampRadius;
+        uniform float uAmbient;
+        out vec4 fragColor;
+
+        void main() {
+            vec3 p = vWorld;
+            vec3 toBall = uBall.xyz - p;
+            float dist = length(toBall);
+            float r = uBall.w;
+            float ratio = r / max(dist, r);
+            float lit = uAmbient * (1.0 - max(toBall.z / max(dist, r), 0.0) * ratio * ratio);
+            float open = uAmbient;
+            for (int k = 0; k < 3; k++) {
+                vec3 toLamp = uLamps[k].xyz - p;
+                float lampDist = length(toLamp);
+                vec3 l = toLamp / lampDist;
+                float irradiance = uLamps[k].w * max(l.z, 0.0) / (lampDist * lampDist);
+                float lampAngle = atan(uLampRadius / lampDist);
+                float ballAngle = asin(min(r / max(dist, r), 1.0));
+                float separation = acos(clamp(dot(toBall / max(dist, 1e-6), l), -1.0, 1.0));
+                float covered = 1.0 - smoothstep(ballAngle - lampAngle, ballAngle + lampAngle, separation);
+                float most = min(1.0, (ballAngle * ballAngle) / (lampAngle * lampAngle));
+                lit += irradiance * (1.0 - covered * most);
+                open += irradiance;
+            }
+            float f = pow(clamp(lit / open, 0.0, 1.0), 1.0 / 2.2);
+            fragColor = vec4(f, f, f, 1.0);
         }
         """;
 

@@ -110,7 +110,8 @@ internal sealed class ShotFacts
         {
             return true;
         }
-        if (region == BallInHand.Kitchen && p.X >= -table.HalfLength / 2)
+        // The head spot lies on the head string: a centre on the string counts as behind it (ours).
+        if (region == BallInHand.Kitchen && p.X > -table.HalfLength / 2 + Tolerance)
         {
             return true;
         }

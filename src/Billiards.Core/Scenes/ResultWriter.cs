@@ -119,6 +119,11 @@ public static class ResultWriter
         w.WriteString("stop", SimulationRunner.Name(outcome.Stop));
         w.WriteNumber("event_cap_hits", sim.EventCapHits);
         w.WriteEndObject();
+        if (outcome.Ruling is { } ruling)
+        {
+            w.WritePropertyName("ruling");
+            GameBlockWriter.WriteRuling(w, ruling);
+        }
         w.WriteEndObject();
     }
 

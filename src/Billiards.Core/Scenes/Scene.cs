@@ -68,6 +68,9 @@ public sealed record Scene(
     ShotSpec? Shot,
     string? Rules)
 {
+    /// <summary>The state of a game before the scene's shot (the "game" block), or null.</summary>
+    public Rules.GameState? Game { get; init; }
+
     /// <summary>The ball radius the scene's model uses (m).</summary>
     public double BallRadius => Physics.Model == Models.Thesis ? ThesisConstants.RadiusMetres : Physics.Params.R;
 }

@@ -75,7 +75,7 @@ public static class SceneLoader
 
         public Scene ReadScene(JsonElement root, SceneOverrides overrides)
         {
-            var fields = Object(root, "$", "format", "name", "table", "physics", "rack", "balls", "shot", "rules");
+            var fields = Object(root, "$", "format", "name", "table", "physics", "rack", "balls", "shot", "rules", "game");
             if (!fields.TryGetValue("format", out var format))
             {
                 throw Error("$", $"missing \"format\" (expected \"{Format}\")");
@@ -135,7 +135,12 @@ public static class SceneLoader
             }
             string? rules = fields.TryGetValue("rules", out var ru) ? OneOf(ru, "$.rules", "eight-ball", "nine-ball") : null;
 
-            return new Scene(file, name, table, physics, rack, list.Select(x => x.Ball).ToList(), shot, rules);
+            var game = fields.TryGetValue("game", out var gm) ? GameBlockReader.Read(gm, file) : null;
+            if (game is not null && shot is null)
+            {
+                throw Error("$.game", "a game block judges the scene's shot, and the scene has none");
+            }
+            return new Scene(file, name, table, physics, rack, list.Select(x => x.Ball).ToList(), shot, rules) { Game = game };
         }
 
         private void ValidatePlacement(List<(BallSetup Ball, string Path)> balls, TableSpec table, double radius)
@@ -296,7 +301,13 @@ public static class SceneLoader
             {
                 throw Error("$.rack", "missing \"game\"");
             }
-            var game = OneOf(g, "$.rack.game", "eight-ball", "nine-ball") == "eight-ball" ? RackGame.EightBall : RackGame.NineBall;
+            var game = OneOf(g, "$.rack.game", "eight-ball", "nine-ball", "ten-ball", "straight-pool") switch
+            {
+                "eight-ball" => RackGame.EightBall,
+                "nine-ball" => RackGame.NineBall,
+                "ten-ball" => RackGame.TenBall,
+                _ => RackGame.StraightPool,
+            };
             int seed = 0;
             if (f.TryGetValue("seed", out var s))
             {

@@ -48,7 +48,11 @@ public sealed record Sample(double Time, Vec3[] Positions);
 /// <param name="WallMilliseconds">Wall-clock time of the run (ms).</param>
 /// <param name="AtRest">True when every ball came to rest.</param>
 /// <param name="Stop">Which bound ended the run.</param>
-public sealed record RunOutcome(Simulation Simulation, IReadOnlyList<Sample> Samples, double WallMilliseconds, bool AtRest, StopReason Stop = StopReason.Rest);
+public sealed record RunOutcome(Simulation Simulation, IReadOnlyList<Sample> Samples, double WallMilliseconds, bool AtRest, StopReason Stop = StopReason.Rest)
+{
+    /// <summary>The referee's ruling on the shot, for a scene with a game block; otherwise null.</summary>
+    public Rules.Ruling? Ruling { get; init; }
+}
 
 /// <summary>Runs a scene headless: create, strike, advance to rest (or a time), sample; always bounded.</summary>
 public static class SimulationRunner
@@ -92,7 +96,29 @@ public static class SimulationRunner
         {
             stop = StopReason.MaxTime;
         }
-        return new RunOutcome(sim, samples, clock.Elapsed.TotalMilliseconds, sim.IsAtRest, stop.Value);
+        return new RunOutcome(sim, samples, clock.Elapsed.TotalMilliseconds, sim.IsAtRest, stop.Value) { Ruling = Judge(scene, sim) };
+    }
+
+    /// <summary>
+    /// The referee's ruling on the scene's shot once <paramref name="sim"/> has run it, or null for
+    /// a scene without a game block. With ball in hand (and on the break) the scene's cue ball is
+    /// where the shooter placed it.
+    /// </summary>
+    public static Rules.Ruling? Judge(Scene scene, Simulation sim)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(sim);
+        if (scene.Game is not { } game)
+        {
+            return null;
+        }
+        if (game.Shot == 0 || game.BallInHand != Rules.BallInHand.None)
+        {
+            var cue = scene.Balls.FirstOrDefault(b => b.Id.IsCue);
+            game = game with { Placement = cue?.Position };
+        }
+        var referee = Rules.Referee.For(game.Rules, scene.Table, scene.BallRadius);
+        return referee.Judge(game, ShotRecord.LastShot(sim, scene.Shot));
     }
 
     /// <summary>

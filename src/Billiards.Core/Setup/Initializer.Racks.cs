@@ -27,8 +27,9 @@ public static partial class Initializer
     /// The balls of a rack with their centres (z = radius). 8-ball: a triangle of 15 with the 1 at
     /// the apex, the 8 in the centre, a solid and a stripe on the two back corners (which corner
     /// gets which, and the order of the rest, follow the seed). 9-ball: a diamond of 9 with the 1
-    /// at the apex and the 9 in the centre. The apex stands on the foot spot and the rack opens
-    /// towards the foot rail (+x).
+    /// at the apex and the 9 in the centre. 10-ball: a triangle of 10 (rows 1-4) with the 1 at the
+    /// apex and the 10 in the middle of the third row. 14.1: a triangle of 15 in the seed's random
+    /// order. The apex stands on the foot spot and the rack opens towards the foot rail (+x).
     /// </summary>
     /// <remarks>
     /// The seed's jitter can make two neighbours overlap (each may move sqrt(2) * 0.1 cm towards
@@ -38,8 +39,47 @@ public static partial class Initializer
     public static IReadOnlyList<(BallId Id, Vec3 Position)> Rack(RackSpec rack, TableSpec table, double radius)
     {
         var random = new Random(rack.Seed);
-        int[] rowSizes = rack.Game == RackGame.EightBall ? [1, 2, 3, 4, 5] : [1, 2, 3, 2, 1];
-        int[] numbers = rack.Game == RackGame.EightBall ? EightBallOrder(random) : NineBallOrder(random);
+        int[] rowSizes = rack.Game switch
+        {
+            RackGame.NineBall => [1, 2, 3, 2, 1],
+            RackGame.TenBall => [1, 2, 3, 4],
+            _ => [1, 2, 3, 4, 5],
+        };
+        int[] numbers = rack.Game switch
+        {
+            RackGame.EightBall => EightBallOrder(random),
+            RackGame.NineBall => NineBallOrder(random),
+            RackGame.TenBall => TenBallOrder(random),
+            _ => StraightPoolOrder(random),
+        };
+        return Place(rowSizes, numbers, table, radius, random);
+    }
+
+    /// <summary>
+    /// 14.1's rerack: <paramref name="balls"/> (normally the 14 pocketed ones) in the 15-ball
+    /// triangle with the apex spot left empty, in order of their numbers from the second row on,
+    /// with the rack's jitter. Fewer than 14 balls fill the rows from the front; 15 fill the apex too.
+    /// </summary>
+    public static IReadOnlyList<(BallId Id, Vec3 Position)> Rerack(IReadOnlyList<BallId> balls, TableSpec table, double radius, int seed)
+    {
+        ArgumentNullException.ThrowIfNull(balls);
+        if (balls.Count > 15)
+        {
+            throw new ArgumentException($"a triangle holds 15 balls, not {balls.Count}", nameof(balls));
+        }
+        var random = new Random(seed);
+        int[] numbers = [.. balls.Select(b => b.Value).Order()];
+        if (numbers.Length == 15)
+        {
+            return Place([1, 2, 3, 4, 5], numbers, table, radius, random);
+        }
+        // Place() fills the triangle apex first; a zero marks the empty apex and is dropped.
+        var placed = Place([1, 2, 3, 4, 5], [0, .. numbers], table, radius, random);
+        return [.. placed.Where(b => b.Item1.Value != 0)];
+    }
+
+    private static List<(BallId, Vec3)> Place(int[] rowSizes, int[] numbers, TableSpec table, double radius, Random random)
+    {
 
         double spacing = 2 * radius + RackGap;
         double rowStep = spacing * Math.Sqrt(3) / 2;
@@ -51,7 +91,10 @@ public static partial class Initializer
             for (int j = 0; j < rowSizes[row]; j++)
             {
                 var ideal = new Vec3(foot.X + row * rowStep, (j - (rowSizes[row] - 1) / 2.0) * spacing, radius);
-                placed.Add((new BallId(numbers[k++]), Jittered(ideal, placed, radius, random)));
+                if (k < numbers.Length)
+                {
+                    placed.Add((new BallId(numbers[k++]), Jittered(ideal, placed, radius, random)));
+                }
             }
         }
         return placed;
@@ -102,6 +145,21 @@ public static partial class Initializer
         int[] rest = [2, 3, 4, 5, 6, 7, 8];
         random.Shuffle(rest);
         return [1, rest[0], rest[1], rest[2], 9, rest[3], rest[4], rest[5], rest[6]];
+    }
+
+    // Rows 1, 2, 3, 4: index 0 is the apex and 4 the centre of the third row.
+    private static int[] TenBallOrder(Random random)
+    {
+        int[] rest = [2, 3, 4, 5, 6, 7, 8, 9];
+        random.Shuffle(rest);
+        return [1, rest[0], rest[1], rest[2], 10, rest[3], rest[4], rest[5], rest[6], rest[7]];
+    }
+
+    private static int[] StraightPoolOrder(Random random)
+    {
+        int[] all = [.. Enumerable.Range(1, 15)];
+        random.Shuffle(all);
+        return all;
     }
 
     private static int Take(List<int> from, Random random)

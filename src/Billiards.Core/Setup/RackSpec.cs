@@ -7,6 +7,10 @@ public enum RackGame
     EightBall,
     /// <summary>9 balls in a diamond, the 1 at the apex, the 9 in the centre.</summary>
     NineBall,
+    /// <summary>10 balls in a triangle, the 1 at the apex, the 10 in the centre.</summary>
+    TenBall,
+    /// <summary>15 balls in a triangle in random order (14.1 continuous).</summary>
+    StraightPool,
 }
 
 /// <summary>A rack placed by the Initializer, with the seed of its jitter.</summary>

@@ -189,16 +189,31 @@ public class SystemKeysAndHudTests
     }
 
     [Fact]
-    public void Formel_4_frame_rate_is_1000_over_the_frame_time_in_ms_smoothed()
+    public void Formel_4_frame_rate_is_1000_over_the_frame_time_in_ms_counted_over_half_a_second()
     {
         var meter = new FrameRateMeter();
         meter.AddFrame(20);                        // 1000 / 20 = 50
         Assert.Equal(50, meter.Current);
         Assert.Equal(50, meter.Smoothed);
-        meter.AddFrame(10);                        // 100; average 50 + 0.1 * (100 - 50) = 55
+        meter.AddFrame(10);                        // 100; 2 frames in 30 ms
         Assert.Equal(100, meter.Current);
-        Assert.Equal(55, meter.Smoothed, 12);
+        Assert.Equal(2 / 0.030, meter.Smoothed, 9);
         meter.AddFrame(0);                         // skipped
-        Assert.Equal(55, meter.Smoothed, 12);
+        Assert.Equal(2 / 0.030, meter.Smoothed, 9);
+    }
+
+    [Fact]
+    public void Frame_rate_shows_a_slow_rate_within_one_window_after_many_fast_frames()
+    {
+        // 600 frames of 1 ms, then 2 FPS: an average over frames would still show hundreds.
+        var meter = new FrameRateMeter();
+        for (int i = 0; i < 600; i++)
+        {
+            meter.AddFrame(1);
+        }
+        Assert.Equal(1000, meter.Smoothed, 6);
+        meter.AddFrame(500);                       // closes the window the fast frames began
+        meter.AddFrame(500);                       // a window of its own
+        Assert.Equal(2, meter.Smoothed, 9);
     }
 }
