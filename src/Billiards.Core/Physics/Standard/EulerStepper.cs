@@ -239,7 +239,7 @@ public sealed class EulerStepper
             }
             foreach (ref readonly var pocket in _geometry.Pockets)
             {
-                if ((b.Position - pocket.Centre).XY.LengthSquared < pocket.Radius * pocket.Radius)
+                if (b.State != MotionState.Pocketed && (b.Position - pocket.Centre).XY.LengthSquared < pocket.Radius * pocket.Radius)
                 {
                     Drop(ref b, i, pocket.Pocket, time);
                     break;
