@@ -145,30 +145,9 @@ public static class SceneLoader
 
         private void ValidatePlacement(List<(BallSetup Ball, string Path)> balls, TableSpec table, double radius)
         {
-            const double Tolerance = TableBounds.Tolerance;
-            foreach (var (ball, path) in balls)
+            if (Placement.Check(table, radius, balls.ConvertAll(b => (b.Ball.Id, b.Ball.Position)), out int culprit) is { } problem)
             {
-                // Both models start every ball on the bed, clear of the cushions. A ball in a pocket's
-                // mouth is refused in both: the standard model's jaws and capture circles and the
-                // thesis model's rail triangles and pocket test are built for balls arriving from the
-                // bed, and a start between them would be neither on the table nor in a pocket.
-                if (!TableBounds.OnBed(table, ball.Position, radius))
-                {
-                    throw Error(path, string.Create(CultureInfo.InvariantCulture,
-                        $"ball \"{ball.Id}\" at [{ball.Position.X}, {ball.Position.Y}] is off the table (the centre must stay within [{-(table.HalfLength - radius):0.######}, {table.HalfLength - radius:0.######}] x [{-(table.HalfWidth - radius):0.######}, {table.HalfWidth - radius:0.######}]: on the bed, R inside the cushion noses; in both models a scene places balls on the bed, never in a pocket's mouth)"));
-                }
-            }
-            for (int i = 0; i < balls.Count; i++)
-            {
-                for (int j = i + 1; j < balls.Count; j++)
-                {
-                    double d = (balls[i].Ball.Position - balls[j].Ball.Position).Length;
-                    if (d < 2 * radius - Tolerance)
-                    {
-                        throw Error(balls[j].Path, string.Create(CultureInfo.InvariantCulture,
-                            $"ball \"{balls[j].Ball.Id}\" overlaps ball \"{balls[i].Ball.Id}\" (centres {d:0.######} m apart, less than 2R = {2 * radius:0.######} m)"));
-                    }
-                }
+                throw Error(balls[culprit].Path, problem);
             }
         }
 

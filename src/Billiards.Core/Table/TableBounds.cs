@@ -42,9 +42,5 @@ public static class TableBounds
             || Square(x) + Square(y - table.HalfWidth) <= sideReach * sideReach;
     }
 
-    /// <summary>True when a ball's centre lies on the bed between the cushion noses, at least <paramref name="radius"/> inside them: where a scene may place it.</summary>
-    public static bool OnBed(TableSpec table, Vec3 centre, double radius) =>
-        Math.Abs(centre.X) <= table.HalfLength - radius + Tolerance && Math.Abs(centre.Y) <= table.HalfWidth - radius + Tolerance;
-
     private static double Square(double v) => v * v;
 }
