@@ -3,7 +3,7 @@ using System.Globalization;
 using Billiards.Soak;
 
 // billiards soak: seeded random legal shots through the engine's API, checked for NaN, escapes
-// (a ball that is not pocketed with its centre outside the cushion noses), overlaps and runs that
+// (a ball that is not pocketed with its centre neither on the bed nor in a pocket's mouth), overlaps and runs that
 // do not come to rest. Usage:
 //   dotnet run -c Release --project tests/Billiards.Soak -- --model standard --integrator exact --shots 1000000 --seed 1
 var options = SoakOptions.Parse(args);

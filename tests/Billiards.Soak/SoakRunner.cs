@@ -46,7 +46,7 @@ public sealed record SoakOptions(string Model, string Integrator, double Dt, lon
 /// <summary>The outcome of one shot.</summary>
 /// <param name="Shot">The shot's number (with the seed, it reproduces the shot).</param>
 /// <param name="Nan">Balls with a non-finite position, velocity or spin at the end.</param>
-/// <param name="Escapes">Balls not pocketed whose centre lies outside the cushion noses at the end.</param>
+/// <param name="Escapes">Balls not pocketed whose centre lies neither on the bed nor in a pocket's mouth at the end (<see cref="TableBounds"/>).</param>
 /// <param name="Overlaps">Pairs of balls on the bed closer than 2R less 1 micrometre at the end.</param>
 /// <param name="MaxOverlap">The deepest of those overlaps (m).</param>
 /// <param name="AtRest">Whether the run came to rest within <see cref="SoakRunner.MaxTime"/>.</param>
@@ -72,7 +72,7 @@ public sealed class SoakRunner(SoakOptions options)
     /// <summary>Builds and runs shot number <paramref name="shot"/>; the same shot and seed give the same outcome.</summary>
     public ShotOutcome RunShot(long shot)
     {
-        var random = new Random(HashCode.Combine(options.Seed, shot));
+        var random = new Random(ShotSeed(options.Seed, shot));
         var scene = MakeScene(random, shot);
         var sim = SimulationFactory.Create(scene);
         sim.Strike(scene.Shot!);
@@ -105,6 +105,15 @@ public sealed class SoakRunner(SoakOptions options)
         {
             Console.WriteLine($"events {g.Key}: {g.Count()} from t = {g.First().Time:0.###} to {g.Last().Time:0.###}");
         }
+    }
+
+    // SplitMix64 of (seed, shot): the same in every process (HashCode is randomised per process).
+    private static int ShotSeed(int seed, long shot)
+    {
+        ulong z = unchecked(((ulong)(uint)seed << 40) ^ (ulong)shot) + 0x9E3779B97F4A7C15UL;
+        z = unchecked((z ^ (z >> 30)) * 0xBF58476D1CE4E5B9UL);
+        z = unchecked((z ^ (z >> 27)) * 0x94D049BB133111EBUL);
+        return (int)((z ^ (z >> 31)) & int.MaxValue);
     }
 
     private Scene MakeScene(Random random, long shot)
@@ -182,7 +191,7 @@ public sealed class SoakRunner(SoakOptions options)
                 nan++;
                 continue;
             }
-            if (!b.IsPocketed && (Math.Abs(b.Position.X) > sim.Table.HalfLength + 1e-9 || Math.Abs(b.Position.Y) > sim.Table.HalfWidth + 1e-9))
+            if (!b.IsPocketed && !TableBounds.Contains(sim.Table, b.Position, r))
             {
                 escapes++;
             }
@@ -214,7 +223,7 @@ public sealed class SoakReport
 {
     private long _shots, _nan, _escapes, _escapeShots, _overlaps, _nonTerminating;
     private double _maxOverlap;
-    private ShotOutcome? _maxEvents, _maxTEnd, _firstFailure;
+    private ShotOutcome? _maxEvents, _maxTEnd, _firstFailure, _firstEscape;
 
     /// <summary>Shots with a NaN, an escape, an overlap or no rest.</summary>
     public long Failures { get; private set; }
@@ -234,6 +243,10 @@ public sealed class SoakReport
             Failures++;
             _firstFailure ??= o;
         }
+        if (o.Escapes > 0)
+        {
+            _firstEscape ??= o;
+        }
         if (_maxEvents is null || o.Events > _maxEvents.Events)
         {
             _maxEvents = o;
@@ -252,5 +265,6 @@ public sealed class SoakReport
         max events per shot {_maxEvents?.Events} ({_maxEvents?.Description})
         max t_end {_maxTEnd?.TEnd:0.###} s ({_maxTEnd?.Description})
         first failure: {_firstFailure?.Description ?? "none"}
+        first escape: {_firstEscape?.Description ?? "none"}
         """);
 }

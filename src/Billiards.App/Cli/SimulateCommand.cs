@@ -21,10 +21,11 @@ public static class SimulateCommand
         var until = new Option<double?>("--until") { Description = "Stop at this simulated time (s, at most 3600) instead of at rest." };
         var sample = new Option<double?>("--sample") { Description = "Record positions every DT seconds." };
         var output = new Option<string?>("--out") { Description = "Write the result to FILE instead of standard output." };
+        var maxWall = new Option<double?>("--max-wall") { Description = $"Bound on the run's wall-clock time (s, default {RunOptions.DefaultMaxWallSeconds}); stats.stop tells which bound ended a run." };
 
         var command = new Command("simulate", "Simulate a scene headless and print its result JSON.")
         {
-            scene, model, integrator, dt, until, sample, output,
+            scene, model, integrator, dt, until, sample, output, maxWall,
         };
         command.SetAction(parse =>
         {
@@ -39,9 +40,14 @@ public static class SimulateCommand
             {
                 throw new CliException($"--sample {s}: expected a positive interval (s)");
             }
+            double wall = parse.GetValue(maxWall) ?? RunOptions.DefaultMaxWallSeconds;
+            if (!double.IsFinite(wall) || wall <= 0 || wall > RunOptions.MaxUntil)
+            {
+                throw new CliException(string.Create(CultureInfo.InvariantCulture, $"--max-wall {wall}: expected more than 0 and at most {RunOptions.MaxUntil} s"));
+            }
             string? outPath = parse.GetValue(output) is { } o ? OutputFiles.Check("--out", o) : null;
             var loaded = SceneLoader.Load(parse.GetValue(scene)!, new SceneOverrides(parse.GetValue(model), parse.GetValue(integrator), parse.GetValue(dt)));
-            var options = new RunOptions(untilValue, sampleValue);
+            var options = new RunOptions(untilValue, sampleValue, MaxWallSeconds: wall);
             if (sampleValue is { } interval && (untilValue ?? options.MaxTime) / interval > 1_000_000)
             {
                 throw new CliException($"--sample {interval}: more than a million samples; choose a larger interval");

@@ -92,6 +92,10 @@ public static class SceneLoader
                 ? ReadTable(t)
                 : TableSpec.FromPreset(physics.Model == Models.Thesis ? "thesis" : "pool-9ft");
             double radius = physics.Model == Models.Thesis ? ThesisConstants.RadiusMetres : physics.Params.R;
+            if (physics.Model == Models.Standard && RadiusLimits.Problem(table, radius) is { } radiusProblem)
+            {
+                throw Error("$.physics.params.R", radiusProblem);
+            }
 
             RackSpec? rack = fields.TryGetValue("rack", out var r) ? ReadRack(r) : null;
             var balls = new SortedDictionary<int, (BallSetup Ball, string Path)>();

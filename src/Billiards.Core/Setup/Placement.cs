@@ -45,7 +45,10 @@ public static class Placement
         double maxY = table.HalfWidth - radius;
         if (Math.Abs(position.X) > maxX + Tolerance || Math.Abs(position.Y) > maxY + Tolerance)
         {
-            return Text($"ball \"{id}\" at [{position.X}, {position.Y}] is off the table (the centre must stay within [{-maxX:0.######}, {maxX:0.######}] x [{-maxY:0.######}, {maxY:0.######}])");
+            // A ball in a pocket's mouth is refused in both models: the standard model's jaws and
+            // capture circles and the thesis model's rail triangles and pocket test decide about
+            // balls arriving from the bed, and a ball starting between them is on neither.
+            return Text($"ball \"{id}\" at [{position.X}, {position.Y}] is off the table (the centre must stay within [{-maxX:0.######}, {maxX:0.######}] x [{-maxY:0.######}, {maxY:0.######}]: on the bed, R inside the cushion noses; in both models a ball starts on the bed, never in a pocket's mouth)");
         }
         if (region == PlacementRegion.Kitchen && position.X > HeadString(table) + Tolerance)
         {

@@ -24,6 +24,10 @@ public sealed class EulerStepper
     private readonly IBallBallModel _ballBall;
     private readonly IBallCushionModel _ballCushion;
     private readonly EventLog _log;
+    private readonly Vec3[] _start;
+
+    // How far behind a face or inside a circle a ball may start and still count as touching it (m).
+    private const double ContactSlack = 1e-9;
 
     /// <summary>Creates a stepper over the balls (shared, changed in place).</summary>
     public EulerStepper(BallState[] balls, IReadOnlyList<BallId> ids, PhysicsParams parameters, TableGeometry geometry,
@@ -37,6 +41,7 @@ public sealed class EulerStepper
         _ballBall = ballBall;
         _ballCushion = ballCushion;
         _log = log;
+        _start = new Vec3[balls.Length];
         for (int i = 0; i < balls.Length; i++)
         {
             BallMotion.Classify(ref _balls[i], _k);
@@ -80,6 +85,7 @@ public sealed class EulerStepper
         bool translating = false;
         for (int i = 0; i < _balls.Length; i++)
         {
+            _start[i] = _balls[i].Position;
             if (BallMotion.IsActive(_balls[i].State))
             {
                 Integrate(ref _balls[i], dt);
@@ -191,55 +197,163 @@ public sealed class EulerStepper
             {
                 continue;
             }
-            foreach (ref readonly var s in _geometry.Segments)
+            // A swept contact (the ball stopped on a face or nose) replaces the overlap tests; the
+            // pocket test below still runs, since a bounce in a mouth can leave it over the hole.
+            if (!SweepBoundary(ref b, i, time))
             {
-                double gap = Vec3.Dot(s.Normal, b.Position - s.Start) - r;
-                if (gap >= 0)
+                foreach (ref readonly var s in _geometry.Segments)
                 {
-                    continue; // the common case: not overlapping this face's line
-                }
-                double along = Vec3.Dot(b.Position - s.Start, s.Direction);
-                double approach = -Vec3.Dot(b.Velocity, s.Normal);
-                // Overlapping, on the face, approaching, and no deeper than this step's travel could
-                // take a ball that was in front of the face: a long step must not let a fast ball
-                // through the cushion, and the bound keeps balls in a pocket's mouth, behind the
-                // line of a neighbouring cushion, from being caught by it.
-                if (gap > -r - approach * dt && along >= 0 && along <= s.Length && approach > 0)
-                {
-                    b.Position -= s.Normal * gap; // back onto the face
-                    Cushion(ref b, i, s.Normal, s.Feature, approach, time);
-                }
-            }
-            foreach (ref readonly var nose in _geometry.Noses)
-            {
-                var d = (b.Position - nose.Centre).XY;
-                double reach = r + nose.Radius;
-                if (d.LengthSquared < reach * reach)
-                {
-                    var n = d.Normalized();
-                    double approach = -Vec3.Dot(b.Velocity, n);
-                    if (approach > 0)
+                    double gap = Vec3.Dot(s.Normal, b.Position - s.Start) - r;
+                    if (gap >= 0)
                     {
-                        var touching = nose.Centre + n * reach;
-                        b.Position = new Vec3(touching.X, touching.Y, b.Position.Z);
-                        Cushion(ref b, i, n, nose.Feature, approach, time);
+                        continue; // the common case: not overlapping this face's line
+                    }
+                    double along = Vec3.Dot(b.Position - s.Start, s.Direction);
+                    double approach = -Vec3.Dot(b.Velocity, s.Normal);
+                    // Overlapping, on the face, approaching, and no deeper than this step's travel could
+                    // take a ball that was in front of the face: a long step must not let a fast ball
+                    // through the cushion, and the bound keeps balls in a pocket's mouth, behind the
+                    // line of a neighbouring cushion, from being caught by it.
+                    if (gap > -r - approach * dt && along >= 0 && along <= s.Length && approach > 0)
+                    {
+                        b.Position -= s.Normal * gap; // back onto the face
+                        Cushion(ref b, i, s.Normal, s.Feature, approach, time);
+                    }
+                }
+                foreach (ref readonly var nose in _geometry.Noses)
+                {
+                    var d = (b.Position - nose.Centre).XY;
+                    double reach = r + nose.Radius;
+                    if (d.LengthSquared < reach * reach)
+                    {
+                        var n = d.Normalized();
+                        double approach = -Vec3.Dot(b.Velocity, n);
+                        if (approach > 0)
+                        {
+                            var touching = nose.Centre + n * reach;
+                            b.Position = new Vec3(touching.X, touching.Y, b.Position.Z);
+                            Cushion(ref b, i, n, nose.Feature, approach, time);
+                        }
                     }
                 }
             }
             foreach (ref readonly var pocket in _geometry.Pockets)
             {
-                if ((b.Position - pocket.Centre).XY.LengthSquared < pocket.Radius * pocket.Radius)
+                if (b.State != MotionState.Pocketed && (b.Position - pocket.Centre).XY.LengthSquared < pocket.Radius * pocket.Radius)
                 {
-                    double dropSpeed = b.Velocity.Length;
-                    b.Velocity = Vec3.Zero;
-                    b.Spin = Vec3.Zero;
-                    b.State = MotionState.Pocketed;
-                    b.Pocket = pocket.Pocket;
-                    _log.Add(new SimEvent(time, EventKind.BallPocket, _ids[i], _ids[i], pocket.Pocket, dropSpeed));
+                    Drop(ref b, i, pocket.Pocket, time);
                     break;
                 }
             }
         }
+    }
+
+    /// <summary>
+    /// The table-bound guarantee at any step: the straight path a ball's centre took this step
+    /// (from its start to where integration and pair corrections left it) is tested against every
+    /// cushion face, jaw nose and capture circle, and the first one it crossed from the table's
+    /// side takes it: the ball stops there and bounces, or drops. Overlap alone misses a ball that
+    /// travels further in one step than a face's depth or a capture circle's width. Ball-ball
+    /// contacts stay overlap-detected: that is this baseline's nature.
+    /// </summary>
+    /// <returns>True when the path crossed the boundary and the ball was handled.</returns>
+    private bool SweepBoundary(ref BallState b, int i, double time)
+    {
+        double r = _params.R;
+        var p0 = _start[i];
+        var d = (b.Position - p0).XY;
+        if (d.LengthSquared == 0)
+        {
+            return false;
+        }
+        double first = double.PositiveInfinity;
+        int kind = 0, index = -1;
+        var segments = _geometry.Segments;
+        for (int k = 0; k < segments.Length; k++)
+        {
+            ref readonly var s = ref segments[k];
+            double g0 = Vec3.Dot(s.Normal, p0 - s.Start) - r;
+            double g1 = Vec3.Dot(s.Normal, b.Position - s.Start) - r;
+            // Started behind the face's line (a ball in a mouth), or never reached it. A ball left
+            // touching a face by the last bounce starts on the line, give or take round-off.
+            if (g0 < -ContactSlack || g1 >= 0)
+            {
+                continue;
+            }
+            double t = Math.Max(g0, 0) / (Math.Max(g0, 0) - g1);
+            double along = Vec3.Dot(p0 + d * t - s.Start, s.Direction);
+            if (along >= 0 && along <= s.Length && t < first)
+            {
+                (first, kind, index) = (t, 1, k);
+            }
+        }
+        var noses = _geometry.Noses;
+        for (int k = 0; k < noses.Length; k++)
+        {
+            double t = Entry(p0, d, noses[k].Centre, r + noses[k].Radius);
+            if (t < first)
+            {
+                (first, kind, index) = (t, 2, k);
+            }
+        }
+        var pockets = _geometry.Pockets;
+        for (int k = 0; k < pockets.Length; k++)
+        {
+            double t = Entry(p0, d, pockets[k].Centre, pockets[k].Radius);
+            if (t < first)
+            {
+                (first, kind, index) = (t, 3, k);
+            }
+        }
+        if (kind == 0)
+        {
+            return false;
+        }
+        var at = p0 + d * first;
+        b.Position = new Vec3(at.X, at.Y, b.Position.Z);
+        if (kind == 3)
+        {
+            Drop(ref b, i, pockets[index].Pocket, time);
+            return true;
+        }
+        var normal = kind == 1 ? segments[index].Normal : (b.Position - noses[index].Centre).XY.Normalized();
+        int feature = kind == 1 ? segments[index].Feature : noses[index].Feature;
+        double approach = -Vec3.Dot(b.Velocity, normal);
+        if (approach > 0)
+        {
+            Cushion(ref b, i, normal, feature, approach, time);
+        }
+        return true;
+    }
+
+    // Where along p0 + s d (s in [0, 1]) a centre outside the circle first reaches it; infinity if it does not.
+    private static double Entry(Vec3 p0, Vec3 d, Vec3 centre, double radius)
+    {
+        var f = (p0 - centre).XY;
+        double c = f.LengthSquared - radius * radius;
+        if (c < -2 * radius * ContactSlack)
+        {
+            return double.PositiveInfinity; // already inside: the overlap tests deal with it
+        }
+        c = Math.Max(c, 0);
+        double a = d.LengthSquared, bh = Vec3.Dot(f, d);
+        double disc = bh * bh - a * c;
+        if (bh >= 0 || disc < 0)
+        {
+            return double.PositiveInfinity;
+        }
+        double s = c / (-bh + Math.Sqrt(disc)); // the smaller root, without cancellation
+        return s <= 1 ? s : double.PositiveInfinity;
+    }
+
+    private void Drop(ref BallState b, int i, int pocket, double time)
+    {
+        double dropSpeed = b.Velocity.Length;
+        b.Velocity = Vec3.Zero;
+        b.Spin = Vec3.Zero;
+        b.State = MotionState.Pocketed;
+        b.Pocket = pocket;
+        _log.Add(new SimEvent(time, EventKind.BallPocket, _ids[i], _ids[i], pocket, dropSpeed));
     }
 
     private void Cushion(ref BallState b, int i, Vec3 normal, int feature, double approach, double time)

@@ -126,6 +126,7 @@ public sealed partial class StandardSimulation : Simulation
             }
         }
         StepCount++;
+        StateChecker.Check(this, Parameters.R, checkOverlap: _euler is null);
     }
 
     /// <summary>
@@ -143,6 +144,7 @@ public sealed partial class StandardSimulation : Simulation
             Time = engine.Time;
             StepCount += engine.EventCount - before;
             EventCapHits = engine.EventCapHits;
+            StateChecker.Check(this, Parameters.R, checkOverlap: true);
             return;
         }
         base.AdvanceTo(time);

@@ -92,6 +92,7 @@ public sealed partial class ThesisSimulation : Simulation
         Time = Engine.Time;
         StepCount = Engine.Steps;
         _statesStale = true;
+        StateChecker.Check(this, ThesisConstants.RadiusMetres, checkOverlap: false);
     }
 
     /// <inheritdoc />

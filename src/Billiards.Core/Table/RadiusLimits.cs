@@ -1,0 +1,111 @@
+using System.Globalization;
+using Billiards.Core.Mathematics;
+
+namespace Billiards.Core.Table;
+
+/// <summary>
+/// The ball radii a table's collision geometry (<see cref="TableGeometry"/>) can hold on the table,
+/// for the standard model. Outside them a scene is refused when it loads, because a ball could
+/// leave the table:
+/// <list type="bullet">
+/// <item>the cushion's contact point must lie at or below the top of the ball and at or above its
+/// equator (R &lt;= h &lt;= 2R), or the ball rides over the rail or slips under the nose;</item>
+/// <item>a ball must fit through the mouths (2R less than the narrower mouth);</item>
+/// <item>each pocket's capture circle (radius R, R behind the mouth's middle) must span the channel
+/// between the jaw faces that a ball's centre can reach; a smaller ball could roll past it between
+/// the jaws and off the end of the jaws.</item>
+/// </list>
+/// </summary>
+public static class RadiusLimits
+{
+    /// <summary>The problem with balls of <paramref name="radius"/> (m) on <paramref name="table"/>, or null when they are supported.</summary>
+    public static string? Problem(TableSpec table, double radius)
+    {
+        double h = table.CushionHeight;
+        if (radius > h || 2 * radius < h)
+        {
+            return Format($"a ball of R = {radius} m does not meet the cushions: their contact height {h:0.#####} m must lie between R and 2R (the ball's equator and its top), so R must lie in [{h / 2:0.#####}, {h:0.#####}] m on this table (table.cushion_height changes the height)");
+        }
+        if (!table.HasPockets)
+        {
+            return null;
+        }
+        double mouth = Math.Min(table.CornerPocketMouth, table.SidePocketMouth);
+        if (2 * radius >= mouth)
+        {
+            return Format($"a ball of R = {radius} m does not fit through the pockets: its diameter is not less than the narrowest mouth, {mouth:0.####} m");
+        }
+        if (!CaptureSpansJaws(table, radius))
+        {
+            return Format($"a ball of R = {radius} m is too small for this table's pockets: it could roll between the jaws past the pocket's capture circle and off the table; the smallest radius these pockets hold is {SmallestHeld(table):0.#####} m");
+        }
+        return null;
+    }
+
+    /// <summary>
+    /// True when, at every pocket, the chord of the capture circle across the jaws covers every
+    /// point a ball's centre can reach there (at least R from both jaw faces).
+    /// </summary>
+    public static bool CaptureSpansJaws(TableSpec table, double radius)
+    {
+        var geometry = TableGeometry.Build(table, radius);
+        var mouths = MouthMiddles(table);
+        foreach (var pocket in geometry.Pockets)
+        {
+            var middle = mouths[pocket.Pocket];
+            var across = (pocket.Centre - middle).Normalized();
+            across = new Vec3(-across.Y, across.X, 0);
+            string prefix = TableGeometry.PocketName(pocket.Pocket) + "-jaw-";
+            double lo = double.PositiveInfinity, hi = double.NegativeInfinity;
+            foreach (var face in geometry.Segments)
+            {
+                if (!geometry.CushionName(face.Feature).StartsWith(prefix, StringComparison.Ordinal))
+                {
+                    continue;
+                }
+                // Where along the chord the centre is exactly R from this jaw face's line.
+                double s = (radius - Vec3.Dot(face.Normal, pocket.Centre - face.Start)) / Vec3.Dot(face.Normal, across);
+                lo = Math.Min(lo, s);
+                hi = Math.Max(hi, s);
+            }
+            if (Math.Max(Math.Abs(lo), Math.Abs(hi)) > pocket.Radius)
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    // The closure test is monotone in R over the range of interest: bisect for the message.
+    private static double SmallestHeld(TableSpec table)
+    {
+        double lo = 0.001, hi = Math.Min(table.CornerPocketMouth, table.SidePocketMouth) / 2;
+        for (int i = 0; i < 40; i++)
+        {
+            double mid = 0.5 * (lo + hi);
+            if (CaptureSpansJaws(table, mid))
+            {
+                hi = mid;
+            }
+            else
+            {
+                lo = mid;
+            }
+        }
+        return Math.Ceiling(hi * 1e5) / 1e5;
+    }
+
+    // The middles of the mouth lines, by pocket index, as TableGeometry places them.
+    private static Vec3[] MouthMiddles(TableSpec t)
+    {
+        double hx = t.HalfLength, hy = t.HalfWidth, c = t.CornerPocketMouth / Math.Sqrt(2);
+        return
+        [
+            new(-hx + c / 2, hy - c / 2, 0), new(-hx + c / 2, -hy + c / 2, 0),
+            new(0, hy, 0), new(0, -hy, 0),
+            new(hx - c / 2, hy - c / 2, 0), new(hx - c / 2, -hy + c / 2, 0),
+        ];
+    }
+
+    private static string Format(FormattableString s) => s.ToString(CultureInfo.InvariantCulture);
+}
