@@ -1,5 +1,6 @@
 using System.CommandLine;
 using Billiards.App.Game;
+using Billiards.App.Platform;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
 
@@ -23,8 +24,10 @@ public static class PlayCommand
             Description = $"The scene file (billiards-scene/1 JSON); default {DefaultScene}.",
             Arity = ArgumentArity.ZeroOrOne,
         };
-        var command = new Command("play", "Play a scene in a window (the default verb).") { scene };
-        command.SetAction(parse => Play(parse.GetValue(scene), PlatformWiring.Open));
+        var script = new Option<string?>("--script") { Description = $"Replay a timed list of input events ({InputScript.Format} JSON); the game closes when it ends." };
+        var stats = new Option<string?>("--stats") { Description = $"Write per-second frame rates, frame-time percentiles and input-to-frame delays ({FrameStats.Format} JSON) when the game ends." };
+        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats };
+        command.SetAction(parse => Play(parse.GetValue(scene), PlatformWiring.Open, options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))));
         root.Add(command);
         root.SetAction(_ => Play(null, PlatformWiring.Open));
     }
@@ -35,14 +38,68 @@ public static class PlayCommand
     /// <param name="createSimulation">Makes the simulation; <see cref="SimulationFactory.Create"/> by default.</param>
     /// <param name="clock">The clock; the real one by default.</param>
     /// <returns>The exit code.</returns>
-    public static int Play(string? scenePath, Func<string, GamePlatform> openPlatform, Func<Scene, Simulation>? createSimulation = null, IClock? clock = null)
+    /// <param name="options">A script to replay and a stats file to write, or null.</param>
+    public static int Play(string? scenePath, Func<string, GamePlatform> openPlatform, Func<Scene, Simulation>? createSimulation = null, IClock? clock = null, PlayOptions? options = null)
     {
-        var scene = SceneLoader.Load(scenePath ?? FindDefaultScene());
+        string path = scenePath ?? FindDefaultScene();
+        var scene = SceneLoader.Load(path);
+        var script = options?.Script is { } scriptPath ? InputScript.Load(scriptPath) : null;
+        string? statsPath = options?.Stats is { } s ? OutputFiles.Check("--stats", s, ".json") : null;
         string title = scene.Name is { } name ? $"{PlatformWiring.WindowTitle}: {name}" : PlatformWiring.WindowTitle;
         using var platform = OpenOrExplain(openPlatform, title);
-        using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, platform.Window, clock ?? new StopwatchClock());
+        var gameClock = new ScriptClock(clock ?? new StopwatchClock());
+        using var scripted = script is null ? null : new ScriptedInput(platform.Window, script, gameClock);
+        using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock);
+        var stats = statsPath is null ? null : new FrameStats();
+        bool warm = false;
+        host.FrameStarting += now =>
+        {
+            // The first frame loads the table and compiles the shaders: the script and the
+            // stats start with the second, so their second 0 is a second of play.
+            if (!warm)
+            {
+                warm = true;
+                return;
+            }
+            stats?.FrameStarted(now);
+            if (scripted is not null)
+            {
+                scripted.Pump(now);
+                if (scripted.Finished)
+                {
+                    platform.Window.Close();
+                }
+            }
+        };
+        if (scripted is not null && stats is not null)
+        {
+            scripted.Raised += (e, _) => stats.InputRaised(e);
+        }
         host.Run(platform.Loop, platform.Renderer);
+        if (stats is not null && statsPath is not null)
+        {
+            var (width, height) = platform.Window.FramebufferSize;
+            OutputFiles.Write(statsPath, stats.ToJson(path, options?.Script, width, height, platform.GlRenderer));
+        }
         return 0;
+    }
+
+    /// <summary>
+    /// On Linux and the BSDs a window needs an X11 or Wayland display; without one GLFW would fail
+    /// deep in its initialisation. Checked before any native library is loaded.
+    /// </summary>
+    /// <exception cref="EnvironmentException">When there is no display.</exception>
+    public static void RequireDisplay(Func<string, string?>? environment = null)
+    {
+        environment ??= Environment.GetEnvironmentVariable;
+        if (OperatingSystem.IsWindows() || OperatingSystem.IsMacOS())
+        {
+            return;
+        }
+        if (string.IsNullOrEmpty(environment("DISPLAY")) && string.IsNullOrEmpty(environment("WAYLAND_DISPLAY")))
+        {
+            throw new EnvironmentException("play: no display: DISPLAY is not set (run it in a desktop session, or under Xvfb: xvfb-run billiards play)");
+        }
     }
 
     // No display, no GL driver, no GLFW: an environment problem, one line and exit code 1.
@@ -57,6 +114,11 @@ public static class PlayCommand
             throw new EnvironmentException($"play: cannot open the game's window: {e.Message}", e);
         }
     }
+
+    /// <summary>Options of <c>play</c>.</summary>
+    /// <param name="Script">A <see cref="InputScript"/> file to replay, or null.</param>
+    /// <param name="Stats">Where to write the <see cref="FrameStats"/>, or null.</param>
+    public sealed record PlayOptions(string? Script, string? Stats);
 
     /// <summary>
     /// The default scene: relative to the working directory, else in the shipped assets

@@ -40,6 +40,9 @@ public sealed class GameHost : IDisposable
         _lastFrame = clock.Now;
     }
 
+    /// <summary>Signal: a frame starts at this clock time (s), before its physics, input and drawing.</summary>
+    public event Action<double>? FrameStarting;
+
     /// <summary>The running game.</summary>
     public GameWorld World => _world;
 
@@ -56,6 +59,7 @@ public sealed class GameHost : IDisposable
     public RenderFrame RunFrame()
     {
         double now = _clock.Now;
+        FrameStarting?.Invoke(now);
         double frameTime = now - _lastFrame;
         _lastFrame = now;
         _world.Loop.Advance(frameTime, _physicsStep);

@@ -25,7 +25,8 @@ public interface IFrameLoop
 /// <param name="Loop">The frame loop (usually the window itself).</param>
 /// <param name="Renderer">Draws a <see cref="RenderFrame"/>.</param>
 /// <param name="Resources">Released when the game ends (window, GL context), or null.</param>
-public sealed record GamePlatform(IGameWindow Window, IFrameLoop Loop, IFrameRenderer Renderer, IDisposable? Resources = null) : IDisposable
+/// <param name="GlRenderer">The GL renderer's name (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"), or null.</param>
+public sealed record GamePlatform(IGameWindow Window, IFrameLoop Loop, IFrameRenderer Renderer, IDisposable? Resources = null, string? GlRenderer = null) : IDisposable
 {
     /// <summary>Releases <see cref="Resources"/>.</summary>
     public void Dispose() => Resources?.Dispose();

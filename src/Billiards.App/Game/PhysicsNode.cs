@@ -63,8 +63,14 @@ public sealed class PhysicsNode : Node
     /// <summary>The last shot played, or null before the first.</summary>
     public ShotSpec? LastShot { get; private set; }
 
-    /// <summary>True when there is a cue ball on the table.</summary>
-    public bool HasCueBall => CueIndex is int i && !_simulation.Balls[i].IsPocketed;
+    /// <summary>True when there is a cue ball on the table (or placed by hand after a scratch).</summary>
+    public bool HasCueBall => CueIndex is int i && (_cuePlacement is not null || !_simulation.Balls[i].IsPocketed);
+
+    /// <summary>True from a scratch until the cue ball is struck: it is in hand and may be placed anywhere on the bed.</summary>
+    public bool BallInHand { get; private set; }
+
+    /// <summary>Signal: the cue ball was pocketed and came back in hand at this position (m).</summary>
+    public event Action<Vec3>? CueBallReturned;
 
     /// <summary>The cue ball's centre (m), including a placement not yet handed to the simulation.</summary>
     public Vec3 CueBallPosition => _cuePlacement ?? (CueIndex is int i ? _simulation.Balls[i].Position : Vec3.Zero);
@@ -77,10 +83,22 @@ public sealed class PhysicsNode : Node
     /// </summary>
     public bool TryPlaceCueBall(Vec3 position)
     {
-        if (IsRolling || CueIndex is not int cue)
+        if (IsRolling || CueIndex is not int cue || (!BallInHand && _simulation.Balls[cue].IsPocketed))
         {
             return false;
         }
+        return IsFreeSpot(position, cue) && Place(position);
+    }
+
+    private bool Place(Vec3 position)
+    {
+        _cuePlacement = position with { Z = BallRadius };
+        return true;
+    }
+
+    // On the bed, a radius inside the cushions, and clear of every other ball on the table.
+    private bool IsFreeSpot(Vec3 position, int cue)
+    {
         double r = BallRadius;
         const double Tolerance = 1e-9;
         if (Math.Abs(position.X) > Table.HalfLength - r + Tolerance || Math.Abs(position.Y) > Table.HalfWidth - r + Tolerance)
@@ -95,8 +113,33 @@ public sealed class PhysicsNode : Node
                 return false;
             }
         }
-        _cuePlacement = position with { Z = r };
         return true;
+    }
+
+    /// <summary>
+    /// Where a scratched cue ball comes back: the head spot (a quarter of the length from the head
+    /// rail), or the free point nearest to it along the head string and then anywhere on the bed.
+    /// </summary>
+    public Vec3 ReturnSpot()
+    {
+        int cue = CueIndex ?? -1;
+        double r = BallRadius;
+        var head = new Vec3(-Table.Length / 4, 0, r);
+        for (int ring = 0; ring < 200; ring++)
+        {
+            double radius = ring * r;
+            int count = ring == 0 ? 1 : 8 * ring;
+            for (int k = 0; k < count; k++)
+            {
+                double a = 2 * Math.PI * k / count;
+                var p = head + new Vec3(radius * Math.Cos(a), radius * Math.Sin(a), 0);
+                if (IsFreeSpot(p, cue))
+                {
+                    return p;
+                }
+            }
+        }
+        return head;
     }
 
     /// <summary>Strikes the cue ball; refused while balls roll.</summary>
@@ -112,6 +155,7 @@ public sealed class PhysicsNode : Node
             throw new InvalidOperationException("there is no cue ball on the table");
         }
         CommitCuePlacement();
+        BallInHand = false;
         _cueAtStrike = CueBallPosition;
         _simulation.Strike(shot);
         LastShot = shot;
@@ -145,6 +189,13 @@ public sealed class PhysicsNode : Node
             IsRolling = false;
             // Nothing moves any more: interpolation must not pull the picture back a step.
             _simulation.Balls.CopyTo(_previous);
+            if (CueIndex is int cue && _simulation.Balls[cue].IsPocketed)
+            {
+                // A scratch: the cue ball comes back in hand instead of leaving the game without one.
+                BallInHand = true;
+                Place(ReturnSpot());
+                CueBallReturned?.Invoke(CueBallPosition);
+            }
             var displacement = HasCueBall ? CueBallPosition - _cueAtStrike : Vec3.Zero;
             CameToRest?.Invoke(displacement);
         }
@@ -161,11 +212,13 @@ public sealed class PhysicsNode : Node
             ref readonly var previous = ref _previous[i];
             var position = Vector3.Lerp(previous.Position.ToVector3(), current.Position.ToVector3(), alpha);
             var orientation = Quaternion.Slerp(Valid(previous.Orientation), Valid(current.Orientation), alpha);
+            bool visible = IsVisible(current);
             if (_cuePlacement is { } placed && _simulation.Ids[i].IsCue)
             {
                 position = placed.ToVector3();
+                visible = true;
             }
-            frame.Frame.Balls.Add(new BallVisual(_simulation.Ids[i], position, orientation, IsVisible(current)));
+            frame.Frame.Balls.Add(new BallVisual(_simulation.Ids[i], position, orientation, visible));
         }
     }
 
@@ -192,7 +245,7 @@ public sealed class PhysicsNode : Node
     /// <summary>
     /// Core has no call to move a ball, so a placed cue ball is handed over by starting a new
     /// simulation from the balls as they rest now. Pocketed balls are left out (they are out of
-    /// play); orientations start afresh. MERGE: replace with a Core placement call once there is one.
+    /// play), except a scratched cue ball, which comes back where it was placed; orientations start afresh. MERGE: replace with a Core placement call once there is one.
     /// </summary>
     private void CommitCuePlacement()
     {
@@ -204,11 +257,11 @@ public sealed class PhysicsNode : Node
         var setups = new List<BallSetup>(balls.Length);
         for (int i = 0; i < balls.Length; i++)
         {
-            if (balls[i].IsPocketed)
+            var id = _simulation.Ids[i];
+            if (balls[i].IsPocketed && !id.IsCue)
             {
                 continue;
             }
-            var id = _simulation.Ids[i];
             setups.Add(new BallSetup(id, id.IsCue ? placed : balls[i].Position, Vec3.Zero, Vec3.Zero));
         }
         // No rack (its balls are already placed above) and no opening shot.

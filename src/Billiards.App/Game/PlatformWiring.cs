@@ -18,17 +18,28 @@ public static class PlatformWiring
     /// </summary>
     public static GamePlatform Open(string title)
     {
+        Cli.PlayCommand.RequireDisplay();
         var window = new GlfwWindow(title, 1280, 720, samples: 4);
         if (window.IsSoftwareRenderer)
         {
-            window.Dispose();
-            window = new GlfwWindow(title, 1280, 720, samples: 0);
+            // GLFW stays initialised across the swap: terminating and initialising it again at once
+            // sometimes failed to reopen the X display.
+            GlfwRuntime.Acquire(out _);
+            try
+            {
+                window.Dispose();
+                window = new GlfwWindow(title, 1280, 720, samples: 0);
+            }
+            finally
+            {
+                GlfwRuntime.Release();
+            }
         }
         try
         {
             var renderer = new Renderer(window.Gl);
             var resources = new Resources(renderer, window);
-            return new GamePlatform(window, new WindowLoop(window), new FrameRenderer(renderer, window), resources);
+            return new GamePlatform(window, new WindowLoop(window), new FrameRenderer(renderer, window), resources, window.Gl.GetString(Native.Gl.RendererName));
         }
         catch
         {

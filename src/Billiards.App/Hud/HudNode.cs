@@ -55,6 +55,10 @@ public sealed class HudNode : Node
             string locked = _modes.IsLocked ? " (balls rolling: view only)" : "";
             _lines.Add($"Mode: {ModeName(_modes.Mode)}{locked}");
         }
+        if (_physics is { BallInHand: true })
+        {
+            _lines.Add("Ball in hand: drag it (move mode, M), then S to shoot");
+        }
         _lines.Add(_physics?.LastShot is { } shot
             ? string.Create(c, $"Last shot: {shot.Speed:0.00} m/s")
             : "Last shot: -");

@@ -4,6 +4,8 @@ using Billiards.App.Hud;
 using Billiards.App.Input.Modes;
 using Billiards.App.Platform;
 using Billiards.Core.Balls;
+using Billiards.Core.Cue;
+using Billiards.Core.Mathematics;
 
 namespace Billiards.App.Tests.Game;
 
@@ -73,6 +75,38 @@ public class GameSceneTests
         var rules = game.World.Tree.Find<RulesNode>()!;
         Assert.Equal([new BallId(1)], rules.LastShotPotted);
         Assert.Contains(game.Host.RunFrame().Hud!.Lines, l => l.Contains("potted last shot: 1", StringComparison.Ordinal));
+    }
+
+    [Fact]
+    public void A_scratched_cue_ball_comes_back_in_hand_on_the_head_spot_and_the_game_goes_on()
+    {
+        using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
+        game.Frame();
+        game.Simulation.Pocket(BallId.Cue);
+        game.RunUntilRest();
+        var physics = game.World.Physics;
+        Assert.True(physics.BallInHand);
+        Assert.True(physics.HasCueBall);
+        // The 9 ft table's head spot: a quarter of the length (2.54 m) from the head rail's side of the centre.
+        Assert.Equal(-2.54 / 4, physics.CueBallPosition.X, 9);
+        Assert.Equal(0, physics.CueBallPosition.Y, 9);
+        Assert.Equal(InputMode.Move, game.World.InputModes.Mode);
+        var frame = game.Frame();
+        Assert.True(frame.Balls.Single(b => b.Id.IsCue).Visible);
+        Assert.True(frame.Cue.Visible);
+        Assert.Contains(frame.Hud!.Lines, l => l.StartsWith("Ball in hand", StringComparison.Ordinal));
+
+        // Anywhere on the bed, but not off it or on another ball.
+        Assert.True(physics.TryPlaceCueBall(new Vec3(0.3, 0.4, 0)));
+        Assert.False(physics.TryPlaceCueBall(new Vec3(2.0, 0, 0)));
+        Assert.False(physics.TryPlaceCueBall(new Vec3(0.635 + 0.01, 0, 0)));
+        Assert.Equal(new Vec3(0.3, 0.4, physics.BallRadius), physics.CueBallPosition);
+
+        // The next strike plays from there: a new simulation with the cue ball at the placement.
+        physics.Strike(new ShotSpec(1.0, 0, 0, 0, 0));
+        Assert.False(physics.BallInHand);
+        Assert.Equal(0.3, game.Simulation.State[game.Simulation.IndexOf(BallId.Cue)].Position.X, 9);
+        Assert.False(game.Simulation.State[game.Simulation.IndexOf(BallId.Cue)].IsPocketed);
     }
 
     [Fact]

@@ -69,6 +69,8 @@ public sealed class InputModeNode : Node
         _cue = FindInTree<CueNode>();
         // Seed 4.4: "at the latest after the strike it switches back to view mode".
         _physics.Struck += _ => TrySetMode(InputMode.View);
+        // A scratch puts the cue ball in hand: move mode, ready to drag it.
+        _physics.CueBallReturned += _ => TrySetMode(InputMode.Move);
     }
 
     /// <inheritdoc />

@@ -1,0 +1,119 @@
+using Billiards.App.Cli;
+using Billiards.App.Game;
+using Billiards.App.Platform;
+
+namespace Billiards.App.Tests.Game;
+
+public class InputScriptTests
+{
+    [Fact]
+    public void A_script_parses_every_action()
+    {
+        var script = InputScript.Parse("""
+            { "format": "billiards-input-script/1", "duration": 5, "events": [
+              { "t": 0.5, "key_down": "s" }, { "t": 0.5, "key_up": "F1" },
+              { "t": 1, "mouse_move": [10, 20] }, { "t": 1.5, "mouse_move_by": [0, -4.5] },
+              { "t": 2, "mouse_down": "left" }, { "t": 2, "mouse_up": "right" }, { "t": 3, "wheel": 2 } ] }
+            """, "s.json");
+        Assert.Equal(5, script.Duration);
+        Assert.Equal(
+            ["key_down S", "key_up F1", "mouse_move 10,20", "mouse_move_by 0,-4.5", "mouse_down left", "mouse_up right", "wheel 2"],
+            script.Events.Select(e => e.Describe()));
+        Assert.Equal(Key.S, script.Events[0].Key);
+        Assert.Equal(MouseButton.Right, script.Events[5].Button);
+    }
+
+    [Fact]
+    public void The_duration_defaults_to_a_second_after_the_last_event()
+    {
+        var script = InputScript.Parse("""{ "format": "billiards-input-script/1", "events": [ { "t": 2.5, "key_down": "P" } ] }""", "s.json");
+        Assert.Equal(3.5, script.Duration);
+    }
+
+    [Theory]
+    [InlineData("""{ "events": [] }""", "s.json: $.format: expected")]
+    [InlineData("""{ "format": "billiards-input-script/1", "events": [ { "key_down": "S" } ] }""", "s.json: $.events[0].t: missing")]
+    [InlineData("""{ "format": "billiards-input-script/1", "events": [ { "t": 1, "key_down": "Nope" } ] }""", "s.json: $.events[0].key_down: unknown key")]
+    [InlineData("""{ "format": "billiards-input-script/1", "events": [ { "t": 2, "key_down": "S" }, { "t": 1, "key_up": "S" } ] }""", "s.json: $.events[1].t: 1 s is before")]
+    [InlineData("""{ "format": "billiards-input-script/1", "events": [ { "t": 1, "key_down": "S", "wheel": 1 } ] }""", "s.json: $.events[0].wheel: one action")]
+    [InlineData("""{ "format": "billiards-input-script/1", "events": [ { "t": 1, "mouse_move": [1] } ] }""", "s.json: $.events[0].mouse_move: expected [x, y]")]
+    [InlineData("""{ "format": "billiards-input-script/1", "events": [ { "t": 1, "mouse_down": "thumb" } ] }""", "s.json: $.events[0].mouse_down: expected")]
+    [InlineData("""{ "format": "billiards-input-script/1", "duration": 1, "events": [ { "t": 2, "wheel": 1 } ] }""", "s.json: $.duration: 1 s ends before")]
+    [InlineData("""[1]""", "s.json: $: expected an object")]
+    public void A_bad_script_names_the_file_the_path_and_the_problem(string json, string expected)
+    {
+        var e = Assert.Throws<CliException>(() => InputScript.Parse(json, "s.json"));
+        Assert.StartsWith(expected, e.Message, StringComparison.Ordinal);
+        Assert.DoesNotContain('\n', e.Message);
+    }
+
+    [Fact]
+    public void Scripted_events_are_raised_at_the_first_frame_at_or_after_their_time_stamped_with_their_own_time()
+    {
+        var script = InputScript.Parse("""
+            { "format": "billiards-input-script/1", "duration": 1, "events": [
+              { "t": 0.010, "key_down": "S" }, { "t": 0.020, "mouse_move_by": [0, 5] }, { "t": 0.050, "mouse_move_by": [0, 5] } ] }
+            """, "s.json");
+        var window = new FakeWindow();
+        var clock = new ScriptClock(new ManualClock { Now = 100 });
+        using var scripted = new ScriptedInput(window, script, clock);
+        var seen = new List<(string, double)>();
+        scripted.KeyDown += k => seen.Add(($"down {k}", clock.Now));
+        scripted.MouseMove += p => seen.Add(($"move {p.Y}", clock.Now));
+        scripted.Pump(100);          // zero
+        Assert.Empty(seen);
+        scripted.Pump(100.030);      // the first two are due
+        Assert.Equal([("down S", 100.010), ("move 5", 100.020)], seen);
+        scripted.Pump(100.040);
+        Assert.Equal(2, seen.Count);
+        scripted.Pump(100.060);
+        Assert.Equal(("move 10", 100.050), seen[^1]);
+        Assert.False(scripted.Finished);
+        scripted.Pump(101.0);
+        Assert.True(scripted.Finished);
+        Assert.Equal(100, clock.Now); // the override is gone between events
+    }
+
+    [Fact]
+    public void Stats_count_frames_per_second_and_the_delay_of_each_input_to_the_frame_that_shows_it()
+    {
+        var stats = new FrameStats();
+        // Frames every 10 ms for 2.5 s; an input at 0.505 s is raised in the frame started at 0.51.
+        for (int k = 0; k <= 250; k++)
+        {
+            stats.FrameStarted(10 + (k * 0.01));
+            if (k == 51)
+            {
+                stats.InputRaised(new ScriptEvent(0.505, ScriptAction.KeyDown, Key.F1));
+            }
+        }
+        var seconds = stats.Seconds();
+        Assert.Equal(2, seconds.Count);
+        Assert.InRange(seconds[0].Frames, 99, 101);
+        Assert.Equal(10, seconds[0].P50, 6);
+        var input = Assert.Single(stats.Inputs());
+        Assert.Equal(51, input.Frame);
+        Assert.Equal(1, input.DelayFrames);
+        Assert.Equal(15, input.DelayMs, 6); // shown at 0.52 s
+        Assert.Equal(2, FrameStats.Percentile([1, 2, 3, 4], 0.5));
+        Assert.Equal(4, FrameStats.Percentile([1, 2, 3, 4], 0.99));
+    }
+}
+
+public class PlayDisplayTests
+{
+    [Fact]
+    public void Play_without_a_display_is_an_environment_problem_named_in_one_line()
+    {
+        if (OperatingSystem.IsWindows() || OperatingSystem.IsMacOS())
+        {
+            PlayCommand.RequireDisplay(_ => null); // nothing to check there
+            return;
+        }
+        var e = Assert.Throws<EnvironmentException>(() => PlayCommand.RequireDisplay(_ => null));
+        Assert.Contains("no display", e.Message, StringComparison.Ordinal);
+        Assert.Equal((CommandLine.OneLine("billiards: " + e.Message), CommandLine.Failure), CommandLine.Classify(e));
+        PlayCommand.RequireDisplay(name => name == "DISPLAY" ? ":0" : null);
+        PlayCommand.RequireDisplay(name => name == "WAYLAND_DISPLAY" ? "wayland-0" : null);
+    }
+}

@@ -1,0 +1,71 @@
+using System.Text.Json;
+using Billiards.App.Cli;
+using Billiards.App.Game;
+using Billiards.App.Platform;
+using Billiards.App.Tests.Rendering;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Tests.Game;
+
+/// <summary>
+/// <c>play --script --stats</c> in a real GLFW window (under Xvfb when there is no display). Frame
+/// rates depend on the machine and are not asserted; the stats file's structure and the delay in
+/// frames from each input to the frame that shows it are.
+/// </summary>
+[Collection("GL")]
+public class ScriptedPlayTests
+{
+    [Fact]
+    public void A_short_break_script_plays_in_a_window_and_its_stats_show_every_input_on_the_next_frame()
+    {
+        TestDisplay.Ensure();
+        string script = Path.Combine(AssetFolder.Assets, "scripts", "break-short.json");
+        string stats = Path.Combine(Path.GetTempPath(), $"stats-{Guid.NewGuid():N}.json");
+        try
+        {
+            int code = PlayCommand.Play(AssetFolder.Scene("eight-ball.json"), PlatformWiring.Open, options: new PlayCommand.PlayOptions(script, stats));
+            Assert.Equal(0, code);
+
+            var parsed = InputScript.Load(script);
+            using var doc = JsonDocument.Parse(File.ReadAllText(stats));
+            var root = doc.RootElement;
+            Assert.Equal(FrameStats.Format, root.GetProperty("format").GetString());
+            Assert.Equal(1280, root.GetProperty("width").GetInt32());
+            Assert.Equal(720, root.GetProperty("height").GetInt32());
+
+            // One sample per whole second of the script, numbered from 0; percentiles ordered.
+            var seconds = root.GetProperty("per_second").EnumerateArray().ToList();
+            Assert.InRange(seconds.Count, (int)parsed.Duration - 1, (int)parsed.Duration);
+            int frames = 0;
+            for (int i = 0; i < seconds.Count; i++)
+            {
+                Assert.Equal(i, seconds[i].GetProperty("second").GetInt32());
+                int fps = seconds[i].GetProperty("fps").GetInt32();
+                Assert.True(fps >= 0);
+                frames += fps;
+                var ms = seconds[i].GetProperty("frame_ms");
+                double p50 = ms.GetProperty("p50").GetDouble(), p95 = ms.GetProperty("p95").GetDouble();
+                double p99 = ms.GetProperty("p99").GetDouble(), max = ms.GetProperty("max").GetDouble();
+                Assert.True(p50 <= p95 && p95 <= p99 && p99 <= max, $"second {i}: percentiles out of order");
+            }
+            Assert.True(frames <= root.GetProperty("frames").GetInt32());
+
+            // Every scripted event reached the screen, on the frame after it happened.
+            var inputs = root.GetProperty("inputs").EnumerateArray().ToList();
+            Assert.Equal(parsed.Events.Count, inputs.Count);
+            for (int i = 0; i < inputs.Count; i++)
+            {
+                Assert.Equal(parsed.Events[i].Describe(), inputs[i].GetProperty("event").GetString());
+                Assert.Equal(1, inputs[i].GetProperty("delay_frames").GetInt32());
+                Assert.True(inputs[i].GetProperty("delay_ms").GetDouble() > 0);
+            }
+            var summary = root.GetProperty("summary");
+            Assert.Equal(parsed.Events.Count, summary.GetProperty("inputs").GetInt32());
+            Assert.True(summary.GetProperty("input_delay_median_frames").GetDouble() <= 2);
+        }
+        finally
+        {
+            File.Delete(stats);
+        }
+    }
+}
