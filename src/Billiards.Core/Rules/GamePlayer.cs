@@ -138,39 +138,43 @@ public sealed class GamePlayer
         sim.AdvanceTo(MaxShotTime);
         var ruling = _referee.Judge(before, ShotRecord.LastShot(sim, input.Shot));
 
+        Apply(ruling, input.Choice, sim);
+        var played = new PlayedShot(before, input, ruling);
+        _shots.Add(played);
+        return played;
+    }
+
+    private void Apply(Ruling ruling, RefereeOption? choice, Simulation sim)
+    {
+        var outcome = ruling.GameOver ? new OptionOutcome(ruling.Next, false, [])
+            : ruling.Options.Count > 0 ? ruling.Choose(choice ?? ruling.Options[0])
+            : new OptionOutcome(ruling.Next, false, ruling.Spot);
+        if (!outcome.Rerack)
+        {
+            foreach (var ball in outcome.Spot)
+            {
+                sim.SpotBall(ball);
+            }
+        }
         _balls = [];
         var after = sim.Balls;
         for (int i = 0; i < after.Length; i++)
         {
             if (!after[i].IsPocketed)
             {
-                _balls[sim.Ids[i].Value] = after[i].Position with { Z = r };
+                _balls[sim.Ids[i].Value] = after[i].Position with { Z = Setup.BallRadius };
             }
         }
-        Apply(ruling, input.Choice);
-        var played = new PlayedShot(before, input, ruling);
-        _shots.Add(played);
-        return played;
-    }
-
-    private void Apply(Ruling ruling, RefereeOption? choice)
-    {
+        State = outcome.Next;
         if (ruling.GameOver)
         {
-            State = ruling.Next;
             return;
         }
-        var outcome = ruling.Options.Count > 0 ? ruling.Choose(choice ?? ruling.Options[0]) : new OptionOutcome(ruling.Next, false, ruling.Spot);
-        State = outcome.Next;
         if (outcome.Rerack)
         {
             _racks++;
             Rack();
             return;
-        }
-        foreach (var ball in outcome.Spot)
-        {
-            _balls[ball.Value] = Spot(ball);
         }
         if (ruling.Rerack.Count > 0)
         {
@@ -220,38 +224,5 @@ public sealed class GamePlayer
         {
             _balls[id.Value] = p;
         }
-    }
-
-    /// <summary>
-    /// The foot spot, or as close behind it on the long axis as the ball fits without touching
-    /// another (rules.md); in front of it when nothing behind is free.
-    /// </summary>
-    private Vec3 Spot(BallId ball)
-    {
-        double r = Setup.BallRadius;
-        var foot = Initializer.FootSpot(Setup.Table, r);
-        double limit = Setup.Table.HalfLength - r;
-        var others = _balls.Where(b => b.Key != ball.Value).Select(b => b.Value).ToList();
-        // Each ball near the axis blocks an interval of x; the free x nearest the spot is the spot
-        // itself or an interval's end.
-        var blocked = others.Where(o => Math.Abs(o.Y) < 2 * r)
-            .Select(o => (Low: o.X - Math.Sqrt(4 * r * r - o.Y * o.Y), High: o.X + Math.Sqrt(4 * r * r - o.Y * o.Y))).ToList();
-        bool Free(double x) => x <= limit && x >= -limit && blocked.TrueForAll(b => x <= b.Low || x >= b.High);
-        var behind = new[] { foot.X }.Concat(blocked.Select(b => b.High)).Where(x => x >= foot.X).Order();
-        foreach (double x in behind)
-        {
-            if (Free(x))
-            {
-                return new Vec3(x, 0, r);
-            }
-        }
-        foreach (double x in blocked.Select(b => b.Low).Where(x => x <= foot.X).OrderDescending())
-        {
-            if (Free(x))
-            {
-                return new Vec3(x, 0, r);
-            }
-        }
-        return foot;
     }
 }
