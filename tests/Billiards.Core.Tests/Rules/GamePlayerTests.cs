@@ -1,0 +1,194 @@
+using System.Text;
+using Billiards.Core.Balls;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+
+namespace Billiards.Core.Tests.Rules;
+
+/// <summary>
+/// Whole games played from shot lists through the physics and the referee, written as
+/// "billiards-game/1" records and replayed ruling for ruling.
+/// </summary>
+public class GamePlayerTests
+{
+    private static readonly PerPlayer<string> Players = new("Anna", "Ben");
+
+    private static bool IsTarget(GamePlayer game, BallId ball)
+    {
+        var state = game.State;
+        var onTable = game.Balls.Keys.Where(b => !b.IsCue).ToList();
+        switch (state.Rules)
+        {
+            case GameRules.EightBall:
+                if (state.Groups is not { } groups)
+                {
+                    return ball.Value != 8;
+                }
+                var own = groups[state.Shooter];
+                bool InOwn(BallId b) => own == BallGroup.Solids ? b.Value is >= 1 and <= 7 : b.IsStripe;
+                return onTable.Any(InOwn) ? InOwn(ball) : ball.Value == 8;
+            case GameRules.NineBall:
+            case GameRules.TenBall:
+                return ball == onTable.MinBy(b => b.Value);
+            default:
+                return true;
+        }
+    }
+
+    private static GamePlayer PlayOut(GameSetup setup, int maxShots = 200)
+    {
+        var game = new GamePlayer(setup);
+        bool calls = setup.Rules is GameRules.EightBall or GameRules.TenBall or GameRules.StraightPool;
+        while (!game.IsOver && game.Shots.Count < maxShots)
+        {
+            var shot = setup.Rules == GameRules.StraightPool && game.State.Shot == 0
+                ? Aimer.Break(game, Call.Safety)
+                : Aimer.Next(game, b => IsTarget(game, b), calls);
+            game.Play(shot);
+        }
+        return game;
+    }
+
+    /// <summary>Every ruling's next state is the state the next shot was judged in (its call, push-out and placement aside).</summary>
+    private static void AssertChained(GamePlayer game)
+    {
+        for (int k = 1; k < game.Shots.Count; k++)
+        {
+            var previous = game.Shots[k - 1];
+            var judged = game.Shots[k].Before with { Call = null, PushOut = false, Placement = null };
+            if (previous.Ruling.Options.Count == 0 && previous.Ruling.Rerack.Count == 0)
+            {
+                Assert.Equal(previous.Ruling.Next with { Placement = null }, judged);
+            }
+        }
+    }
+
+    private static void AssertReplays(GamePlayer game)
+    {
+        byte[] written = GameRecordFile.ToUtf8(game);
+        var record = GameRecordFile.Parse(Encoding.UTF8.GetString(written), "game.json");
+        Assert.Equal(game.Shots.Count, record.Shots.Count);
+        Assert.Equal(-1, GameRecordFile.Replay(record, out var replayed));
+        Assert.Equal(written, GameRecordFile.ToUtf8(replayed));
+    }
+
+    [Theory]
+    [InlineData(GameRules.EightBall, 3)]
+    [InlineData(GameRules.NineBall, 1)]
+    [InlineData(GameRules.TenBall, 3)]
+    public void AGamePlayedFromItsShotsEndsInAWinAndReplaysBitForBit(GameRules rules, int seed)
+    {
+        var game = PlayOut(GameSetup.Of(rules, seed, Players));
+        Assert.True(game.IsOver, $"no winner after {game.Shots.Count} shots");
+        Assert.True(game.Shots.Count > 5, "a whole game, not a break and a win");
+        var last = game.Shots[^1].Ruling;
+        // Won by a legal shot on the game ball, not by the opponent's loss.
+        Assert.True(last.Legal);
+        Assert.Equal(game.Shots[^1].Before.Shooter, last.Winner);
+        var gameBall = rules switch { GameRules.EightBall => 8, GameRules.NineBall => 9, _ => 10 };
+        Assert.Contains(new BallId(gameBall), last.Pocketed);
+        AssertChained(game);
+        AssertReplays(game);
+    }
+
+    [Fact]
+    public void AStraightPoolGameToTwentyPointsEndsInAWinAndReplaysBitForBit()
+    {
+        var game = PlayOut(GameSetup.Of(GameRules.StraightPool, 2, Players, target: 20), maxShots: 400);
+        Assert.True(game.IsOver, $"no winner after {game.Shots.Count} shots");
+        var last = game.Shots[^1].Ruling;
+        int winner = last.Winner!.Value;
+        Assert.True(last.Legal);
+        // The winner's points before the last shot plus one per ball it pocketed reach the target.
+        var lastShot = game.Shots[^1];
+        Assert.Equal(lastShot.Before.Shooter, winner);
+        Assert.True(lastShot.Before.Score[winner] < 20);
+        Assert.True(lastShot.Before.Score[winner] + last.Pocketed.Count >= 20);
+        // Every shot was judged in the state the ruling before it left (scores, fouls, shooter).
+        AssertChained(game);
+        AssertReplays(game);
+    }
+
+    [Fact]
+    public void ANineBallGameThroughAPushOutEndsInAThreeFoulLoss()
+    {
+        var game = new GamePlayer(GameSetup.Of(GameRules.NineBall, 5, Players));
+        var opening = game.Play(Aimer.Break(game, null));
+        Assert.True(opening.Ruling.Legal, opening.Ruling.Message);
+        Assert.Equal(1, game.State.Shot);
+        int pusher = game.State.Shooter;
+        int other = 1 - pusher;
+
+        // The push-out touches nothing and is legal; the incoming player passes the table back.
+        var push = game.Play(Aimer.Roll(game, pushOut: true, choice: RefereeOption.PassBack));
+        Assert.True(push.Ruling.Legal);
+        Assert.Equal([RefereeOption.Shoot, RefereeOption.PassBack], push.Ruling.Options);
+        Assert.Equal(other, push.Ruling.Next.Shooter);
+        Assert.Equal(pusher, game.State.Shooter); // passed back
+
+        // Now both roll without contact in turn: the pusher's third foul in a row comes first.
+        var fouls = new List<PlayedShot>();
+        while (!game.IsOver)
+        {
+            fouls.Add(game.Play(Aimer.Roll(game)));
+        }
+        Assert.Equal(5, fouls.Count);
+        Assert.All(fouls, f => Assert.Contains(Foul.NoContact, f.Ruling.Fouls));
+        Assert.Equal([pusher, other, pusher, other, pusher], fouls.Select(f => f.Before.Shooter));
+        Assert.Contains("Warning", fouls[2].Ruling.Message, StringComparison.Ordinal);
+        Assert.Contains("Warning", fouls[3].Ruling.Message, StringComparison.Ordinal);
+        var last = fouls[^1].Ruling;
+        Assert.Contains(Foul.ThreeFouls, last.Fouls);
+        Assert.True(last.GameOver);
+        Assert.Equal(other, last.Winner);
+        AssertReplays(game);
+    }
+
+    [Fact]
+    public void APlacementWithoutBallInHandIsRefused()
+    {
+        var game = new GamePlayer(GameSetup.Of(GameRules.NineBall, 1, Players));
+        game.Play(Aimer.Break(game, null));
+        if (game.State.BallInHand == BallInHand.None)
+        {
+            var shot = Aimer.Roll(game) with { Place = new Mathematics.Vec3(-1, 0, 0) };
+            Assert.Throws<InvalidOperationException>(() => game.Play(shot));
+        }
+        else
+        {
+            Assert.Contains(game.Shots[0].Ruling.Fouls, f => f is Foul.CueBallPocketed or Foul.BadBreak);
+        }
+    }
+}
+
+/// <summary>A game record that cannot be read says where and why.</summary>
+public class GameRecordFileTests
+{
+    [Fact]
+    public void AnotherFormatIsRefused()
+    {
+        var e = Assert.Throws<SceneException>(() => GameRecordFile.Parse("""{ "format": "billiards-scene/1" }""", "g.json"));
+        Assert.Equal("$.format", e.JsonPath);
+    }
+
+    [Fact]
+    public void ARackOfAnotherGameIsRefused()
+    {
+        var e = Assert.Throws<SceneException>(() => GameRecordFile.Parse("""
+            { "format": "billiards-game/1", "table": { "preset": "pool-9ft" }, "physics": { "model": "standard" },
+              "rack": { "game": "eight-ball", "seed": 1 }, "game": { "rules": "nine-ball" }, "shots": [] }
+            """, "g.json"));
+        Assert.Equal("$.rack.game", e.JsonPath);
+    }
+
+    [Fact]
+    public void ABadGameBlockInAShotNamesTheShot()
+    {
+        var e = Assert.Throws<SceneException>(() => GameRecordFile.Parse("""
+            { "format": "billiards-game/1", "table": { "preset": "pool-9ft" }, "physics": { "model": "standard" },
+              "rack": { "game": "nine-ball", "seed": 1 }, "game": { "rules": "nine-ball" },
+              "shots": [ { "game": { "rules": "nine-ball", "shooter": 4 }, "shot": { "speed": 1, "aim_deg": 0 }, "ruling": {} } ] }
+            """, "g.json"));
+        Assert.Equal("$.shots[0].game.shooter", e.JsonPath);
+    }
+}
