@@ -1,4 +1,5 @@
 using System.CommandLine;
+using Billiards.App.Audio;
 using Billiards.App.Game;
 using Billiards.App.Platform;
 using Billiards.Core.Physics;
@@ -27,9 +28,9 @@ public static class PlayCommand
         var script = new Option<string?>("--script") { Description = $"Replay a timed list of input events ({InputScript.Format} JSON); the game closes when it ends." };
         var stats = new Option<string?>("--stats") { Description = $"Write per-second frame rates, frame-time percentiles and input-to-frame delays ({FrameStats.Format} JSON) when the game ends." };
         var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats };
-        command.SetAction(parse => Play(parse.GetValue(scene), PlatformWiring.Open, options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))));
+        command.SetAction(parse => Play(parse.GetValue(scene), PlatformWiring.Open, options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats)), openAudio: OpenAudio));
         root.Add(command);
-        root.SetAction(_ => Play(null, PlatformWiring.Open));
+        root.SetAction(_ => Play(null, PlatformWiring.Open, openAudio: OpenAudio));
     }
 
     /// <summary>Loads the scene, opens the platform and runs the game until the window closes.</summary>
@@ -39,7 +40,8 @@ public static class PlayCommand
     /// <param name="clock">The clock; the real one by default.</param>
     /// <returns>The exit code.</returns>
     /// <param name="options">A script to replay and a stats file to write, or null.</param>
-    public static int Play(string? scenePath, Func<string, GamePlatform> openPlatform, Func<Scene, Simulation>? createSimulation = null, IClock? clock = null, PlayOptions? options = null)
+    /// <param name="openAudio">Opens the sound output; silence by default (tests).</param>
+    public static int Play(string? scenePath, Func<string, GamePlatform> openPlatform, Func<Scene, Simulation>? createSimulation = null, IClock? clock = null, PlayOptions? options = null, Func<IAudioOutput>? openAudio = null)
     {
         string path = scenePath ?? FindDefaultScene();
         var scene = SceneLoader.Load(path);
@@ -49,7 +51,9 @@ public static class PlayCommand
         using var platform = OpenOrExplain(openPlatform, title);
         var gameClock = new ScriptClock(clock ?? new StopwatchClock());
         using var scripted = script is null ? null : new ScriptedInput(platform.Window, script, gameClock);
+        using var audio = openAudio?.Invoke() ?? new SilentAudio();
         using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock);
+        host.Tree.Root.AddChild(new AudioNode(audio));
         var stats = statsPath is null ? null : new FrameStats();
         bool warm = false;
         host.FrameStarting += now =>
@@ -101,6 +105,9 @@ public static class PlayCommand
             throw new EnvironmentException("play: cannot open the game's window: no display (DISPLAY is not set; run it in a desktop session, or under Xvfb: xvfb-run billiards play)");
         }
     }
+
+    // No audio device (a server, CI): the game plays silently after one line on stderr.
+    private static IAudioOutput OpenAudio() => AudioOutputs.Open(Console.Error);
 
     // No display, no GL driver, no GLFW: an environment problem, one line and exit code 1.
     private static GamePlatform OpenOrExplain(Func<string, GamePlatform> openPlatform, string title)

@@ -20,12 +20,10 @@ public sealed class PhysicsNode : Node
     /// <summary>Seed 4.3.5: a pocketed ball stops being drawn once it has dropped below y = -20 cm (m).</summary>
     public const double DropOutOfSightZ = -0.20;
 
-    private readonly Func<Scene, Simulation> _createSimulation;
     private readonly Scene _scene;
-    private Simulation _simulation;
-    private BallState[] _previous;
+    private readonly Simulation _simulation;
+    private readonly BallState[] _previous;
     private int _eventsSeen;
-    private Vec3? _cuePlacement;
     private Vec3 _cueAtStrike;
 
     /// <summary>Creates the node and its simulation from the scene.</summary>
@@ -33,9 +31,10 @@ public sealed class PhysicsNode : Node
     /// <param name="createSimulation">Makes a simulation of a scene (<see cref="SimulationFactory.Create"/> in the game).</param>
     public PhysicsNode(Scene scene, Func<Scene, Simulation> createSimulation)
     {
+        ArgumentNullException.ThrowIfNull(createSimulation);
         _scene = scene;
-        _createSimulation = createSimulation;
-        _simulation = CreateSimulation(scene);
+        _simulation = createSimulation(scene);
+        _simulation.TrackOrientation = true; // the game draws the balls' numbers turning
         _previous = _simulation.Balls.ToArray();
     }
 
@@ -48,14 +47,14 @@ public sealed class PhysicsNode : Node
     /// <summary>Signal: every ball is at rest after a shot; the argument is the cue ball's displacement over the shot (m).</summary>
     public event Action<Vec3>? CameToRest;
 
-    /// <summary>The running simulation (replaced when the cue ball is placed by hand).</summary>
+    /// <summary>The running simulation.</summary>
     public Simulation Simulation => _simulation;
 
     /// <summary>The table.</summary>
     public TableSpec Table => _scene.Table;
 
     /// <summary>Ball radius of the scene's model (m).</summary>
-    public double BallRadius => _scene.BallRadius;
+    public double BallRadius => _simulation.BallRadius;
 
     /// <summary>True from a strike until every ball rests: all actions but viewing are locked.</summary>
     public bool IsRolling { get; private set; }
@@ -63,8 +62,8 @@ public sealed class PhysicsNode : Node
     /// <summary>The last shot played, or null before the first.</summary>
     public ShotSpec? LastShot { get; private set; }
 
-    /// <summary>True when there is a cue ball on the table (or placed by hand after a scratch).</summary>
-    public bool HasCueBall => CueIndex is int i && (_cuePlacement is not null || !_simulation.Balls[i].IsPocketed);
+    /// <summary>True when there is a cue ball on the table (a scratched one is placed back by hand).</summary>
+    public bool HasCueBall => CueIndex is int i && !_simulation.Balls[i].IsPocketed;
 
     /// <summary>True from a scratch until the cue ball is struck: it is in hand and may be placed anywhere on the bed.</summary>
     public bool BallInHand { get; private set; }
@@ -72,8 +71,8 @@ public sealed class PhysicsNode : Node
     /// <summary>Signal: the cue ball was pocketed and came back in hand at this position (m).</summary>
     public event Action<Vec3>? CueBallReturned;
 
-    /// <summary>The cue ball's centre (m), including a placement not yet handed to the simulation.</summary>
-    public Vec3 CueBallPosition => _cuePlacement ?? (CueIndex is int i ? _simulation.Balls[i].Position : Vec3.Zero);
+    /// <summary>The cue ball's centre (m).</summary>
+    public Vec3 CueBallPosition => CueIndex is int i ? _simulation.Balls[i].Position : Vec3.Zero;
 
     private int? CueIndex => _simulation.IndexOf(BallId.Cue) is var i and >= 0 ? i : null;
 
@@ -87,34 +86,20 @@ public sealed class PhysicsNode : Node
         {
             return false;
         }
-        return IsFreeSpot(position, cue) && Place(position);
+        return IsFreeSpot(position) && Place(position);
     }
 
+    // Core places the ball (back in play, at rest); a hand-placed ball jumps, so interpolation
+    // must not slide it from its old place.
     private bool Place(Vec3 position)
     {
-        _cuePlacement = position with { Z = BallRadius };
+        _simulation.PlaceBall(BallId.Cue, position);
+        _simulation.Balls.CopyTo(_previous);
         return true;
     }
 
-    // On the bed, a radius inside the cushions, and clear of every other ball on the table.
-    private bool IsFreeSpot(Vec3 position, int cue)
-    {
-        double r = BallRadius;
-        const double Tolerance = 1e-9;
-        if (Math.Abs(position.X) > Table.HalfLength - r + Tolerance || Math.Abs(position.Y) > Table.HalfWidth - r + Tolerance)
-        {
-            return false;
-        }
-        var balls = _simulation.Balls;
-        for (int i = 0; i < balls.Length; i++)
-        {
-            if (i != cue && !balls[i].IsPocketed && (balls[i].Position - position).XY.Length < 2 * r)
-            {
-                return false;
-            }
-        }
-        return true;
-    }
+    // Core's placement test: on the bed inside the cushions, over no pocket, clear of every other ball.
+    private bool IsFreeSpot(Vec3 position) => _simulation.PlacementProblem(BallId.Cue, position) is null;
 
     /// <summary>
     /// Where a scratched cue ball comes back: the head spot (a quarter of the length from the head
@@ -122,7 +107,6 @@ public sealed class PhysicsNode : Node
     /// </summary>
     public Vec3 ReturnSpot()
     {
-        int cue = CueIndex ?? -1;
         double r = BallRadius;
         var head = new Vec3(-Table.Length / 4, 0, r);
         for (int ring = 0; ring < 200; ring++)
@@ -133,7 +117,7 @@ public sealed class PhysicsNode : Node
             {
                 double a = 2 * Math.PI * k / count;
                 var p = head + new Vec3(radius * Math.Cos(a), radius * Math.Sin(a), 0);
-                if (IsFreeSpot(p, cue))
+                if (IsFreeSpot(p))
                 {
                     return p;
                 }
@@ -154,7 +138,6 @@ public sealed class PhysicsNode : Node
         {
             throw new InvalidOperationException("there is no cue ball on the table");
         }
-        CommitCuePlacement();
         BallInHand = false;
         _cueAtStrike = CueBallPosition;
         _simulation.Strike(shot);
@@ -212,13 +195,7 @@ public sealed class PhysicsNode : Node
             ref readonly var previous = ref _previous[i];
             var position = Vector3.Lerp(previous.Position.ToVector3(), current.Position.ToVector3(), alpha);
             var orientation = Quaternion.Slerp(Valid(previous.Orientation), Valid(current.Orientation), alpha);
-            bool visible = IsVisible(current);
-            if (_cuePlacement is { } placed && _simulation.Ids[i].IsCue)
-            {
-                position = placed.ToVector3();
-                visible = true;
-            }
-            frame.Frame.Balls.Add(new BallVisual(_simulation.Ids[i], position, orientation, visible));
+            frame.Frame.Balls.Add(new BallVisual(_simulation.Ids[i], position, orientation, IsVisible(current)));
         }
     }
 
@@ -240,41 +217,5 @@ public sealed class PhysicsNode : Node
         {
             EventOccurred?.Invoke(log[_eventsSeen]);
         }
-    }
-
-    /// <summary>
-    /// Core has no call to move a ball, so a placed cue ball is handed over by starting a new
-    /// simulation from the balls as they rest now. Pocketed balls are left out (they are out of
-    /// play), except a scratched cue ball, which comes back where it was placed; orientations start afresh. MERGE: replace with a Core placement call once there is one.
-    /// </summary>
-    private void CommitCuePlacement()
-    {
-        if (_cuePlacement is not { } placed)
-        {
-            return;
-        }
-        var balls = _simulation.Balls;
-        var setups = new List<BallSetup>(balls.Length);
-        for (int i = 0; i < balls.Length; i++)
-        {
-            var id = _simulation.Ids[i];
-            if (balls[i].IsPocketed && !id.IsCue)
-            {
-                continue;
-            }
-            setups.Add(new BallSetup(id, id.IsCue ? placed : balls[i].Position, Vec3.Zero, Vec3.Zero));
-        }
-        // No rack (its balls are already placed above) and no opening shot.
-        _simulation = CreateSimulation(_scene with { Balls = setups, Rack = null, Shot = null });
-        _previous = _simulation.Balls.ToArray();
-        _eventsSeen = 0;
-        _cuePlacement = null;
-    }
-
-    private Simulation CreateSimulation(Scene scene)
-    {
-        var simulation = _createSimulation(scene);
-        simulation.TrackOrientation = true; // the game draws the balls' numbers turning
-        return simulation;
     }
 }

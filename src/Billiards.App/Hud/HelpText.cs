@@ -22,6 +22,8 @@ public static class HelpText
         "  P            pause / resume",
         "  N            one physics step while paused",
         "  G            show / hide the collision geometry",
+        "  + / -        sound volume up / down",
+        "  U            mute / unmute the sound",
         "  H or F1      show / hide this help",
         "  F11          fullscreen",
         "  Escape       quit",

@@ -11,7 +11,7 @@ public sealed class Queue
     /// <summary>The ball radius (cm): the tip displacement is kept within it so the tip stays on the ball.</summary>
     public const float BallRadius = Physics.Thesis.PhysicsEngine.BallRadius;
 
-    /// <summary>The strike speed cap of Formel 31 (cm/s).</summary>
+    /// <summary>The stroke speed cap of Formel 31 (cm/s): the fastest cue.</summary>
     public const float MaxStrokeSpeed = 800f;
 
     /// <summary>The constant of Formel 31 that turns mouse travel per millisecond into cm/s.</summary>
@@ -43,13 +43,16 @@ public sealed class Queue
     /// </summary>
     /// <remarks>
     /// The seed measures the stroke with the mouse (d, pixels of forward travel) and GLUT's clock
-    /// (t, milliseconds), and uses s as the cue ball's speed in cm/s. A stroke of 100 px in
+    /// (t, milliseconds), and uses s as the cue ball's speed in cm/s. Here s is the cue's speed
+    /// at impact, what <see cref="ShotSpec.Speed"/> means for every model (after division by
+    /// 100); the thesis model turns it into the ball's speed with
+    /// <see cref="Physics.Thesis.ThesisSimulation.CueToBallSpeed"/>. A stroke of 100 px in
     /// 50 ms thus gives 500 cm/s. A zero or negative time counts as infinitely fast (the cap);
     /// a stroke that did not move forward gives 0.
     /// </remarks>
     /// <param name="distance">Forward mouse travel d (pixels).</param>
     /// <param name="milliseconds">Time t the forward travel took (ms).</param>
-    /// <returns>The cue ball's speed (cm/s), in [0, 800].</returns>
+    /// <returns>The cue's speed (cm/s), in [0, 800].</returns>
     public static float StrokeSpeed(float distance, float milliseconds)
     {
         if (distance <= 0)

@@ -9,7 +9,7 @@ namespace Billiards.Core.Physics;
 /// takes fixed steps only; the caller owns the clock. State is exposed in SI through
 /// <see cref="Balls"/>, whatever units the model keeps inside.
 /// </summary>
-public abstract class Simulation
+public abstract partial class Simulation
 {
     /// <summary>Creates the common part of a simulation.</summary>
     /// <param name="model">"thesis" or "standard".</param>

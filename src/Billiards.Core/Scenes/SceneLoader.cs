@@ -141,27 +141,9 @@ public static class SceneLoader
 
         private void ValidatePlacement(List<(BallSetup Ball, string Path)> balls, TableSpec table, double radius)
         {
-            const double Tolerance = 1e-9;
-            foreach (var (ball, path) in balls)
+            if (Placement.Check(table, radius, balls.ConvertAll(b => (b.Ball.Id, b.Ball.Position)), out int culprit) is { } problem)
             {
-                if (Math.Abs(ball.Position.X) > table.HalfLength - radius + Tolerance
-                    || Math.Abs(ball.Position.Y) > table.HalfWidth - radius + Tolerance)
-                {
-                    throw Error(path, string.Create(CultureInfo.InvariantCulture,
-                        $"ball \"{ball.Id}\" at [{ball.Position.X}, {ball.Position.Y}] is off the table (the centre must stay within [{-(table.HalfLength - radius):0.######}, {table.HalfLength - radius:0.######}] x [{-(table.HalfWidth - radius):0.######}, {table.HalfWidth - radius:0.######}])"));
-                }
-            }
-            for (int i = 0; i < balls.Count; i++)
-            {
-                for (int j = i + 1; j < balls.Count; j++)
-                {
-                    double d = (balls[i].Ball.Position - balls[j].Ball.Position).Length;
-                    if (d < 2 * radius - Tolerance)
-                    {
-                        throw Error(balls[j].Path, string.Create(CultureInfo.InvariantCulture,
-                            $"ball \"{balls[j].Ball.Id}\" overlaps ball \"{balls[i].Ball.Id}\" (centres {d:0.######} m apart, less than 2R = {2 * radius:0.######} m)"));
-                    }
-                }
+                throw Error(balls[culprit].Path, problem);
             }
         }
 

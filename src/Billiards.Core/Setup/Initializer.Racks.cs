@@ -39,12 +39,7 @@ public static partial class Initializer
     public static IReadOnlyList<(BallId Id, Vec3 Position)> Rack(RackSpec rack, TableSpec table, double radius)
     {
         var random = new Random(rack.Seed);
-        int[] rowSizes = rack.Game switch
-        {
-            RackGame.NineBall => [1, 2, 3, 2, 1],
-            RackGame.TenBall => [1, 2, 3, 4],
-            _ => [1, 2, 3, 4, 5],
-        };
+        int[] rowSizes = RowSizes(rack.Game);
         int[] numbers = rack.Game switch
         {
             RackGame.EightBall => EightBallOrder(random),
@@ -78,24 +73,44 @@ public static partial class Initializer
         return [.. placed.Where(b => b.Item1.Value != 0)];
     }
 
-    private static List<(BallId, Vec3)> Place(int[] rowSizes, int[] numbers, TableSpec table, double radius, Random random)
-    {
+    /// <summary>
+    /// The spots of a rack's shape before jitter (z = radius), in the order racks fill them: the
+    /// apex on the foot spot first, then row by row towards the foot rail, each row from -y to +y,
+    /// neighbours 2R + <see cref="RackGap"/> apart.
+    /// </summary>
+    public static IReadOnlyList<Vec3> RackSpots(RackGame game, TableSpec table, double radius) =>
+        Spots(RowSizes(game), table, radius);
 
+    private static int[] RowSizes(RackGame game) => game switch
+    {
+        RackGame.NineBall => [1, 2, 3, 2, 1],
+        RackGame.TenBall => [1, 2, 3, 4],
+        _ => [1, 2, 3, 4, 5],
+    };
+
+    private static List<Vec3> Spots(int[] rowSizes, TableSpec table, double radius)
+    {
         double spacing = 2 * radius + RackGap;
         double rowStep = spacing * Math.Sqrt(3) / 2;
         var foot = FootSpot(table, radius);
-        var placed = new List<(BallId, Vec3)>(numbers.Length);
-        int k = 0;
+        var spots = new List<Vec3>(rowSizes.Sum());
         for (int row = 0; row < rowSizes.Length; row++)
         {
             for (int j = 0; j < rowSizes[row]; j++)
             {
-                var ideal = new Vec3(foot.X + row * rowStep, (j - (rowSizes[row] - 1) / 2.0) * spacing, radius);
-                if (k < numbers.Length)
-                {
-                    placed.Add((new BallId(numbers[k++]), Jittered(ideal, placed, radius, random)));
-                }
+                spots.Add(new Vec3(foot.X + row * rowStep, (j - (rowSizes[row] - 1) / 2.0) * spacing, radius));
             }
+        }
+        return spots;
+    }
+
+    private static List<(BallId, Vec3)> Place(int[] rowSizes, int[] numbers, TableSpec table, double radius, Random random)
+    {
+        var spots = Spots(rowSizes, table, radius);
+        var placed = new List<(BallId, Vec3)>(numbers.Length);
+        for (int k = 0; k < numbers.Length && k < spots.Count; k++)
+        {
+            placed.Add((new BallId(numbers[k]), Jittered(spots[k], placed, radius, random)));
         }
         return placed;
     }

@@ -97,6 +97,18 @@ internal sealed class FakeSimulation : Simulation
     }
 
     public override string FeatureName(EventKind kind, int feature) => "fake";
+
+    public override double BallRadius => PhysicsParams.DefaultRadius;
+
+    protected override void PutBall(int index, Vec3 position)
+    {
+        _balls[index] = _balls[index] with { Position = position, Velocity = Vec3.Zero, State = MotionState.Stationary, Pocket = -1 };
+    }
+
+    protected override void TakeOut(int index)
+    {
+        _balls[index] = _balls[index] with { Velocity = Vec3.Zero, State = MotionState.Pocketed, Pocket = -1 };
+    }
 }
 
 /// <summary>A window that only exists in memory: tests raise its events and read what the game asked of it.</summary>

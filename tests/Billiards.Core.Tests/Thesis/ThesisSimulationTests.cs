@@ -35,19 +35,22 @@ public class ThesisSimulationTests
     {
         var sim = new ThesisSimulation(LoadScene("thesis-eight-ball-break.json"));
         sim.Strike(new ShotSpec(10, 90, TipSide: 0.5, TipHeight: -0.3, ElevationDeg: 12));
-        // 10 m/s = 1000 cm/s, capped at 800 cm/s; aim 90 deg = SI +y = seed -z.
-        Assert.Equal(-800f, sim.Engine.Balls[0].Velocity.Z, 1e-3f);
+        // A cue at 10 m/s = 1000 cm/s is capped at Formel 31's 800 cm/s; a centre-ball impact of a
+        // 0.567 kg cue on the 0.17 kg ball gives the ball 2 / (1 + 0.17 / 0.567) of it, 1230.9 cm/s;
+        // aim 90 deg = SI +y = seed -z.
+        double ball = 8 * 2 / (1 + 0.17 / 0.567);
+        Assert.Equal((float)(-100 * ball), sim.Engine.Balls[0].Velocity.Z, 1e-3f);
         Assert.Equal(0.5f * 2.86f, sim.Queue.EX, 1e-6f);
         Assert.Equal(-0.3f * 2.86f, sim.Queue.EY, 1e-6f);
         Assert.Equal(12f, sim.Queue.Grade);
         sim.Step();
-        // One step: 8 m/s damped once, 8 * 0.9965 = 7.972 m/s along +y, rolling.
+        // One step damps it once: times 0.9965, along +y, rolling.
         var cue = sim.Balls[0];
         Assert.Equal(0, cue.Velocity.X, 1e-6);
-        Assert.Equal(7.972, cue.Velocity.Y, 1e-4);
+        Assert.Equal(ball * 0.9965, cue.Velocity.Y, 1e-4);
         Assert.Equal(MotionState.Rolling, cue.State);
-        // Rolling without slip: w = z x v / R = (-7.972 / 0.0286, 0, 0).
-        Assert.Equal(-7.972 / 0.0286, cue.Spin.X, 0.01);
+        // Rolling without slip: w = z x v / R = (-v / 0.0286, 0, 0).
+        Assert.Equal(-ball * 0.9965 / 0.0286, cue.Spin.X, 0.01);
         Assert.Equal(0.004, sim.Time, 1e-12);
     }
 

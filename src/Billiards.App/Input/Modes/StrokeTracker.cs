@@ -132,7 +132,8 @@ public sealed class StrokeTracker
     private double Interval(double seconds) => seconds < 1e-3 ? Math.Max(seconds, MinimumInterval) : seconds;
 
     /// <summary>
-    /// Formel 31, s = d / t * 250, capped at 800; d in pixels, t in ms, s in cm/s. The thesis
+    /// Formel 31, s = d / t * 250, capped at 800; d in pixels, t in ms, s the cue's speed at impact in cm/s
+    /// (the shot's speed for every model, once in m/s). The thesis
     /// model's cue owns the formula (<see cref="Queue.StrokeSpeed"/>); the game only measures d and t.
     /// </summary>
     public static double Formel31(double distancePixels, double milliseconds) =>

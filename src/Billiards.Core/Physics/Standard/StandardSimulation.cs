@@ -174,6 +174,34 @@ public sealed class StandardSimulation : Simulation
     }
 
     /// <inheritdoc />
+    public override double BallRadius => Parameters.R;
+
+    /// <inheritdoc />
+    protected override void PutBall(int index, Mathematics.Vec3 position)
+    {
+        ref var ball = ref _balls[index];
+        ball.Position = position;
+        ball.Velocity = Mathematics.Vec3.Zero;
+        ball.Spin = Mathematics.Vec3.Zero;
+        ball.State = MotionState.Stationary;
+        ball.Pocket = -1;
+        _engine?.BallChanged(index);
+        _euler?.BallChanged(index);
+    }
+
+    /// <inheritdoc />
+    protected override void TakeOut(int index)
+    {
+        ref var ball = ref _balls[index];
+        ball.Velocity = Mathematics.Vec3.Zero;
+        ball.Spin = Mathematics.Vec3.Zero;
+        ball.State = MotionState.Pocketed;
+        ball.Pocket = -1;
+        _engine?.BallChanged(index);
+        _euler?.BallChanged(index);
+    }
+
+    /// <inheritdoc />
     public override string FeatureName(EventKind kind, int feature) =>
         kind == EventKind.BallPocket ? TableGeometry.PocketName(feature) : Geometry.CushionName(feature);
 }

@@ -47,8 +47,8 @@ public sealed class Ball
     /// <summary>The seed's pocketed flag: set once the ball has fallen below y = -20 cm; it is then out of play and not drawn.</summary>
     public bool IsPocketed { get; set; }
 
-    /// <summary>True while the ball lies on the bed: neither dropping nor pocketed.</summary>
-    public bool IsOnBed => Pocket < 0;
+    /// <summary>True while the ball lies on the bed: neither dropping nor pocketed (nor taken out of play by hand).</summary>
+    public bool IsOnBed => Pocket < 0 && !IsPocketed;
 
     /// <summary>
     /// A random orientation (seed 4.1.1): a quaternion from four random numbers, normalised.

@@ -94,19 +94,63 @@ public sealed class ThesisSimulation : Simulation
     }
 
     /// <summary>
-    /// Strikes the cue ball: speed * 100 cm/s capped at 800 (Formel 31's cap) along the aim; the
-    /// tip offset becomes the effet, e_x = side * 2.86 and e_y = height * 2.86 (cm); the elevation
-    /// only tilts the drawn cue, as in the seed.
+    /// The cue ball's speed per unit of cue speed for a centre hit: 2 / (1 + m / M), the
+    /// elastic impact of a cue of mass M on a free ball of mass m (TP A-30 with no tip offset),
+    /// with the seed's ball of m = 0.17 kg (<see cref="Ball.Mass"/>) and the standard model's
+    /// default cue of M = 0.567 kg (the seed has no cue mass): 1.5386.
+    /// </summary>
+    /// <remarks>
+    /// <see cref="ShotSpec.Speed"/> is the cue's speed at impact for every model; the seed's
+    /// strike gives the ball a speed directly. This one factor turns the first into the second, so
+    /// that a centre-ball shot leaves the cue ball at the standard model's speed (which also
+    /// takes m and M from its defaults) to within their masses' rounding, 0.01 %.
+    /// </remarks>
+    public static readonly double CueToBallSpeed = 2 / (1 + Ball.Mass / PhysicsParams.Default.CueMass);
+
+    /// <summary>
+    /// Strikes the cue ball: the cue speed (m/s) in cm/s, capped at Formel 31's 800 cm/s (the
+    /// fastest stroke), times <see cref="CueToBallSpeed"/>, along the aim; the tip offset becomes
+    /// the effet, e_x = side * 2.86 and e_y = height * 2.86 (cm); the elevation only tilts the
+    /// drawn cue, as in the seed.
     /// </summary>
     protected override void ApplyStrike(int cue, ShotSpec shot)
     {
         double aim = shot.AimDeg * Math.PI / 180;
-        float speed = (float)Math.Min(shot.Speed * SeedFrame.CentimetresPerMetre, Queue.MaxStrokeSpeed);
+        double cueSpeed = Math.Min(shot.Speed * SeedFrame.CentimetresPerMetre, Queue.MaxStrokeSpeed);
+        float speed = (float)(cueSpeed * CueToBallSpeed);
         var direction = SeedFrame.FromSi(new Vec3(Math.Cos(aim), Math.Sin(aim), 0));
         Queue.EX = (float)shot.TipSide * Radius;
         Queue.EY = (float)shot.TipHeight * Radius;
         Queue.Grade = (float)shot.ElevationDeg;
         Engine.Shoot(Vector3.Normalize(direction) * speed);
+        _statesStale = true;
+    }
+
+    /// <inheritdoc />
+    public override double BallRadius => ThesisConstants.RadiusMetres;
+
+    /// <summary>
+    /// Puts the seed's ball at the SI position in its frame (cm, y = 2.86 on the bed), at rest
+    /// and in play. The engine's start positions (where the seed's end-of-shot rules put a
+    /// pocketed cue ball back, or the whole game) stay those of the scene.
+    /// </summary>
+    protected override void PutBall(int index, Vec3 position)
+    {
+        var ball = Engine.Balls[index];
+        ball.Position = SeedFrame.FromSi(position);
+        ball.Velocity = Vector3.Zero;
+        ball.Pocket = -1;
+        ball.IsPocketed = false;
+        _statesStale = true;
+    }
+
+    /// <summary>Takes the seed's ball out of play: its pocketed flag without a pocket, at rest where it was.</summary>
+    protected override void TakeOut(int index)
+    {
+        var ball = Engine.Balls[index];
+        ball.Velocity = Vector3.Zero;
+        ball.Pocket = -1;
+        ball.IsPocketed = true;
         _statesStale = true;
     }
 
@@ -130,7 +174,7 @@ public sealed class ThesisSimulation : Simulation
             s.Velocity = velocity;
             s.Orientation = SeedFrame.ToSi(ball.Orientation);
             s.Pocket = ball.Pocket;
-            if (ball.Pocket >= 0)
+            if (ball.Pocket >= 0 || ball.IsPocketed)
             {
                 s.State = MotionState.Pocketed;
                 s.Spin = Vec3.Zero;

@@ -1,0 +1,128 @@
+using Billiards.App.Audio;
+using Billiards.App.Game;
+using Billiards.App.Input;
+using Billiards.App.Platform;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Tests.Audio;
+
+/// <summary>An output that records what the game asks of it.</summary>
+internal sealed class RecordingAudio : IAudioOutput
+{
+    public List<SoundCue> Cues { get; } = [];
+
+    public List<Listener> Listeners { get; } = [];
+
+    public Dictionary<int, double> Rolling { get; } = [];
+
+    public double MaxRollingSpeed { get; private set; }
+
+    public bool IsSilent => false;
+
+    public float Volume { get; set; } = AudioPlayer.DefaultVolume;
+
+    public bool Muted { get; set; }
+
+    public void Play(in SoundCue cue) => Cues.Add(cue);
+
+    public void SetListener(Listener listener) => Listeners.Add(listener);
+
+    public void SetRolling(int ball, double speed, Vec3 position)
+    {
+        Rolling[ball] = speed;
+        MaxRollingSpeed = Math.Max(MaxRollingSpeed, speed);
+    }
+
+    public void Dispose()
+    {
+    }
+}
+
+public sealed class AudioNodeTests
+{
+    private static (GameWorld World, RecordingAudio Audio) Start(string scene)
+    {
+        var loaded = SceneLoader.Load(AssetFolder.Scene(scene));
+        var world = GameSceneBuilder.Build(loaded, SimulationFactory.Create);
+        world.Tree.Start();
+        var audio = new RecordingAudio();
+        // As the play verb does: the node joins the started tree.
+        world.Tree.Root.AddChild(new AudioNode(audio));
+        return (world, audio);
+    }
+
+    private static void RunUntilRest(GameWorld world)
+    {
+        for (int i = 0; i < 250 * 60 && world.Physics.IsRolling; i++)
+        {
+            world.Tree.PhysicsProcess(world.Loop.Dt);
+            world.Tree.Process(world.Loop.Dt);
+        }
+    }
+
+    [Fact]
+    public void TheGameVoicesTheBreakExactlyAsRenderAudioDoes()
+    {
+        var (world, audio) = Start("eight-ball-break.json");
+        RunUntilRest(world);
+        var offline = ShotAudio.Score(SceneLoader.Load(AssetFolder.Scene("eight-ball-break.json")));
+        Assert.Equal(offline.Cues.Count, audio.Cues.Count);
+        Assert.Equal(SoundKind.CueStrike, audio.Cues[0].Kind);
+        for (int i = 0; i < audio.Cues.Count; i++)
+        {
+            var game = audio.Cues[i];
+            var render = offline.Cues[i];
+            Assert.Equal((render.Time, render.Kind, render.Speed, render.Rattle, render.Seed), (game.Time, game.Kind, game.Speed, game.Rattle, game.Seed));
+            // Placed where the balls were at the end of the event's step: within one step's travel.
+            Assert.True((render.Position - game.Position).Length < 0.05, $"cue {i} placed {(render.Position - game.Position).Length:F3} m off");
+        }
+    }
+
+    [Fact]
+    public void RollingFollowsTheBallsAndFallsSilentAtRest()
+    {
+        var (world, audio) = Start("eight-ball-break.json");
+        RunUntilRest(world);
+        Assert.True(audio.MaxRollingSpeed > 1, "the break's balls roll fast");
+        Assert.All(audio.Rolling.Values, speed => Assert.Equal(0, speed));
+    }
+
+    [Fact]
+    public void TheListenerIsTheCamera()
+    {
+        var (world, audio) = Start("eight-ball-break.json");
+        world.Tree.Process(0.016);
+        var camera = world.Tree.Find<Billiards.App.Camera.CameraNode>()!.Camera;
+        Assert.Equal(new Listener(camera.Eye, camera.Centre), audio.Listeners[^1]);
+    }
+
+    [Fact]
+    public void PlusAndMinusSetTheVolumeAndUMutes()
+    {
+        var (world, audio) = Start("eight-ball.json");
+        void Press(Key key) => world.Tree.Input(new KeyInput(0, key, true));
+        Press(Key.Minus);
+        Assert.Equal(0.7f, audio.Volume, 3);
+        Press(Key.Plus);
+        Press(Key.Plus);
+        Press(Key.Plus);
+        Assert.Equal(1f, audio.Volume, 3);
+        Press(Key.U);
+        Assert.True(audio.Muted);
+        Press(Key.U);
+        Assert.False(audio.Muted);
+        for (int i = 0; i < 12; i++)
+        {
+            Press(Key.Minus);
+        }
+        Assert.Equal(0f, audio.Volume);
+    }
+
+    [Fact]
+    public void TheHelpOverlayNamesTheSoundKeys()
+    {
+        Assert.Contains(Hud.HelpText.Lines, l => l.Contains("volume", StringComparison.Ordinal) && l.Contains('+'));
+        Assert.Contains(Hud.HelpText.Lines, l => l.TrimStart().StartsWith('U') && l.Contains("mute", StringComparison.Ordinal));
+    }
+}
