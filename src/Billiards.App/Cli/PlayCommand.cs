@@ -82,6 +82,7 @@ public static class PlayCommand
         host.Run(platform.Loop, platform.Renderer);
         if (stats is not null && statsPath is not null)
         {
+            stats.Ended(gameClock.Now);
             var (width, height) = platform.Window.FramebufferSize;
             OutputFiles.Write(statsPath, stats.ToJson(path, options?.Script, width, height, platform.GlRenderer));
         }
