@@ -1,13 +1,21 @@
+using System.Numerics;
 using Billiards.App.Game;
+using Billiards.App.Input;
+using Billiards.App.Input.Modes;
 using Billiards.App.Nodes;
+using Billiards.App.Platform;
+using Billiards.App.Rendering;
 using Billiards.Core.Mathematics;
+using Billiards.Core.Table;
 
 namespace Billiards.App.Camera;
 
 /// <summary>
-/// The game's camera: an <see cref="OrbitCamera"/> around the cue ball. When the balls come to rest
-/// it moves by the cue ball's displacement over the shot (seed 4.3), so the view is kept; while
-/// they roll it keeps orbiting the cue ball's previous centre (seed 4.4.3).
+/// The game's camera: an <see cref="OrbitCamera"/> around the cue ball, which it follows while the
+/// player aims. When the balls come to rest it moves by the cue ball's displacement over the shot
+/// (seed 4.3), so the view is kept and the camera is back behind the cue ball. While they roll it
+/// looks straight down on the whole table (<see cref="Overhead"/>; <see cref="OverheadKey"/> toggles
+/// it at any time). It never goes below the rail's height, nor through the cue.
 /// </summary>
 public sealed class CameraNode : Node
 {
@@ -29,7 +37,26 @@ public sealed class CameraNode : Node
     /// <summary>Vertical field of view (deg).</summary>
     public const float FovYDegrees = 45;
 
+    /// <summary>The key that switches between the overhead view and the orbit around the cue ball.</summary>
+    public const Key OverheadKey = Key.T;
+
+    /// <summary>Least height of the eye above the rail's top (m).</summary>
+    public const double RailMargin = 0.03;
+
+    /// <summary>Least height of the eye above the cue's line where the eye is over it (m): well clear of the cue and the near plane.</summary>
+    public const double CueMargin = 0.10;
+
+    /// <summary>Largest polar angle of the orbit (rad): the eye looks down on the cue ball by at least 10 degrees.</summary>
+    public const double LowestView = (Math.PI / 2) - (10 * Math.PI / 180);
+
+    /// <summary>Part of the screen's height the HUD's panel takes at the top; the overhead view frames the table below it.</summary>
+    public const double HudBand = 0.27;
+
     private PhysicsNode? _physics;
+    private CueNode? _cue;
+
+    /// <summary>True while the camera looks down on the whole table.</summary>
+    public bool Overhead { get; private set; }
 
     /// <summary>The camera; valid from <see cref="Node.Ready"/> on (placed at the table centre until then).</summary>
     public OrbitCamera Camera { get; private set; } = new(Vec3.Zero, OverviewTheta, StartPhi, OverviewDistance);
@@ -41,11 +68,15 @@ public sealed class CameraNode : Node
         Camera = _physics.HasCueBall
             ? new OrbitCamera(_physics.CueBallPosition, StartTheta, StartPhi, StartDistance)
             : new OrbitCamera(new Vec3(0, 0, _physics.BallRadius), OverviewTheta, StartPhi, OverviewDistance);
+        _cue = FindInTree<CueNode>();
         _physics.CameToRest += OnCameToRest;
+        _physics.Struck += _ => Overhead = true;
+        Overhead = _physics.IsRolling; // a scene's opening shot was struck before this node was ready
     }
 
     private void OnCameToRest(Vec3 cueDisplacement)
     {
+        Overhead = false;
         // Seed 4.3: the camera moves by the cue ball's displacement; a pocketed cue ball leaves it put.
         if (_physics is { HasCueBall: true })
         {
@@ -54,10 +85,103 @@ public sealed class CameraNode : Node
     }
 
     /// <inheritdoc />
+    protected override bool Input(InputEvent e)
+    {
+        if (e is KeyInput { Pressed: true, Key: OverheadKey })
+        {
+            Overhead = !Overhead;
+            return true;
+        }
+        return false;
+    }
+
+    /// <inheritdoc />
+    protected override void Process(double dt)
+    {
+        if (_physics is null)
+        {
+            return;
+        }
+        // While aiming the camera follows the cue ball (placed by hand, or back after a scratch).
+        if (!_physics.IsRolling && _physics.HasCueBall)
+        {
+            Camera.Centre = _physics.CueBallPosition;
+        }
+        Camera.LimitTheta(HighestTheta());
+    }
+
+    /// <summary>
+    /// The largest polar angle (rad) at which the eye looks down by <see cref="LowestView"/> at least, is
+    /// above the rail's top by <see cref="RailMargin"/> and, while the cue is shown, above the cue's
+    /// line by <see cref="CueMargin"/> where the eye is over it.
+    /// </summary>
+    public double HighestTheta()
+    {
+        if (_physics is null)
+        {
+            return LowestView;
+        }
+        double railHeight = CueClearance.RailTop(_physics.Table) + RailMargin;
+        double elevation = _cue is { IsVisible: true } cue ? cue.EffectiveElevationDegrees * Math.PI / 180 : double.NaN;
+        double r = _physics.BallRadius;
+        var centre = Camera.Centre;
+        double distance = Camera.Distance;
+        bool Clear(double theta)
+        {
+            double height = centre.Z + (distance * Math.Cos(theta));
+            if (height < railHeight)
+            {
+                return false;
+            }
+            double behind = distance * Math.Sin(theta);
+            return double.IsNaN(elevation) || behind > Primitives.CueLength + SeedControls.MaxPullBack
+                || height >= r + (behind * Math.Tan(elevation)) + CueMargin;
+        }
+        if (Clear(LowestView))
+        {
+            return LowestView;
+        }
+        if (!Clear(OrbitCamera.ThetaMin))
+        {
+            return OrbitCamera.ThetaMin;
+        }
+        double lo = OrbitCamera.ThetaMin, hi = LowestView;
+        for (int i = 0; i < 40; i++)
+        {
+            double mid = 0.5 * (lo + hi);
+            (lo, hi) = Clear(mid) ? (mid, hi) : (lo, mid);
+        }
+        return lo;
+    }
+
+    /// <inheritdoc />
     protected override void Draw(FrameBuilder frame)
     {
+        frame.Frame.FovYDegrees = FovYDegrees;
+        if (Overhead && _physics is not null)
+        {
+            (frame.Frame.Eye, frame.Frame.Target) = OverheadView(_physics.Table, frame.Frame.Width, frame.Frame.Height, FovYDegrees);
+            return;
+        }
         frame.Frame.Eye = Camera.Eye.ToVector3();
         frame.Frame.Target = Camera.Centre.ToVector3();
-        frame.Frame.FovYDegrees = FovYDegrees;
+    }
+
+    /// <summary>
+    /// The overhead view of a table for a framebuffer: looking down (tilted a little so the table's
+    /// length runs across the screen), the whole table with its rails framed below the HUD's band.
+    /// </summary>
+    public static (Vector3 Eye, Vector3 Target) OverheadView(TableSpec table, int width, int height, float fovYDegrees)
+    {
+        double hx = table.HalfLength + TableModelGenerator.CushionDepth + TableModelGenerator.RailWidth;
+        double hy = table.HalfWidth + TableModelGenerator.CushionDepth + TableModelGenerator.RailWidth;
+        double tan = Math.Tan(fovYDegrees * Math.PI / 360);
+        double aspect = width / (double)Math.Max(height, 1);
+        const double Band = 0.98 - HudBand, Across = 0.96;
+        double z = Math.Max(hy / (Band * tan), hx / (Across * tan * aspect));
+        // The table's centre goes to the middle of the band below the HUD, i.e. below the screen's centre.
+        double shift = (((HudBand + 0.98) / 2) - 0.5) * 2 * z * tan;
+        var target = new Vector3(0, (float)shift, 0);
+        return (target + new Vector3(0, (float)(-0.03 * z), (float)z), target);
     }
 }

@@ -92,6 +92,9 @@ public sealed class OrbitCamera
         Distance = Math.Clamp(Distance * scale, MinDistance, MaxDistance);
     }
 
+    /// <summary>Lowers the polar angle to at most <paramref name="theta"/> (rad), i.e. raises the eye; never below <see cref="ThetaMin"/>.</summary>
+    public void LimitTheta(double theta) => Theta = Math.Clamp(Math.Min(Theta, theta), ThetaMin, ThetaMax);
+
     /// <summary>Moves the centre and the eye together (Formel 35: camera = p + c), keeping the view.</summary>
     public void Translate(Vec3 offset) => Centre += offset;
 

@@ -82,6 +82,7 @@ public static class PlayCommand
         host.Run(platform.Loop, platform.Renderer);
         if (stats is not null && statsPath is not null)
         {
+            stats.Ended(gameClock.Now);
             var (width, height) = platform.Window.FramebufferSize;
             OutputFiles.Write(statsPath, stats.ToJson(path, options?.Script, width, height, platform.GlRenderer));
         }
@@ -102,7 +103,7 @@ public static class PlayCommand
         }
         if (string.IsNullOrEmpty(environment("DISPLAY")) && string.IsNullOrEmpty(environment("WAYLAND_DISPLAY")))
         {
-            throw new EnvironmentException("play: no display: DISPLAY is not set (run it in a desktop session, or under Xvfb: xvfb-run billiards play)");
+            throw new EnvironmentException("play: cannot open the game's window: no display (DISPLAY is not set; run it in a desktop session, or under Xvfb: xvfb-run billiards play)");
         }
     }
 

@@ -34,13 +34,21 @@ public sealed class CueNode : Node
         ? new Vec3(1, 0, 0)
         : ViewMath.BedForward(_camera.Camera.Eye, _physics.CueBallPosition);
 
+    /// <summary>The least elevation (deg) that clears the rail behind the cue ball along the aim (<see cref="CueClearance"/>).</summary>
+    public double RailElevationDegrees => _physics is null
+        ? 0
+        : CueClearance.MinElevationDegrees(_physics.CueBallPosition, AimDirection, _physics.Table, _physics.BallRadius);
+
+    /// <summary>The elevation the cue is played and drawn at (deg): the chosen one, raised over a rail when it must be.</summary>
+    public double EffectiveElevationDegrees => Math.Min(Math.Max(ElevationDegrees, RailElevationDegrees), SeedControls.MaxElevationDegrees);
+
     /// <summary>Raises or lowers the cue by <paramref name="degrees"/>, within [0, max].</summary>
     public void ChangeElevation(double degrees) =>
         ElevationDegrees = Math.Clamp(ElevationDegrees + degrees, 0, SeedControls.MaxElevationDegrees);
 
-    /// <summary>The shot this cue would play at a cue speed (m/s): aim from the camera, tip offset and elevation.</summary>
+    /// <summary>The shot this cue would play at a cue speed (m/s): aim from the camera, tip offset and the effective elevation.</summary>
     public ShotSpec MakeShot(double speed) =>
-        new(speed, ViewMath.AimDegrees(AimDirection), Tip.SideFraction, Tip.HeightFraction, ElevationDegrees);
+        new(speed, ViewMath.AimDegrees(AimDirection), Tip.SideFraction, Tip.HeightFraction, EffectiveElevationDegrees);
 
     /// <inheritdoc />
     protected override void Ready()
@@ -67,7 +75,7 @@ public sealed class CueNode : Node
             IsVisible,
             _physics.CueBallPosition.ToVector3(),
             AimDirection.ToVector3(),
-            (float)ElevationDegrees,
+            (float)EffectiveElevationDegrees,
             (float)pullBack,
             Tip.Fractions);
     }

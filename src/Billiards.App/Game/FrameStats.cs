@@ -22,6 +22,7 @@ public sealed class FrameStats
     private readonly List<double> _starts = [];
     private readonly List<(ScriptEvent Event, int Frame)> _inputs = [];
     private double? _zero;
+    private double? _end;
 
     /// <summary>Frames recorded.</summary>
     public int Frames => _starts.Count;
@@ -32,6 +33,18 @@ public sealed class FrameStats
         _zero ??= now;
         _starts.Add(now - _zero.Value);
     }
+
+    /// <summary>Records the end of the last frame (its swap finished) at clock time <paramref name="now"/> (s).</summary>
+    public void Ended(double now)
+    {
+        if (_zero is { } zero)
+        {
+            _end = now - zero;
+        }
+    }
+
+    // When frame k was on screen: the next frame's start, or the end for the last frame.
+    private double? Shown(int k) => k + 1 < _starts.Count ? _starts[k + 1] : k + 1 == _starts.Count ? _end : null;
 
     /// <summary>Records that a scripted event was raised in the frame started last.</summary>
     public void InputRaised(ScriptEvent e) => _inputs.Add((e, _starts.Count - 1));
@@ -53,23 +66,23 @@ public sealed class FrameStats
     /// <param name="DelayMs">From the event's time to that frame on screen (ms).</param>
     public sealed record InputDelay(double Time, string Event, int Frame, int DelayFrames, double DelayMs);
 
-    /// <summary>The whole seconds recorded: only seconds whose every frame has ended.</summary>
+    /// <summary>The whole seconds recorded, up to the last frame's end.</summary>
     public List<SecondSample> Seconds()
     {
         var result = new List<SecondSample>();
-        if (_starts.Count < 2)
+        if (_starts.Count == 0 || Shown(_starts.Count - 1) is not { } last)
         {
             return result;
         }
-        int whole = (int)Math.Floor(_starts[^1]);
+        int whole = (int)Math.Floor(last);
         for (int s = 0; s < whole; s++)
         {
             var times = new List<double>();
-            for (int k = 0; k + 1 < _starts.Count; k++)
+            for (int k = 0; k < _starts.Count; k++)
             {
-                if (_starts[k] >= s && _starts[k] < s + 1)
+                if (_starts[k] >= s && _starts[k] < s + 1 && Shown(k) is { } shown)
                 {
-                    times.Add((_starts[k + 1] - _starts[k]) * 1000);
+                    times.Add((shown - _starts[k]) * 1000);
                 }
             }
             times.Sort();
@@ -84,13 +97,13 @@ public sealed class FrameStats
         var result = new List<InputDelay>();
         foreach (var (e, frame) in _inputs)
         {
-            if (frame < 0 || frame + 1 >= _starts.Count)
+            if (frame < 0 || Shown(frame) is not { } shown)
             {
                 continue; // the frame that shows it never reached the screen
             }
             int firstAfter = _starts.FindIndex(t => t >= e.Time);
             int delayFrames = frame - (firstAfter < 0 ? frame : firstAfter) + 1;
-            result.Add(new InputDelay(e.Time, e.Describe(), frame, delayFrames, (_starts[frame + 1] - e.Time) * 1000));
+            result.Add(new InputDelay(e.Time, e.Describe(), frame, delayFrames, (shown - e.Time) * 1000));
         }
         return result;
     }

@@ -34,16 +34,53 @@ public sealed class HudNode : Node
         _keys = GetInTree<SystemKeysNode>();
         _cue = FindInTree<CueNode>();
         _rules = FindInTree<RulesNode>();
+        _physics.Struck += _ => _sinceShot = 0;
     }
 
+    /// <summary>How long the meter keeps showing a shot's speed after the strike (s).</summary>
+    public const double ShotShownSeconds = 2;
+
+    /// <summary>The fastest stroke (m/s): Formel 31's cap.</summary>
+    public const double MaxStrokeSpeed = Billiards.Core.Cue.Queue.MaxStrokeSpeed / SeedControls.CentimetresPerMetre;
+
+    private double _sinceShot = double.PositiveInfinity;
+
     /// <inheritdoc />
-    protected override void Process(double dt) => FrameRate.AddFrame(dt * 1000);
+    protected override void Process(double dt)
+    {
+        FrameRate.AddFrame(dt * 1000);
+        _sinceShot += dt;
+    }
 
     /// <inheritdoc />
     protected override void Draw(FrameBuilder frame)
     {
         BuildLines();
-        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, HelpText.Lines);
+        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, HelpText.Lines, Meter());
+    }
+
+    /// <summary>
+    /// The power meter: while pushing, the push's speed (Formel 31) against the cap; while pulling
+    /// back, the backswing; for two seconds after a strike, the shot's speed; otherwise none.
+    /// </summary>
+    public PowerMeter? Meter()
+    {
+        var c = CultureInfo.InvariantCulture;
+        if (_modes is { IsStroking: true } modes)
+        {
+            double live = modes.LiveSpeed;
+            if (live > 0)
+            {
+                return new PowerMeter((float)Math.Min(live / MaxStrokeSpeed, 1), string.Create(c, $"Power {live:0.00} m/s"), true);
+            }
+            double longest = SeedControls.MaxPullBack / SeedControls.PullBackMetresPerPixel;
+            return new PowerMeter((float)Math.Min(modes.PullBackPixels / longest, 1), "Pull back, then push through", false);
+        }
+        if (_physics?.LastShot is { } shot && _sinceShot < ShotShownSeconds)
+        {
+            return new PowerMeter((float)Math.Min(shot.Speed / MaxStrokeSpeed, 1), string.Create(c, $"Shot {shot.Speed:0.00} m/s"), true);
+        }
+        return null;
     }
 
     private void BuildLines()
@@ -65,7 +102,9 @@ public sealed class HudNode : Node
         if (_cue is not null)
         {
             _lines.Add(string.Create(c, $"Spin: side {_cue.Tip.SideFraction:+0.00;-0.00;0.00} R, height {_cue.Tip.HeightFraction:+0.00;-0.00;0.00} R"));
-            _lines.Add(string.Create(c, $"Elevation: {_cue.ElevationDegrees:0} deg"));
+            _lines.Add(_cue.EffectiveElevationDegrees > _cue.ElevationDegrees + 0.5
+                ? string.Create(c, $"Elevation: {_cue.EffectiveElevationDegrees:0} deg (over the rail)")
+                : string.Create(c, $"Elevation: {_cue.ElevationDegrees:0} deg"));
         }
         if (_rules is not null)
         {

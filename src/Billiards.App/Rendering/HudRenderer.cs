@@ -107,17 +107,43 @@ internal sealed class HudRenderer : IDisposable
         Disc(point, 5 * scale, new Vector4(0.85f, 0.1f, 0.1f, 1), 2);
         Disc(point, 6.5f * scale, new Vector4(0.2f, 0, 0, 1), 3);
 
+        if (hud.Power is { } power)
+        {
+            // Under the view, centred: a bar with its label above it.
+            float barW = 160 * scale, barH = 7 * scale;
+            float bx = (width - barW) / 2, by = height - margin - barH;
+            Rect(bx - scale, by - scale, barW + (2 * scale), barH + (2 * scale), new Vector4(0, 0, 0, 0.6f));
+            var fill = power.Pushing ? new Vector4(0.95f, 0.55f + (0.4f * (1 - power.Fraction)), 0.1f, 0.95f) : new Vector4(0.6f, 0.6f, 0.6f, 0.9f);
+            Rect(bx, by, barW * Math.Clamp(power.Fraction, 0, 1), barH, fill);
+            float labelW = power.Label.Length * BitmapFont.Advance * scale;
+            Text(power.Label, (width - labelW) / 2, by - lineHeight - scale, scale, textColor);
+        }
+
         if (hud.ShowHelp && hud.HelpLines.Count > 0)
         {
-            int longest = hud.HelpLines.Max(l => l.Length);
-            float w = (longest * BitmapFont.Advance * scale) + (4 * margin);
-            float h = (hud.HelpLines.Count * lineHeight) + (4 * margin);
+            // The overlay fits the window: a smaller text scale first, then lines wrapped.
+            int helpScale = scale;
+            var lines = hud.HelpLines;
+            int longest = lines.Max(l => l.Length);
+            while (helpScale > 1 && (longest * BitmapFont.Advance * helpScale) + (4 * margin) > width)
+            {
+                helpScale--;
+            }
+            int fit = Math.Max(10, (int)((width - (4 * margin)) / (BitmapFont.Advance * helpScale)));
+            if (longest > fit)
+            {
+                lines = Wrap(lines, fit);
+                longest = lines.Max(l => l.Length);
+            }
+            int helpLine = BitmapFont.LineHeight * helpScale;
+            float w = (longest * BitmapFont.Advance * helpScale) + (4 * margin);
+            float h = (lines.Count * helpLine) + (4 * margin);
             float x = MathF.Max(0, (width - w) / 2), y = MathF.Max(0, (height - h) / 2);
             Rect(x, y, w, h, new Vector4(0.02f, 0.03f, 0.02f, 0.82f));
             Rect(x, y, w, scale, new Vector4(0.8f, 0.7f, 0.3f, 1));
-            for (int i = 0; i < hud.HelpLines.Count; i++)
+            for (int i = 0; i < lines.Count; i++)
             {
-                Text(hud.HelpLines[i], x + (2 * margin), y + (2 * margin) + (i * lineHeight), scale, textColor);
+                Text(lines[i], x + (2 * margin), y + (2 * margin) + (i * helpLine), helpScale, textColor);
             }
         }
 
@@ -136,6 +162,29 @@ internal sealed class HudRenderer : IDisposable
         _gl.DrawArrays(Gl.Triangles, 0, _vertices.Count / Floats);
         _gl.Disable(Gl.Blend);
         _gl.Enable(Gl.DepthTest);
+    }
+
+    /// <summary>Wraps lines longer than <paramref name="columns"/> at spaces, continuing with the line's indentation plus two.</summary>
+    public static List<string> Wrap(IReadOnlyList<string> lines, int columns)
+    {
+        var result = new List<string>();
+        foreach (string line in lines)
+        {
+            string rest = line;
+            string indent = new(' ', Math.Min(line.Length - line.TrimStart().Length + 2, columns / 2));
+            while (rest.Length > columns)
+            {
+                int cut = rest.LastIndexOf(' ', columns);
+                if (cut <= rest.Length - rest.TrimStart().Length)
+                {
+                    cut = columns;
+                }
+                result.Add(rest[..cut].TrimEnd());
+                rest = indent + rest[cut..].TrimStart();
+            }
+            result.Add(rest);
+        }
+        return result;
     }
 
     private void Vertex(float x, float y, float u, float v, Vector4 c, float kind)

@@ -69,7 +69,14 @@ public readonly record struct CueVisual(bool Visible, Vector3 BallCentre, Vector
 /// <param name="SpinPoint">Tip offset on the cue-ball diagram [side, height] as fractions of R.</param>
 /// <param name="ShowHelp">Whether the help overlay is open.</param>
 /// <param name="HelpLines">Lines of the help overlay: every key.</param>
-public sealed record HudInfo(IReadOnlyList<string> Lines, Vector2 SpinPoint, bool ShowHelp, IReadOnlyList<string> HelpLines);
+/// <param name="Power">The power meter while stroking (and briefly after), or null.</param>
+public sealed record HudInfo(IReadOnlyList<string> Lines, Vector2 SpinPoint, bool ShowHelp, IReadOnlyList<string> HelpLines, PowerMeter? Power = null);
+
+/// <summary>The power meter under the table view.</summary>
+/// <param name="Fraction">How full the bar is, 0..1 (of the strongest stroke, or of the longest backswing).</param>
+/// <param name="Label">Its text, e.g. "Power 3.20 m/s".</param>
+/// <param name="Pushing">True for the push's speed (or the shot played), false for the backswing.</param>
+public sealed record PowerMeter(float Fraction, string Label, bool Pushing);
 
 /// <summary>A collision triangle for the debug view (m).</summary>
 public readonly record struct DebugTriangle(Vector3 A, Vector3 B, Vector3 C, Vector3 Normal);

@@ -197,7 +197,7 @@ public class SystemKeysAndHudTests
         }
         var lines = game.Frame(1.0 / 64).Hud!.Lines;
         Assert.Equal(
-            ["Mode: view [V]", "Last shot: -", "Spin: side 0.00 R, height 0.00 R", "Elevation: 0 deg", "FPS: 64", "H or F1: help"],
+            ["Mode: view [V]", "Last shot: -", "Spin: side 0.00 R, height 0.00 R", "Elevation: 3 deg (over the rail)", "FPS: 64", "H or F1: help"],
             lines);
 
         game.Window.Press(Key.E);
@@ -205,11 +205,14 @@ public class SystemKeysAndHudTests
         game.Window.Down();
         game.Window.MoveTo(143, 0);                // e_x = 1.43 cm = 0.5 R
         game.Window.Up();
-        game.Window.Press(Key.Up);
+        for (int i = 0; i < 4; i++)
+        {
+            game.Window.Press(Key.Up);             // 4 deg: above the 2.5 deg the head rail asks for
+        }
         var hud = game.Frame(1.0 / 64).Hud!;
         Assert.Equal("Mode: effet [E]", hud.Lines[0]);
         Assert.Equal("Spin: side +0.50 R, height 0.00 R", hud.Lines[2]);
-        Assert.Equal("Elevation: 1 deg", hud.Lines[3]);
+        Assert.Equal("Elevation: 4 deg", hud.Lines[3]);
         Assert.Equal(0.5f, hud.SpinPoint.X, 6);
     }
 

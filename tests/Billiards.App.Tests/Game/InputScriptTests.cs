@@ -87,6 +87,8 @@ public class InputScriptTests
                 stats.InputRaised(new ScriptEvent(0.505, ScriptAction.KeyDown, Key.F1));
             }
         }
+        Assert.Empty(stats.Seconds()); // the last frame has not ended yet
+        stats.Ended(10 + 2.51);
         var seconds = stats.Seconds();
         Assert.Equal(2, seconds.Count);
         Assert.InRange(seconds[0].Frames, 99, 101);

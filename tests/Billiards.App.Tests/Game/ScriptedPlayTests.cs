@@ -35,7 +35,8 @@ public class ScriptedPlayTests
 
             // One sample per whole second of the script, numbered from 0; percentiles ordered.
             var seconds = root.GetProperty("per_second").EnumerateArray().ToList();
-            Assert.InRange(seconds.Count, (int)parsed.Duration - 1, (int)parsed.Duration);
+            // The script closes the game at its duration; the last frame may run on a little.
+            Assert.True(seconds.Count >= (int)parsed.Duration - 1, $"{seconds.Count} seconds");
             int frames = 0;
             for (int i = 0; i < seconds.Count; i++)
             {
@@ -48,7 +49,9 @@ public class ScriptedPlayTests
                 double p99 = ms.GetProperty("p99").GetDouble(), max = ms.GetProperty("max").GetDouble();
                 Assert.True(p50 <= p95 && p95 <= p99 && p99 <= max, $"second {i}: percentiles out of order");
             }
+            // Frames that started after the last whole second are in no sample.
             Assert.True(frames <= root.GetProperty("frames").GetInt32());
+            Assert.True(frames > 0);
 
             // Every scripted event reached the screen, on the frame after it happened.
             var inputs = root.GetProperty("inputs").EnumerateArray().ToList();

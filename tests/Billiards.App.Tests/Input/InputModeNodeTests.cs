@@ -40,7 +40,9 @@ public class InputModeNodeTests
         Assert.Equal(0, shot.AimDeg, 9);
         Assert.Equal(0, shot.TipSide);
         Assert.Equal(0, shot.TipHeight);
-        Assert.Equal(0, shot.ElevationDeg);
+        // The cue is raised just enough for its butt to clear the head rail 0.635 m behind the ball.
+        Assert.Equal(Cue(game).RailElevationDegrees, shot.ElevationDeg, 9);
+        Assert.InRange(shot.ElevationDeg, 2, 3);
         Assert.Equal(InputMode.View, Modes(game).Mode); // the seed returns to view mode after a strike
     }
 

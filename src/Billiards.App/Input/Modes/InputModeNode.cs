@@ -26,6 +26,7 @@ public sealed class InputModeNode : Node
     private bool _leftDown;
     private bool _rightDown;
     private bool _captured;
+    private bool _heldAfterStrike;
 
     /// <summary>The current mode.</summary>
     public InputMode Mode { get; private set; } = InputMode.View;
@@ -35,6 +36,14 @@ public sealed class InputModeNode : Node
 
     /// <summary>True while a stroke is under way (shot mode, button held).</summary>
     public bool IsStroking => _stroke.IsActive;
+
+    /// <summary>The backswing so far (pixels) while stroking.</summary>
+    public double PullBackPixels => _stroke.PullBackPixels;
+
+    /// <summary>The speed the cue is pushed at now (m/s, Formel 31), 0 when not pushing: the power meter's reading.</summary>
+    public double LiveSpeed => SeedControls.ToMetresPerSecond(_stroke.LiveSpeed(_now));
+
+    private double _now;
 
     /// <summary>Signal: the mode changed.</summary>
     public event Action<InputMode>? ModeChanged;
@@ -74,7 +83,22 @@ public sealed class InputModeNode : Node
     }
 
     /// <inheritdoc />
-    protected override bool Input(InputEvent e) => e switch
+    protected override void Process(double dt)
+    {
+        _now += dt;
+        // A push polled in one frame took at most one frame (see StrokeTracker.MinimumInterval).
+        _stroke.MinimumInterval = dt;
+    }
+
+    /// <inheritdoc />
+    protected override bool Input(InputEvent e)
+    {
+        // Input times are the clock's; between events the frames' time carries it on.
+        _now = Math.Max(_now, e.Time);
+        return Handle(e);
+    }
+
+    private bool Handle(InputEvent e) => e switch
     {
         KeyInput { Pressed: true } key => OnKey(key.Key),
         MouseButtonInput button => OnButton(button),
@@ -116,6 +140,7 @@ public sealed class InputModeNode : Node
         {
             case MouseButton.Left:
                 _leftDown = e.Pressed;
+                _heldAfterStrike &= e.Pressed;
                 if (e.Pressed && Mode == InputMode.Shot && !IsLocked && _cue is not null)
                 {
                     // Seed 4.4.3: the mouse Y where the cue starts is the line where the tip touches the ball.
@@ -146,6 +171,11 @@ public sealed class InputModeNode : Node
         if (!_leftDown)
         {
             return false;
+        }
+        if (_heldAfterStrike)
+        {
+            // The follow-through of a stroke, button still down: it must not orbit the camera.
+            return true;
         }
         switch (Mode)
         {
@@ -192,6 +222,7 @@ public sealed class InputModeNode : Node
             return;
         }
         EndStroke();
+        _heldAfterStrike = _leftDown;
         if (speed > 0 && !IsLocked && _physics.HasCueBall)
         {
             _physics.Strike(_cue.MakeShot(SeedControls.ToMetresPerSecond(speed)));

@@ -30,6 +30,13 @@ public sealed class StrokeTracker
     private double _distance;
     private double _timerStart;
 
+    /// <summary>
+    /// Events delivered together (one poll of the window) carry no time between them: a push whose
+    /// measured time is under a millisecond took up to this long, the last frame's duration (s), and
+    /// is timed so. Without it a push polled in one frame gave t ≈ 0 and always the 8 m/s cap.
+    /// </summary>
+    public double MinimumInterval { get; set; }
+
     /// <summary>True between <see cref="Begin"/> and the strike or <see cref="Cancel"/>.</summary>
     public bool IsActive { get; private set; }
 
@@ -77,7 +84,7 @@ public sealed class StrokeTracker
         {
             if (y < _startY)
             {
-                speed = Formel31(_distance, (time - _timerStart) * MillisecondsPerSecond);
+                speed = Formel31(_distance, Interval(time - _timerStart) * MillisecondsPerSecond);
             }
         }
         else if (_lastY <= _startY)
@@ -88,7 +95,7 @@ public sealed class StrokeTracker
         else if (y < _startY)
         {
             // One event from behind the line to past it: measure it from the previous event.
-            speed = Formel31(_lastY - _startY, (time - _lastTime) * MillisecondsPerSecond);
+            speed = Formel31(_lastY - _startY, Interval(time - _lastTime) * MillisecondsPerSecond);
         }
         else
         {
@@ -106,6 +113,23 @@ public sealed class StrokeTracker
         }
         return speed;
     }
+
+    /// <summary>
+    /// The speed (the seed's cm/s, Formel 31) the stroke is being pushed at, at time
+    /// <paramref name="now"/> (s): the forward distance so far over the time since the forward
+    /// move began; 0 while pulling back or before a stroke. The HUD's power meter shows it.
+    /// </summary>
+    public double LiveSpeed(double now)
+    {
+        if (!IsActive || !_measuring)
+        {
+            return 0;
+        }
+        double forward = _distance - (_lastY - _startY);
+        return forward <= 0 ? 0 : Formel31(forward, Interval(now - _timerStart) * MillisecondsPerSecond);
+    }
+
+    private double Interval(double seconds) => seconds < 1e-3 ? Math.Max(seconds, MinimumInterval) : seconds;
 
     /// <summary>
     /// Formel 31, s = d / t * 250, capped at 800; d in pixels, t in ms, s the cue's speed at impact in cm/s
