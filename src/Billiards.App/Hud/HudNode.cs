@@ -19,6 +19,7 @@ public sealed class HudNode : Node
     private CueNode? _cue;
     private SystemKeysNode? _keys;
     private RulesNode? _rules;
+    private MatchNode? _match;
 
     /// <summary>The frame-rate meter, fed every frame.</summary>
     public FrameRateMeter FrameRate { get; } = new();
@@ -34,6 +35,7 @@ public sealed class HudNode : Node
         _keys = GetInTree<SystemKeysNode>();
         _cue = FindInTree<CueNode>();
         _rules = FindInTree<RulesNode>();
+        _match = FindInTree<MatchNode>();
     }
 
     /// <inheritdoc />
@@ -67,7 +69,11 @@ public sealed class HudNode : Node
             _lines.Add(string.Create(c, $"Spin: side {_cue.Tip.SideFraction:+0.00;-0.00;0.00} R, height {_cue.Tip.HeightFraction:+0.00;-0.00;0.00} R"));
             _lines.Add(string.Create(c, $"Elevation: {_cue.ElevationDegrees:0} deg"));
         }
-        if (_rules is not null)
+        if (_match is not null && _physics is not null)
+        {
+            MatchLines.Add(_lines, _match, _physics);
+        }
+        else if (_rules is not null)
         {
             string potted = _rules.LastShotPotted.Count == 0 ? "none" : string.Join(", ", _rules.LastShotPotted);
             _lines.Add($"Rules: {_rules.Rules} (not judged yet); potted last shot: {potted}");
