@@ -3,6 +3,7 @@ using Billiards.App.Audio;
 using Billiards.App.Game;
 using Billiards.App.Platform;
 using Billiards.Core.Physics;
+using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
 
 namespace Billiards.App.Cli;
@@ -27,8 +28,16 @@ public static class PlayCommand
         };
         var script = new Option<string?>("--script") { Description = $"Replay a timed list of input events ({InputScript.Format} JSON); the game closes when it ends." };
         var stats = new Option<string?>("--stats") { Description = $"Write per-second frame rates, frame-time percentiles and input-to-frame delays ({FrameStats.Format} JSON) when the game ends." };
-        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats };
-        command.SetAction(parse => Play(parse.GetValue(scene), PlatformWiring.Open, options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats)), openAudio: OpenAudio));
+        var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball or straight-pool (default: the scene's rules)." };
+        var players = new Option<string?>("--players") { Description = "The two players, A,B: each human or computer:LEVEL (1-5); default human,human." };
+        var record = new Option<string?>("--record") { Description = $"Write the match's rulings, state and HUD ({MatchRecord.Format} JSON) when the game ends." };
+        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record };
+        command.SetAction(parse => Play(parse.GetValue(scene), PlatformWiring.Open, options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))
+        {
+            Rules = parse.GetValue(rules),
+            Players = parse.GetValue(players),
+            Record = parse.GetValue(record),
+        }, openAudio: OpenAudio));
         root.Add(command);
         root.SetAction(_ => Play(null, PlatformWiring.Open, openAudio: OpenAudio));
     }
@@ -43,16 +52,23 @@ public static class PlayCommand
     /// <param name="openAudio">Opens the sound output; silence by default (tests).</param>
     public static int Play(string? scenePath, Func<string, GamePlatform> openPlatform, Func<Scene, Simulation>? createSimulation = null, IClock? clock = null, PlayOptions? options = null, Func<IAudioOutput>? openAudio = null)
     {
-        string path = scenePath ?? FindDefaultScene();
+        var gameRules = ParseRules(options?.Rules);
+        string path = scenePath ?? (gameRules is { } chosen ? FindRulesScene(chosen) : FindDefaultScene());
         var scene = SceneLoader.Load(path);
         var script = options?.Script is { } scriptPath ? InputScript.Load(scriptPath) : null;
         string? statsPath = options?.Stats is { } s ? OutputFiles.Check("--stats", s, ".json") : null;
+        string? recordPath = options?.Record is { } r ? OutputFiles.Check("--record", r, ".json") : null;
+        var match = MatchFor(scene, gameRules, options?.Players);
+        if (recordPath is not null && (match is null || !scene.Balls.Any(b => b.Id == Core.Balls.BallId.Cue)))
+        {
+            throw new CliException($"--record {recordPath}: {path} has no match to record (it names no rules and no --rules was given, or it has no cue ball)");
+        }
         string title = scene.Name is { } name ? $"{PlatformWiring.WindowTitle}: {name}" : PlatformWiring.WindowTitle;
         using var platform = OpenOrExplain(openPlatform, title);
         var gameClock = new ScriptClock(clock ?? new StopwatchClock());
         using var scripted = script is null ? null : new ScriptedInput(platform.Window, script, gameClock);
         using var audio = openAudio?.Invoke() ?? new SilentAudio();
-        using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock);
+        using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, match);
         host.Tree.Root.AddChild(new AudioNode(audio));
         var stats = statsPath is null ? null : new FrameStats();
         bool warm = false;
@@ -85,6 +101,12 @@ public static class PlayCommand
             stats.Ended(gameClock.Now);
             var (width, height) = platform.Window.FramebufferSize;
             OutputFiles.Write(statsPath, stats.ToJson(path, options?.Script, width, height, platform.GlRenderer));
+        }
+        if (recordPath is not null)
+        {
+            var matchNode = host.Tree.Root.GetInTree<MatchNode>();
+            var hud = host.Tree.Root.FindInTree<Hud.HudNode>();
+            OutputFiles.Write(recordPath, MatchRecord.ToJson(matchNode, hud?.Lines ?? []));
         }
         return 0;
     }
@@ -126,7 +148,66 @@ public static class PlayCommand
     /// <summary>Options of <c>play</c>.</summary>
     /// <param name="Script">A <see cref="InputScript"/> file to replay, or null.</param>
     /// <param name="Stats">Where to write the <see cref="FrameStats"/>, or null.</param>
-    public sealed record PlayOptions(string? Script, string? Stats);
+    public sealed record PlayOptions(string? Script, string? Stats)
+    {
+        /// <summary>The game (<c>--rules</c>), or null for the scene's.</summary>
+        public string? Rules { get; init; }
+
+        /// <summary>The players (<c>--players A,B</c>), or null for two people.</summary>
+        public string? Players { get; init; }
+
+        /// <summary>Where to write the <see cref="MatchRecord"/>, or null.</summary>
+        public string? Record { get; init; }
+    }
+
+    private static GameRules? ParseRules(string? name)
+    {
+        if (name is null)
+        {
+            return null;
+        }
+        return RuleNames.TryParseGame(name, out var rules)
+            ? rules
+            : throw new CliException($"--rules {name}: unknown game (expected {string.Join(", ", RuleNames.GameNames)})");
+    }
+
+    /// <summary>
+    /// The match a scene is played as: the scene's rules (or <c>--rules</c>) between the players of
+    /// <c>--players</c>; none when the scene names no rules, so practice scenes stay practice.
+    /// </summary>
+    public static MatchSetup? MatchFor(Scene scene, GameRules? rules, string? players)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        GameRules? game = rules ?? scene.Game?.Rules ?? (RuleNames.TryParseGame(scene.Rules, out var named) ? named : null);
+        if (game is not { } g)
+        {
+            return players is null ? null : throw new CliException($"--players {players}: {scene.Path} names no rules; give --rules too");
+        }
+        string[] parts = (players ?? "human,human").Split(',');
+        if (parts.Length != 2)
+        {
+            throw new CliException($"--players {players}: expected two players A,B (each human or computer:LEVEL)");
+        }
+        var seats = new MatchPlayer[2];
+        for (int i = 0; i < 2; i++)
+        {
+            seats[i] = MatchPlayer.Parse(parts[i], i)
+                ?? throw new CliException($"--players {players}: \"{parts[i]}\" is neither human nor computer:LEVEL with LEVEL 1-5");
+            if (!seats[i].IsHuman)
+            {
+                throw new CliException($"--players {players}: computer players are not available in this build yet");
+            }
+        }
+        return new MatchSetup(g, seats);
+    }
+
+    /// <summary>The shipped scene for a game: <c>assets/scenes/RULES.json</c>.</summary>
+    public static string FindRulesScene(GameRules rules)
+    {
+        string file = $"{rules.ToName()}.json";
+        string local = Path.Combine("assets", "scenes", file);
+        return File.Exists(local) ? local : AssetFolder.Scene(file);
+    }
 
     /// <summary>
     /// The default scene: relative to the working directory, else in the shipped assets

@@ -26,11 +26,12 @@ public sealed class GameHost : IDisposable
     /// <param name="createSimulation">Makes the scene's simulation (<see cref="SimulationFactory.Create"/>).</param>
     /// <param name="window">The window (input and switches).</param>
     /// <param name="clock">The clock for frame times and input timestamps.</param>
-    public GameHost(Scene scene, Func<Scene, Simulation> createSimulation, IGameWindow window, IClock clock)
+    /// <param name="match">The match to play, or null for practice.</param>
+    public GameHost(Scene scene, Func<Scene, Simulation> createSimulation, IGameWindow window, IClock clock, MatchSetup? match = null)
     {
         _window = window;
         _clock = clock;
-        _world = GameSceneBuilder.Build(scene, createSimulation);
+        _world = GameSceneBuilder.Build(scene, createSimulation, match);
         _physicsStep = () => _world.Tree.PhysicsProcess(_world.Loop.Dt);
         _world.SystemKeys.QuitRequested += window.Close;
         _world.SystemKeys.FullscreenRequested += window.ToggleFullscreen;

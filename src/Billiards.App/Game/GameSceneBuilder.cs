@@ -16,6 +16,11 @@ namespace Billiards.App.Game;
 /// <param name="SystemKeys">Pause, step, help, debug, fullscreen and quit.</param>
 public sealed record GameWorld(SceneTree Tree, FixedStepLoop Loop, PhysicsNode Physics, InputModeNode InputModes, SystemKeysNode SystemKeys);
 
+/// <summary>A match to play: the game and the two players.</summary>
+/// <param name="Rules">The game.</param>
+/// <param name="Players">The two players.</param>
+public sealed record MatchSetup(Billiards.Core.Rules.GameRules Rules, IReadOnlyList<MatchPlayer> Players);
+
 /// <summary>
 /// Builds the node tree a scene asks for: a scene loads only what it declares. Always: table,
 /// physics, camera, control modes, system keys and HUD. Only with a cue ball: the cue (without it
@@ -24,7 +29,10 @@ public sealed record GameWorld(SceneTree Tree, FixedStepLoop Loop, PhysicsNode P
 public static class GameSceneBuilder
 {
     /// <summary>Builds the tree for a scene; <paramref name="createSimulation"/> makes its simulation.</summary>
-    public static GameWorld Build(Scene scene, Func<Scene, Simulation> createSimulation)
+    /// <param name="scene">The scene.</param>
+    /// <param name="createSimulation">Makes the scene's simulation.</param>
+    /// <param name="match">The match to play on the scene's rules, or null for none (practice).</param>
+    public static GameWorld Build(Scene scene, Func<Scene, Simulation> createSimulation, MatchSetup? match = null)
     {
         var root = new Node("Game");
         root.AddChild(new TableNode(scene));
@@ -40,6 +48,10 @@ public static class GameSceneBuilder
             root.AddChild(new RulesNode(rules));
         }
         var modes = root.AddChild(new InputModeNode());
+        if (match is not null && scene.Balls.Any(b => b.Id == BallId.Cue))
+        {
+            root.AddChild(new MatchNode(match.Rules, match.Players, scene.Game));
+        }
         // Added after the modes: input runs from the last child back, so these keys come first.
         var keys = root.AddChild(new SystemKeysNode(loop));
         root.AddChild(new HudNode());

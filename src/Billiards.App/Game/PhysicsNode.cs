@@ -6,6 +6,7 @@ using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
+using Billiards.Core.Setup;
 using Billiards.Core.Table;
 
 namespace Billiards.App.Game;
@@ -68,6 +69,52 @@ public sealed class PhysicsNode : Node
     /// <summary>True from a scratch until the cue ball is struck: it is in hand and may be placed anywhere on the bed.</summary>
     public bool BallInHand { get; private set; }
 
+    /// <summary>Where the cue ball in hand may go: the whole bed, or the kitchen after a scratch where the rules say so.</summary>
+    public PlacementRegion HandRegion { get; private set; } = PlacementRegion.Table;
+
+    /// <summary>In a match the cue ball moves by hand only when it is in hand (practice lets it move any time).</summary>
+    public bool HandOnly { get; set; }
+
+    /// <summary>
+    /// Gives the cue ball in hand in a region (a referee's ruling): a pocketed cue ball, or one
+    /// outside the region, comes back to the free spot nearest the head spot inside it.
+    /// </summary>
+    public void GiveBallInHand(PlacementRegion region)
+    {
+        if (IsRolling || CueIndex is not int cue)
+        {
+            return;
+        }
+        HandRegion = region;
+        BallInHand = true;
+        if (_simulation.Balls[cue].IsPocketed || !IsFreeSpot(CueBallPosition))
+        {
+            Place(ReturnSpot());
+        }
+    }
+
+    /// <summary>Ends ball in hand without a shot (the referee's ruling gives none).</summary>
+    public void EndBallInHand()
+    {
+        BallInHand = false;
+        HandRegion = PlacementRegion.Table;
+    }
+
+    /// <summary>
+    /// Changes the balls at rest through Core's API (spotting, reracking); refused while balls roll.
+    /// Interpolation starts from the changed table, so nothing slides.
+    /// </summary>
+    public void Rearrange(Action<Simulation> change)
+    {
+        ArgumentNullException.ThrowIfNull(change);
+        if (IsRolling)
+        {
+            throw new InvalidOperationException("cannot rearrange balls while they roll");
+        }
+        change(_simulation);
+        _simulation.Balls.CopyTo(_previous);
+    }
+
     /// <summary>Signal: the cue ball was pocketed and came back in hand at this position (m).</summary>
     public event Action<Vec3>? CueBallReturned;
 
@@ -82,7 +129,7 @@ public sealed class PhysicsNode : Node
     /// </summary>
     public bool TryPlaceCueBall(Vec3 position)
     {
-        if (IsRolling || CueIndex is not int cue || (!BallInHand && _simulation.Balls[cue].IsPocketed))
+        if (IsRolling || CueIndex is not int cue || (!BallInHand && (HandOnly || _simulation.Balls[cue].IsPocketed)))
         {
             return false;
         }
@@ -99,7 +146,7 @@ public sealed class PhysicsNode : Node
     }
 
     // Core's placement test: on the bed inside the cushions, over no pocket, clear of every other ball.
-    private bool IsFreeSpot(Vec3 position) => _simulation.PlacementProblem(BallId.Cue, position) is null;
+    private bool IsFreeSpot(Vec3 position) => _simulation.PlacementProblem(BallId.Cue, position, BallInHand ? HandRegion : PlacementRegion.Table) is null;
 
     /// <summary>
     /// Where a scratched cue ball comes back: the head spot (a quarter of the length from the head
@@ -138,7 +185,7 @@ public sealed class PhysicsNode : Node
         {
             throw new InvalidOperationException("there is no cue ball on the table");
         }
-        BallInHand = false;
+        EndBallInHand();
         _cueAtStrike = CueBallPosition;
         _simulation.Strike(shot);
         LastShot = shot;

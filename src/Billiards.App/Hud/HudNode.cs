@@ -19,6 +19,7 @@ public sealed class HudNode : Node
     private CueNode? _cue;
     private SystemKeysNode? _keys;
     private RulesNode? _rules;
+    private MatchNode? _match;
 
     /// <summary>The frame-rate meter, fed every frame.</summary>
     public FrameRateMeter FrameRate { get; } = new();
@@ -35,6 +36,7 @@ public sealed class HudNode : Node
         _cue = FindInTree<CueNode>();
         _rules = FindInTree<RulesNode>();
         _physics.Struck += _ => _sinceShot = 0;
+        _match = FindInTree<MatchNode>();
     }
 
     /// <summary>How long the meter keeps showing a shot's speed after the strike (s).</summary>
@@ -106,7 +108,11 @@ public sealed class HudNode : Node
                 ? string.Create(c, $"Elevation: {_cue.EffectiveElevationDegrees:0} deg (over the rail)")
                 : string.Create(c, $"Elevation: {_cue.ElevationDegrees:0} deg"));
         }
-        if (_rules is not null)
+        if (_match is not null && _physics is not null)
+        {
+            MatchLines.Add(_lines, _match, _physics);
+        }
+        else if (_rules is not null)
         {
             string potted = _rules.LastShotPotted.Count == 0 ? "none" : string.Join(", ", _rules.LastShotPotted);
             _lines.Add($"Rules: {_rules.Rules} (not judged yet); potted last shot: {potted}");

@@ -1,0 +1,430 @@
+using Billiards.App.Camera;
+using Billiards.App.Input;
+using Billiards.App.Nodes;
+using Billiards.App.Platform;
+using Billiards.Core.Balls;
+using Billiards.Core.Cue;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Physics;
+using Billiards.Core.Rules;
+using Billiards.Core.Setup;
+using Billiards.Core.Table;
+
+namespace Billiards.App.Game;
+
+/// <summary>A seat at the table: a person, or the computer at a level 1-5.</summary>
+/// <param name="Name">The name shown on the HUD.</param>
+/// <param name="ComputerLevel">The computer's level, or null for a person.</param>
+public sealed record MatchPlayer(string Name, int? ComputerLevel = null)
+{
+    /// <summary>True for a person.</summary>
+    public bool IsHuman => ComputerLevel is null;
+
+    /// <summary>Parses <c>human</c> or <c>computer:LEVEL</c> (level 1-5); null when it is neither.</summary>
+    public static MatchPlayer? Parse(string text, int seat)
+    {
+        string t = text.Trim().ToLowerInvariant();
+        if (t == "human")
+        {
+            return new MatchPlayer($"Player {seat + 1}");
+        }
+        if (t.StartsWith("computer:", StringComparison.Ordinal) && int.TryParse(t["computer:".Length..], out int level) && level is >= 1 and <= 5)
+        {
+            return new MatchPlayer($"Computer L{level}", level);
+        }
+        return null;
+    }
+}
+
+/// <summary>
+/// The turn flow of a match on Core's referee. It never decides a rule: at every strike it hands
+/// the referee the state with the shooter's call, when the balls rest it judges the shot record
+/// and carries out the ruling (turn, ball in hand in its region, spots, reracks, options, winner)
+/// through the physics node and Core's placement API.
+/// Keys: Left/Right aim (A/D fine), W/Q power, Space shoots, 1-5 choose an offered option,
+/// O declares a push-out, C cycles the called pocket, B cycles the called ball, Enter rematch.
+/// </summary>
+public sealed class MatchNode : Node
+{
+    /// <summary>How long a ruling's message stays on screen (s).</summary>
+    public const double MessageSeconds = 5;
+
+    /// <summary>Coarse and fine keyboard aim steps (degrees).</summary>
+    public const double AimStepDegrees = 1.0, FineAimStepDegrees = 0.1;
+
+    /// <summary>Keyboard power step and limits (m/s).</summary>
+    public const double PowerStep = 0.25, MinPower = 0.25, MaxPower = 8.0;
+
+    private readonly GameRules _rules;
+    private readonly GameState _opening;
+    private readonly List<Ruling> _rulings = [];
+    private PhysicsNode? _physics;
+    private CueNode? _cue;
+    private CameraNode? _camera;
+    private IReferee? _referee;
+    private TableGeometry? _geometry;
+    private GameState _atStrike;
+    private BallId? _calledBall;
+    private PocketId? _calledPocket;
+    private int _games;
+
+    /// <summary>Creates a match of <paramref name="rules"/> between two players from <paramref name="opening"/>.</summary>
+    public MatchNode(GameRules rules, IReadOnlyList<MatchPlayer> players, GameState? opening = null)
+    {
+        ArgumentNullException.ThrowIfNull(players);
+        _rules = rules;
+        Players = players;
+        // A scene's game block keeps its players' names; a fresh game names the seats.
+        _opening = opening is { } o && o.Rules == rules
+            ? o
+            : new GameState(rules) { Players = new PerPlayer<string>(players[0].Name, players[1].Name) };
+        State = _opening;
+        _atStrike = State;
+    }
+
+    /// <summary>The two players.</summary>
+    public IReadOnlyList<MatchPlayer> Players { get; }
+
+    /// <summary>The game being played.</summary>
+    public GameRules Rules => _rules;
+
+    /// <summary>The state of the game before the next shot.</summary>
+    public GameState State { get; private set; }
+
+    /// <summary>Every ruling of the match, in order.</summary>
+    public IReadOnlyList<Ruling> Rulings => _rulings;
+
+    /// <summary>The last ruling, or null before the first shot ends.</summary>
+    public Ruling? LastRuling => _rulings.Count > 0 ? _rulings[^1] : null;
+
+    /// <summary>The options the incoming player must choose from now (empty when none).</summary>
+    public IReadOnlyList<RefereeOption> PendingOptions { get; private set; } = [];
+
+    /// <summary>The message shown now, or null.</summary>
+    public string? Message { get; private set; }
+
+    /// <summary>Seconds the message stays on screen.</summary>
+    public double MessageTimeLeft { get; private set; }
+
+    /// <summary>True once the referee ended the game.</summary>
+    public bool IsOver { get; private set; }
+
+    /// <summary>The winner (0 or 1) of the game just ended, or null.</summary>
+    public int? Winner { get; private set; }
+
+    /// <summary>Games won by each player in this match.</summary>
+    public PerPlayer<int> GamesWon { get; private set; }
+
+    /// <summary>The keyboard power (m/s).</summary>
+    public double Power { get; private set; } = 3.0;
+
+    /// <summary>The aim preview (first ball, ghost ball, object direction, easiest pocket), or null without a cue ball.</summary>
+    public AimPreview? Aim { get; private set; }
+
+    /// <summary>The call the shooter makes now: the chosen ball and pocket, else the aimed ball's easiest pocket.</summary>
+    public Call? CurrentCall
+    {
+        get
+        {
+            var ball = _calledBall ?? Aim?.Ball;
+            var pocket = _calledPocket ?? (_calledBall is null ? Aim?.Pocket : null) ?? PocketId.None;
+            if (ball is not { } b || pocket == PocketId.None)
+            {
+                return null;
+            }
+            return new Call(b, pocket);
+        }
+    }
+
+    /// <summary>True when the shooter may strike now: balls at rest, no option pending, the game on.</summary>
+    public bool CanShoot => _physics is { IsRolling: false, HasCueBall: true } && PendingOptions.Count == 0 && !IsOver;
+
+    /// <summary>The shooter's player.</summary>
+    public MatchPlayer Shooter => Players[State.Shooter];
+
+    /// <summary>Signal: the referee ruled on a shot.</summary>
+    public event Action<Ruling>? Ruled;
+
+    /// <inheritdoc />
+    protected override void Ready()
+    {
+        _physics = GetInTree<PhysicsNode>();
+        _cue = FindInTree<CueNode>();
+        _camera = FindInTree<CameraNode>();
+        _referee = Referee.For(_rules, _physics.Table, _physics.BallRadius);
+        _geometry = TableGeometry.Build(_physics.Table, _physics.BallRadius);
+        _physics.HandOnly = true;
+        _physics.Struck += OnStruck;
+        _physics.CameToRest += _ => OnRest();
+        if (State.Shot == 0 || State.BallInHand != BallInHand.None)
+        {
+            _physics.GiveBallInHand(State.Shot == 0 && State.BallInHand == BallInHand.None ? PlacementRegion.Kitchen : Region(State.BallInHand));
+        }
+        Say($"{State.ShooterName} to break.");
+    }
+
+    /// <inheritdoc />
+    protected override void Process(double dt)
+    {
+        if (MessageTimeLeft > 0)
+        {
+            MessageTimeLeft -= dt;
+            if (MessageTimeLeft <= 0)
+            {
+                Message = null;
+            }
+        }
+        Aim = _physics is { IsRolling: false, HasCueBall: true } physics && _cue is not null && _geometry is not null
+            ? AimPreview.Compute(physics.Simulation.Balls, physics.Simulation.Ids, physics.Simulation.IndexOf(BallId.Cue), _cue.AimDirection, physics.BallRadius, _geometry.Pockets)
+            : null;
+    }
+
+    /// <inheritdoc />
+    protected override bool Input(InputEvent e)
+    {
+        if (e is not KeyInput { Pressed: true } key)
+        {
+            return false;
+        }
+        switch (key.Key)
+        {
+            case >= Key.D1 and <= Key.D5 when (int)(key.Key - Key.D1) < PendingOptions.Count:
+                Choose(PendingOptions[key.Key - Key.D1]);
+                return true;
+            case Key.Enter when IsOver:
+                Rematch();
+                return true;
+            case Key.Space when CanShoot && _cue is not null:
+                _physics!.Strike(_cue.MakeShot(Power));
+                return true;
+            case Key.Left or Key.Right or Key.A or Key.D:
+                Turn(key.Key switch
+                {
+                    Key.Left => AimStepDegrees,
+                    Key.Right => -AimStepDegrees,
+                    Key.A => FineAimStepDegrees,
+                    _ => -FineAimStepDegrees,
+                });
+                return true;
+            case Key.W:
+                Power = Math.Min(MaxPower, Power + PowerStep);
+                return true;
+            case Key.Q:
+                Power = Math.Max(MinPower, Power - PowerStep);
+                return true;
+            case Key.O when CanShoot && _rules is GameRules.NineBall or GameRules.TenBall && State.Shot == 1:
+                State = State with { PushOut = !State.PushOut };
+                Say(State.PushOut ? $"{State.ShooterName} declares a push-out." : "Push-out withdrawn.");
+                return true;
+            case Key.C when CanShoot:
+                CyclePocket();
+                return true;
+            case Key.B when CanShoot:
+                CycleBall();
+                return true;
+            default:
+                return false;
+        }
+    }
+
+    /// <summary>Carries out the incoming player's choice among the ruling's options.</summary>
+    /// <exception cref="ArgumentException">When the option is not offered now.</exception>
+    public void Choose(RefereeOption option)
+    {
+        if (LastRuling is not { } ruling || !PendingOptions.Contains(option))
+        {
+            throw new ArgumentException($"\"{option.ToName()}\" is not offered now", nameof(option));
+        }
+        var outcome = ruling.Choose(option);
+        PendingOptions = [];
+        State = outcome.Next;
+        if (outcome.Rerack)
+        {
+            RerackAll();
+            _physics!.GiveBallInHand(PlacementRegion.Kitchen);
+            Say($"Rerack: {State.ShooterName} breaks.");
+            return;
+        }
+        Spot(outcome.Spot);
+        GiveHand(State.BallInHand);
+        Say($"{option.ToName()}: {State.ShooterName} to shoot.");
+    }
+
+    /// <summary>A new game after the last one ended: the balls reracked, the other player breaks.</summary>
+    public void Rematch()
+    {
+        if (!IsOver)
+        {
+            return;
+        }
+        _games++;
+        int breaker = (_opening.Shooter + _games) % 2;
+        IsOver = false;
+        Winner = null;
+        PendingOptions = [];
+        State = new GameState(_rules) { Players = _opening.Players, Shooter = breaker, Target = _opening.Target };
+        RerackAll();
+        _physics!.GiveBallInHand(PlacementRegion.Kitchen);
+        Say($"New game: {State.ShooterName} breaks.");
+    }
+
+    private void OnStruck(ShotSpec shot)
+    {
+        bool inHand = State.BallInHand != BallInHand.None;
+        _atStrike = State with { Call = CurrentCall, Placement = inHand ? _physics!.CueBallPosition : null };
+        _calledBall = null;
+        _calledPocket = null;
+    }
+
+    private void OnRest()
+    {
+        if (_referee is null || _physics is null || IsOver)
+        {
+            return;
+        }
+        var record = ShotRecord.LastShot(_physics.Simulation, _physics.LastShot);
+        var ruling = _referee.Judge(_atStrike, record);
+        _rulings.Add(ruling);
+        State = ruling.Next;
+        Say(ruling.Message);
+        if (ruling.GameOver)
+        {
+            IsOver = true;
+            Winner = ruling.Winner;
+            if (ruling.Winner is int w)
+            {
+                GamesWon = GamesWon.With(w, GamesWon[w] + 1);
+            }
+            _physics.EndBallInHand();
+        }
+        else if (ruling.Options.Count > 0)
+        {
+            // The spots wait for the choice: a rerack makes them moot.
+            PendingOptions = ruling.Options;
+            GiveHand(ruling.BallInHand);
+        }
+        else
+        {
+            Spot(ruling.Spot);
+            Rerack(ruling.Rerack);
+            GiveHand(ruling.BallInHand);
+        }
+        Ruled?.Invoke(ruling);
+    }
+
+    private void GiveHand(BallInHand hand)
+    {
+        if (hand == BallInHand.None)
+        {
+            _physics!.EndBallInHand();
+            if (!_physics.HasCueBall)
+            {
+                // A cue ball off the table always comes back; the ruling then says where it may go.
+                _physics.GiveBallInHand(PlacementRegion.Kitchen);
+            }
+        }
+        else
+        {
+            _physics!.GiveBallInHand(Region(hand));
+        }
+    }
+
+    private static PlacementRegion Region(BallInHand hand) => hand == BallInHand.Kitchen ? PlacementRegion.Kitchen : PlacementRegion.Table;
+
+    private void Spot(IReadOnlyList<BallId> balls)
+    {
+        if (balls.Count == 0)
+        {
+            return;
+        }
+        _physics!.Rearrange(sim =>
+        {
+            foreach (var ball in balls)
+            {
+                sim.SpotBall(ball);
+            }
+        });
+    }
+
+    private void Rerack(IReadOnlyList<BallId> balls)
+    {
+        if (balls.Count == 0)
+        {
+            return;
+        }
+        // 14.1: fourteen balls leave the apex empty (the fifteenth stays where it lies).
+        _physics!.Rearrange(sim => sim.Rerack(balls, RackGame.StraightPool, apexEmpty: balls.Count == 14));
+    }
+
+    private void RerackAll()
+    {
+        var shape = _rules switch
+        {
+            GameRules.NineBall => RackGame.NineBall,
+            GameRules.TenBall => RackGame.TenBall,
+            GameRules.StraightPool => RackGame.StraightPool,
+            _ => RackGame.EightBall,
+        };
+        _physics!.Rearrange(sim =>
+        {
+            int cue = sim.IndexOf(BallId.Cue);
+            if (cue >= 0)
+            {
+                // Out of the rack's way first; the player then places it in the kitchen.
+                sim.RemoveBall(BallId.Cue);
+            }
+            sim.Rerack(new RackSpec(shape, 1 + _games));
+        });
+    }
+
+    private void Turn(double degrees)
+    {
+        if (_camera is null || _physics is null || _physics.IsRolling)
+        {
+            return;
+        }
+        // Aim turns about the cue ball (counter-clockwise for positive degrees seen from above), so
+        // the camera is centred on it first; the cue aims from the eye through the ball.
+        _camera.Camera.Translate(_physics.CueBallPosition - _camera.Camera.Centre);
+        _camera.Camera.Orbit(degrees * Math.PI / 180 / OrbitCamera.OrbitRadiansPerPixel / _camera.Camera.Sensitivity, 0);
+    }
+
+    private void CyclePocket()
+    {
+        var current = _calledPocket ?? CurrentCall?.Pocket ?? PocketId.None;
+        int next = ((int)current + 1) % PocketIds.All.Count;
+        _calledPocket = PocketIds.FromIndex(next);
+        _calledBall ??= Aim?.Ball;
+    }
+
+    private void CycleBall()
+    {
+        if (_physics is null)
+        {
+            return;
+        }
+        var sim = _physics.Simulation;
+        var onTable = new List<BallId>();
+        for (int i = 0; i < sim.Ids.Count; i++)
+        {
+            if (sim.Ids[i] != BallId.Cue && !sim.Balls[i].IsPocketed)
+            {
+                onTable.Add(sim.Ids[i]);
+            }
+        }
+        if (onTable.Count == 0)
+        {
+            return;
+        }
+        var current = _calledBall ?? Aim?.Ball;
+        int k = current is { } c ? onTable.IndexOf(c) : -1;
+        _calledBall = onTable[(k + 1) % onTable.Count];
+        _calledPocket ??= Aim?.Pocket is { } p && p != PocketId.None ? p : PocketId.FootLeft;
+    }
+
+    private void Say(string message)
+    {
+        Message = message;
+        MessageTimeLeft = MessageSeconds;
+    }
+}

@@ -1,0 +1,104 @@
+using System.Globalization;
+using System.Text;
+using Billiards.App.Game;
+using Billiards.Core.Balls;
+using Billiards.Core.Rules;
+using Billiards.Core.Table;
+
+namespace Billiards.App.Hud;
+
+/// <summary>
+/// The match's lines on the HUD: the players with the shooter marked, each one's group or target
+/// and the balls still needed, the 14.1 score, fouls in a row, the shot count, the call, the
+/// pending options with their keys, the ruling's message and the game's end.
+/// </summary>
+public static class MatchLines
+{
+    /// <summary>Appends the match's lines for <paramref name="match"/> with the table's balls.</summary>
+    public static void Add(List<string> lines, MatchNode match, PhysicsNode physics)
+    {
+        ArgumentNullException.ThrowIfNull(lines);
+        ArgumentNullException.ThrowIfNull(match);
+        ArgumentNullException.ThrowIfNull(physics);
+        var state = match.State;
+        var onTable = OnTable(physics);
+        lines.Add($"{state.Rules.ToName()}  shot {state.Shot}  games {match.GamesWon.First}-{match.GamesWon.Second}");
+        for (int p = 0; p < 2; p++)
+        {
+            string mark = p == state.Shooter && !match.IsOver ? "> " : "  ";
+            var sb = new StringBuilder();
+            sb.Append(CultureInfo.InvariantCulture, $"{mark}{state.Players[p]}: {Target(state, p, onTable)}");
+            if (state.Rules == GameRules.StraightPool)
+            {
+                sb.Append(CultureInfo.InvariantCulture, $"  score {state.Score[p]}/{state.Target}");
+            }
+            if (state.FoulsInRow[p] > 0)
+            {
+                sb.Append(CultureInfo.InvariantCulture, $"  fouls in a row {state.FoulsInRow[p]}");
+            }
+            lines.Add(sb.ToString());
+        }
+        if (match.IsOver)
+        {
+            lines.Add(match.Winner is int w ? $"GAME OVER: {state.Players[w]} wins. Enter: rematch" : "GAME OVER. Enter: rematch");
+        }
+        else if (match.PendingOptions.Count > 0)
+        {
+            var options = match.PendingOptions.Select((o, i) => $"[{i + 1}] {o.ToName()}");
+            lines.Add($"{state.ShooterName} chooses: {string.Join("  ", options)}");
+        }
+        else
+        {
+            if (physics.BallInHand)
+            {
+                lines.Add($"Ball in hand ({(physics.HandRegion == Core.Setup.PlacementRegion.Kitchen ? "kitchen" : "anywhere")}): M and drag to place");
+            }
+            string call = match.CurrentCall is { } c ? $"{c.Ball} in {c.Pocket.ToName()}" : "none";
+            string push = state.PushOut ? "  PUSH-OUT" : "";
+            string pushKey = state.Rules is GameRules.NineBall or GameRules.TenBall && state.Shot == 1 ? "  O: push-out" : "";
+            lines.Add(string.Create(CultureInfo.InvariantCulture, $"Call: {call} (B ball, C pocket)  power {match.Power:0.00} m/s (Q/W, Space shoots){push}{pushKey}"));
+        }
+        if (match.LastRuling is { } last)
+        {
+            lines.Add($"Last ruling: {last.Message}");
+        }
+        if (match.Message is { } message && match.MessageTimeLeft > 0 && message != match.LastRuling?.Message)
+        {
+            lines.Add(message);
+        }
+    }
+
+    private static HashSet<int> OnTable(PhysicsNode physics)
+    {
+        var set = new HashSet<int>();
+        var sim = physics.Simulation;
+        for (int i = 0; i < sim.Ids.Count; i++)
+        {
+            if (sim.Ids[i] != BallId.Cue && !sim.Balls[i].IsPocketed)
+            {
+                set.Add(sim.Ids[i].Value);
+            }
+        }
+        return set;
+    }
+
+    // What the player still needs, from the referee's state (groups) and the balls on the table.
+    private static string Target(GameState state, int player, HashSet<int> onTable)
+    {
+        switch (state.Rules)
+        {
+            case GameRules.EightBall:
+                if (state.Groups is not { } groups)
+                {
+                    return "open table";
+                }
+                var group = groups[player];
+                var need = onTable.Where(n => group == BallGroup.Solids ? n is >= 1 and <= 7 : n is >= 9 and <= 15).Order().ToList();
+                return need.Count == 0 ? $"{group.ToName()}, on the 8" : $"{group.ToName()}: {string.Join(" ", need)}";
+            case GameRules.NineBall or GameRules.TenBall:
+                return onTable.Count == 0 ? "-" : $"on the {onTable.Min()}";
+            default:
+                return $"{onTable.Count} balls on the table";
+        }
+    }
+}

@@ -1,0 +1,67 @@
+using Billiards.App.Game;
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Physics;
+using Billiards.Core.Table;
+
+namespace Billiards.App.Tests.Game;
+
+public class AimPreviewTests
+{
+    private const double R = 0.028575;
+
+    private static readonly PocketCircle[] Pockets =
+    [
+        new(new Vec3(1.27, 0.635, 0), 0.06, (int)PocketId.FootLeft),
+        new(new Vec3(1.27, -0.635, 0), 0.06, (int)PocketId.FootRight),
+        new(new Vec3(0, 0.66, 0), 0.06, (int)PocketId.SideLeft),
+    ];
+
+    private static BallState At(double x, double y) => new() { Position = new Vec3(x, y, R) };
+
+    [Fact]
+    public void The_ghost_ball_touches_the_first_ball_on_the_path_and_the_object_ball_leaves_along_the_line_of_centres()
+    {
+        // Cue at the origin aimed along +x; the 1 ball offset sideways by R (a half-ball hit), the 2 farther on.
+        BallState[] balls = [At(0, 0), At(0.5, R), At(0.9, 0)];
+        BallId[] ids = [BallId.Cue, new(1), new(2)];
+        var preview = AimPreview.Compute(balls, ids, 0, new Vec3(1, 0, 0), R, Pockets);
+        Assert.Equal(new BallId(1), preview.Ball);
+        // Contact when the centres are 2R apart: x = 0.5 - sqrt(4R^2 - R^2) = 0.5 - sqrt(3) R.
+        Assert.Equal(0.5 - Math.Sqrt(3) * R, preview.Ghost.X, 12);
+        Assert.Equal(0, preview.Ghost.Y, 12);
+        // Half-ball hit: the object ball leaves 30 degrees off the aim line.
+        Assert.Equal(30, Math.Atan2(preview.ObjectDirection.Y, preview.ObjectDirection.X) * 180 / Math.PI, 9);
+    }
+
+    [Fact]
+    public void The_easiest_pocket_is_the_one_the_object_ball_heads_for_and_a_clear_path_has_no_ball()
+    {
+        var heading = new Vec3(1, 1, 0).Normalized();
+        Assert.Equal(PocketId.FootLeft, AimPreview.EasiestPocket(new Vec3(1.0, 0.365, 0), heading, Pockets));
+        Assert.Equal(PocketId.FootRight, AimPreview.EasiestPocket(new Vec3(1.0, -0.365, 0), new Vec3(1, -1, 0).Normalized(), Pockets));
+
+        BallState[] balls = [At(0, 0), At(0.5, 0.2)];
+        var miss = AimPreview.Compute(balls, [BallId.Cue, new(1)], 0, new Vec3(1, 0, 0), R, Pockets);
+        Assert.Null(miss.Ball);
+        Assert.Equal(PocketId.None, miss.Pocket);
+    }
+
+    [Theory]
+    [InlineData("human", null)]
+    [InlineData("computer:1", 1)]
+    [InlineData("Computer:5", 5)]
+    public void Players_parse_as_the_contract_names_them(string text, int? level)
+    {
+        var player = MatchPlayer.Parse(text, 0);
+        Assert.NotNull(player);
+        Assert.Equal(level, player.ComputerLevel);
+    }
+
+    [Theory]
+    [InlineData("robot")]
+    [InlineData("computer:0")]
+    [InlineData("computer:6")]
+    [InlineData("computer:")]
+    public void Other_players_are_refused(string text) => Assert.Null(MatchPlayer.Parse(text, 1));
+}

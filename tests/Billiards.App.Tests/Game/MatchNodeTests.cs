@@ -1,0 +1,84 @@
+using Billiards.App.Game;
+using Billiards.App.Platform;
+using Billiards.Core.Balls;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+using Billiards.Core.Setup;
+
+namespace Billiards.App.Tests.Game;
+
+/// <summary>
+/// The match on the real physics and Core's referee, driven by keys through a fake window (no GL):
+/// the App carries out rulings and never decides a rule itself.
+/// </summary>
+public class MatchNodeTests
+{
+    private static readonly MatchPlayer[] TwoPeople = [new("Player 1"), new("Player 2")];
+
+    private sealed class RealGame : IDisposable
+    {
+        public RealGame(string scenePath, GameRules rules)
+        {
+            Scene = SceneLoader.Load(scenePath);
+            Host = new GameHost(Scene, SimulationFactory.Create, Window, Clock, new MatchSetup(rules, TwoPeople));
+            Match = Host.Tree.Root.GetInTree<MatchNode>();
+        }
+
+        public Scene Scene { get; }
+        public FakeWindow Window { get; } = new();
+        public ManualClock Clock { get; } = new();
+        public GameHost Host { get; }
+        public MatchNode Match { get; }
+
+        public void Press(Key key, int times = 1)
+        {
+            for (int i = 0; i < times; i++)
+            {
+                Window.Press(key);
+                Frame();
+            }
+        }
+
+        public void Frame()
+        {
+            Clock.Advance(1.0 / 60);
+            Host.RunFrame();
+        }
+
+        public void RunUntilRest()
+        {
+            Frame();
+            for (int i = 0; i < 60 * 60 && Host.World.Physics.IsRolling; i++)
+            {
+                Frame();
+            }
+            Assert.False(Host.World.Physics.IsRolling, "the balls never came to rest");
+        }
+
+        public void Dispose() => Host.Dispose();
+    }
+
+    [Fact]
+    public void A_soft_break_is_a_foul_whose_options_are_chosen_by_number_and_the_turn_passes()
+    {
+        using var game = new RealGame(AssetFolder.Scene("eight-ball.json"), GameRules.EightBall);
+        Assert.True(game.Host.World.Physics.BallInHand);
+        Assert.Equal(PlacementRegion.Kitchen, game.Host.World.Physics.HandRegion);
+        game.Press(Key.Q, 8); // 3.0 - 8 x 0.25 = 1 m/s: too soft to drive four balls to a cushion
+        game.Press(Key.Space);
+        game.RunUntilRest();
+        var ruling = Assert.Single(game.Match.Rulings);
+        Assert.Contains(Foul.BadBreak, ruling.Fouls);
+        Assert.Equal(ruling.Options, game.Match.PendingOptions);
+        Assert.Equal(1, game.Match.State.Shooter);
+        // Space does nothing while a choice is pending.
+        game.Press(Key.Space);
+        Assert.False(game.Host.World.Physics.IsRolling);
+        int rerack = ruling.Options.ToList().IndexOf(RefereeOption.Rerack);
+        Assert.True(rerack >= 0);
+        game.Press(Key.D1 + rerack);
+        Assert.Empty(game.Match.PendingOptions);
+        Assert.Equal(0, game.Match.State.Shot);
+        Assert.Equal(PlacementRegion.Kitchen, game.Host.World.Physics.HandRegion);
+    }
+}
