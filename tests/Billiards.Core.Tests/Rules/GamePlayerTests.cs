@@ -151,7 +151,7 @@ public class GamePlayerTests
         game.Play(Aimer.Break(game, null));
         if (game.State.BallInHand == BallInHand.None)
         {
-            var shot = Aimer.Roll(game) with { Place = new Mathematics.Vec3(-1, 0, 0) };
+            var shot = Aimer.Roll(game) with { Place = new Billiards.Core.Mathematics.Vec3(-1, 0, 0) };
             Assert.Throws<InvalidOperationException>(() => game.Play(shot));
         }
         else
