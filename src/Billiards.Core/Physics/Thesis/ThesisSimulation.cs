@@ -31,7 +31,7 @@ public sealed class ThesisSimulation : Simulation
 
     /// <summary>The scene's balls on its table, at rest unless the scene gives them velocities.</summary>
     public ThesisSimulation(Scene scene)
-        : base(Models.Thesis, Integrators.Fixed, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
+        : base(ThesisModel.ModelName, Integrators.Fixed, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
     {
         var balls = new Ball[scene.Balls.Count];
         // Orientations are drawing state only; seed them from the rack so that runs repeat.
