@@ -300,9 +300,9 @@ public static class SceneLoader
                 throw Error(path, "missing \"id\"");
             }
             string idText = String(idElement, path + ".id");
-            if (!BallId.TryParse(idText, out var id))
+            if (!BallSet.Pool.TryParse(idText, out var id))
             {
-                throw Error(path + ".id", $"unknown ball id \"{idText}\" (expected \"cue\" or \"1\" .. \"15\")");
+                throw Error(path + ".id", $"unknown ball id \"{idText}\" (expected {BallSet.Pool.Describe()})");
             }
             if (!f.TryGetValue("position", out var pos))
             {
