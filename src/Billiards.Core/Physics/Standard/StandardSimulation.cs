@@ -202,6 +202,9 @@ public sealed class StandardSimulation : Simulation
     }
 
     /// <inheritdoc />
+    public override CushionId CushionOf(int feature) => Geometry.CushionOf(feature);
+
+    /// <inheritdoc />
     public override string FeatureName(EventKind kind, int feature) =>
         kind == EventKind.BallPocket ? TableGeometry.PocketName(feature) : Geometry.CushionName(feature);
 }
