@@ -13,7 +13,7 @@ namespace Billiards.App.Audio;
 public sealed class AudioMixer
 {
     /// <summary>Rolling noise level at 1 m/s, full scale at 1 m (quiet under the clicks).</summary>
-    public const double RollingLevel = 0.018;
+    public const double RollingLevel = 0.010;
 
     private readonly List<Voice> _voices = [];
     private readonly Rolling[] _rolling;
