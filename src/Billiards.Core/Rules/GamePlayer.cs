@@ -19,7 +19,7 @@ public sealed record GameSetup(TableSpec Table, PhysicsConfig Physics, int Seed,
     public GameRules Rules => Start.Rules;
 
     /// <summary>The ball radius of the physics (m).</summary>
-    public double BallRadius => Physics.Model == Models.Thesis ? ThesisConstants.RadiusMetres : Physics.Params.R;
+    public double BallRadius => Physics.Model.BallRadius(Physics.Params);
 
     /// <summary>A game of <paramref name="rules"/> on a 9 ft table with the default physics.</summary>
     public static GameSetup Of(GameRules rules, int seed, PerPlayer<string>? players = null, int target = GameState.DefaultTarget) =>

@@ -108,34 +108,32 @@ public static class GameRecordFile
     private static void WritePhysics(Utf8JsonWriter w, PhysicsConfig physics)
     {
         w.WriteStartObject("physics");
-        w.WriteString("model", physics.Model);
+        w.WriteString("model", physics.Model.Name);
         w.WriteString("integrator", physics.Integrator);
         w.WriteNumber("dt", physics.Dt);
-        if (physics.Model == Models.Standard)
+        // Every model's record carries the parameters: a model that keeps its own constants ignores them.
+        var p = physics.Params;
+        w.WriteStartObject("params");
+        w.WriteNumber("m", p.M);
+        w.WriteNumber("R", p.R);
+        w.WriteNumber("mu_s", p.MuS);
+        w.WriteNumber("mu_r", p.MuR);
+        w.WriteNumber("mu_sp", p.MuSp);
+        if (p.MuBModel == BallBallFriction.Alciatore)
         {
-            var p = physics.Params;
-            w.WriteStartObject("params");
-            w.WriteNumber("m", p.M);
-            w.WriteNumber("R", p.R);
-            w.WriteNumber("mu_s", p.MuS);
-            w.WriteNumber("mu_r", p.MuR);
-            w.WriteNumber("mu_sp", p.MuSp);
-            if (p.MuBModel == BallBallFriction.Alciatore)
-            {
-                w.WriteString("mu_b", "alciatore");
-            }
-            else
-            {
-                w.WriteNumber("mu_b", p.MuB);
-            }
-            w.WriteNumber("e_b", p.EB);
-            w.WriteNumber("e_c", p.EC);
-            w.WriteNumber("f_c", p.FC);
-            w.WriteNumber("g", p.G);
-            w.WriteNumber("M", p.CueMass);
-            w.WriteNumber("m_e", p.CueEndMass);
-            w.WriteEndObject();
+            w.WriteString("mu_b", "alciatore");
         }
+        else
+        {
+            w.WriteNumber("mu_b", p.MuB);
+        }
+        w.WriteNumber("e_b", p.EB);
+        w.WriteNumber("e_c", p.EC);
+        w.WriteNumber("f_c", p.FC);
+        w.WriteNumber("g", p.G);
+        w.WriteNumber("M", p.CueMass);
+        w.WriteNumber("m_e", p.CueEndMass);
+        w.WriteEndObject();
         w.WriteEndObject();
     }
 
