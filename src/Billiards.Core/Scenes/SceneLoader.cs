@@ -129,7 +129,7 @@ public static class SceneLoader
             {
                 throw Error("$.shot", "a shot needs a cue ball, and the scene has none");
             }
-            string? rules = fields.TryGetValue("rules", out var ru) ? OneOf(ru, "$.rules", "eight-ball", "nine-ball") : null;
+            string? rules = fields.TryGetValue("rules", out var ru) ? OneOf(ru, "$.rules", "eight-ball", "nine-ball", "ten-ball", "straight-pool") : null;
 
             var game = fields.TryGetValue("game", out var gm) ? GameBlockReader.Read(gm, file) : null;
             if (game is not null && shot is null)
