@@ -42,7 +42,7 @@ public sealed record MatchPlayer(string Name, int? ComputerLevel = null)
 /// and carries out the ruling (turn, ball in hand in its region, spots, reracks, options, winner)
 /// through the physics node and Core's placement API.
 /// Keys: Left/Right aim (A/D fine), W/Q power, Space shoots, 1-5 choose an offered option,
-/// O declares a push-out, C cycles the called pocket, B cycles the called ball, Enter rematch.
+/// O declares a push-out, C cycles the called pocket, B cycles the called ball, X aims at the call, Enter rematch.
 /// </summary>
 public sealed class MatchNode : Node
 {
@@ -156,11 +156,16 @@ public sealed class MatchNode : Node
         _physics.HandOnly = true;
         _physics.Struck += OnStruck;
         _physics.CameToRest += _ => OnRest();
-        if (State.Shot == 0 || State.BallInHand != BallInHand.None)
+        if (_physics.IsRolling)
+        {
+            // The scene's own shot is already on its way: its game block (with its call) is what the referee judges.
+            _atStrike = State;
+        }
+        else if (State.Shot == 0 || State.BallInHand != BallInHand.None)
         {
             _physics.GiveBallInHand(State.Shot == 0 && State.BallInHand == BallInHand.None ? PlacementRegion.Kitchen : Region(State.BallInHand));
         }
-        Say($"{State.ShooterName} to break.");
+        Say(State.Shot == 0 ? $"{State.ShooterName} to break." : $"{State.ShooterName} to shoot.");
     }
 
     /// <inheritdoc />
@@ -221,6 +226,9 @@ public sealed class MatchNode : Node
                 return true;
             case Key.B when CanShoot:
                 CycleBall();
+                return true;
+            case Key.X when CanShoot:
+                AimAtCall();
                 return true;
             default:
                 return false;
@@ -387,6 +395,67 @@ public sealed class MatchNode : Node
         // the camera is centred on it first; the cue aims from the eye through the ball.
         _camera.Camera.Translate(_physics.CueBallPosition - _camera.Camera.Centre);
         _camera.Camera.Orbit(degrees * Math.PI / 180 / OrbitCamera.OrbitRadiansPerPixel / _camera.Camera.Sensitivity, 0);
+    }
+
+    // X: the cue aims at the ghost ball that sends the called ball (or, with no call, the nearest
+    // ball) straight at its pocket's centre; geometry only, so cut shots still need the player's eye.
+    private void AimAtCall()
+    {
+        if (_physics is null || _cue is null || _geometry is null)
+        {
+            return;
+        }
+        var sim = _physics.Simulation;
+        var cue = _physics.CueBallPosition with { Z = 0 };
+        var ball = _calledBall ?? Aim?.Ball ?? Nearest(cue);
+        if (ball is not { } b)
+        {
+            return;
+        }
+        var target = sim.Balls[sim.IndexOf(b)].Position with { Z = 0 };
+        var pocket = _calledPocket ?? (_calledBall is null && Aim?.Ball == b ? Aim.Pocket : AimPreview.EasiestPocket(target, (target - cue).Normalized(), _geometry.Pockets));
+        Vec3? centre = null;
+        foreach (var circle in _geometry.Pockets)
+        {
+            if (circle.Pocket == (int)pocket)
+            {
+                centre = circle.Centre with { Z = 0 };
+            }
+        }
+        if (centre is not { } c)
+        {
+            return;
+        }
+        _calledBall = b;
+        _calledPocket = pocket;
+        var ghost = target - 2 * _physics.BallRadius * (c - target).Normalized();
+        double want = ViewMath.AimDegrees(ghost - cue);
+        double now = ViewMath.AimDegrees(_cue.AimDirection);
+        double turn = Math.IEEERemainder(want - now, 360);
+        Turn(turn);
+        // The camera's eye is not exactly behind the ball after recentring: one more pass corrects the rest.
+        Turn(Math.IEEERemainder(want - ViewMath.AimDegrees(_cue.AimDirection), 360));
+    }
+
+    private BallId? Nearest(Vec3 from)
+    {
+        var sim = _physics!.Simulation;
+        BallId? best = null;
+        double bestDistance = double.PositiveInfinity;
+        for (int i = 0; i < sim.Ids.Count; i++)
+        {
+            if (sim.Ids[i] == BallId.Cue || sim.Balls[i].IsPocketed)
+            {
+                continue;
+            }
+            double d = ((sim.Balls[i].Position with { Z = 0 }) - from).Length;
+            if (d < bestDistance)
+            {
+                bestDistance = d;
+                best = sim.Ids[i];
+            }
+        }
+        return best;
     }
 
     private void CyclePocket()
