@@ -40,6 +40,8 @@ public static class CommandLine
                 RenderCommand.Create(stdout),
                 RenderAudioCommand.Create(),
                 ReportCommand.Create(stdout, stderr),
+                SuggestCommand.Create(stdout),
+                SelfplayCommand.Create(stdout, stderr),
             };
             PlayCommand.AddTo(root);
             var parse = root.Parse(args);
@@ -88,7 +90,8 @@ public static class CommandLine
     // System.CommandLine names CLR types in its messages ("System.Nullable`1[System.Double]").
     private static string Plain(string message) =>
         message.Replace("'System.Nullable`1[System.Double]'", "number").Replace("'System.Double'", "number")
-               .Replace("'System.Nullable`1[System.Int32]'", "whole number").Replace("'System.Int32'", "whole number");
+               .Replace("'System.Nullable`1[System.Int32]'", "whole number").Replace("'System.Int32'", "whole number")
+               .Replace("'System.Int64'", "whole number");
 }
 
 /// <summary>A bad command-line argument, reported as one line with exit code 2.</summary>

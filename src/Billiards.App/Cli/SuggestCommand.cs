@@ -1,0 +1,117 @@
+using System.CommandLine;
+using System.Text;
+using System.Text.Json;
+using Billiards.Core.Ai;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Cli;
+
+/// <summary>
+/// <c>suggest SCENE [--level 1..5] [--budget-ms MS]</c>: the computer player's choice for the
+/// scene's position and game, printed as
+/// <c>{"shot": {...}, "place": [x, y] or null, "call": {...}, "expected": {"pot": p, "ruling": ...}, "simulations": n, "ms": t}</c>.
+/// </summary>
+/// <remarks>
+/// The game state is the scene's "game" block. Without one it comes from the scene's "rules"
+/// (8-ball when it has none): a scene with a rack is a break, one without is a position after the
+/// break with an open table. The decision is seeded, so the same scene gives the same suggestion.
+/// </remarks>
+public static class SuggestCommand
+{
+    /// <summary>The level when none is given.</summary>
+    public const int DefaultLevel = 3;
+
+    /// <summary>The largest time cap accepted (ms).</summary>
+    public const int MaxBudgetMs = 600_000;
+
+    /// <summary>Builds the verb.</summary>
+    public static Command Create(TextWriter stdout)
+    {
+        var scene = new Argument<string>("scene") { Description = "The scene file (billiards-scene/1 JSON)." };
+        var level = new Option<int?>("--level") { Description = "The player's level, 1 (beginner) to 5 (strong professional); default 3." };
+        var budget = new Option<int?>("--budget-ms") { Description = "Cap on the decision's wall-clock time (ms); default 3000." };
+        var command = new Command("suggest", "Print the computer player's shot for a scene.") { scene, level, budget };
+        command.SetAction(parse =>
+        {
+            int levelValue = parse.GetValue(level) ?? DefaultLevel;
+            if (levelValue < SkillLevel.Min || levelValue > SkillLevel.Max)
+            {
+                throw new CliException($"--level {levelValue}: expected {SkillLevel.Min} to {SkillLevel.Max}");
+            }
+            int budgetValue = parse.GetValue(budget) ?? PlannerBudget.DefaultMilliseconds;
+            if (budgetValue < 1 || budgetValue > MaxBudgetMs)
+            {
+                throw new CliException($"--budget-ms {budgetValue}: expected 1 to {MaxBudgetMs}");
+            }
+            var loaded = SceneLoader.Load(parse.GetValue(scene)!);
+            var state = StateOf(loaded);
+            var position = new TablePosition(loaded.Balls.Select(b => (b.Id, b.Position with { Z = loaded.BallRadius })));
+            if (position.Count < 2 || position.Ids.All(b => b.IsCue))
+            {
+                throw new SceneException(loaded.Path, "$.balls", "no object ball to play");
+            }
+            var planner = new ShotPlanner(loaded.Table, loaded.Physics.Params);
+            var decision = planner.Decide(state, position, SkillLevel.Of(levelValue), new PlannerBudget(budgetValue), 1);
+            stdout.WriteLine(Encoding.UTF8.GetString(ToUtf8(decision)));
+            return 0;
+        });
+        return command;
+    }
+
+    /// <summary>The game state of a scene (see the class remarks).</summary>
+    public static GameState StateOf(Scene scene)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        if (scene.Game is { } game)
+        {
+            return game;
+        }
+        var rules = GameRules.EightBall;
+        if (scene.Rules is { } name && !RuleNames.TryParseGame(name, out rules))
+        {
+            throw new SceneException(scene.Path, "$.rules", $"unknown rules \"{name}\"");
+        }
+        return new GameState(rules) { Shot = scene.Rack is null ? 1 : 0 };
+    }
+
+    /// <summary>The suggestion's JSON.</summary>
+    public static byte[] ToUtf8(Decision decision)
+    {
+        ArgumentNullException.ThrowIfNull(decision);
+        using var stream = new MemoryStream();
+        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
+        {
+            w.WriteStartObject();
+            GameRecordWriter.WriteShot(w, "shot", decision.Shot);
+            if (decision.Place is { } p)
+            {
+                w.WriteStartArray("place");
+                w.WriteNumberValue(p.X);
+                w.WriteNumberValue(p.Y);
+                w.WriteEndArray();
+            }
+            else
+            {
+                w.WriteNull("place");
+            }
+            GameRecordWriter.WriteCall(w, decision.Call);
+            w.WriteStartObject("expected");
+            w.WriteNumber("pot", Math.Round(decision.ExpectedPot, 4));
+            if (decision.ExpectedRuling is { } ruling)
+            {
+                w.WritePropertyName("ruling");
+                GameBlockWriter.WriteRuling(w, ruling);
+            }
+            else
+            {
+                w.WriteNull("ruling");
+            }
+            w.WriteEndObject();
+            w.WriteNumber("simulations", decision.Simulations);
+            w.WriteNumber("ms", Math.Round(decision.Milliseconds, 1));
+            w.WriteEndObject();
+        }
+        return stream.ToArray();
+    }
+}

@@ -1,0 +1,238 @@
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Physics;
+using Billiards.Core.Rules;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Ai;
+
+/// <summary>
+/// What the planner knows of a table without simulating: the pockets' aim points, the rails, and
+/// a geometric estimate of how makeable a shot is. Immutable; shared by every search thread.
+/// </summary>
+/// <remarks>
+/// The estimate (<see cref="Ease"/>) is ghost-ball geometry: the object ball must leave within
+/// the pocket's window (half its mouth, less a little of the ball, narrowed by the angle of
+/// approach), and a cue aim error turns into an object-ball error multiplied by
+/// d1 / (2R cos(cut)). The probability that a Gaussian aim error of <see cref="ReferenceAimStdDeg"/>
+/// stays inside that tolerance ranks shots and positions; the simulations decide.
+/// </remarks>
+public sealed class PlannerTable
+{
+    /// <summary>The aim error (deg) of the player that positions are judged for.</summary>
+    public const double ReferenceAimStdDeg = 0.5;
+
+    /// <summary>The largest cut angle the planner tries (deg).</summary>
+    public const double MaxCutDeg = 80;
+
+    private readonly Vec3[] _aim = new Vec3[6];
+    private readonly Vec3[] _axis = new Vec3[6];
+    private readonly double[] _mouth = new double[6];
+
+    /// <summary>The planner's view of <paramref name="table"/> for balls with <paramref name="physics"/>.</summary>
+    public PlannerTable(TableSpec table, PhysicsParams physics)
+    {
+        ArgumentNullException.ThrowIfNull(table);
+        ArgumentNullException.ThrowIfNull(physics);
+        Table = table;
+        Physics = physics;
+        R = physics.R;
+        var geometry = TableGeometry.Build(table, R);
+        foreach (var circle in geometry.Pockets)
+        {
+            int k = circle.Pocket;
+            _aim[k] = circle.Centre with { Z = R };
+            var p = circle.Centre;
+            bool side = k is (int)PocketId.SideLeft or (int)PocketId.SideRight;
+            _axis[k] = side ? new Vec3(0, -Math.Sign(p.Y), 0) : new Vec3(-Math.Sign(p.X), -Math.Sign(p.Y), 0).Normalized();
+            _mouth[k] = side ? table.SidePocketMouth : table.CornerPocketMouth;
+        }
+        Pockets = table.HasPockets ? PocketIds.All : [];
+    }
+
+    /// <summary>The table.</summary>
+    public TableSpec Table { get; }
+
+    /// <summary>The model parameters the planner simulates with.</summary>
+    public PhysicsParams Physics { get; }
+
+    /// <summary>Ball radius (m).</summary>
+    public double R { get; }
+
+    /// <summary>The table's pockets (none on a pocketless table).</summary>
+    public IReadOnlyList<PocketId> Pockets { get; }
+
+    /// <summary>Where an object ball is sent to fall into <paramref name="pocket"/> (m, z = R).</summary>
+    public Vec3 AimPoint(PocketId pocket) => _aim[(int)pocket];
+
+    /// <summary>
+    /// Half the window (m) an object ball's centre must pass through to drop, arriving along
+    /// <paramref name="direction"/> (unit); 0 when the pocket cannot be reached from there.
+    /// </summary>
+    public double Window(PocketId pocket, Vec3 direction)
+    {
+        int k = (int)pocket;
+        double cos = -Vec3.Dot(direction, _axis[k]);
+        if (cos < 0.3)
+        {
+            return 0;
+        }
+        return Math.Max(0, _mouth[k] * cos / 2 - 0.6 * R);
+    }
+
+    /// <summary>
+    /// The ghost ball: where the cue ball's centre must be at contact to send an object ball at
+    /// <paramref name="objectBall"/> towards <paramref name="target"/>.
+    /// </summary>
+    public Vec3 Ghost(Vec3 objectBall, Vec3 target) => objectBall - (target - objectBall).XY.Normalized() * (2 * R);
+
+    /// <summary>
+    /// The chance (0-1) that a player with the reference aim error makes the shot of the ball at
+    /// <paramref name="objectBall"/> to <paramref name="target"/> with the cue ball at
+    /// <paramref name="cue"/>, given the window <paramref name="window"/> (m) at the target;
+    /// 0 if the cut is too thin or a ball of <paramref name="position"/> blocks either path.
+    /// </summary>
+    public double Ease(Vec3 cue, Vec3 objectBall, Vec3 target, double window, TablePosition position, BallId objectId, double aimStdDeg = ReferenceAimStdDeg)
+    {
+        ArgumentNullException.ThrowIfNull(position);
+        var toTarget = (target - objectBall).XY;
+        double d2 = toTarget.Length;
+        if (d2 < 1e-9 || window <= 0)
+        {
+            return 0;
+        }
+        var u = toTarget / d2;
+        var ghost = objectBall - u * (2 * R);
+        var path = (ghost - cue).XY;
+        double d1 = path.Length;
+        if (d1 < 1e-9)
+        {
+            return 0;
+        }
+        double cos = Vec3.Dot(path / d1, u);
+        if (cos < Math.Cos(MaxCutDeg * Math.PI / 180))
+        {
+            return 0;
+        }
+        if (Blocked(position, cue, ghost, objectId) || Blocked(position, objectBall, target, objectId))
+        {
+            return 0;
+        }
+        double objectTolerance = Math.Atan(window / d2);
+        double cueTolerance = objectTolerance * 2 * R * cos / Math.Max(d1, 2 * R);
+        double sigma = aimStdDeg * Math.PI / 180;
+        return Erf(cueTolerance / (sigma * Math.Sqrt(2)));
+    }
+
+    /// <summary>The ease of a direct shot of <paramref name="objectId"/> into <paramref name="pocket"/>.</summary>
+    public double DirectEase(TablePosition position, Vec3 cue, BallId objectId, PocketId pocket, double aimStdDeg = ReferenceAimStdDeg)
+    {
+        ArgumentNullException.ThrowIfNull(position);
+        var o = position.Positions[position.IndexOf(objectId)];
+        var target = AimPoint(pocket);
+        var dir = (target - o).XY.Normalized();
+        return Ease(cue, o, target, Window(pocket, dir), position, objectId, aimStdDeg);
+    }
+
+    /// <summary>
+    /// The best direct shot the player at the table has in <paramref name="state"/>: the largest
+    /// <see cref="DirectEase"/> over legal targets and pockets, 0 without a cue ball. This is the
+    /// one-shot look-ahead of the search.
+    /// </summary>
+    public double BestEase(TablePosition position, GameState state)
+    {
+        ArgumentNullException.ThrowIfNull(position);
+        ArgumentNullException.ThrowIfNull(state);
+        if (position.Cue is not { } cue)
+        {
+            return 0;
+        }
+        double best = 0;
+        foreach (var target in LegalTargets(state, position))
+        {
+            foreach (var pocket in Pockets)
+            {
+                best = Math.Max(best, DirectEase(position, cue, target, pocket));
+            }
+        }
+        return best;
+    }
+
+    /// <summary>
+    /// The balls the shooter of <paramref name="state"/> may hit first (rules.md): 8-ball's group, or
+    /// any but the 8 on an open table, or the 8 once the group is cleared; the lowest ball in 9-ball
+    /// and 10-ball; any ball in 14.1.
+    /// </summary>
+    public static IReadOnlyList<BallId> LegalTargets(GameState state, TablePosition position)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        ArgumentNullException.ThrowIfNull(position);
+        var balls = position.Ids.Where(b => !b.IsCue).OrderBy(b => b.Value).ToList();
+        switch (state.Rules)
+        {
+            case GameRules.NineBall or GameRules.TenBall:
+                return balls.Count > 0 ? [balls[0]] : [];
+            case GameRules.StraightPool:
+                return balls;
+            default:
+                var eight = new BallId(8);
+                if (state.Groups is not { } groups)
+                {
+                    var open = balls.Where(b => b != eight).ToList();
+                    return open.Count > 0 ? open : balls;
+                }
+                var own = balls.Where(b => InGroup(b, groups[state.Shooter])).ToList();
+                return own.Count > 0 ? own : balls.Where(b => b == eight).ToList();
+        }
+    }
+
+    /// <summary>True for a ball of 8-ball's <paramref name="group"/> (1-7 or 9-15).</summary>
+    public static bool InGroup(BallId ball, BallGroup group) =>
+        group == BallGroup.Solids ? ball.Value is >= 1 and <= 7 : ball.Value is >= 9 and <= 15;
+
+    /// <summary>True when a ball of <paramref name="position"/> (other than the cue ball and <paramref name="ignore"/>) lies within 2R of the segment.</summary>
+    public bool Blocked(TablePosition position, Vec3 from, Vec3 to, BallId ignore)
+    {
+        ArgumentNullException.ThrowIfNull(position);
+        var d = (to - from).XY;
+        double len2 = d.LengthSquared;
+        double limit = 4 * R * R * 0.98;
+        for (int i = 0; i < position.Count; i++)
+        {
+            var id = position.Ids[i];
+            if (id.IsCue || id == ignore)
+            {
+                continue;
+            }
+            var p = (position.Positions[i] - from).XY;
+            double t = len2 > 0 ? Math.Clamp(Vec3.Dot(p, d) / len2, 0, 1) : 0;
+            if ((p - d * t).LengthSquared < limit)
+            {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /// <summary>Mirror image of <paramref name="p"/> in the line a ball's centre follows along rail <paramref name="rail"/> (0 head, 1 foot, 2 right y &lt; 0, 3 left y &gt; 0).</summary>
+    public Vec3 Mirror(Vec3 p, int rail)
+    {
+        double hx = Table.HalfLength - R;
+        double hy = Table.HalfWidth - R;
+        return rail switch
+        {
+            0 => p with { X = -2 * hx - p.X },
+            1 => p with { X = 2 * hx - p.X },
+            2 => p with { Y = -2 * hy - p.Y },
+            _ => p with { Y = 2 * hy - p.Y },
+        };
+    }
+
+    // Abramowitz-Stegun 7.1.26 (error below 1.5e-7): ample for ranking shots.
+    private static double Erf(double x)
+    {
+        double t = 1 / (1 + 0.3275911 * x);
+        double y = 1 - (((((1.061405429 * t - 1.453152027) * t) + 1.421413741) * t - 0.284496736) * t + 0.254829592) * t * Math.Exp(-x * x);
+        return x >= 0 ? y : -y;
+    }
+}

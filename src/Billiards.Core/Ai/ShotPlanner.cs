@@ -1,0 +1,504 @@
+using System.Diagnostics;
+using Billiards.Core.Balls;
+using Billiards.Core.Cue;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Physics;
+using Billiards.Core.Physics.Standard;
+using Billiards.Core.Rules;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Ai;
+
+/// <summary>
+/// The computer player: plans a shot by simulating it. The game and the command line call
+/// <see cref="Decide(GameState, TablePosition, SkillLevel, PlannerBudget, ulong)"/> before each shot and <see cref="ChooseOption"/> when the referee offers a
+/// choice.
+/// </summary>
+/// <remarks>
+/// The search, top to bottom:
+/// <list type="number">
+/// <item>Placements: with ball in hand (or on the break), a few cue-ball spots behind the ghost balls
+/// of the easiest shots (or behind the head string), each a root of the search.</item>
+/// <item>Candidates: ghost-ball geometry for every legal target and pocket (direct, bank, kick,
+/// combination, carom) ranked by their geometric ease, plus safeties.</item>
+/// <item>Variations: each candidate at several speeds and spins (follow, stun, draw, side with the
+/// squirt corrected, an elevated draw), its aim corrected for collision-induced throw.</item>
+/// <item>Simulation: each variation from its root's position, with the standard model's event
+/// integrator, several times with the player's own error (<see cref="SkillLevel"/>); the referee
+/// judges each result and a score says how good it is for the shooter: a won game 1, a lost game
+/// 0, staying at the table 0.6 plus 0.4 times the ease of the best next shot, a legal miss 0.45
+/// less 0.35 times the opponent's best shot (how safeties are judged), a foul 0.12.</item>
+/// <item>Refinement: the best variations are simulated again with more error samples; the best
+/// mean wins.</item>
+/// </list>
+/// Determinism: every simulation draws its error from its own stream, derived from the seed and
+/// the variation's and sample's indices, and results are reduced in index order, so the threads
+/// (and their number) do not change the decision unless the time cap cuts the search short.
+/// </remarks>
+public sealed class ShotPlanner
+{
+    private const double MaxShotTime = 120;
+    private const double MaxNormalSpeed = 6.5;
+
+    private static readonly double[] SpeedFactors = [1.0, 1.5, 2.3, 0.75, 3.2];
+
+    // (side, height, elevation deg): stun, follow, draw, side either way, elevated draw.
+    private static readonly (double Side, double Height, double Elevation)[] SpinSet =
+        [(0, 0, 0), (0, 0.4, 0), (0, -0.45, 0), (0.3, 0.1, 0), (-0.3, 0.1, 0), (0, -0.5, 8)];
+
+    /// <summary>A planner for games on <paramref name="table"/> with balls of <paramref name="physics"/> (simulated with the standard model).</summary>
+    public ShotPlanner(TableSpec table, PhysicsParams physics)
+    {
+        Table = new PlannerTable(table, physics);
+    }
+
+    /// <summary>The planner's view of the table.</summary>
+    public PlannerTable Table { get; }
+
+    /// <summary>
+    /// Decides the shot of the player at the table in <paramref name="state"/> with the balls of
+    /// <paramref name="position"/>, at <paramref name="level"/>, within <paramref name="budget"/>.
+    /// The same arguments give the same decision.
+    /// </summary>
+    public Decision Decide(GameState state, TablePosition position, SkillLevel level, PlannerBudget budget, ulong seed)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        ArgumentNullException.ThrowIfNull(position);
+        ArgumentNullException.ThrowIfNull(level);
+        ArgumentNullException.ThrowIfNull(budget);
+        var clock = Stopwatch.StartNew();
+        var search = new Search(this, state, position, level, budget, seed, clock);
+        return search.Run();
+    }
+
+    /// <summary>Decides with a level number and a time cap: the short form for the game.</summary>
+    public Decision Decide(GameState state, Simulation simulation, int level, int budgetMs, ulong seed) =>
+        Decide(state, TablePosition.Of(simulation), SkillLevel.Of(level), new PlannerBudget(budgetMs), seed);
+
+    /// <summary>
+    /// The choice of the incoming player when <paramref name="ruling"/> offers options, with the
+    /// balls as they lie in <paramref name="position"/>: shoot after a push-out or accept a bad break
+    /// when the table offers a good shot, else hand it back or rerack; spot the 8.
+    /// </summary>
+    public RefereeOption ChooseOption(Ruling ruling, TablePosition position)
+    {
+        ArgumentNullException.ThrowIfNull(ruling);
+        ArgumentNullException.ThrowIfNull(position);
+        var options = ruling.Options;
+        if (options.Count == 0)
+        {
+            throw new ArgumentException("the ruling offers no options", nameof(ruling));
+        }
+        double q = Table.BestEase(position, ruling.Next);
+        if (options.Contains(RefereeOption.SpotEight))
+        {
+            return RefereeOption.SpotEight;
+        }
+        if (options.Contains(RefereeOption.Shoot) && options.Contains(RefereeOption.PassBack))
+        {
+            return q >= 0.4 ? RefereeOption.Shoot : RefereeOption.PassBack;
+        }
+        if (options.Contains(RefereeOption.Accept) && options.Contains(RefereeOption.Rerack))
+        {
+            return q >= 0.3 ? RefereeOption.Accept : RefereeOption.Rerack;
+        }
+        return options[0];
+    }
+
+    /// <summary>
+    /// The score of a judged shot for the player who shot it (see the class remarks), with the
+    /// balls after it in <paramref name="after"/>.
+    /// </summary>
+    public double Score(GameState before, Ruling ruling, TablePosition after, int lookAhead)
+    {
+        ArgumentNullException.ThrowIfNull(before);
+        ArgumentNullException.ThrowIfNull(ruling);
+        if (ruling.GameOver)
+        {
+            return ruling.Winner is not { } w ? 0.5 : w == before.Shooter ? 1 : 0;
+        }
+        if (before.PushOut)
+        {
+            if (!ruling.Legal)
+            {
+                return 0.1;
+            }
+            // The opponent shoots a good leave and hands back a bad one: leave one in between.
+            double q = lookAhead > 0 ? Table.BestEase(after, ruling.Next) : 0.5;
+            return 0.4 - 0.3 * Math.Abs(2 * q - 1);
+        }
+        if (ruling.Continue)
+        {
+            double q = lookAhead > 0 ? Table.BestEase(after, ruling.Next) : 0.5;
+            return 0.6 + 0.4 * q;
+        }
+        if (!ruling.Legal)
+        {
+            return 0.12;
+        }
+        double opponent = lookAhead > 0 ? Table.BestEase(after, ruling.Next) : 0.5;
+        return 0.45 - 0.35 * opponent;
+    }
+
+    /// <summary>True when the game asks for a call on this shot (8-ball, 10-ball and 14.1 after the break).</summary>
+    public static bool NeedsCall(GameState state)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        return state.Shot > 0 && state.Rules is GameRules.EightBall or GameRules.TenBall or GameRules.StraightPool;
+    }
+
+    /// <summary>
+    /// The cue's aim (deg) that sends the candidate's first ball along its direction with the given
+    /// tip, corrected for throw (the object ball dragged towards the cue ball's path by ball-ball
+    /// friction) and for squirt (the cue ball leaving off the cue's line with side spin).
+    /// </summary>
+    internal double AimFor(Candidate c, Vec3 cue, double tipSide, double tipHeight)
+    {
+        var p = Table.Physics;
+        double r = Table.R;
+        var aimPoint = c.AimPoint;
+        if (c.Direction != Vec3.Zero)
+        {
+            var u = c.Direction;
+            var ghost = c.Contact - u * (2 * r);
+            double mu = p.MuBModel == BallBallFriction.Constant ? p.MuB : 0.06;
+            for (int iteration = 0; iteration < 3; iteration++)
+            {
+                var v = (ghost - cue).XY.Normalized();
+                double sin = v.X * c.Direction.Y - v.Y * c.Direction.X;
+                double cos = Vec3.Dot(v, c.Direction);
+                if (cos <= 0.05)
+                {
+                    break;
+                }
+                double s = Math.Abs(sin);
+                // A stunned ball slides across the object ball; a rolling one also slides vertically,
+                // which takes friction away from the sideways throw (Alciatore, TP A.14).
+                double roll = Math.Abs(tipHeight) > 0.1 ? 1 : 0.5;
+                double slip = Math.Sqrt(s * s + roll * roll * cos * cos);
+                double tan = Math.Min(mu * s / Math.Max(slip, 1e-9), 2 * s / (7 * (1 + p.EB) * cos));
+                double throwAngle = Math.Atan(tan) * Math.Sign(sin);
+                double ca = Math.Cos(throwAngle);
+                double sa = Math.Sin(throwAngle);
+                var turned = new Vec3(c.Direction.X * ca - c.Direction.Y * sa, c.Direction.X * sa + c.Direction.Y * ca, 0);
+                ghost = c.Contact - turned * (2 * r);
+            }
+            aimPoint = ghost;
+        }
+        var d = aimPoint - cue;
+        double aim = Math.Atan2(d.Y, d.X) * 180 / Math.PI;
+        aim -= CueStrike.SquirtAngle(tipSide, p.M / p.CueEndMass) * 180 / Math.PI;
+        return aim;
+    }
+
+    private sealed record Root(TablePosition Position, Vec3 Cue, Vec3? Place);
+
+    private sealed record Variation(int Root, Candidate Candidate, ShotSpec Shot, GameState Before);
+
+    private sealed class Worker(ShotPlanner planner, IReadOnlyList<Root> roots)
+    {
+        private readonly StandardSimulation?[] _sims = new StandardSimulation?[roots.Count];
+        private readonly ShotRecord _record = new();
+
+        public (double Score, bool Pot, Ruling Ruling) Run(Variation v, ShotSpec shot, IReferee referee, int lookAhead)
+        {
+            var sim = _sims[v.Root] ??= roots[v.Root].Position.CreateSimulation(planner.Table.Table, planner.Table.Physics);
+            sim.Reset();
+            sim.Strike(shot);
+            sim.AdvanceTo(MaxShotTime);
+            _record.Capture(sim, 0, shot);
+            var ruling = referee.Judge(v.Before, _record);
+            var after = TablePosition.After(_record);
+            double score = planner.Score(v.Before, ruling, after, lookAhead);
+            bool pot = ruling.GameOver ? ruling.Winner == v.Before.Shooter : ruling.Continue;
+            return (score, pot, ruling);
+        }
+    }
+
+    private sealed class Search(ShotPlanner planner, GameState state, TablePosition position, SkillLevel level, PlannerBudget budget, ulong seed, Stopwatch clock)
+    {
+        private readonly PlannerTable _table = planner.Table;
+        private readonly IReferee _referee = Referee.For(state.Rules, planner.Table.Table, planner.Table.R);
+        private int _simulations;
+
+        public Decision Run()
+        {
+            var roots = Roots();
+            var variations = new List<Variation>();
+            int perRoot = roots.Count > 1 ? Math.Max(3, level.Candidates / 2) : level.Candidates;
+            for (int i = 0; i < roots.Count; i++)
+            {
+                AddVariations(i, roots[i], perRoot, variations);
+            }
+            int threads = budget.Threads > 0 ? budget.Threads : Environment.ProcessorCount;
+            var workers = new Worker[threads];
+            for (int w = 0; w < threads; w++)
+            {
+                workers[w] = new Worker(planner, roots);
+            }
+
+            // Round 1: every variation with a few error samples.
+            var sum = new double[variations.Count];
+            var pots = new int[variations.Count];
+            var count = new int[variations.Count];
+            Simulate(workers, variations, Enumerable.Range(0, variations.Count), 0, level.Samples, sum, pots, count);
+
+            // Round 2: the best again with more samples; the winner must come from these.
+            var order = Enumerable.Range(0, variations.Count).Where(i => count[i] > 0)
+                .OrderByDescending(i => sum[i] / count[i]).ThenBy(i => i).ToList();
+            var finalists = order.Take(Math.Max(1, level.RefineTop)).ToList();
+            if (level.RefineSamples > 0)
+            {
+                Simulate(workers, variations, finalists, level.Samples, level.RefineSamples, sum, pots, count);
+            }
+            int best = finalists.Count > 0
+                ? finalists.OrderByDescending(i => sum[i] / count[i]).ThenBy(i => i).First()
+                : 0;
+            var chosen = variations[best];
+            var root = roots[chosen.Root];
+            var expected = workers[0].Run(chosen, chosen.Shot, _referee, level.LookAhead).Ruling;
+            _simulations++;
+            var c = chosen.Candidate;
+            return new Decision(
+                chosen.Shot,
+                root.Place,
+                chosen.Before.Call,
+                chosen.Before.PushOut,
+                c.Kind,
+                c.Target,
+                c.Pocket,
+                count[best] > 0 ? (double)pots[best] / count[best] : 0,
+                count[best] > 0 ? sum[best] / count[best] : 0,
+                _simulations,
+                clock.Elapsed.TotalMilliseconds)
+            {
+                ExpectedRuling = expected,
+            };
+        }
+
+        private void Simulate(Worker[] workers, List<Variation> variations, IEnumerable<int> which, int firstSample, int samples, double[] sum, int[] pots, int[] count)
+        {
+            var items = which.SelectMany(v => Enumerable.Range(firstSample, samples).Select(s => (v, s))).ToArray();
+            var scores = new double[items.Length];
+            var made = new bool[items.Length];
+            var done = new bool[items.Length];
+            int next = -1;
+            double cap = budget.Milliseconds;
+            Parallel.For(0, workers.Length, new ParallelOptions { MaxDegreeOfParallelism = workers.Length }, w =>
+            {
+                int i;
+                while ((i = Interlocked.Increment(ref next)) < items.Length)
+                {
+                    if (clock.Elapsed.TotalMilliseconds > cap)
+                    {
+                        break;
+                    }
+                    var (v, s) = items[i];
+                    var random = new PlannerRandom(PlannerRandom.Derive(seed, v, s));
+                    var shot = level.Execute(variations[v].Shot, random);
+                    var (score, pot, _) = workers[w].Run(variations[v], shot, _referee, level.LookAhead);
+                    scores[i] = score;
+                    made[i] = pot;
+                    done[i] = true;
+                }
+            });
+            // Reduced in item order, whichever thread ran what.
+            for (int i = 0; i < items.Length; i++)
+            {
+                if (done[i])
+                {
+                    int v = items[i].v;
+                    sum[v] += scores[i];
+                    pots[v] += made[i] ? 1 : 0;
+                    count[v]++;
+                    _simulations++;
+                }
+            }
+        }
+
+        private List<Root> Roots()
+        {
+            var region = state.Shot == 0 ? BallInHand.Kitchen : state.BallInHand;
+            if (region == BallInHand.None && position.Cue is { } cue)
+            {
+                return [new Root(position, cue, null)];
+            }
+            if (region == BallInHand.None)
+            {
+                region = BallInHand.Table;
+            }
+            var spots = state.Shot == 0 ? BreakSpots() : Placements(region);
+            return [.. spots.Select(p => new Root(position.With(BallId.Cue, p), p, p))];
+        }
+
+        private List<Vec3> BreakSpots()
+        {
+            var t = _table.Table;
+            double r = _table.R;
+            double x = -t.HalfLength / 2 - 2 * r;
+            var spots = new List<Vec3> { new(x, 0, r) };
+            if (level.Level >= 3)
+            {
+                spots.Add(new Vec3(x, 0.45 * t.HalfWidth, r));
+                spots.Add(new Vec3(x, -0.45 * t.HalfWidth, r));
+            }
+            return [.. spots.Where(p => position.CanPlace(p, BallInHand.Kitchen, t, r, BallId.Cue))];
+        }
+
+        private List<Vec3> Placements(BallInHand region)
+        {
+            var t = _table.Table;
+            double r = _table.R;
+            var scored = new List<(Vec3 P, double Ease)>();
+            var without = position.Without(BallId.Cue);
+            foreach (var target in PlannerTable.LegalTargets(state, without))
+            {
+                var o = without.Positions[without.IndexOf(target)];
+                foreach (var pocket in _table.Pockets)
+                {
+                    var aim = _table.AimPoint(pocket);
+                    var u = (aim - o).XY.Normalized();
+                    if (_table.Window(pocket, u) <= 0 || _table.Blocked(without, o, aim, target))
+                    {
+                        continue;
+                    }
+                    var ghost = _table.Ghost(o, aim);
+                    foreach (double cutDeg in (ReadOnlySpan<double>)[0, 15, -15, 30, -30])
+                    {
+                        double a = cutDeg * Math.PI / 180;
+                        var back = new Vec3(u.X * Math.Cos(a) - u.Y * Math.Sin(a), u.X * Math.Sin(a) + u.Y * Math.Cos(a), 0);
+                        foreach (double distance in (ReadOnlySpan<double>)[0.15, 0.3, 0.55])
+                        {
+                            var p = (ghost - back * distance) with { Z = r };
+                            if (without.CanPlace(p, region, t, r, BallId.Cue))
+                            {
+                                double ease = _table.DirectEase(without.With(BallId.Cue, p), p, target, pocket);
+                                if (ease > 0)
+                                {
+                                    scored.Add((p, ease - 0.02 * Math.Abs(cutDeg) / 15));
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            var chosen = new List<Vec3>();
+            foreach (var (p, _) in scored.OrderByDescending(s => s.Ease))
+            {
+                if (chosen.Count >= level.Placements)
+                {
+                    break;
+                }
+                if (chosen.All(q => (q - p).LengthXY > 0.1))
+                {
+                    chosen.Add(p);
+                }
+            }
+            if (chosen.Count == 0)
+            {
+                // Nothing to pot: a spot with a clear look at a target, else any free spot.
+                var grid = new List<Vec3>();
+                for (double gx = -0.9; gx <= 0.9; gx += 0.15)
+                {
+                    for (double gy = -0.8; gy <= 0.8; gy += 0.2)
+                    {
+                        var p = new Vec3(gx * (t.HalfLength - r), gy * (t.HalfWidth - r), r);
+                        if (without.CanPlace(p, region, t, r, BallId.Cue))
+                        {
+                            grid.Add(p);
+                        }
+                    }
+                }
+                var targets = PlannerTable.LegalTargets(state, without);
+                chosen.AddRange(grid.Where(p => targets.Any(b => !_table.Blocked(without, p, without.Positions[without.IndexOf(b)], b))).Take(2));
+                if (chosen.Count == 0 && grid.Count > 0)
+                {
+                    chosen.Add(grid[0]);
+                }
+            }
+            return chosen;
+        }
+
+        private void AddVariations(int rootIndex, Root root, int candidates, List<Variation> variations)
+        {
+            var cue = root.Cue;
+            if (state.Shot == 0)
+            {
+                AddBreak(rootIndex, root, variations);
+                return;
+            }
+            var pots = CandidateGenerator.Pots(_table, state, root.Position, cue)
+                .OrderByDescending(c => c.Prior).Take(candidates).ToList();
+            var safeties = CandidateGenerator.Safeties(_table, state, root.Position, cue)
+                .Take(level.Level >= 3 ? candidates / 2 + 2 : 2).ToList();
+            if (pots.Count == 0 && safeties.Count == 0)
+            {
+                safeties = CandidateGenerator.LastResort(_table, state, root.Position, cue);
+            }
+            bool call = NeedsCall(state);
+            var before = state with { Placement = root.Place, PushOut = false };
+            foreach (var c in pots)
+            {
+                var withCall = before with { Call = call ? new Call(c.Called, c.Pocket) : null };
+                Vary(rootIndex, c, cue, withCall, level.Speeds, level.Spins, variations);
+            }
+            foreach (var c in safeties)
+            {
+                var withCall = before with { Call = call ? Call.Safety : null };
+                Vary(rootIndex, c, cue, withCall, Math.Min(level.Speeds, 3), Math.Min(level.Spins, 3), variations);
+            }
+            // 9-ball and 10-ball: the shot after the break may be a push-out (no contact needed).
+            if (state.Shot == 1 && level.LookAhead > 0 && state.Rules is GameRules.NineBall or GameRules.TenBall
+                && pots.All(c => c.Prior < 0.2))
+            {
+                var push = state with { Placement = root.Place, PushOut = true, Call = null };
+                foreach (var c in safeties.Take(3))
+                {
+                    Vary(rootIndex, c with { Kind = ShotKind.PushOut }, cue, push, 2, 1, variations);
+                }
+            }
+        }
+
+        private void AddBreak(int rootIndex, Root root, List<Variation> variations)
+        {
+            var balls = root.Position.Enumerate().Where(b => !b.Id.IsCue).ToList();
+            if (balls.Count == 0)
+            {
+                return;
+            }
+            var foot = Setup.Initializer.FootSpot(_table.Table, _table.R);
+            var apex = balls.OrderBy(b => (b.Position - foot).LengthXY).First();
+            var before = state with { Placement = root.Place, Call = null, PushOut = false };
+            var n = (apex.Position - root.Cue).XY.Normalized();
+            var side = new Vec3(-n.Y, n.X, 0);
+            var offsets = level.Level >= 3 ? new[] { 0.0, 0.3, -0.3 } : [0.0];
+            var speeds = level.Level >= 2 ? new[] { 6.0, 7.5 } : [6.5];
+            foreach (double offset in offsets)
+            {
+                var aimPoint = apex.Position + side * (offset * _table.R);
+                var c = new Candidate(ShotKind.Break, apex.Id, apex.Id, PocketId.None, apex.Position, Vec3.Zero, aimPoint, 7, 0.5);
+                foreach (double speed in speeds)
+                {
+                    var d = aimPoint - root.Cue;
+                    var shot = new ShotSpec(speed, Math.Atan2(d.Y, d.X) * 180 / Math.PI, 0, -0.2, 0);
+                    variations.Add(new Variation(rootIndex, c, shot, before));
+                }
+            }
+        }
+
+        private void Vary(int rootIndex, Candidate c, Vec3 cue, GameState before, int speeds, int spins, List<Variation> variations)
+        {
+            var factors = SpeedFactors.Take(speeds).Order().ToArray();
+            for (int k = 0; k < spins; k++)
+            {
+                var (sideTip, height, elevation) = SpinSet[k];
+                double aim = planner.AimFor(c, cue, sideTip, height);
+                foreach (double f in factors)
+                {
+                    double speed = Math.Min(MaxNormalSpeed, c.BaseSpeed * f);
+                    variations.Add(new Variation(rootIndex, c, new ShotSpec(speed, aim, sideTip, height, elevation), before));
+                }
+            }
+        }
+    }
+}

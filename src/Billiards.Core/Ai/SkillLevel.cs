@@ -1,0 +1,99 @@
+using Billiards.Core.Cue;
+
+namespace Billiards.Core.Ai;
+
+/// <summary>
+/// A computer player's level, 1 (beginner) to 5 (strong professional): the human-like error of
+/// its stroke and how hard it thinks.
+/// </summary>
+/// <remarks>
+/// The error model: every executed shot is the planned one with independent Gaussian errors
+/// added, zero mean, with the standard deviations below (the same in the search, which samples
+/// the player's own error, and in play, where the error is applied to the shot actually struck).
+/// <list type="table">
+/// <listheader><term>level</term><description>aim (deg), speed (fraction of the cue speed), tip (fraction of R, each of side and height)</description></listheader>
+/// <item><term>1</term><description>1.00, 0.12, 0.10</description></item>
+/// <item><term>2</term><description>0.55, 0.08, 0.07</description></item>
+/// <item><term>3</term><description>0.30, 0.05, 0.05</description></item>
+/// <item><term>4</term><description>0.16, 0.035, 0.03</description></item>
+/// <item><term>5</term><description>0.08, 0.02, 0.015</description></item>
+/// </list>
+/// The error is clamped to four standard deviations, and the tip to the miscue limit (0.6 R
+/// from the centre). Lower levels also search less: fewer candidate shots, speeds, spins and
+/// samples of their own error; levels 1 and 2 judge a shot by the referee's ruling alone, levels
+/// 3 to 5 also by the next shot it leaves (one shot ahead), and a safety by the opponent's best reply.
+/// </remarks>
+/// <param name="Level">1 to 5.</param>
+/// <param name="AimStdDeg">Standard deviation of the aim angle (deg).</param>
+/// <param name="SpeedStdFraction">Standard deviation of the cue speed, as a fraction of the planned speed.</param>
+/// <param name="TipStdFraction">Standard deviation of each tip offset (side, height), as a fraction of R.</param>
+/// <param name="Candidates">Shots (target, pocket, kind) searched after the geometric ranking.</param>
+/// <param name="Speeds">Speeds tried per candidate.</param>
+/// <param name="Spins">Spin and elevation variants tried per candidate (1: centre ball only).</param>
+/// <param name="Samples">Simulations per variant in the first round, each with its own error sample.</param>
+/// <param name="RefineTop">Variants simulated again in the second round.</param>
+/// <param name="RefineSamples">Extra simulations per refined variant.</param>
+/// <param name="LookAhead">0: judge a shot by its ruling only; 1: also by the next shot it leaves.</param>
+/// <param name="Placements">Cue-ball placements searched with ball in hand.</param>
+public sealed record SkillLevel(
+    int Level,
+    double AimStdDeg,
+    double SpeedStdFraction,
+    double TipStdFraction,
+    int Candidates,
+    int Speeds,
+    int Spins,
+    int Samples,
+    int RefineTop,
+    int RefineSamples,
+    int LookAhead,
+    int Placements)
+{
+    /// <summary>The lowest level.</summary>
+    public const int Min = 1;
+
+    /// <summary>The highest level.</summary>
+    public const int Max = 5;
+
+    /// <summary>The largest tip offset from the centre (fraction of R) before a miscue.</summary>
+    public const double MaxTip = 0.6;
+
+    private static readonly SkillLevel[] All =
+    [
+        new(1, 1.00, 0.12, 0.10, Candidates: 4, Speeds: 2, Spins: 1, Samples: 1, RefineTop: 2, RefineSamples: 2, LookAhead: 0, Placements: 2),
+        new(2, 0.55, 0.08, 0.07, Candidates: 6, Speeds: 3, Spins: 1, Samples: 2, RefineTop: 3, RefineSamples: 4, LookAhead: 0, Placements: 3),
+        new(3, 0.30, 0.05, 0.05, Candidates: 8, Speeds: 3, Spins: 3, Samples: 2, RefineTop: 6, RefineSamples: 8, LookAhead: 1, Placements: 4),
+        new(4, 0.16, 0.035, 0.03, Candidates: 10, Speeds: 4, Spins: 4, Samples: 3, RefineTop: 8, RefineSamples: 12, LookAhead: 1, Placements: 5),
+        new(5, 0.08, 0.02, 0.015, Candidates: 12, Speeds: 5, Spins: 6, Samples: 3, RefineTop: 10, RefineSamples: 20, LookAhead: 1, Placements: 6),
+    ];
+
+    /// <summary>The level <paramref name="level"/> (1 to 5).</summary>
+    /// <exception cref="ArgumentOutOfRangeException">Outside 1 to 5.</exception>
+    public static SkillLevel Of(int level)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(level, Min);
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(level, Max);
+        return All[level - 1];
+    }
+
+    /// <summary>
+    /// The shot as this player strikes it when aiming for <paramref name="planned"/>: the error
+    /// model of the class remarks, drawn from <paramref name="random"/>.
+    /// </summary>
+    public ShotSpec Execute(ShotSpec planned, PlannerRandom random)
+    {
+        ArgumentNullException.ThrowIfNull(planned);
+        ArgumentNullException.ThrowIfNull(random);
+        double aim = planned.AimDeg + AimStdDeg * random.NextClampedGaussian();
+        double speed = planned.Speed * (1 + SpeedStdFraction * random.NextClampedGaussian());
+        double side = planned.TipSide + TipStdFraction * random.NextClampedGaussian();
+        double height = planned.TipHeight + TipStdFraction * random.NextClampedGaussian();
+        double r = Math.Sqrt(side * side + height * height);
+        if (r > MaxTip)
+        {
+            side *= MaxTip / r;
+            height *= MaxTip / r;
+        }
+        return planned with { AimDeg = aim, Speed = Math.Max(0.05, speed), TipSide = side, TipHeight = height };
+    }
+}

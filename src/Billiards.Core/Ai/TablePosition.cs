@@ -1,0 +1,173 @@
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Physics;
+using Billiards.Core.Physics.Standard;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+using Billiards.Core.Setup;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Ai;
+
+/// <summary>
+/// The balls on the table between two shots (pocketed balls are left out), as the planner and the
+/// self-play loop see them: ids and centres (m, z = R). Immutable.
+/// </summary>
+public sealed class TablePosition
+{
+    private readonly BallId[] _ids;
+    private readonly Vec3[] _positions;
+
+    /// <summary>A position of the given balls.</summary>
+    /// <param name="balls">Ids and centres (m); the order is kept.</param>
+    public TablePosition(IEnumerable<(BallId Id, Vec3 Position)> balls)
+    {
+        ArgumentNullException.ThrowIfNull(balls);
+        var list = balls.ToList();
+        _ids = [.. list.Select(b => b.Id)];
+        _positions = [.. list.Select(b => b.Position)];
+    }
+
+    /// <summary>Ball ids, index-aligned with <see cref="Positions"/>.</summary>
+    public IReadOnlyList<BallId> Ids => _ids;
+
+    /// <summary>Ball centres (m), index-aligned with <see cref="Ids"/>.</summary>
+    public IReadOnlyList<Vec3> Positions => _positions;
+
+    /// <summary>Number of balls on the table.</summary>
+    public int Count => _ids.Length;
+
+    /// <summary>The cue ball's centre, or null when it is off the table (pocketed).</summary>
+    public Vec3? Cue => IndexOf(BallId.Cue) is var i and >= 0 ? _positions[i] : null;
+
+    /// <summary>The balls at rest in a simulation, pocketed ones left out.</summary>
+    public static TablePosition Of(Simulation simulation)
+    {
+        ArgumentNullException.ThrowIfNull(simulation);
+        var list = new List<(BallId, Vec3)>();
+        var balls = simulation.Balls;
+        for (int i = 0; i < balls.Length; i++)
+        {
+            if (!balls[i].IsPocketed)
+            {
+                list.Add((simulation.Ids[i], balls[i].Position));
+            }
+        }
+        return new TablePosition(list);
+    }
+
+    /// <summary>The balls after a shot, pocketed ones left out.</summary>
+    public static TablePosition After(ShotRecord record)
+    {
+        ArgumentNullException.ThrowIfNull(record);
+        var list = new List<(BallId, Vec3)>();
+        var balls = record.BallsAfter;
+        var ids = record.Ids;
+        for (int i = 0; i < balls.Length; i++)
+        {
+            if (!balls[i].IsPocketed)
+            {
+                list.Add((ids[i], balls[i].Position));
+            }
+        }
+        return new TablePosition(list);
+    }
+
+    /// <summary>A fresh rack of <paramref name="rack"/> with the cue ball on the head spot.</summary>
+    public static TablePosition Rack(RackSpec rack, TableSpec table, double radius)
+    {
+        var balls = new List<(BallId, Vec3)> { (BallId.Cue, Initializer.HeadSpot(table, radius)) };
+        balls.AddRange(Initializer.Rack(rack, table, radius));
+        return new TablePosition(balls);
+    }
+
+    /// <summary>Index of a ball, or -1 when it is not on the table.</summary>
+    public int IndexOf(BallId id) => Array.IndexOf(_ids, id);
+
+    /// <summary>This position with <paramref name="id"/> at <paramref name="position"/> (added if absent).</summary>
+    public TablePosition With(BallId id, Vec3 position)
+    {
+        var list = Enumerate().Where(b => b.Id != id).ToList();
+        list.Add((id, position));
+        return new TablePosition(list);
+    }
+
+    /// <summary>This position without <paramref name="id"/>.</summary>
+    public TablePosition Without(BallId id) => new(Enumerate().Where(b => b.Id != id));
+
+    /// <summary>
+    /// This position with <paramref name="balls"/> put back on the foot spot (rules.md: on it, or as
+    /// close behind it on the long axis as it fits), lowest number first.
+    /// </summary>
+    public TablePosition Spotted(IEnumerable<BallId> balls, TableSpec table, double radius)
+    {
+        ArgumentNullException.ThrowIfNull(balls);
+        var position = this;
+        foreach (var id in balls.OrderBy(b => b.Value))
+        {
+            var spot = Initializer.FootSpot(table, radius);
+            var p = spot;
+            for (double dx = 0; dx < table.HalfLength; dx += radius / 8)
+            {
+                p = spot with { X = spot.X + dx };
+                if (p.X <= table.HalfLength - radius && position.IsFree(p, radius, id))
+                {
+                    break;
+                }
+            }
+            position = position.With(id, p);
+        }
+        return position;
+    }
+
+    /// <summary>
+    /// True when a ball of radius <paramref name="radius"/> at <paramref name="p"/> lies on the bed
+    /// inside the region and touches no ball but <paramref name="ignore"/>.
+    /// </summary>
+    public bool CanPlace(Vec3 p, BallInHand region, TableSpec table, double radius, BallId ignore)
+    {
+        ArgumentNullException.ThrowIfNull(table);
+        const double Margin = 1e-4;
+        if (Math.Abs(p.X) > table.HalfLength - radius - Margin || Math.Abs(p.Y) > table.HalfWidth - radius - Margin)
+        {
+            return false;
+        }
+        if (region == BallInHand.Kitchen && p.X >= -table.HalfLength / 2 - Margin)
+        {
+            return false;
+        }
+        return IsFree(p, radius + Margin / 2, ignore);
+    }
+
+    /// <summary>
+    /// A simulation of this position with the standard model's event integrator (the fastest),
+    /// the planner's way to try shots: <see cref="Simulation.Reset"/> brings it back here.
+    /// </summary>
+    public StandardSimulation CreateSimulation(TableSpec table, PhysicsParams physics)
+    {
+        var balls = Enumerate().Select(b => new BallSetup(b.Id, b.Position, Vec3.Zero, Vec3.Zero)).ToList();
+        var scene = new Scene("planner", null, table, new PhysicsConfig(Models.Standard, Integrators.Event, PhysicsConfig.DefaultDt, physics), null, balls, null, null);
+        return new StandardSimulation(scene);
+    }
+
+    /// <summary>The balls as (id, centre) pairs.</summary>
+    public IEnumerable<(BallId Id, Vec3 Position)> Enumerate()
+    {
+        for (int i = 0; i < _ids.Length; i++)
+        {
+            yield return (_ids[i], _positions[i]);
+        }
+    }
+
+    private bool IsFree(Vec3 p, double radius, BallId ignore)
+    {
+        for (int i = 0; i < _ids.Length; i++)
+        {
+            if (_ids[i] != ignore && (_positions[i] - p).LengthXY < 2 * radius)
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+}

@@ -1,0 +1,135 @@
+using Billiards.Core.Ai;
+using Billiards.Core.Balls;
+using Billiards.Core.Rules;
+using Billiards.Core.Table;
+using static Billiards.Core.Tests.Ai.PlannerKit;
+
+namespace Billiards.Core.Tests.Ai;
+
+/// <summary>The planner on positions whose right answer is known.</summary>
+public class ShotPlannerTests
+{
+    private static readonly GameState NineBall = new(GameRules.NineBall) { Shot = 3 };
+
+    [Fact]
+    public void AStraightInPotIsChosenAndItsShotPotsTheBall()
+    {
+        // The 9 alone, straight in: any pot wins, so nothing but the pot itself counts.
+        var line = StraightIn(PocketId.FootLeft, 0.5, 0.6);
+        var nine = new BallId(9);
+        var position = new TablePosition([(BallId.Cue, line.Cue!.Value), (nine, line.Positions[line.IndexOf(new BallId(1))])]);
+        var decision = Planner.Decide(NineBall, position, SkillLevel.Of(5), new PlannerBudget(60_000, 2), 11);
+
+        Assert.Equal(nine, decision.Target);
+        Assert.Equal(ShotKind.Direct, decision.Kind);
+        Assert.Equal(PocketId.FootLeft, decision.Pocket);
+        Assert.Null(decision.Place);
+        var record = Simulate(position, decision.Shot);
+        Assert.Equal(PocketId.FootLeft, record.PocketedOnShot(nine));
+        Assert.False(record.IsPocketedAfter(BallId.Cue));
+        Assert.True(decision.ExpectedPot > 0.9, $"expected pot {decision.ExpectedPot}");
+    }
+
+    [Fact]
+    public void EightBallCallsTheBallAndPocketItPlays()
+    {
+        var position = StraightIn(PocketId.SideLeft, 0.4, 0.5);
+        var state = new GameState(GameRules.EightBall) { Shot = 2 };
+        var decision = Planner.Decide(state, position, SkillLevel.Of(4), new PlannerBudget(60_000, 2), 3);
+
+        Assert.Equal(new Call(new BallId(decision.Kind == ShotKind.Combination ? 2 : 1), decision.Pocket), decision.Call);
+        var record = Simulate(position, decision.Shot);
+        Assert.Equal(decision.Call!.Pocket, record.PocketedOnShot(decision.Call.Ball));
+    }
+
+    [Fact]
+    public void TheSameSeedGivesTheSameDecisionOnOneThreadAndOnTwo()
+    {
+        var state = new GameState(GameRules.EightBall) { Shot = 0 };
+        var position = TablePosition.Rack(new Billiards.Core.Setup.RackSpec(Billiards.Core.Setup.RackGame.EightBall, 5), Pool, Params.R);
+        var broken = Simulate(position, new Cue.ShotSpec(7, 0.3, 0, -0.2));
+        var after = TablePosition.After(broken);
+        var open = new GameState(GameRules.EightBall) { Shot = 1, BallInHand = after.Cue is null ? BallInHand.Table : BallInHand.None };
+
+        var one = Planner.Decide(open, after, SkillLevel.Of(3), new PlannerBudget(600_000, 1), 42);
+        var two = Planner.Decide(open, after, SkillLevel.Of(3), new PlannerBudget(600_000, 2), 42);
+        var again = Planner.Decide(open, after, SkillLevel.Of(3), new PlannerBudget(600_000, 2), 42);
+
+        Assert.Equal(one.Shot, two.Shot);
+        Assert.Equal(one.Place, two.Place);
+        Assert.Equal(one.Call, two.Call);
+        Assert.Equal(one.ExpectedScore, two.ExpectedScore);
+        Assert.Equal(one.Simulations, two.Simulations);
+        Assert.Equal(two.Shot, again.Shot);
+        Assert.Equal(two.ExpectedPot, again.ExpectedPot);
+    }
+
+    [Fact]
+    public void BallInHandPlacesTheCueBallLegallyAndPots()
+    {
+        var position = StraightIn(PocketId.HeadRight, 0.4, 0.5).Without(BallId.Cue);
+        var state = NineBall with { BallInHand = BallInHand.Table };
+        var decision = Planner.Decide(state, position, SkillLevel.Of(5), new PlannerBudget(60_000, 2), 9);
+
+        var place = Assert.NotNull(decision.Place);
+        Assert.True(position.CanPlace(place, BallInHand.Table, Pool, Params.R, BallId.Cue));
+        var record = Simulate(position, decision.Shot, place);
+        var ruling = Referee.For(GameRules.NineBall, Pool, Params.R).Judge(state with { Placement = place }, record);
+        Assert.True(ruling.Legal);
+        Assert.True(ruling.Continue);
+    }
+
+    [Fact]
+    public void TheBreakIsPlacedBehindTheHeadString()
+    {
+        var position = TablePosition.Rack(new Billiards.Core.Setup.RackSpec(Billiards.Core.Setup.RackGame.NineBall, 1), Pool, Params.R);
+        var decision = Planner.Decide(new GameState(GameRules.NineBall), position, SkillLevel.Of(2), new PlannerBudget(60_000, 2), 1);
+
+        Assert.Equal(ShotKind.Break, decision.Kind);
+        var place = Assert.NotNull(decision.Place);
+        Assert.True(place.X < -Pool.HalfLength / 2);
+        Assert.Null(decision.Call);
+    }
+
+    [Fact]
+    public void LevelFiveMakesEasyStraightInShotsWithItsOwnError()
+    {
+        // Twelve straight-in shots of 0.3 to 0.9 m to the pocket with the cue ball 0.3 to 0.6 m
+        // behind, into corners and sides; level 5 strikes each with its error. A strong
+        // professional misses almost none of these.
+        var level = SkillLevel.Of(5);
+        int made = 0, total = 0;
+        PocketId[] pockets = [PocketId.FootLeft, PocketId.FootRight, PocketId.HeadLeft, PocketId.SideLeft, PocketId.SideRight, PocketId.HeadRight];
+        for (int i = 0; i < 12; i++)
+        {
+            var position = StraightIn(pockets[i % 6], 0.3 + 0.1 * (i % 7), 0.3 + 0.05 * (i % 5));
+            var decision = Planner.Decide(NineBall, position, level, new PlannerBudget(60_000, 2), (ulong)i);
+            var executed = level.Execute(decision.Shot, new PlannerRandom(PlannerRandom.Derive(1234, i)));
+            var record = Simulate(position, executed);
+            var ruling = Referee.For(GameRules.NineBall, Pool, Params.R).Judge(NineBall, record);
+            made += ruling.Continue ? 1 : 0;
+            total++;
+        }
+        Assert.True(made >= 11, $"level 5 made {made} of {total} easy straight-in shots");
+    }
+
+    [Fact]
+    public void ThrowCorrectionOvercutsAStunnedCut()
+    {
+        // A 30 deg cut to the left with a stun shot: the object ball is thrown towards the cue
+        // ball's path, so the corrected aim sends the ghost further to the right of the object ball.
+        var o = new Mathematics.Vec3(0.3, 0, Params.R);
+        var cue = new Mathematics.Vec3(-0.3, 0, Params.R);
+        double a = 30 * Math.PI / 180;
+        var u = new Mathematics.Vec3(Math.Cos(a), Math.Sin(a), 0);
+        var ghost = o - u * (2 * Params.R);
+        var c = new Candidate(ShotKind.Direct, new BallId(1), new BallId(1), PocketId.FootLeft, o, u, ghost, 2, 1);
+        var d = ghost - cue;
+        double plain = Math.Atan2(d.Y, d.X) * 180 / Math.PI;
+        double corrected = Planner.AimFor(c, cue, 0, 0);
+        // Stun at 30 deg with mu_b = 0.05: tan(throw) = min(mu sin/slip, 2 sin/(7 (1+e) cos)) = about 0.045
+        // rad at the object ball, i.e. the aim turns clockwise (more cut), by less than a degree.
+        Assert.True(corrected < plain, $"corrected {corrected} deg, plain {plain} deg");
+        Assert.True(plain - corrected < 1.5);
+    }
+}
