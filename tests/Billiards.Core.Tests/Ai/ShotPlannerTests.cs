@@ -118,10 +118,10 @@ public class ShotPlannerTests
     {
         // A 30 deg cut to the left with a stun shot: the object ball is thrown towards the cue
         // ball's path, so the corrected aim sends the ghost further to the right of the object ball.
-        var o = new Mathematics.Vec3(0.3, 0, Params.R);
-        var cue = new Mathematics.Vec3(-0.3, 0, Params.R);
+        var o = new Billiards.Core.Mathematics.Vec3(0.3, 0, Params.R);
+        var cue = new Billiards.Core.Mathematics.Vec3(-0.3, 0, Params.R);
         double a = 30 * Math.PI / 180;
-        var u = new Mathematics.Vec3(Math.Cos(a), Math.Sin(a), 0);
+        var u = new Billiards.Core.Mathematics.Vec3(Math.Cos(a), Math.Sin(a), 0);
         var ghost = o - u * (2 * Params.R);
         var c = new Candidate(ShotKind.Direct, new BallId(1), new BallId(1), PocketId.FootLeft, o, u, ghost, 2, 1);
         var d = ghost - cue;
