@@ -1,3 +1,5 @@
+using Billiards.Core.Physics.Standard;
+using Billiards.Core.Physics.Thesis;
 using BenchmarkDotNet.Attributes;
 using Billiards.Core.Cue;
 using Billiards.Core.Physics;
@@ -27,8 +29,8 @@ public class SnapshotBenchmarks
     public void Setup()
     {
         var scene = Integrator == Integrators.Fixed
-            ? BenchmarkScenes.Load("thesis-eight-ball-break.json", Models.Thesis, Integrator)
-            : BenchmarkScenes.Load("eight-ball-break.json", Models.Standard, Integrator);
+            ? BenchmarkScenes.Load("thesis-eight-ball-break.json", ThesisModel.ModelName, Integrator)
+            : BenchmarkScenes.Load("eight-ball-break.json", StandardModel.ModelName, Integrator);
         _sim = SimulationFactory.Create(scene);
         _shot = scene.Shot!;
         _start = _sim.CreateSnapshot();

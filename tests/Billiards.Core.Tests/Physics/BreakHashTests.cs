@@ -1,3 +1,5 @@
+using Billiards.Core.Physics.Standard;
+using Billiards.Core.Physics.Thesis;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
 
@@ -15,10 +17,10 @@ namespace Billiards.Core.Tests.Physics;
 public class BreakHashTests
 {
     [Theory]
-    [InlineData("thesis-eight-ball-break.json", Models.Thesis, Integrators.Fixed, 0xD0E3B603DB3D0310UL)]
-    [InlineData("eight-ball-break.json", Models.Standard, Integrators.Exact, 0xEEE0D52A0869A515UL)]
-    [InlineData("eight-ball-break.json", Models.Standard, Integrators.Event, 0x540B1732DE6A59A1UL)]
-    [InlineData("eight-ball-break.json", Models.Standard, Integrators.Euler, 0x4D7BB36B494D9FBBUL)]
+    [InlineData("thesis-eight-ball-break.json", ThesisModel.ModelName, Integrators.Fixed, 0xD0E3B603DB3D0310UL)]
+    [InlineData("eight-ball-break.json", StandardModel.ModelName, Integrators.Exact, 0xEEE0D52A0869A515UL)]
+    [InlineData("eight-ball-break.json", StandardModel.ModelName, Integrators.Event, 0x540B1732DE6A59A1UL)]
+    [InlineData("eight-ball-break.json", StandardModel.ModelName, Integrators.Euler, 0x4D7BB36B494D9FBBUL)]
     public void TheBreakEndsInThePinnedState(string file, string model, string integrator, ulong expected)
     {
         var scene = SimulationKit.Load(file, model, integrator);

@@ -1,3 +1,5 @@
+using Billiards.Core.Physics.Standard;
+using Billiards.Core.Physics.Thesis;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
 
@@ -9,10 +11,10 @@ internal static class SimulationKit
     /// <summary>Scene file, model and integrator of each break the tests run.</summary>
     public static TheoryData<string, string, string> Breaks => new()
     {
-        { "thesis-eight-ball-break.json", Models.Thesis, Integrators.Fixed },
-        { "eight-ball-break.json", Models.Standard, Integrators.Exact },
-        { "eight-ball-break.json", Models.Standard, Integrators.Event },
-        { "eight-ball-break.json", Models.Standard, Integrators.Euler },
+        { "thesis-eight-ball-break.json", ThesisModel.ModelName, Integrators.Fixed },
+        { "eight-ball-break.json", StandardModel.ModelName, Integrators.Exact },
+        { "eight-ball-break.json", StandardModel.ModelName, Integrators.Event },
+        { "eight-ball-break.json", StandardModel.ModelName, Integrators.Euler },
     };
 
     public static Scene Load(string file, string model, string integrator) =>

@@ -1,3 +1,5 @@
+using Billiards.Core.Physics.Standard;
+using Billiards.Core.Physics.Thesis;
 using Billiards.Core.Cue;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
@@ -151,22 +153,22 @@ public class SnapshotTests
     [Fact]
     public void ASnapshotOfAnotherTableModelIsRefused()
     {
-        var scene = SimulationKit.Load("eight-ball-break.json", Models.Standard, Integrators.Exact);
+        var scene = SimulationKit.Load("eight-ball-break.json", StandardModel.ModelName, Integrators.Exact);
         var a = SimulationFactory.Create(scene);
         var b = SimulationFactory.Create(scene);
         var snapshot = a.CreateSnapshot();
         Assert.False(snapshot.Fits(b));
         Assert.Throws<ArgumentException>(() => b.Restore(snapshot));
         Assert.Throws<ArgumentException>(() => b.Capture(snapshot));
-        var thesis = SimulationFactory.Create(SimulationKit.Load("thesis-eight-ball-break.json", Models.Thesis, Integrators.Fixed));
+        var thesis = SimulationFactory.Create(SimulationKit.Load("thesis-eight-ball-break.json", ThesisModel.ModelName, Integrators.Fixed));
         Assert.Throws<ArgumentException>(() => thesis.Restore(snapshot));
     }
 
     [Fact]
     public void ATableModelRefusesASceneOfAnotherTable()
     {
-        var eight = SimulationKit.Load("eight-ball-break.json", Models.Standard, Integrators.Exact);
-        var euler = SimulationKit.Load("eight-ball-break.json", Models.Standard, Integrators.Euler);
+        var eight = SimulationKit.Load("eight-ball-break.json", StandardModel.ModelName, Integrators.Exact);
+        var euler = SimulationKit.Load("eight-ball-break.json", StandardModel.ModelName, Integrators.Euler);
         var model = SimulationFactory.Create(eight).TableModel;
         Assert.Throws<ArgumentException>(() => model.CreateSimulation(euler));
     }
@@ -176,7 +178,7 @@ public class SnapshotTests
     {
         // Draw (e_y below centre) acts at the cue ball's first ball contact and decays there: a
         // snapshot before that contact must carry it, or the rerun's cue ball would not draw back.
-        var scene = SimulationKit.Load("thesis-eight-ball-break.json", Models.Thesis, Integrators.Fixed);
+        var scene = SimulationKit.Load("thesis-eight-ball-break.json", ThesisModel.ModelName, Integrators.Fixed);
         var shot = scene.Shot! with { TipHeight = -0.6, TipSide = 0.3 };
         var sim = Create(scene);
         sim.Strike(shot);

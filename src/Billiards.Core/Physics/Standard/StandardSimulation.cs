@@ -38,7 +38,7 @@ public sealed partial class StandardSimulation : Simulation
 
     /// <summary>Creates the simulation of a scene's balls on a shared table model (the scene's table and physics are the model's).</summary>
     internal StandardSimulation(StandardTableModel model, Scene scene)
-        : base(Models.Standard, scene.Physics.Integrator, scene.Physics.Dt, scene.Table, [.. scene.Balls.Select(b => b.Id)])
+        : base(StandardModel.ModelName, scene.Physics.Integrator, scene.Physics.Dt, scene.Table, [.. scene.Balls.Select(b => b.Id)])
     {
         _model = model;
         _balls = new BallState[scene.Balls.Count];
@@ -197,6 +197,9 @@ public sealed partial class StandardSimulation : Simulation
         _engine?.BallChanged(index);
         _euler?.BallChanged(index);
     }
+
+    /// <inheritdoc />
+    public override CushionId CushionOf(int feature) => Geometry.CushionOf(feature);
 
     /// <inheritdoc />
     public override string FeatureName(EventKind kind, int feature) =>

@@ -4,6 +4,7 @@ using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Scenes;
 using Billiards.Core.Setup;
+using Billiards.Core.Table;
 
 namespace Billiards.Core.Physics.Thesis;
 
@@ -38,7 +39,7 @@ public sealed partial class ThesisSimulation : Simulation
 
     /// <summary>The scene's balls on a shared table model (the scene's table and physics are the model's).</summary>
     internal ThesisSimulation(ThesisTableModel model, Scene scene)
-        : base(Models.Thesis, Integrators.Fixed, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
+        : base(ThesisModel.ModelName, Integrators.Fixed, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
     {
         _model = model;
         var balls = new Ball[scene.Balls.Count];
@@ -164,6 +165,10 @@ public sealed partial class ThesisSimulation : Simulation
         ball.IsPocketed = true;
         _statesStale = true;
     }
+
+    /// <summary>The seed's features are numbered as <see cref="CushionId"/> is: rails 0-5, jaws 6 + pocket, backs 12 + pocket.</summary>
+    public override CushionId CushionOf(int feature) =>
+        (uint)feature < (uint)Initializer.CushionNames.Count ? (CushionId)feature : CushionId.None;
 
     /// <inheritdoc />
     public override string FeatureName(EventKind kind, int feature) => kind switch
