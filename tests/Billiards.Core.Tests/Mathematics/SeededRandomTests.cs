@@ -1,6 +1,8 @@
 using Billiards.Core.Mathematics;
 
-namespace Billiards.Core.Tests.Mathematics;
+// Not Billiards.Core.Tests.Mathematics: that namespace would hide Billiards.Core.Mathematics from
+// tests that write Mathematics.Vec3.
+namespace Billiards.Core.Tests.MathematicsTests;
 
 /// <summary>SeededRandom draws exactly what System.Random with the same seed draws, and its state copies.</summary>
 public class SeededRandomTests
