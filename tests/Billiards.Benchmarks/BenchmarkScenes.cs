@@ -22,7 +22,7 @@ public static class BenchmarkScenes
         double area = 2.54 * 1.27 / 16 * total;
         double length = Math.Sqrt(2 * area), width = length / 2;
         var table = TableSpec.FromPreset(total <= 16 ? "pool-9ft" : "pocketless") with { Length = length, Width = width };
-        double radius = model == Models.Thesis ? ThesisConstants.RadiusMetres : PhysicsParams.DefaultRadius;
+        double radius = ModelRegistry.Get(model).BallRadius(PhysicsParams.Default);
         int columns = (int)Math.Ceiling(Math.Sqrt(total * 2.0));
         int rows = (int)Math.Ceiling(total / (double)columns);
         double dx = length / (columns + 1), dy = width / (rows + 1);
@@ -41,7 +41,7 @@ public static class BenchmarkScenes
             }
             balls.Add(new BallSetup(new BallId(i), position, velocity, spin));
         }
-        var physics = PhysicsConfig.Default with { Model = model, Integrator = integrator };
+        var physics = PhysicsConfig.Default with { Model = ModelRegistry.Get(model), Integrator = integrator };
         return new Scene("benchmark", $"{total} balls, {moving} moving", table, physics, null, balls, null, null);
     }
 }

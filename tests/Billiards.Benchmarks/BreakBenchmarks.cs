@@ -26,8 +26,8 @@ public class BreakBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        var eight = BenchmarkScenes.Load("eight-ball-break.json", Models.Standard, Integrator);
-        var nine = BenchmarkScenes.Load("nine-ball-break.json", Models.Standard, Integrator);
+        var eight = BenchmarkScenes.Load("eight-ball-break.json", ModelRegistry.Standard.Name, Integrator);
+        var nine = BenchmarkScenes.Load("nine-ball-break.json", ModelRegistry.Standard.Name, Integrator);
         (_eight, _eightShot) = (SimulationFactory.Create(eight), eight.Shot!);
         (_nine, _nineShot) = (SimulationFactory.Create(nine), nine.Shot!);
     }

@@ -20,7 +20,7 @@ public class ScalingBenchmarks
     public int Balls { get; set; }
 
     [GlobalSetup]
-    public void Setup() => _sim = SimulationFactory.Create(BenchmarkScenes.Grid(Balls, Balls, Models.Standard, Integrators.Exact));
+    public void Setup() => _sim = SimulationFactory.Create(BenchmarkScenes.Grid(Balls, Balls, ModelRegistry.Standard.Name, Integrators.Exact));
 
     /// <summary>One step of 1/250 s.</summary>
     [Benchmark(OperationsPerInvoke = StepsPerInvoke)]

@@ -28,8 +28,10 @@ public class StepBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        string model = Model == "thesis" ? Models.Thesis : Models.Standard;
-        string integrator = Model == "thesis" ? Integrators.Fixed : Model;
+        // A name is the thesis model or one of the default model's integrators.
+        var thesis = ModelRegistry.Find(Model);
+        string model = thesis?.Name ?? ModelRegistry.Default.Name;
+        string integrator = thesis?.Integrators[0] ?? Model;
         _moving = SimulationFactory.Create(BenchmarkScenes.Grid(16, MovingBalls, model, integrator));
         _idle = SimulationFactory.Create(BenchmarkScenes.Grid(16, 0, model, integrator));
     }

@@ -15,13 +15,13 @@ public sealed record SoakOptions(string Model, string Integrator, double Dt, lon
     /// <summary>Parses <c>--model --integrator --dt --shots --seed --progress</c>; null on a bad argument.</summary>
     public static SoakOptions? Parse(string[] args)
     {
-        var o = new SoakOptions(Models.Standard, Integrators.Exact, PhysicsConfig.DefaultDt, 10_000, 1, 0);
+        var o = new SoakOptions(ModelRegistry.Default.Name, Integrators.Exact, PhysicsConfig.DefaultDt, 10_000, 1, 0);
         for (int i = 0; i + 1 < args.Length; i += 2)
         {
             string v = args[i + 1];
             o = args[i] switch
             {
-                "--model" => o with { Model = v, Integrator = Integrators.For(v)[0] },
+                "--model" => ModelRegistry.Find(v) is { } m ? o with { Model = v, Integrator = m.Integrators[0] } : null!,
                 "--integrator" => o with { Integrator = v },
                 "--dt" => o with { Dt = double.Parse(v, CultureInfo.InvariantCulture) },
                 "--shots" => o with { Shots = long.Parse(v, CultureInfo.InvariantCulture) },
@@ -35,7 +35,7 @@ public sealed record SoakOptions(string Model, string Integrator, double Dt, lon
                 return null;
             }
         }
-        if (args.Length % 2 != 0 || o.Model is not (Models.Standard or Models.Thesis) || !Integrators.For(o.Model).Contains(o.Integrator))
+        if (args.Length % 2 != 0 || ModelRegistry.Find(o.Model) is not { } model || !model.Integrators.Contains(o.Integrator))
         {
             return null;
         }
@@ -109,9 +109,11 @@ public sealed class SoakRunner(SoakOptions options)
 
     private Scene MakeScene(Random random, long shot)
     {
-        var table = TableSpec.FromPreset(options.Model == Models.Thesis ? "thesis" : Presets[random.Next(Presets.Length)]);
-        var physics = PhysicsConfig.Default with { Model = options.Model, Integrator = options.Integrator, Dt = options.Dt };
-        double r = options.Model == Models.Thesis ? ThesisConstants.RadiusMetres : physics.Params.R;
+        // The default model is soaked on every pool table, another model on its own table.
+        var model = ModelRegistry.Get(options.Model);
+        var table = TableSpec.FromPreset(model == ModelRegistry.Default ? Presets[random.Next(Presets.Length)] : model.DefaultTablePreset);
+        var physics = PhysicsConfig.Default with { Model = model, Integrator = options.Integrator, Dt = options.Dt };
+        double r = model.BallRadius(physics.Params);
         var balls = new List<BallSetup>();
         RackSpec? rack = null;
         if (random.Next(2) == 0)

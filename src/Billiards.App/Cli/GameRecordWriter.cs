@@ -34,7 +34,7 @@ public static class GameRecordWriter
             w.WriteString("preset", table.Preset);
             w.WriteEndObject();
             w.WriteStartObject("physics");
-            w.WriteString("model", Models.Standard);
+            w.WriteString("model", ModelRegistry.Standard.Name);
             w.WriteString("integrator", Integrators.Event);
             w.WriteNumber("dt", PhysicsConfig.DefaultDt);
             w.WriteEndObject();

@@ -165,7 +165,9 @@ public sealed class PhysicsNode : Node
             return;
         }
         _simulation.Balls.CopyTo(_previous);
-        _simulation.Step();
+        // To the tick's time: one fixed step when the tick is the step, and the event integrator
+        // stops there instead of jumping to its next event.
+        _simulation.AdvanceTo(_simulation.Time + dt);
         PublishEvents();
         if (_simulation.IsAtRest)
         {
@@ -187,6 +189,7 @@ public sealed class PhysicsNode : Node
     /// <inheritdoc />
     protected override void Draw(FrameBuilder frame)
     {
+        frame.Frame.BallRadius = (float)BallRadius;
         var balls = _simulation.Balls;
         float alpha = (float)frame.Alpha;
         for (int i = 0; i < balls.Length; i++)

@@ -20,9 +20,6 @@ public sealed class RulesNode(string rules) : Node
     /// <summary>Balls pocketed by the last finished shot.</summary>
     public IReadOnlyList<BallId> LastShotPotted { get; private set; } = [];
 
-    /// <summary>Signal: a shot ended (balls at rest) with these balls pocketed.</summary>
-    public event Action<IReadOnlyList<BallId>>? ShotEnded;
-
     /// <inheritdoc />
     protected override void Ready()
     {
@@ -38,7 +35,6 @@ public sealed class RulesNode(string rules) : Node
         _physics.CameToRest += _ =>
         {
             LastShotPotted = _pottedThisShot.ToArray();
-            ShotEnded?.Invoke(LastShotPotted);
         };
     }
 }

@@ -8,7 +8,7 @@ namespace Billiards.App.Reports;
 
 /// <summary>One measured configuration: a scene run by one model and integrator at one step.</summary>
 /// <param name="Scene">Scene file name.</param>
-/// <param name="Model">"standard" or "thesis".</param>
+/// <param name="Model">The model's name (<see cref="ModelRegistry"/>).</param>
 /// <param name="Integrator">"exact", "euler", "event" or "fixed".</param>
 /// <param name="Dt">Fixed step (s); the event solver's row carries the scene's dt but does not use it.</param>
 /// <param name="MaxError">Largest final-position distance of any ball from the event solver's (m).</param>
@@ -16,7 +16,11 @@ namespace Billiards.App.Reports;
 public sealed record AccuracyRow(string Scene, string Model, string Integrator, double Dt, double MaxError, double MedianMicroseconds)
 {
     /// <summary>The series this row belongs to in the plot: "exact", "euler", "event" or "thesis".</summary>
-    public string Series => Model == Models.Thesis ? "thesis" : Integrator;
+    public string Series => SeriesOf(Model, Integrator);
+
+    /// <summary>A model's integrator is its series; a model with one integrator is a series of its own (the thesis model's error is model error).</summary>
+    public static string SeriesOf(string model, string integrator) =>
+        ModelRegistry.Get(model).Integrators.Count > 1 ? integrator : model;
 }
 
 /// <summary>
@@ -46,9 +50,9 @@ public static class AccuracyReport
         foreach (string path in scenePaths)
         {
             string name = Path.GetFileNameWithoutExtension(path);
-            var reference = SceneLoader.Load(path, new SceneOverrides(Models.Standard, Integrators.Event));
+            var reference = SceneLoader.Load(path, new SceneOverrides(ModelRegistry.Standard.Name, Integrators.Event));
             var (truth, eventMicros) = TimeShot(reference, minRepeats, minTotalMilliseconds);
-            rows.Add(new AccuracyRow(name, Models.Standard, Integrators.Event, reference.Physics.Dt, 0, eventMicros));
+            rows.Add(new AccuracyRow(name, ModelRegistry.Standard.Name, Integrators.Event, reference.Physics.Dt, 0, eventMicros));
             Report(progress, ++done, total, name, "event", null, 0, eventMicros);
             foreach (var (model, integrator, dt) in configs)
             {
@@ -56,7 +60,7 @@ public static class AccuracyReport
                 var (final, micros) = TimeShot(scene, minRepeats, minTotalMilliseconds);
                 double error = MaxDistance(final, truth);
                 rows.Add(new AccuracyRow(name, model, integrator, dt, error, micros));
-                Report(progress, ++done, total, name, model == Models.Thesis ? "thesis" : integrator, dt, error, micros);
+                Report(progress, ++done, total, name, AccuracyRow.SeriesOf(model, integrator), dt, error, micros);
             }
         }
         return rows;
@@ -76,7 +80,7 @@ public static class AccuracyReport
             {
                 throw new SceneException(path, "$", "the accuracy report measures a shot, and the scene has no \"shot\"");
             }
-            SceneLoader.Load(path, new SceneOverrides(Models.Standard, Integrators.Event));
+            SceneLoader.Load(path, new SceneOverrides(ModelRegistry.Standard.Name, Integrators.Event));
             foreach (var (model, integrator, dt) in Configurations())
             {
                 SceneLoader.Load(path, new SceneOverrides(model, integrator, dt));
@@ -89,9 +93,9 @@ public static class AccuracyReport
         var configs = new List<(string Model, string Integrator, double Dt)>();
         foreach (double dt in Steps)
         {
-            configs.Add((Models.Standard, Integrators.Exact, dt));
-            configs.Add((Models.Standard, Integrators.Euler, dt));
-            configs.Add((Models.Thesis, Integrators.Fixed, dt));
+            configs.Add((ModelRegistry.Standard.Name, Integrators.Exact, dt));
+            configs.Add((ModelRegistry.Standard.Name, Integrators.Euler, dt));
+            configs.Add((ModelRegistry.Thesis.Name, ModelRegistry.Thesis.Integrators[0], dt));
         }
         return configs;
     }
@@ -204,7 +208,7 @@ public static class AccuracyReport
         sb.Append(inv, $"# Accuracy report: error against run time\n\n");
         sb.Append(inv, $"{sceneCount} scenes of `assets/scenes/accuracy`, each run from the strike to rest. Error: the largest final-position distance of any ball from the event-based reference solver (m), per scene; the table gives the worst and the median scene, the plot the median (a typical shot: the worst is a near-chaotic combination). Time: the median wall time of one shot after warm-up (µs), averaged over the suite. Made by `billiards report accuracy`.\n\n");
         sb.Append("| series | dt (s) | worst error (m) | median error (m) | mean time per shot (µs) |\n|---|---|---|---|---|\n");
-        foreach (var name in new[] { "exact", "euler", "thesis", "event" }.Where(series.ContainsKey))
+        foreach (var name in new[] { Integrators.Exact, Integrators.Euler, ModelRegistry.Thesis.Name, Integrators.Event }.Where(series.ContainsKey))
         {
             foreach (var p in series[name])
             {
@@ -237,7 +241,7 @@ public static class AccuracyReport
             var at250 = exact.MinBy(p => Math.Abs(p.Dt - 1.0 / 250))!;
             sb.Append(inv, $"\n**Cost of `event`:** {ev[0].MeanMicroseconds:0.0} µs per shot, {ev[0].MeanMicroseconds / at250.MeanMicroseconds:0.00} times `exact` at dt = 1/250 ({at250.MeanMicroseconds:0.0} µs).\n");
         }
-        if (series.TryGetValue("thesis", out var thesis))
+        if (series.TryGetValue(ModelRegistry.Thesis.Name, out var thesis))
         {
             sb.Append(inv, $"\n**`thesis`** is the seed's model, not an integrator of the standard one: its error ({thesis.Min(p => p.MaxError):0.00} to {thesis.Max(p => p.MaxError):0.00} m) is model error and does not vanish as dt shrinks.\n");
         }
@@ -274,7 +278,7 @@ public static class AccuracyReport
         sb.Append(inv, $"<text transform=\"translate(22 {(T + H - B) / 2}) rotate(-90)\" text-anchor=\"middle\">median final-position error vs event (m, log)</text>\n");
         string[] colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd"];
         int k = 0;
-        foreach (var name in new[] { "exact", "euler", "thesis", "event" }.Where(series.ContainsKey))
+        foreach (var name in new[] { Integrators.Exact, Integrators.Euler, ModelRegistry.Thesis.Name, Integrators.Event }.Where(series.ContainsKey))
         {
             string c = colours[k];
             var s = series[name];

@@ -146,7 +146,7 @@ public sealed class TablePosition
     public StandardSimulation CreateSimulation(TableSpec table, PhysicsParams physics)
     {
         var balls = Enumerate().Select(b => new BallSetup(b.Id, b.Position, Vec3.Zero, Vec3.Zero)).ToList();
-        var scene = new Scene("planner", null, table, new PhysicsConfig(Models.Standard, Integrators.Event, PhysicsConfig.DefaultDt, physics), null, balls, null, null);
+        var scene = new Scene("planner", null, table, new PhysicsConfig(ModelRegistry.Standard, Integrators.Event, PhysicsConfig.DefaultDt, physics), null, balls, null, null);
         return new StandardSimulation(scene);
     }
 

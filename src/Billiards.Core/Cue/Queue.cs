@@ -2,8 +2,7 @@ namespace Billiards.Core.Cue;
 
 /// <summary>
 /// The cue of the thesis model (seed 4.1.5, 4.4.3, 4.4.4), in the seed's units. It holds the
-/// tip offset along the aim (<see cref="Position"/>, drawing only), the tip displacement from
-/// the cue ball's centre (<see cref="EX"/> sideways, <see cref="EY"/> up: the effet, which the
+/// tip displacement from the cue ball's centre (<see cref="EX"/> sideways, <see cref="EY"/> up: the effet, which the
 /// physics engine reads and decays after each collision), and the elevation (drawing only).
 /// </summary>
 public sealed class Queue
@@ -16,18 +15,6 @@ public sealed class Queue
 
     /// <summary>The constant of Formel 31 that turns mouse travel per millisecond into cm/s.</summary>
     public const float StrokeScale = 250f;
-
-    /// <summary>Mouse pixels to tip displacement (cm per pixel), Formel 32-33.</summary>
-    public const float TipPerPixel = 0.01f;
-
-    /// <summary>
-    /// Tip-to-ball distance at rest (cm). The seed does not give its value; the cue is drawn this
-    /// far behind the ball until the player pulls it back.
-    /// </summary>
-    public const float DefaultPosition = 5f;
-
-    /// <summary>Offset of the tip from the cue ball along the aim, d (cm); drawing only (seed 4.5.3).</summary>
-    public float Position { get; set; } = DefaultPosition;
 
     /// <summary>Sideways tip displacement e_x (cm), positive to the right seen from behind the cue; bends cushion rebounds (Formel 24).</summary>
     public float EX { get; set; }
@@ -66,33 +53,9 @@ public sealed class Queue
         return MathF.Min(distance / milliseconds * StrokeScale, MaxStrokeSpeed);
     }
 
-    /// <summary>
-    /// Moves the tip point with the mouse (Formel 32-33): e_x += dx * 0.01, e_y -= dy * 0.01
-    /// (screen y grows downwards), then pulls (e_x, e_y) back radially onto the ball's outline if
-    /// it left it, so the cue cannot miss the ball.
-    /// </summary>
-    /// <param name="dx">Mouse travel to the right (pixels).</param>
-    /// <param name="dy">Mouse travel down the screen (pixels).</param>
-    public void MoveTipPoint(float dx, float dy)
-    {
-        float ex = EX + dx * TipPerPixel;
-        float ey = EY - dy * TipPerPixel;
-        float length = MathF.Sqrt(ex * ex + ey * ey);
-        if (length > BallRadius)
-        {
-            // The seed only says "a limit keeps the cue from missing the ball"; a radial pull-back
-            // keeps the direction the player moved towards.
-            ex *= BallRadius / length;
-            ey *= BallRadius / length;
-        }
-        EX = ex;
-        EY = ey;
-    }
-
-    /// <summary>Back to the start of a shot: tip at rest distance, centred, level.</summary>
+    /// <summary>Back to the start of a shot: tip centred, cue level.</summary>
     public void Reset()
     {
-        Position = DefaultPosition;
         EX = 0;
         EY = 0;
         Grade = 0;

@@ -5,14 +5,15 @@ using Billiards.Core.Table;
 namespace Billiards.Core.Physics;
 
 /// <summary>
-/// A running simulation of one table: a model (thesis or standard) with one integrator. Core
-/// takes fixed steps only; the caller owns the clock. State is exposed in SI through
+/// A running simulation of one table: a model (<see cref="ModelRegistry"/>) with one integrator.
+/// The caller owns the clock: it takes fixed steps (<see cref="Step"/>) or advances to a time
+/// (<see cref="AdvanceTo"/>, which the event integrator reaches exactly). State is exposed in SI through
 /// <see cref="Balls"/>, whatever units the model keeps inside.
 /// </summary>
 public abstract partial class Simulation
 {
     /// <summary>Creates the common part of a simulation.</summary>
-    /// <param name="model">"thesis" or "standard".</param>
+    /// <param name="model">The model's name as results write it (<see cref="PhysicsModel.Name"/>).</param>
     /// <param name="integrator">The integrator's name as results write it.</param>
     /// <param name="dt">Fixed step (s).</param>
     /// <param name="table">The table.</param>
@@ -26,7 +27,7 @@ public abstract partial class Simulation
         Ids = ids;
     }
 
-    /// <summary>"thesis" or "standard".</summary>
+    /// <summary>The model's name as results write it (<see cref="PhysicsModel.Name"/>).</summary>
     public string Model { get; }
 
     /// <summary>The integrator: "fixed" (thesis), "exact", "euler" or "event".</summary>

@@ -8,29 +8,20 @@ using Billiards.Core.Table;
 namespace Billiards.Core.Scenes;
 
 /// <summary>The physics a scene asks for.</summary>
-/// <param name="Model">"standard" (default) or "thesis".</param>
-/// <param name="Integrator">"exact" (default), "euler" or "event" for standard; "fixed" for thesis.</param>
+/// <param name="Model">The model (<see cref="ModelRegistry"/>; the standard model by default).</param>
+/// <param name="Integrator">One of the model's <see cref="PhysicsModel.Integrators"/>.</param>
 /// <param name="Dt">Fixed step (s); default 1/250.</param>
 /// <param name="Params">Parameters of the standard model (the thesis model keeps its own constants).</param>
-public sealed record PhysicsConfig(string Model, string Integrator, double Dt, PhysicsParams Params)
+public sealed record PhysicsConfig(PhysicsModel Model, string Integrator, double Dt, PhysicsParams Params)
 {
     /// <summary>The default step, 1/250 s (the seed's rate).</summary>
     public const double DefaultDt = 1.0 / 250.0;
 
     /// <summary>The standard model with the exact integrator at 1/250 s and default parameters.</summary>
-    public static PhysicsConfig Default { get; } = new(Models.Standard, Integrators.Exact, DefaultDt, PhysicsParams.Default);
+    public static PhysicsConfig Default { get; } = new(ModelRegistry.Default, ModelRegistry.Default.Integrators[0], DefaultDt, PhysicsParams.Default);
 }
 
-/// <summary>Names of the models.</summary>
-public static class Models
-{
-    /// <summary>The physically based model.</summary>
-    public const string Standard = "standard";
-    /// <summary>The seed's model, kept faithful.</summary>
-    public const string Thesis = "thesis";
-}
-
-/// <summary>Names of the integrators.</summary>
+/// <summary>Names of the integrators (which model takes which: <see cref="PhysicsModel.Integrators"/>).</summary>
 public static class Integrators
 {
     /// <summary>Closed-form motion with exact collision times inside fixed steps.</summary>
@@ -41,10 +32,6 @@ public static class Integrators
     public const string Event = "event";
     /// <summary>The thesis model's own fixed step with overlap detection.</summary>
     public const string Fixed = "fixed";
-
-    /// <summary>The integrators a model accepts; the first is its default.</summary>
-    public static IReadOnlyList<string> For(string model) =>
-        model == Models.Thesis ? [Fixed] : [Exact, Euler, Event];
 }
 
 /// <summary>A ball's initial state as the scene (or its rack) places it.</summary>
@@ -72,7 +59,7 @@ public sealed record Scene(
     public Rules.GameState? Game { get; init; }
 
     /// <summary>The ball radius the scene's model uses (m).</summary>
-    public double BallRadius => Physics.Model == Models.Thesis ? ThesisConstants.RadiusMetres : Physics.Params.R;
+    public double BallRadius => Physics.Model.BallRadius(Physics.Params);
 }
 
 /// <summary>Constants of the thesis model that the rest of Core needs in SI.</summary>

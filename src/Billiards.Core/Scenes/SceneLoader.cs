@@ -90,8 +90,8 @@ public static class SceneLoader
             var physics = fields.TryGetValue("physics", out var p) ? ReadPhysics(p, overrides) : ApplyOverrides(PhysicsConfig.Default, overrides, "$");
             var table = fields.TryGetValue("table", out var t)
                 ? ReadTable(t)
-                : TableSpec.FromPreset(physics.Model == Models.Thesis ? "thesis" : "pool-9ft");
-            double radius = physics.Model == Models.Thesis ? ThesisConstants.RadiusMetres : physics.Params.R;
+                : TableSpec.FromPreset(physics.Model.DefaultTablePreset);
+            double radius = physics.Model.BallRadius(physics.Params);
 
             RackSpec? rack = fields.TryGetValue("rack", out var r) ? ReadRack(r) : null;
             var balls = new SortedDictionary<int, (BallSetup Ball, string Path)>();
@@ -176,13 +176,13 @@ public static class SceneLoader
             var config = PhysicsConfig.Default;
             if (f.TryGetValue("model", out var m))
             {
-                string model = OneOf(m, "$.physics.model", Models.Standard, Models.Thesis);
-                config = config with { Model = model, Integrator = Integrators.For(model)[0] };
+                var model = ModelRegistry.Get(OneOf(m, "$.physics.model", [.. ModelRegistry.Names]));
+                config = config with { Model = model, Integrator = model.Integrators[0] };
             }
             if (f.TryGetValue("integrator", out var i))
             {
-                string model = overrides.Model ?? config.Model;
-                config = config with { Integrator = OneOf(i, "$.physics.integrator", [.. Integrators.For(model)]) };
+                var model = ModelRegistry.Find(overrides.Model) ?? config.Model;
+                config = config with { Integrator = OneOf(i, "$.physics.integrator", [.. model.Integrators]) };
             }
             if (f.TryGetValue("dt", out var dt))
             {
@@ -199,21 +199,19 @@ public static class SceneLoader
         {
             if (o.Model is not null)
             {
-                if (o.Model is not (Models.Standard or Models.Thesis))
+                var model = ModelRegistry.Find(o.Model)
+                    ?? throw new SceneException("--model", "$", $"unknown model \"{o.Model}\" (expected one of {Quote(ModelRegistry.Names)})");
+                config = config with { Model = model };
+                if (!model.Integrators.Contains(config.Integrator))
                 {
-                    throw new SceneException("--model", "$", $"unknown model \"{o.Model}\" (expected one of \"standard\", \"thesis\")");
-                }
-                config = config with { Model = o.Model };
-                if (!Integrators.For(o.Model).Contains(config.Integrator))
-                {
-                    config = config with { Integrator = Integrators.For(o.Model)[0] };
+                    config = config with { Integrator = model.Integrators[0] };
                 }
             }
             if (o.Integrator is not null)
             {
-                if (!Integrators.For(config.Model).Contains(o.Integrator))
+                if (!config.Model.Integrators.Contains(o.Integrator))
                 {
-                    throw new SceneException("--integrator", "$", $"integrator \"{o.Integrator}\" is not available for model \"{config.Model}\" (expected one of {Quote(Integrators.For(config.Model))})");
+                    throw new SceneException("--integrator", "$", $"integrator \"{o.Integrator}\" is not available for model \"{config.Model}\" (expected one of {Quote(config.Model.Integrators)})");
                 }
                 config = config with { Integrator = o.Integrator };
             }
@@ -302,9 +300,9 @@ public static class SceneLoader
                 throw Error(path, "missing \"id\"");
             }
             string idText = String(idElement, path + ".id");
-            if (!BallId.TryParse(idText, out var id))
+            if (!BallSet.Pool.TryParse(idText, out var id))
             {
-                throw Error(path + ".id", $"unknown ball id \"{idText}\" (expected \"cue\" or \"1\" .. \"15\")");
+                throw Error(path + ".id", $"unknown ball id \"{idText}\" (expected {BallSet.Pool.Describe()})");
             }
             if (!f.TryGetValue("position", out var pos))
             {

@@ -1,6 +1,4 @@
 using Billiards.Core.Physics;
-using Billiards.Core.Physics.Standard;
-using Billiards.Core.Physics.Thesis;
 
 namespace Billiards.Core.Scenes;
 
@@ -8,9 +6,9 @@ namespace Billiards.Core.Scenes;
 public static class SimulationFactory
 {
     /// <summary>A new simulation of the scene at t = 0, before its shot.</summary>
-    public static Simulation Create(Scene scene) => scene.Physics.Model switch
+    public static Simulation Create(Scene scene)
     {
-        Models.Thesis => new ThesisSimulation(scene),
-        _ => new StandardSimulation(scene),
-    };
+        ArgumentNullException.ThrowIfNull(scene);
+        return scene.Physics.Model.Create(scene);
+    }
 }

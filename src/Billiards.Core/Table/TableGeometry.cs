@@ -67,9 +67,11 @@ public sealed class TableGeometry
     private readonly CushionNose[] _noses;
     private readonly PocketCircle[] _pockets;
     private readonly string[] _cushionNames;
+    private readonly CushionId[] _cushionIds;
 
-    private TableGeometry(TableSpec spec, List<CushionSegment> segments, List<CushionNose> noses, List<PocketCircle> pockets, List<string> names)
+    private TableGeometry(TableSpec spec, List<CushionSegment> segments, List<CushionNose> noses, List<PocketCircle> pockets, List<string> names, List<CushionId> ids)
     {
+        _cushionIds = [.. ids];
         Spec = spec;
         _segments = [.. segments];
         _noses = [.. noses];
@@ -95,6 +97,9 @@ public sealed class TableGeometry
     /// <summary>Names of cushions and jaws, by feature index: "head", "foot", "left-head", ..., "foot-left-jaw-foot".</summary>
     public IReadOnlyList<string> CushionNames => _cushionNames;
 
+    /// <summary>The model-independent identity of a cushion or jaw feature (both jaws of a pocket are its jaw), or <see cref="CushionId.None"/>.</summary>
+    public CushionId CushionOf(int feature) => (uint)feature < (uint)_cushionIds.Length ? _cushionIds[feature] : CushionId.None;
+
     /// <summary>The name of a cushion or jaw feature, or "?" for an unknown index.</summary>
     public string CushionName(int feature) => (uint)feature < (uint)_cushionNames.Length ? _cushionNames[feature] : "?";
 
@@ -110,6 +115,7 @@ public sealed class TableGeometry
         var noses = new List<CushionNose>();
         var pockets = new List<PocketCircle>();
         var names = new List<string> { "head", "foot", "left-head", "left-foot", "right-head", "right-foot" };
+        var ids = new List<CushionId> { CushionId.Head, CushionId.Foot, CushionId.LeftHead, CushionId.LeftFoot, CushionId.RightHead, CushionId.RightFoot };
 
         // How far each rail stops short of the corner and of the middle of a long rail.
         double corner = spec.HasPockets ? spec.CornerPocketMouth / Math.Sqrt(2) : 0;
@@ -131,7 +137,7 @@ public sealed class TableGeometry
             {
                 segments.Add(new CushionSegment(rails[i].A, rails[i].B, rails[i].N, i));
             }
-            return new TableGeometry(spec, segments, noses, pockets, names);
+            return new TableGeometry(spec, segments, noses, pockets, names, ids);
         }
 
         // Each rail end at a pocket: (rail, which end, pocket, rail word of the jaw name).
@@ -166,6 +172,7 @@ public sealed class TableGeometry
             var noseCentre = tip + bisector * (NoseRadius / Math.Sin(angle / 2));
             int feature = names.Count;
             names.Add($"{PocketNames[pocket]}-jaw-{railWord}");
+            ids.Add(CushionIds.Jaw((PocketId)pocket));
             noses.Add(new CushionNose(noseCentre, NoseRadius, feature));
             segments.Add(new CushionSegment(tip + jaw * tangent, tip + jaw * JawLength, jawNormal, feature));
             var rt = trimmed[rail];
@@ -190,6 +197,6 @@ public sealed class TableGeometry
         {
             pockets.Add(new PocketCircle(mouths[i].Middle + mouths[i].Out * ballRadius, ballRadius, i));
         }
-        return new TableGeometry(spec, segments, noses, pockets, names);
+        return new TableGeometry(spec, segments, noses, pockets, names, ids);
     }
 }

@@ -100,6 +100,8 @@ internal sealed class FakeSimulation : Simulation
 
     public override double BallRadius => PhysicsParams.DefaultRadius;
 
+    public override Billiards.Core.Table.CushionId CushionOf(int feature) => Billiards.Core.Table.CushionId.None;
+
     protected override void PutBall(int index, Vec3 position)
     {
         _balls[index] = _balls[index] with { Position = position, Velocity = Vec3.Zero, State = MotionState.Stationary, Pocket = -1 };

@@ -11,7 +11,7 @@ public class AllocationTests
 {
     private static Simulation Break(string file, string integrator)
     {
-        var scene = SceneLoader.Load(AssetFolder.Scene(file), new SceneOverrides(Models.Standard, integrator));
+        var scene = SceneLoader.Load(AssetFolder.Scene(file), new SceneOverrides(ModelRegistry.Standard.Name, integrator));
         return SimulationFactory.Create(scene);
     }
 
@@ -44,12 +44,12 @@ public class AllocationTests
     }
 
     [Theory]
-    [InlineData(Models.Standard, Integrators.Exact)]
-    [InlineData(Models.Standard, Integrators.Euler)]
-    [InlineData(Models.Thesis, Integrators.Fixed)]
-    public void AStepAllocatesNothingAfterWarmUp(string model, string integrator)
+    [InlineData("eight-ball-break.json", Integrators.Exact)]
+    [InlineData("eight-ball-break.json", Integrators.Euler)]
+    [InlineData("thesis-eight-ball-break.json", Integrators.Fixed)]
+    public void AStepAllocatesNothingAfterWarmUp(string file, string integrator)
     {
-        var scene = SceneLoader.Load(AssetFolder.Scene(model == Models.Thesis ? "thesis-eight-ball-break.json" : "eight-ball-break.json"), new SceneOverrides(model, integrator));
+        var scene = SceneLoader.Load(AssetFolder.Scene(file), new SceneOverrides(null, integrator));
         var sim = SimulationFactory.Create(scene);
         sim.Strike(scene.Shot!);
         long bytes = BytesOf(() =>

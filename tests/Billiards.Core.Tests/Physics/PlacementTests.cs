@@ -3,6 +3,7 @@ using Billiards.Core.Balls;
 using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
+using Billiards.Core.Physics.Thesis;
 using Billiards.Core.Scenes;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
@@ -12,10 +13,12 @@ namespace Billiards.Core.Tests.Physics;
 /// <summary>Placing, removing, spotting and reracking balls through the simulation, under both models.</summary>
 public class PlacementTests
 {
-    public static TheoryData<string> Models => new() { "standard", "thesis" };
+    public static TheoryData<string> Models => [.. ModelRegistry.Names];
 
     // Positions come back through the thesis model's single-precision centimetres.
-    private static double Tolerance(Simulation sim) => sim.Model == "thesis" ? 1e-6 : 0;
+    private static double Tolerance(Simulation sim) => sim is ThesisSimulation ? 1e-6 : 0;
+
+    private static double Tolerance(string model) => Tolerance(Create(model));
 
     private static string F(double x) => x.ToString("R", CultureInfo.InvariantCulture);
 
@@ -125,13 +128,13 @@ public class PlacementTests
     [MemberData(nameof(Models))]
     public void ASpottedBallGoesAsCloseBehindTheSpotAsItFits(string model)
     {
-        double r = model == "thesis" ? ThesisConstants.RadiusMetres : PhysicsParams.DefaultRadius;
+        double r = ModelRegistry.Get(model).BallRadius(PhysicsParams.Default);
         double spot = 1.27 / 2;
         // A ball R off the long axis and R behind the spot blocks |x - (spot + R)| < sqrt(4R^2 - R^2).
         var sim = Create(model, ("cue", -0.6, 0), ("5", spot + r, r), ("9", 0.2, 0.3));
         var at = sim.SpotBall(new BallId(9));
         // The thesis model keeps the blocking ball in single-precision centimetres.
-        Assert.Equal(spot + r + Math.Sqrt(3) * r, at.X, model == "thesis" ? 1e-6 : 1e-12);
+        Assert.Equal(spot + r + Math.Sqrt(3) * r, at.X, Math.Max(Tolerance(model), 1e-12));
         Assert.Equal(0, at.Y);
         AssertAt(sim, "9", at.X, 0);
         Assert.Equal(2 * r, (State(sim, "9").Position - State(sim, "5").Position).XY.Length, 1e-6);
@@ -141,7 +144,7 @@ public class PlacementTests
     [MemberData(nameof(Models))]
     public void ASpottedBallGoesInFrontOfTheSpotWhenTheAxisBehindItIsFull(string model)
     {
-        double r = model == "thesis" ? ThesisConstants.RadiusMetres : PhysicsParams.DefaultRadius;
+        double r = ModelRegistry.Get(model).BallRadius(PhysicsParams.Default);
         double spot = 1.27 / 2, limit = 1.27 - r;
         // Balls touching in a line from the spot to the foot cushion: no gap of 2R is left behind it.
         var balls = new List<(string, double, double)> { ("cue", -0.6, 0), ("15", 0.2, 0.3) };
@@ -153,7 +156,7 @@ public class PlacementTests
         Assert.True(balls[^1].Item2 + 4 * r > limit, "the line reaches the cushion");
         var sim = Create(model, [.. balls]);
         var at = sim.SpotBall(new BallId(15));
-        Assert.Equal(spot - 2 * r, at.X, model == "thesis" ? 1e-6 : 1e-12);
+        Assert.Equal(spot - 2 * r, at.X, Math.Max(Tolerance(model), 1e-12));
         AssertAt(sim, "15", at.X, 0);
     }
 

@@ -29,8 +29,8 @@ public class ShotSpeedTests
     [InlineData(7.5, 200.0)]
     public void BothModelsSendTheCueBallOffAtTheSameSpeedForTheSameCueSpeed(double cueSpeed, double aimDeg)
     {
-        double standard = CueBallSpeed("standard", cueSpeed, aimDeg);
-        double thesis = CueBallSpeed("thesis", cueSpeed, aimDeg);
+        double standard = CueBallSpeed(ModelRegistry.Standard.Name, cueSpeed, aimDeg);
+        double thesis = CueBallSpeed(ModelRegistry.Thesis.Name, cueSpeed, aimDeg);
         Assert.InRange(thesis / standard, 0.99, 1.01);
         // Both are the centre-ball impact of TP A-30, v = 2 V / (1 + m / M): the standard model
         // with its default ball (0.170097 kg) and cue (0.567 kg), the thesis model with the seed's
@@ -51,7 +51,7 @@ public class ShotSpeedTests
     public void TheThesisStrikeCapsTheCueNotTheBallAtFormel31sFastestStroke()
     {
         // 12 m/s and 8 m/s are both the cap, 800 cm/s, for the cue.
-        Assert.Equal(CueBallSpeed("thesis", 8, 0), CueBallSpeed("thesis", 12, 0));
-        Assert.Equal(8 * ThesisSimulation.CueToBallSpeed, CueBallSpeed("thesis", 12, 0), 1e-5);
+        Assert.Equal(CueBallSpeed(ModelRegistry.Thesis.Name, 8, 0), CueBallSpeed(ModelRegistry.Thesis.Name, 12, 0));
+        Assert.Equal(8 * ThesisSimulation.CueToBallSpeed, CueBallSpeed(ModelRegistry.Thesis.Name, 12, 0), 1e-5);
     }
 }

@@ -18,7 +18,7 @@ public class SceneLoaderTests
     public void ASceneWithoutPhysicsRunsTheStandardModelWithTheExactIntegratorAt250Hz()
     {
         var scene = Parse($$"""{ {{Head}}, "balls": [ { "id": "cue", "position": [0, 0] } ] }""");
-        Assert.Equal("standard", scene.Physics.Model);
+        Assert.Equal("standard", scene.Physics.Model.Name);
         Assert.Equal("exact", scene.Physics.Integrator);
         Assert.Equal(1.0 / 250, scene.Physics.Dt);
         Assert.Equal(PhysicsParams.Default, scene.Physics.Params);
@@ -71,7 +71,7 @@ public class SceneLoaderTests
     public void TheThesisModelDefaultsToTheThesisTableAndItsFixedStep()
     {
         var scene = Parse($$"""{ {{Head}}, "physics": { "model": "thesis" }, "balls": [ { "id": "cue", "position": [0, 0] } ] }""");
-        Assert.Equal(("thesis", "fixed", "thesis"), (scene.Physics.Model, scene.Physics.Integrator, scene.Table.Preset));
+        Assert.Equal(("thesis", "fixed", "thesis"), (scene.Physics.Model.Name, scene.Physics.Integrator, scene.Table.Preset));
         Assert.Equal(0.0286, scene.Balls[0].Position.Z);
     }
 

@@ -31,7 +31,7 @@ public sealed class StandardSimulation : Simulation
 
     /// <summary>Creates the simulation of a scene with the given collision models.</summary>
     public StandardSimulation(Scene scene, IBallBallModel ballBall, IBallCushionModel ballCushion)
-        : base(Models.Standard, scene.Physics.Integrator, scene.Physics.Dt, scene.Table, [.. scene.Balls.Select(b => b.Id)])
+        : base(StandardModel.ModelName, scene.Physics.Integrator, scene.Physics.Dt, scene.Table, [.. scene.Balls.Select(b => b.Id)])
     {
         Parameters = scene.Physics.Params;
         Geometry = TableGeometry.Build(scene.Table, Parameters.R);
@@ -200,6 +200,9 @@ public sealed class StandardSimulation : Simulation
         _engine?.BallChanged(index);
         _euler?.BallChanged(index);
     }
+
+    /// <inheritdoc />
+    public override CushionId CushionOf(int feature) => Geometry.CushionOf(feature);
 
     /// <inheritdoc />
     public override string FeatureName(EventKind kind, int feature) =>

@@ -4,6 +4,7 @@ using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Scenes;
 using Billiards.Core.Setup;
+using Billiards.Core.Table;
 
 namespace Billiards.Core.Physics.Thesis;
 
@@ -31,7 +32,7 @@ public sealed class ThesisSimulation : Simulation
 
     /// <summary>The scene's balls on its table, at rest unless the scene gives them velocities.</summary>
     public ThesisSimulation(Scene scene)
-        : base(Models.Thesis, Integrators.Fixed, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
+        : base(ThesisModel.ModelName, Integrators.Fixed, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
     {
         var balls = new Ball[scene.Balls.Count];
         // Orientations are drawing state only; seed them from the rack so that runs repeat.
@@ -153,6 +154,10 @@ public sealed class ThesisSimulation : Simulation
         ball.IsPocketed = true;
         _statesStale = true;
     }
+
+    /// <summary>The seed's features are numbered as <see cref="CushionId"/> is: rails 0-5, jaws 6 + pocket, backs 12 + pocket.</summary>
+    public override CushionId CushionOf(int feature) =>
+        (uint)feature < (uint)Initializer.CushionNames.Count ? (CushionId)feature : CushionId.None;
 
     /// <inheritdoc />
     public override string FeatureName(EventKind kind, int feature) => kind switch
