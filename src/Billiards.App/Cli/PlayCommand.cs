@@ -125,7 +125,7 @@ public static class PlayCommand
         }
         if (string.IsNullOrEmpty(environment("DISPLAY")) && string.IsNullOrEmpty(environment("WAYLAND_DISPLAY")))
         {
-            throw new EnvironmentException("play: cannot open the game's window: no display (DISPLAY is not set; run it in a desktop session, or under Xvfb: xvfb-run billiards play)");
+            throw new EnvironmentException("play: no display: DISPLAY is not set (run it in a desktop session, or under Xvfb: xvfb-run billiards play)");
         }
     }
 
