@@ -21,7 +21,43 @@ internal static unsafe class OpenAl
         ["libopenal.so.1", "libopenal.so"];
 
     /// <summary>Loads the library from <paramref name="candidates"/>; throws <see cref="DllNotFoundException"/> naming them.</summary>
-    public static Api Load(string[] candidates) => new(NativeLoader.Load("OpenAL Soft", candidates));
+    public static Api Load(string[] candidates)
+    {
+        QuietNativeLogs();
+        return new(NativeLoader.Load("OpenAL Soft", candidates));
+    }
+
+    /// <summary>
+    /// Without an audio device the game says so in one line of its own; OpenAL Soft and ALSA would
+    /// each add lines of their own on stderr. OpenAL Soft reads ALSOFT_LOGLEVEL from the process
+    /// environment when it loads (set natively: .NET keeps its own copy of the environment), and
+    /// ALSA takes an error handler. A user's own ALSOFT_LOGLEVEL is kept.
+    /// </summary>
+    private static void QuietNativeLogs()
+    {
+        if (!OperatingSystem.IsLinux())
+        {
+            return;
+        }
+        if (NativeLibrary.TryLoad("libc.so.6", out nint libc) && NativeLibrary.TryGetExport(libc, "setenv", out nint setenv))
+        {
+            byte* name = (byte*)Marshal.StringToCoTaskMemUTF8("ALSOFT_LOGLEVEL");
+            byte* value = (byte*)Marshal.StringToCoTaskMemUTF8("0");
+            ((delegate* unmanaged<byte*, byte*, int, int>)setenv)(name, value, 0);
+            Marshal.FreeCoTaskMem((nint)name);
+            Marshal.FreeCoTaskMem((nint)value);
+        }
+        if (NativeLibrary.TryLoad("libasound.so.2", out nint alsa) && NativeLibrary.TryGetExport(alsa, "snd_lib_error_set_handler", out nint setHandler))
+        {
+            ((delegate* unmanaged<delegate* unmanaged<nint, int, nint, int, nint, void>, int>)setHandler)(&IgnoreAlsaError);
+        }
+    }
+
+    // ALSA's handler is variadic; the arguments after the format are never read here.
+    [UnmanagedCallersOnly]
+    private static void IgnoreAlsaError(nint file, int line, nint function, int error, nint format)
+    {
+    }
 
     /// <summary>The functions of one loaded OpenAL library.</summary>
     internal sealed class Api(nint library)
