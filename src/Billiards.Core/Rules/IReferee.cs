@@ -45,15 +45,11 @@ public static class Referee
         };
     }
 
-    /// <summary>The balls a game is played with, cue ball first: 1-15 (8-ball, 14.1), 1-9 or 1-10.</summary>
-    public static IReadOnlyList<Balls.BallId> BallsOf(GameRules rules)
+    /// <summary>The balls a game is played with, cue ball first: pool's whole set (8-ball, 14.1), 1-9 or 1-10.</summary>
+    public static IReadOnlyList<Balls.BallId> BallsOf(GameRules rules) => rules switch
     {
-        int last = rules switch
-        {
-            GameRules.NineBall => 9,
-            GameRules.TenBall => 10,
-            _ => 15,
-        };
-        return [.. Enumerable.Range(0, last + 1).Select(i => new Balls.BallId(i))];
-    }
+        GameRules.NineBall => [.. Balls.BallSet.Pool.Ids.Take(9 + 1)],
+        GameRules.TenBall => [.. Balls.BallSet.Pool.Ids.Take(10 + 1)],
+        _ => Balls.BallSet.Pool.Ids,
+    };
 }

@@ -93,7 +93,7 @@ internal sealed class StraightPoolReferee(TableSpec table, double ballRadius) : 
         }
         if (scores && facts.OnTableAfter.Count <= 1)
         {
-            foreach (var n in Enumerable.Range(1, 15).Where(n => !facts.OnTableAfter.Contains(n)))
+            foreach (var n in Enumerable.Range(1, BallSet.Pool.HighestNumber).Where(n => !facts.OnTableAfter.Contains(n)))
             {
                 ruling.Rerack.Add(new BallId(n));
             }
