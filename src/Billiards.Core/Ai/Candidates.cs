@@ -277,7 +277,7 @@ internal static class CandidateGenerator
         {
             return false;
         }
-        return state.Groups is not { } groups || PlannerTable.InGroup(ball, groups[state.Shooter]);
+        return state.Groups is not { } groups || groups[state.Shooter].Contains(ball);
     }
 
     private static bool OnRail(PlannerTable table, Vec3 aim, int rail) => rail switch

@@ -181,14 +181,10 @@ public sealed class PlannerTable
                     var open = balls.Where(b => b != eight).ToList();
                     return open.Count > 0 ? open : balls;
                 }
-                var own = balls.Where(b => InGroup(b, groups[state.Shooter])).ToList();
+                var own = balls.Where(b => groups[state.Shooter].Contains(b)).ToList();
                 return own.Count > 0 ? own : balls.Where(b => b == eight).ToList();
         }
     }
-
-    /// <summary>True for a ball of 8-ball's <paramref name="group"/> (1-7 or 9-15).</summary>
-    public static bool InGroup(BallId ball, BallGroup group) =>
-        group == BallGroup.Solids ? ball.Value is >= 1 and <= 7 : ball.Value is >= 9 and <= 15;
 
     /// <summary>True when a ball of <paramref name="position"/> (other than the cue ball and <paramref name="ignore"/>) lies within 2R of the segment.</summary>
     public bool Blocked(TablePosition position, Vec3 from, Vec3 to, BallId ignore)

@@ -60,10 +60,10 @@ internal sealed class EightBallReferee(TableSpec table, double ballRadius) : Ref
         var groups = before.Groups;
         bool open = groups is null;
         BallGroup? own = groups?[before.Shooter];
-        bool cleared = own is { } g && !facts.OnTableBefore.Any(n => InGroup(new BallId(n), g));
+        bool cleared = own is { } g && !facts.OnTableBefore.Any(n => g.Contains(new BallId(n)));
         CommonFouls(facts, ruling, ball => open
             ? ball != Eight
-            : cleared ? ball == Eight : InGroup(ball, own!.Value));
+            : cleared ? ball == Eight : own!.Value.Contains(ball));
 
         var call = before.Call;
         if (facts.PocketOf.TryGetValue(Eight, out var eightPocket))
@@ -106,10 +106,7 @@ internal sealed class EightBallReferee(TableSpec table, double ballRadius) : Ref
         }
         else
         {
-            ruling.Continue = InGroup(called, own!.Value);
+            ruling.Continue = own!.Value.Contains(called);
         }
     }
-
-    private static bool InGroup(BallId ball, BallGroup group) =>
-        group == BallGroup.Solids ? ball.Value is >= 1 and <= 7 : ball.IsStripe;
 }

@@ -22,6 +22,14 @@ public enum BallGroup
     Stripes,
 }
 
+/// <summary>Which balls make up an 8-ball group.</summary>
+public static class BallGroups
+{
+    /// <summary>True for a ball of <paramref name="group"/>: 1-7 for solids, 9-15 for stripes.</summary>
+    public static bool Contains(this BallGroup group, Balls.BallId ball) =>
+        group == BallGroup.Solids ? ball.Value is >= 1 and <= 7 : ball.IsStripe;
+}
+
 /// <summary>Where the next shooter may place the cue ball.</summary>
 public enum BallInHand
 {
