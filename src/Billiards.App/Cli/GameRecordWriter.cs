@@ -92,6 +92,21 @@ public static class GameRecordWriter
         return stream.ToArray();
     }
 
+    /// <summary>A cue-ball placement as <c>[x, y]</c> (m), or null.</summary>
+    public static void WritePlace(Utf8JsonWriter w, string name, Vec3? place)
+    {
+        ArgumentNullException.ThrowIfNull(w);
+        if (place is not { } p)
+        {
+            w.WriteNull(name);
+            return;
+        }
+        w.WriteStartArray(name);
+        w.WriteNumberValue(p.X);
+        w.WriteNumberValue(p.Y);
+        w.WriteEndArray();
+    }
+
     /// <summary>A shot as scenes write it: speed, aim, tip, elevation.</summary>
     public static void WriteShot(Utf8JsonWriter w, string name, ShotSpec shot)
     {

@@ -70,6 +70,11 @@ public static class PlayCommand
         using var audio = openAudio?.Invoke() ?? new SilentAudio();
         using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, match);
         host.Tree.Root.AddChild(new AudioNode(audio));
+        if (scripted is not null)
+        {
+            host.TimeScale = script!.Speed;
+            scripted.IsAtRest = () => host.IsSettled;
+        }
         var stats = statsPath is null ? null : new FrameStats();
         bool warm = false;
         host.FrameStarting += now =>
@@ -93,7 +98,7 @@ public static class PlayCommand
         };
         if (scripted is not null && stats is not null)
         {
-            scripted.Raised += (e, _) => stats.InputRaised(e);
+            scripted.Raised += (e, _) => stats.InputRaised(e, e.Time + scripted.Waited);
         }
         host.Run(platform.Loop, platform.Renderer);
         if (stats is not null && statsPath is not null)
@@ -192,7 +197,7 @@ public static class PlayCommand
         for (int i = 0; i < 2; i++)
         {
             seats[i] = MatchPlayer.Parse(parts[i], i)
-                ?? throw new CliException($"--players {players}: \"{parts[i]}\" is neither human nor computer:LEVEL with LEVEL 1-5");
+                ?? throw new CliException($"--players {players}: \"{parts[i]}\" is not a player (a name of 1-{MatchPlayer.MaxNameLength} characters, human, or computer:LEVEL with LEVEL 1-5)");
             if (!seats[i].IsHuman)
             {
                 throw new CliException($"--players {players}: computer players are not available in this build yet");

@@ -84,17 +84,7 @@ public static class SuggestCommand
         {
             w.WriteStartObject();
             GameRecordWriter.WriteShot(w, "shot", decision.Shot);
-            if (decision.Place is { } p)
-            {
-                w.WriteStartArray("place");
-                w.WriteNumberValue(p.X);
-                w.WriteNumberValue(p.Y);
-                w.WriteEndArray();
-            }
-            else
-            {
-                w.WriteNull("place");
-            }
+            GameRecordWriter.WritePlace(w, "place", decision.Place);
             GameRecordWriter.WriteCall(w, decision.Call);
             w.WriteStartObject("expected");
             w.WriteNumber("pot", Math.Round(decision.ExpectedPot, 4));

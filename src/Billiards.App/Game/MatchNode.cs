@@ -20,19 +20,33 @@ public sealed record MatchPlayer(string Name, int? ComputerLevel = null)
     /// <summary>True for a person.</summary>
     public bool IsHuman => ComputerLevel is null;
 
-    /// <summary>Parses <c>human</c> or <c>computer:LEVEL</c> (level 1-5); null when it is neither.</summary>
+    /// <summary>Longest player name (characters).</summary>
+    public const int MaxNameLength = 24;
+
+    /// <summary>
+    /// Parses a seat: <c>human</c> (named "Player N"), <c>computer:LEVEL</c> or <c>cpu:LEVEL</c>
+    /// (level 1-5), or any other name, a person of that name; null when it is none of them
+    /// (empty, too long, a control character, or a computer without a level 1-5).
+    /// </summary>
     public static MatchPlayer? Parse(string text, int seat)
     {
-        string t = text.Trim().ToLowerInvariant();
+        ArgumentNullException.ThrowIfNull(text);
+        string name = text.Trim();
+        string t = name.ToLowerInvariant();
         if (t == "human")
         {
             return new MatchPlayer($"Player {seat + 1}");
         }
-        if (t.StartsWith("computer:", StringComparison.Ordinal) && int.TryParse(t["computer:".Length..], out int level) && level is >= 1 and <= 5)
+        foreach (string prefix in (string[])["computer:", "cpu:"])
         {
-            return new MatchPlayer($"Computer L{level}", level);
+            if (t.StartsWith(prefix, StringComparison.Ordinal))
+            {
+                return int.TryParse(t[prefix.Length..], out int level) && level is >= 1 and <= 5
+                    ? new MatchPlayer($"Computer L{level}", level)
+                    : null;
+            }
         }
-        return null;
+        return name.Length is > 0 and <= MaxNameLength && !name.Any(char.IsControl) ? new MatchPlayer(name) : null;
     }
 }
 
@@ -58,6 +72,7 @@ public sealed class MatchNode : Node
     private readonly GameRules _rules;
     private readonly GameState _opening;
     private readonly List<Ruling> _rulings = [];
+    private readonly List<(GameState, ShotSpec)> _shots = [];
     private PhysicsNode? _physics;
     private CueNode? _cue;
     private CameraNode? _camera;
@@ -118,17 +133,32 @@ public sealed class MatchNode : Node
     /// <summary>The keyboard power (m/s).</summary>
     public double Power { get; private set; } = 3.0;
 
-    /// <summary>The aim preview (first ball, ghost ball, object direction, easiest pocket), or null without a cue ball.</summary>
-    public AimPreview? Aim { get; private set; }
+    /// <summary>
+    /// The aim preview (first ball, ghost ball, object direction, easiest pocket), or null without
+    /// a cue ball or while balls roll. Computed when asked, from the aim of the moment: keys that
+    /// arrive in one frame see each other's effect as they would in separate frames.
+    /// </summary>
+    public AimPreview? Aim => _physics is { IsRolling: false, HasCueBall: true } physics && _cue is not null && _geometry is not null
+        ? AimPreview.Compute(physics.Simulation.Balls, physics.Simulation.Ids, physics.Simulation.IndexOf(BallId.Cue), _cue.AimDirection, physics.BallRadius, _geometry.Pockets)
+        : null;
 
-    /// <summary>The call the shooter makes now: the chosen ball and pocket, else the aimed ball's easiest pocket.</summary>
+    /// <summary>Every shot struck in the match, in order: the state at the strike (with its call and placement) and the shot.</summary>
+    public IReadOnlyList<(GameState Before, ShotSpec Shot)> Shots => _shots;
+
+    /// <summary>True while a computer player thinks or plays its move (the script's waits wait for it).</summary>
+    public bool IsComputerActing => false;
+
+    /// <summary>
+    /// The call the shooter makes now: the chosen ball (else the aimed one) and the chosen pocket
+    /// (else that ball's easiest pocket).
+    /// </summary>
     public Call? CurrentCall
     {
         get
         {
-            var ball = _calledBall ?? Aim?.Ball;
-            var pocket = _calledPocket ?? (_calledBall is null ? Aim?.Pocket : null) ?? PocketId.None;
-            if (ball is not { } b || pocket == PocketId.None)
+            var aim = Aim;
+            var ball = _calledBall ?? aim?.Ball;
+            if (ball is not { } b || PocketFor(b, aim) is not { } pocket || pocket == PocketId.None)
             {
                 return null;
             }
@@ -179,9 +209,6 @@ public sealed class MatchNode : Node
                 Message = null;
             }
         }
-        Aim = _physics is { IsRolling: false, HasCueBall: true } physics && _cue is not null && _geometry is not null
-            ? AimPreview.Compute(physics.Simulation.Balls, physics.Simulation.Ids, physics.Simulation.IndexOf(BallId.Cue), _cue.AimDirection, physics.BallRadius, _geometry.Pockets)
-            : null;
     }
 
     /// <inheritdoc />
@@ -278,8 +305,10 @@ public sealed class MatchNode : Node
 
     private void OnStruck(ShotSpec shot)
     {
-        bool inHand = State.BallInHand != BallInHand.None;
+        // The breaker places the cue ball in the kitchen, as after a scratch (Core's GamePlayer.BallInHand).
+        bool inHand = State.Shot == 0 || State.BallInHand != BallInHand.None;
         _atStrike = State with { Call = CurrentCall, Placement = inHand ? _physics!.CueBallPosition : null };
+        _shots.Add((_atStrike, shot));
         _calledBall = null;
         _calledPocket = null;
     }
@@ -293,7 +322,8 @@ public sealed class MatchNode : Node
         var record = ShotRecord.LastShot(_physics.Simulation, _physics.LastShot);
         var ruling = _referee.Judge(_atStrike, record);
         _rulings.Add(ruling);
-        State = ruling.Next;
+        // A game that ended shows how it stood at the end (groups, fouls, score), not the next game's blank state.
+        State = ruling.GameOver ? _atStrike with { Shot = _atStrike.Shot + 1, Call = null, Placement = null, PushOut = false, BallInHand = BallInHand.None } : ruling.Next;
         Say(ruling.Message);
         if (ruling.GameOver)
         {
@@ -407,13 +437,13 @@ public sealed class MatchNode : Node
         }
         var sim = _physics.Simulation;
         var cue = _physics.CueBallPosition with { Z = 0 };
-        var ball = _calledBall ?? Aim?.Ball ?? Nearest(cue);
-        if (ball is not { } b)
+        var aim = Aim;
+        var ball = _calledBall ?? aim?.Ball ?? Nearest(cue);
+        if (ball is not { } b || PocketFor(b, aim) is not { } pocket)
         {
             return;
         }
         var target = sim.Balls[sim.IndexOf(b)].Position with { Z = 0 };
-        var pocket = _calledPocket ?? (_calledBall is null && Aim?.Ball == b ? Aim.Pocket : AimPreview.EasiestPocket(target, (target - cue).Normalized(), _geometry.Pockets));
         Vec3? centre = null;
         foreach (var circle in _geometry.Pockets)
         {
@@ -435,6 +465,28 @@ public sealed class MatchNode : Node
         Turn(turn);
         // The camera's eye is not exactly behind the ball after recentring: one more pass corrects the rest.
         Turn(Math.IEEERemainder(want - ViewMath.AimDegrees(_cue.AimDirection), 360));
+    }
+
+    // The pocket called for a ball: the one chosen with C, else the aimed ball's easiest pocket
+    // along its line from the ghost ball, else (a ball chosen with B) the easiest pocket along the
+    // line from the cue ball through it.
+    private PocketId? PocketFor(BallId ball, AimPreview? aim)
+    {
+        if (_calledPocket is { } chosen)
+        {
+            return chosen;
+        }
+        if (aim is not null && aim.Ball == ball)
+        {
+            return aim.Pocket;
+        }
+        if (_physics is null || _geometry is null || _physics.Simulation.IndexOf(ball) is not (>= 0 and var i))
+        {
+            return null;
+        }
+        var target = _physics.Simulation.Balls[i].Position with { Z = 0 };
+        var cue = _physics.CueBallPosition with { Z = 0 };
+        return AimPreview.EasiestPocket(target, (target - cue).Normalized(), _geometry.Pockets);
     }
 
     private BallId? Nearest(Vec3 from)
@@ -460,7 +512,7 @@ public sealed class MatchNode : Node
 
     private void CyclePocket()
     {
-        var current = _calledPocket ?? CurrentCall?.Pocket ?? PocketId.None;
+        var current = CurrentCall?.Pocket ?? _calledPocket ?? PocketId.None;
         int next = ((int)current + 1) % PocketIds.All.Count;
         _calledPocket = PocketIds.FromIndex(next);
         _calledBall ??= Aim?.Ball;
@@ -488,7 +540,6 @@ public sealed class MatchNode : Node
         var current = _calledBall ?? Aim?.Ball;
         int k = current is { } c ? onTable.IndexOf(c) : -1;
         _calledBall = onTable[(k + 1) % onTable.Count];
-        _calledPocket ??= Aim?.Pocket is { } p && p != PocketId.None ? p : PocketId.FootLeft;
     }
 
     private void Say(string message)
