@@ -13,7 +13,7 @@ internal sealed unsafe class Gl
     public const uint DepthBufferBit = 0x100, ColorBufferBit = 0x4000;
     public const uint Lines = 0x1, Triangles = 0x4;
     public const uint DepthTest = 0x0B71, Blend = 0x0BE2, CullFace = 0x0B44, Multisample = 0x809D, PolygonOffsetFill = 0x8037;
-    public const uint Zero = 0, SrcColor = 0x0300;
+    public const uint Zero = 0, One = 1, SrcColor = 0x0300;
     public const uint SrcAlpha = 0x0302, OneMinusSrcAlpha = 0x0303, Less = 0x0201, LessEqual = 0x0203, Back = 0x0405;
     public const uint Byte = 0x1400, UnsignedByte = 0x1401, UnsignedInt = 0x1405, Float = 0x1406;
     public const uint ArrayBuffer = 0x8892, ElementArrayBuffer = 0x8893, StaticDraw = 0x88E4, DynamicDraw = 0x88E8;
@@ -23,7 +23,8 @@ internal sealed unsafe class Gl
     public const int Nearest = 0x2600, Linear = 0x2601, LinearMipmapLinear = 0x2703, ClampToEdge = 0x812F, Repeat = 0x2901;
     public const uint Red = 0x1903, Rgba = 0x1908, R8 = 0x8229, Rgba8 = 0x8058, Srgb8Alpha8 = 0x8C43, DepthComponent24 = 0x81A6;
     public const uint Framebuffer = 0x8D40, ReadFramebuffer = 0x8CA8, DrawFramebuffer = 0x8CA9, Renderbuffer = 0x8D41;
-    public const uint ColorAttachment0 = 0x8CE0, DepthAttachment = 0x8D00, FramebufferComplete = 0x8CD5;
+    public const uint ColorAttachment0 = 0x8CE0, DepthAttachment = 0x8D00, DepthStencilAttachment = 0x821A, FramebufferComplete = 0x8CD5;
+    public const uint Depth24Stencil8 = 0x88F0, DrawFramebufferBinding = 0x8CA6, Samples = 0x80A9;
     public const uint PackAlignment = 0x0D05, UnpackAlignment = 0x0CF5, MaxSamples = 0x8D57;
     public const uint Vendor = 0x1F00, RendererName = 0x1F01, Version = 0x1F02;
 
@@ -43,6 +44,8 @@ internal sealed unsafe class Gl
         _enable = (delegate* unmanaged<uint, void>)Get("glEnable");
         _disable = (delegate* unmanaged<uint, void>)Get("glDisable");
         _blendFunc = (delegate* unmanaged<uint, uint, void>)Get("glBlendFunc");
+        _framebufferTexture2D = (delegate* unmanaged<uint, uint, uint, uint, int, void>)Get("glFramebufferTexture2D");
+        _blendFuncSeparate = (delegate* unmanaged<uint, uint, uint, uint, void>)Get("glBlendFuncSeparate");
         _depthFunc = (delegate* unmanaged<uint, void>)Get("glDepthFunc");
         _depthMask = (delegate* unmanaged<byte, void>)Get("glDepthMask");
         _cullFace = (delegate* unmanaged<uint, void>)Get("glCullFace");
@@ -110,6 +113,8 @@ internal sealed unsafe class Gl
     private readonly delegate* unmanaged<float, float, float, float, void> _clearColor;
     private readonly delegate* unmanaged<uint, void> _clear, _enable, _disable, _depthFunc, _cullFace;
     private readonly delegate* unmanaged<uint, uint, void> _blendFunc;
+    private readonly delegate* unmanaged<uint, uint, uint, uint, void> _blendFuncSeparate;
+    private readonly delegate* unmanaged<uint, uint, uint, uint, int, void> _framebufferTexture2D;
     private readonly delegate* unmanaged<byte, void> _depthMask;
     private readonly delegate* unmanaged<float, float, void> _polygonOffset;
     private readonly delegate* unmanaged<void> _finish;
@@ -159,6 +164,7 @@ internal sealed unsafe class Gl
     public void Enable(uint cap) => _enable(cap);
     public void Disable(uint cap) => _disable(cap);
     public void BlendFunc(uint s, uint d) => _blendFunc(s, d);
+    public void BlendFuncSeparate(uint s, uint d, uint sAlpha, uint dAlpha) => _blendFuncSeparate(s, d, sAlpha, dAlpha);
     public void DepthFunc(uint f) => _depthFunc(f);
     public void DepthMask(bool on) => _depthMask(on ? (byte)1 : (byte)0);
     public void CullFaceMode(uint mode) => _cullFace(mode);
@@ -169,6 +175,7 @@ internal sealed unsafe class Gl
     public void DeleteFramebuffer(uint id) => _deleteFramebuffers(1, &id);
     public void BindFramebuffer(uint target, uint id) => _bindFramebuffer(target, id);
     public void FramebufferRenderbuffer(uint target, uint attachment, uint rbTarget, uint rb) => _framebufferRenderbuffer(target, attachment, rbTarget, rb);
+    public void FramebufferTexture2D(uint target, uint attachment, uint textureTarget, uint texture, int level) => _framebufferTexture2D(target, attachment, textureTarget, texture, level);
     public uint CheckFramebufferStatus(uint target) => _checkFramebufferStatus(target);
     public uint GenRenderbuffer() { uint id; _genRenderbuffers(1, &id); return id; }
     public void DeleteRenderbuffer(uint id) => _deleteRenderbuffers(1, &id);

@@ -20,12 +20,23 @@ internal sealed class Renderer : IDisposable
     private readonly Func<TableSpec, string> _modelPath;
     private readonly LitProgram _lit;
     private readonly LitProgram _gouraud;
-    private readonly GpuMesh _sphere;
+    private readonly (int Slices, GpuMesh Mesh)[] _spheres;
     private readonly GpuMesh _cue;
     private readonly Dictionary<int, uint> _ballTextures = [];
     private readonly DebugLines _lines;
     private readonly ShadowDecals _shadows;
     private readonly HudRenderer _hud;
+    private readonly StaticLayer _tableLayer;
+    private readonly StaticLayer _sceneLayer;
+    private readonly Action _drawTable;
+    private readonly Action _drawScene;
+    private readonly List<BallVisual> _lastBalls = [];
+    private float _lastRadius;
+    private long _ballsVersion;
+    private StaticLayer.ViewKey _view;
+    private readonly float[] _lamps = new float[12];
+    private RenderFrame? _tableFrame;
+    private Matrix4x4 _tableViewProjection;
     private TableModel? _table;
     private TableSpec? _tableSpec;
 
@@ -40,13 +51,24 @@ internal sealed class Renderer : IDisposable
         _gouraud = new LitProgram(gl, gl.LinkProgram(
             gl.CompileShader(Gl.VertexShader, Shaders.GouraudVertex),
             gl.CompileShader(Gl.FragmentShader, Shaders.GouraudFragment), s_meshAttributes));
-        // 32 x 24 is smooth at the size a ball is ever drawn; llvmpipe sets up every triangle on one thread.
-        _sphere = GpuMesh.From(gl, Primitives.Sphere(32, 24));
+        // Levels of detail: a software rasteriser pays for every triangle in every tile it touches,
+        // and a ball 15 px across needs no 1,536 triangles (the overhead view shows 16 of them).
+        _spheres = [.. SphereSlices.Select(n => (n, GpuMesh.From(gl, Primitives.Sphere(n, (3 * n) / 4))))];
         _cue = GpuMesh.From(gl, Primitives.Cue());
         _lines = new DebugLines(gl);
         _shadows = new ShadowDecals(gl);
         _hud = new HudRenderer(gl);
+        _tableLayer = new StaticLayer(gl);
+        _sceneLayer = new StaticLayer(gl);
+        _drawTable = DrawTable;
+        _drawScene = DrawScene;
     }
+
+    /// <summary>Frames whose table (alone, or with the balls at rest) was put back from a stored layer.</summary>
+    public long LayersReused => _tableLayer.Reused + _sceneLayer.Reused;
+
+    /// <summary>Frames whose HUD was put back from its stored layer.</summary>
+    public long HudReused => _hud.Reused;
 
     /// <summary>The model file of the table last drawn.</summary>
     public string? TableSource => _table?.Source;
@@ -62,45 +84,31 @@ internal sealed class Renderer : IDisposable
     {
         EnsureTable(frame.Table);
         var gl = _gl;
-        gl.Viewport(0, 0, frame.Width, frame.Height);
-        gl.ClearColor(0.018f, 0.016f, 0.014f, 1);
-        gl.Clear(Gl.ColorBufferBit | Gl.DepthBufferBit);
-        gl.Enable(Gl.DepthTest);
-        gl.DepthFunc(Gl.LessEqual);
-        gl.Disable(Gl.CullFace);
-        gl.Disable(Gl.Blend);
-        gl.Enable(Gl.Multisample);
-
         var viewProjection = RenderMath.ViewProjection(frame);
         float radius = frame.BallRadius;
         Span<float> lamps = stackalloc float[12];
         Lamps(frame.Table, lamps);
-        _gouraud.Begin(viewProjection, frame.Eye, lamps);
-        foreach (var part in _table!.Parts)
-        {
-            _gouraud.Material(part.Diffuse, part.Specular, part.Shininess, reflect: 0);
-            _gouraud.Draw(Matrix4x4.Identity, texture: 0, part.Mesh);
-        }
-
-        _shadows.Draw(viewProjection, frame.Balls, radius, lamps, LampRadius, Ambient);
-
+        lamps.CopyTo(_lamps);
+        _tableFrame = frame;
+        _tableViewProjection = viewProjection;
+        var view = new StaticLayer.ViewKey(viewProjection, frame.Eye, frame.Table, frame.Width, frame.Height);
+        _view = view;
+        _sceneLayer.Draw(view, BallsVersion(frame), _drawScene);
+        gl.Viewport(0, 0, frame.Width, frame.Height);
+        gl.Enable(Gl.DepthTest);
+        gl.DepthFunc(Gl.LessEqual);
+        gl.Disable(Gl.Blend);
+        gl.Enable(Gl.CullFace);
+        gl.CullFaceMode(Gl.Back);
         _lit.Begin(viewProjection, frame.Eye, lamps);
-        foreach (var ball in frame.Balls)
-        {
-            if (!ball.Visible)
-            {
-                continue;
-            }
-            var model = Matrix4x4.CreateScale(radius) * Matrix4x4.CreateFromQuaternion(Normalized(ball.Orientation)) * Matrix4x4.CreateTranslation(ball.Position);
-            _lit.Material(Vector4.One, new Vector3(0.55f), 160, reflect: 0.045f);
-            _lit.Draw(model, BallTexture(ball.Id), _sphere);
-        }
 
         if (frame.Cue.Visible)
         {
             _lit.Material(Vector4.One, new Vector3(0.25f), 40, reflect: 0.02f);
             _lit.Draw(Primitives.CuePlacement(frame.Cue, radius), texture: 0, _cue);
         }
+
+        gl.Disable(Gl.CullFace);
 
         if (frame.ShowCollisionGeometry && frame.CollisionTriangles.Count > 0)
         {
@@ -112,6 +120,74 @@ internal sealed class Renderer : IDisposable
             _hud.Draw(hud, frame.Width, frame.Height);
         }
         gl.BindVertexArray(0);
+    }
+
+    /// <summary>
+    /// The table, then the balls' shadows and the balls: the part of the frame that stands still
+    /// between shots. The table alone is its own layer, kept while the balls roll.
+    /// </summary>
+    private void DrawScene()
+    {
+        var gl = _gl;
+        var frame = _tableFrame!;
+        float radius = frame.BallRadius;
+        _tableLayer.Draw(_view, 0, _drawTable);
+        gl.Viewport(0, 0, frame.Width, frame.Height);
+        gl.Enable(Gl.DepthTest);
+        gl.DepthFunc(Gl.LessEqual);
+        gl.Disable(Gl.Blend);
+        _shadows.Draw(_tableViewProjection, frame.Balls, radius, _lamps, LampRadius, Ambient);
+
+        _lit.Begin(_tableViewProjection, frame.Eye, _lamps);
+        // Balls and the cue are closed and wound counter-clockwise outwards: their far halves are
+        // dropped before rasterising.
+        gl.Enable(Gl.CullFace);
+        gl.CullFaceMode(Gl.Back);
+        foreach (var ball in frame.Balls)
+        {
+            if (!ball.Visible)
+            {
+                continue;
+            }
+            var model = Matrix4x4.CreateScale(radius) * Matrix4x4.CreateFromQuaternion(Normalized(ball.Orientation)) * Matrix4x4.CreateTranslation(ball.Position);
+            _lit.Material(Vector4.One, new Vector3(0.55f), 160, reflect: 0.045f);
+            _lit.Draw(model, BallTexture(ball.Id), SphereFor(ball.Position, frame, radius));
+        }
+        gl.Disable(Gl.CullFace);
+    }
+
+    /// <summary>A number that changes whenever the balls drawn change (position, orientation, visibility, radius).</summary>
+    private long BallsVersion(RenderFrame frame)
+    {
+        var balls = System.Runtime.InteropServices.CollectionsMarshal.AsSpan(frame.Balls);
+        if (frame.BallRadius != _lastRadius || !balls.SequenceEqual(System.Runtime.InteropServices.CollectionsMarshal.AsSpan(_lastBalls)))
+        {
+            _lastBalls.Clear();
+            _lastBalls.AddRange(balls);
+            _lastRadius = frame.BallRadius;
+            _ballsVersion++;
+        }
+        return _ballsVersion;
+    }
+
+    private void DrawTable()
+    {
+        var gl = _gl;
+        var frame = _tableFrame!;
+        gl.Viewport(0, 0, frame.Width, frame.Height);
+        gl.ClearColor(0.018f, 0.016f, 0.014f, 1);
+        gl.Clear(Gl.ColorBufferBit | Gl.DepthBufferBit);
+        gl.Enable(Gl.DepthTest);
+        gl.DepthFunc(Gl.LessEqual);
+        gl.Disable(Gl.CullFace);
+        gl.Disable(Gl.Blend);
+        gl.Enable(Gl.Multisample);
+        _gouraud.Begin(_tableViewProjection, frame.Eye, _lamps);
+        foreach (var part in _table!.Parts)
+        {
+            _gouraud.Material(part.Diffuse, part.Specular, part.Shininess, reflect: 0);
+            _gouraud.Draw(Matrix4x4.Identity, texture: 0, part.Mesh);
+        }
     }
 
     /// <summary>Radius of a lamp's shade as a light source (m).</summary>
@@ -131,6 +207,50 @@ internal sealed class Renderer : IDisposable
             lamps[(4 * k) + 2] = LampHeight;
             lamps[(4 * k) + 3] = 0.95f;
         }
+    }
+
+    /// <summary>Slices of the sphere's levels of detail, coarse to fine (stacks are three quarters).</summary>
+    public static readonly int[] SphereSlices = [12, 20, 32, 48];
+
+    /// <summary>Largest gap between a ball's drawn outline and the true circle (px).</summary>
+    public const float OutlineTolerancePixels = 0.5f;
+
+    /// <summary>
+    /// The fewest slices whose outline, a polygon of that many sides around a circle of
+    /// <paramref name="radiusPixels"/>, stays within <see cref="OutlineTolerancePixels"/> of it:
+    /// the sagitta r (1 - cos(pi / n)).
+    /// </summary>
+    public static int SlicesFor(float radiusPixels)
+    {
+        foreach (int n in SphereSlices)
+        {
+            if (radiusPixels * (1 - MathF.Cos(MathF.PI / n)) <= OutlineTolerancePixels)
+            {
+                return n;
+            }
+        }
+        return SphereSlices[^1];
+    }
+
+    /// <summary>The ball's radius on screen (px) at <paramref name="position"/>, seen from the frame's eye.</summary>
+    public static float RadiusPixels(Vector3 position, RenderFrame frame, float radius)
+    {
+        float distance = MathF.Max(Vector3.Distance(position, frame.Eye), RenderMath.Near);
+        float focal = 0.5f * frame.Height / MathF.Tan(frame.FovYDegrees * MathF.PI / 360);
+        return radius * focal / distance;
+    }
+
+    private GpuMesh SphereFor(Vector3 position, RenderFrame frame, float radius)
+    {
+        int slices = SlicesFor(RadiusPixels(position, frame, radius));
+        foreach (var (n, mesh) in _spheres)
+        {
+            if (n == slices)
+            {
+                return mesh;
+            }
+        }
+        return _spheres[^1].Mesh;
     }
 
     private static Quaternion Normalized(Quaternion q) =>
@@ -170,7 +290,10 @@ internal sealed class Renderer : IDisposable
     public void Dispose()
     {
         _table?.Dispose();
-        _sphere.Dispose();
+        foreach (var (_, mesh) in _spheres)
+        {
+            mesh.Dispose();
+        }
         _cue.Dispose();
         foreach (uint texture in _ballTextures.Values)
         {
@@ -179,6 +302,8 @@ internal sealed class Renderer : IDisposable
         _lines.Dispose();
         _shadows.Dispose();
         _hud.Dispose();
+        _tableLayer.Dispose();
+        _sceneLayer.Dispose();
         _gl.DeleteProgram(_lit.Program);
         _gl.DeleteProgram(_gouraud.Program);
     }
