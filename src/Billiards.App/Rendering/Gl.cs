@@ -54,6 +54,7 @@ internal sealed unsafe class Gl
     public string GetString(uint name) => _gl.GetStringS((StringName)name) ?? "";
     public uint GetError() => (uint)_gl.GetError();
     public int GetInteger(uint name) => _gl.GetInteger((GetPName)name);
+    public float GetFloat(uint name) => _gl.GetFloat((GetPName)name);
     public void Viewport(int x, int y, int w, int h) => _gl.Viewport(x, y, (uint)w, (uint)h);
     public void ClearColor(float r, float g, float b, float a) => _gl.ClearColor(r, g, b, a);
     public void Clear(uint mask) => _gl.Clear(mask);
@@ -171,5 +172,6 @@ internal sealed unsafe class Gl
         }
     }
     public void TexParameter(uint target, uint name, int value) => _gl.TexParameter((TextureTarget)target, (TextureParameterName)name, value);
+    public void TexParameter(uint target, uint name, float value) => _gl.TexParameter((TextureTarget)target, (TextureParameterName)name, value);
     public void GenerateMipmap(uint target) => _gl.GenerateMipmap((TextureTarget)target);
 }

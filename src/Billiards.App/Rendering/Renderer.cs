@@ -38,6 +38,8 @@ internal sealed class Renderer : IDisposable
     private RenderFrame? _tableFrame;
     private Matrix4x4 _tableViewProjection;
     private TableModel? _table;
+    private TableModel? _room;
+    private readonly DetailTextures _details;
     private TableSpec? _tableSpec;
 
     /// <summary>Creates the GPU resources. <paramref name="modelPath"/> picks the table model file (default: <see cref="TableModels.PathFor"/>).</summary>
@@ -53,6 +55,7 @@ internal sealed class Renderer : IDisposable
             gl.CompileShader(Gl.FragmentShader, Shaders.GouraudFragment), s_meshAttributes));
         // Levels of detail: a software rasteriser pays for every triangle in every tile it touches,
         // and a ball 15 px across needs no 1,536 triangles (the overhead view shows 16 of them).
+        _details = new DetailTextures(gl);
         _spheres = [.. SphereSlices.Select(n => (n, GpuMesh.From(gl, Primitives.Sphere(n, (3 * n) / 4))))];
         _cue = GpuMesh.From(gl, Primitives.Cue());
         _lines = new DebugLines(gl);
@@ -183,12 +186,44 @@ internal sealed class Renderer : IDisposable
         gl.Disable(Gl.Blend);
         gl.Enable(Gl.Multisample);
         _gouraud.Begin(_tableViewProjection, frame.Eye, _lamps);
+        _gouraud.Half((float)frame.Table.HalfLength, (float)frame.Table.HalfWidth);
         foreach (var part in _table!.Parts)
         {
-            _gouraud.Material(part.Diffuse, part.Specular, part.Shininess, reflect: 0);
-            _gouraud.Draw(Matrix4x4.Identity, texture: 0, part.Mesh);
+            DrawPart(part);
+        }
+        // Over the table and above the lamps, the camera would look down through them at the bed.
+        bool overTable = MathF.Abs(frame.Eye.X) < frame.Table.HalfLength + 0.5 && MathF.Abs(frame.Eye.Y) < frame.Table.HalfWidth + 0.5;
+        bool lampsInView = !overTable || frame.Eye.Z < LampHeight - 0.02f;
+        // A camera outside the room (above the ceiling, beyond a wall) looks in through them.
+        bool inRoom = Room.Contains(frame.Table, frame.Eye);
+        foreach (var part in _room!.Parts)
+        {
+            bool lamp = part.Name == Room.Shade.Name || part.Name == Room.Bulb.Name;
+            if (inRoom && (!lamp || lampsInView))
+            {
+                DrawPart(part);
+            }
         }
     }
+
+    private void DrawPart(ModelPart part)
+    {
+        _gouraud.Material(part.Diffuse, part.Specular, part.Shininess, reflect: 0);
+        var (detail, texture, repeat) = DetailOf(part.Name);
+        _gouraud.Detail(detail, repeat);
+        _gouraud.Emissive(part.Name == Room.Bulb.Name ? new Vector3(1.0f, 0.97f, 0.88f) : Vector3.Zero);
+        _gouraud.Draw(Matrix4x4.Identity, texture, part.Mesh);
+    }
+
+    /// <summary>How a part's colour is textured: 0 plain, 1 across the bed's plane, 2 along the rail it belongs to.</summary>
+    private (int Mapping, uint Texture, float Repeat) DetailOf(string part) => part switch
+    {
+        "cloth" or "cushion" => (1, _details.Cloth, SurfaceTextures.ClothRepeat),
+        "rail" or "frame" => (2, _details.Wood, SurfaceTextures.WoodRepeat),
+        "floor" => (1, _details.Planks, SurfaceTextures.PlankRepeat),
+        "pocket" => (1, _details.Cloth, SurfaceTextures.ClothRepeat / 4),
+        _ => (0, 0u, 1f),
+    };
 
     /// <summary>Radius of a lamp's shade as a light source (m).</summary>
     public const float LampRadius = 0.14f;
@@ -265,6 +300,12 @@ internal sealed class Renderer : IDisposable
         var loaded = TableModel.Load(_gl, _modelPath(spec));
         _table?.Dispose();
         _table = loaded;
+        Span<float> lamps = stackalloc float[12];
+        Lamps(spec, lamps);
+        _room?.Dispose();
+        _room = TableModel.FromBuilders(_gl, "room",
+            [Room.Walls(spec), Room.CeilingMesh(spec), Room.Shades(lamps), Room.Bulbs(lamps)],
+            refine: [true, true, false, false]);
         _tableSpec = spec;
     }
 
@@ -283,6 +324,7 @@ internal sealed class Renderer : IDisposable
         _gl.TexParameter(Gl.Texture2D, Gl.TextureMagFilter, Gl.Linear);
         _gl.TexParameter(Gl.Texture2D, Gl.TextureWrapS, Gl.Repeat);
         _gl.TexParameter(Gl.Texture2D, Gl.TextureWrapT, Gl.ClampToEdge);
+        DetailTextures.Anisotropic(_gl);
         _ballTextures[id.Value] = texture;
         return texture;
     }
@@ -290,6 +332,8 @@ internal sealed class Renderer : IDisposable
     public void Dispose()
     {
         _table?.Dispose();
+        _room?.Dispose();
+        _details.Dispose();
         foreach (var (_, mesh) in _spheres)
         {
             mesh.Dispose();
@@ -324,6 +368,10 @@ internal sealed class Renderer : IDisposable
         private readonly int _texture = gl.GetUniformLocation(program, "uTexture");
         private readonly int _ambient = gl.GetUniformLocation(program, "uAmbient");
         private readonly int _exposure = gl.GetUniformLocation(program, "uExposure");
+        private readonly int _detail = gl.GetUniformLocation(program, "uDetail");
+        private readonly int _detailRepeat = gl.GetUniformLocation(program, "uDetailRepeat");
+        private readonly int _half = gl.GetUniformLocation(program, "uHalf");
+        private readonly int _emissive = gl.GetUniformLocation(program, "uEmissive");
 
         public uint Program { get; } = program;
 
@@ -346,6 +394,19 @@ internal sealed class Renderer : IDisposable
             gl.Uniform1(_shininess, shininess);
             gl.Uniform1(_reflect, reflect);
         }
+
+        /// <summary>The detail texture's mapping (0 none) and the metres one repeat covers.</summary>
+        public void Detail(int mapping, float repeat)
+        {
+            gl.Uniform1(_detail, mapping);
+            gl.Uniform1(_detailRepeat, 1 / repeat);
+        }
+
+        /// <summary>Half the bed's length and width (m): where the rails along x give way to those along y.</summary>
+        public void Half(float x, float y) => gl.Uniform2(_half, x, y);
+
+        /// <summary>Light the surface gives off itself (tone-mapped colour; zero for none).</summary>
+        public void Emissive(Vector3 color) => gl.Uniform3(_emissive, color.X, color.Y, color.Z);
 
         public void Draw(Matrix4x4 model, uint texture, GpuMesh mesh)
         {
