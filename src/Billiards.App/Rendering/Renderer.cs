@@ -191,9 +191,9 @@ internal sealed class Renderer : IDisposable
         {
             DrawPart(part);
         }
-        // Over the table and above the lamps, the camera would look down through them at the bed.
-        bool overTable = MathF.Abs(frame.Eye.X) < frame.Table.HalfLength + 0.5 && MathF.Abs(frame.Eye.Y) < frame.Table.HalfWidth + 0.5;
-        bool lampsInView = !overTable || frame.Eye.Z < LampHeight - 0.02f;
+        // From above the lamps the camera would look down past them at the bed, and they would hide
+        // the balls: they are drawn only for a view from below them, as a player's eye at the table.
+        bool lampsInView = frame.Eye.Z < LampHeight - 0.02f;
         // A camera outside the room (above the ceiling, beyond a wall) looks in through them.
         bool inRoom = Room.Contains(frame.Table, frame.Eye);
         foreach (var part in _room!.Parts)
