@@ -39,7 +39,7 @@ public static class PlatformWiring
         {
             var renderer = new Renderer(window.Gl);
             var resources = new Resources(renderer, window);
-            return new GamePlatform(window, new WindowLoop(window), new FrameRenderer(renderer, window), resources, window.Gl.GetString(Native.Gl.RendererName));
+            return new GamePlatform(window, new WindowLoop(window), new FrameRenderer(renderer, window), resources, window.Gl.GetString(Gl.RendererName));
         }
         catch
         {

@@ -17,10 +17,15 @@ internal sealed class HudRenderer : IDisposable
     private readonly uint _program, _vao, _vbo, _font;
     private readonly int _screen, _fontSampler;
     private readonly List<float> _vertices = [];
+    private readonly HudLayer _layer;
+    private readonly Action<bool> _submit;
+    private int _width, _height;
 
     public HudRenderer(Gl gl)
     {
         _gl = gl;
+        _layer = new HudLayer(gl);
+        _submit = Submit;
         _program = gl.LinkProgram(gl.CompileShader(Gl.VertexShader, Shaders.HudVertex),
             gl.CompileShader(Gl.FragmentShader, Shaders.HudFragment), ["aPosition", "aUv", "aColor", "aKind"]);
         _screen = gl.GetUniformLocation(_program, "uScreen");
@@ -78,6 +83,8 @@ internal sealed class HudRenderer : IDisposable
 
     public void Draw(HudInfo hud, int width, int height)
     {
+        _width = width;
+        _height = height;
         _vertices.Clear();
         int scale = Scale(height);
         int lineHeight = BitmapFont.LineHeight * scale;
@@ -139,7 +146,8 @@ internal sealed class HudRenderer : IDisposable
             float w = (longest * BitmapFont.Advance * helpScale) + (4 * margin);
             float h = (lines.Count * helpLine) + (4 * margin);
             float x = MathF.Max(0, (width - w) / 2), y = MathF.Max(0, (height - h) / 2);
-            Rect(x, y, w, h, new Vector4(0.02f, 0.03f, 0.02f, 0.82f));
+            // Opaque: the layer copies it back instead of blending the largest panel (HudLayer).
+            Rect(x, y, w, h, new Vector4(0.02f, 0.03f, 0.02f, 1));
             Rect(x, y, w, scale, new Vector4(0.8f, 0.7f, 0.3f, 1));
             for (int i = 0; i < lines.Count; i++)
             {
@@ -147,11 +155,26 @@ internal sealed class HudRenderer : IDisposable
             }
         }
 
+        _layer.Draw(_vertices, Floats, width, height, _submit);
+    }
+
+    /// <summary>Frames whose HUD was put back from the stored layer.</summary>
+    public long Reused => _layer.Reused;
+
+    private void Submit(bool premultiplied)
+    {
         _gl.Disable(Gl.DepthTest);
         _gl.Enable(Gl.Blend);
-        _gl.BlendFunc(Gl.SrcAlpha, Gl.OneMinusSrcAlpha);
+        if (premultiplied)
+        {
+            _gl.BlendFuncSeparate(Gl.SrcAlpha, Gl.OneMinusSrcAlpha, Gl.One, Gl.OneMinusSrcAlpha);
+        }
+        else
+        {
+            _gl.BlendFunc(Gl.SrcAlpha, Gl.OneMinusSrcAlpha);
+        }
         _gl.UseProgram(_program);
-        _gl.Uniform2(_screen, width, height);
+        _gl.Uniform2(_screen, _width, _height);
         _gl.Uniform1(_fontSampler, 0);
         _gl.ActiveTexture(Gl.Texture0);
         _gl.BindTexture(Gl.Texture2D, _font);
@@ -234,5 +257,6 @@ internal sealed class HudRenderer : IDisposable
         _gl.DeleteVertexArray(_vao);
         _gl.DeleteTexture(_font);
         _gl.DeleteProgram(_program);
+        _layer.Dispose();
     }
 }

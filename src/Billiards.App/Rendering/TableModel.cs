@@ -54,6 +54,28 @@ internal sealed class TableModel : IDisposable
         return new TableModel(path, parts);
     }
 
+    /// <summary>
+    /// Uploads meshes built in code as one model (<paramref name="refine"/>: which of them to
+    /// refine to <see cref="MaxEdge"/> for their light, lit at the vertices, to vary smoothly).
+    /// </summary>
+    public static TableModel FromBuilders(Gl gl, string source, IReadOnlyList<MeshBuilder> builders, IReadOnlyList<bool> refine)
+    {
+        var parts = new List<ModelPart>();
+        for (int i = 0; i < builders.Count; i++)
+        {
+            var b = builders[i];
+            var mesh = new RefinedMesh([.. b.Positions], [.. b.Normals], [.. b.Indices]);
+            if (refine[i])
+            {
+                mesh = MeshRefinement.Refine([mesh], MaxEdgeAt)[0];
+            }
+            var material = b.Material;
+            parts.Add(new ModelPart(GpuMesh.From(gl, mesh.Positions, mesh.Normals, mesh.Indices), new Vector4(RenderMath.ToLinear(material.Diffuse), 1),
+                RenderMath.ToLinear(material.Specular), Math.Max(1, material.Shininess), material.Name));
+        }
+        return new TableModel(source, parts);
+    }
+
     public void Dispose()
     {
         foreach (var part in Parts)
