@@ -34,6 +34,10 @@ internal sealed class Renderer : IDisposable
     private float _lastRadius;
     private long _ballsVersion;
     private StaticLayer.ViewKey _view;
+    private Vector3? _lastEye;
+    private Matrix4x4 _lastViewProjection;
+    private PlainFramebuffer _reduced;
+    private (int Width, int Height) _reducedSize;
     private readonly float[] _lamps = new float[12];
     private RenderFrame? _tableFrame;
     private Matrix4x4 _tableViewProjection;
@@ -82,10 +86,78 @@ internal sealed class Renderer : IDisposable
     /// <summary>Height of the fill light over the centre of the bed (m): the seed's 1 cm.</summary>
     public const float FillHeight = 0.01f;
 
+    /// <summary>
+    /// Draw the 3D scene at <see cref="MovingScale"/> of the resolution while the camera moves,
+    /// then scale it up; full resolution again as soon as the view stands still. For a window on a
+    /// software rasteriser, where a moving view cannot be kept in the stored layers and a full
+    /// frame costs more than a 60 Hz frame's time.
+    /// </summary>
+    public bool DynamicResolution { get; set; }
+
+    /// <summary>Scale of the 3D scene's resolution while the camera moves (with <see cref="DynamicResolution"/>).</summary>
+    public const float MovingScale = 0.5f;
+
+    /// <summary>Frames drawn at the reduced resolution because the camera moved.</summary>
+    public long ReducedFrames { get; private set; }
+
     /// <summary>Draws the frame into the bound framebuffer, viewport (0, 0, Width, Height).</summary>
     public void Draw(RenderFrame frame)
     {
         EnsureTable(frame.Table);
+        var viewProjection = RenderMath.ViewProjection(frame);
+        bool moving = _lastEye is { } eye && (eye != frame.Eye || _lastViewProjection != viewProjection);
+        _lastEye = frame.Eye;
+        _lastViewProjection = viewProjection;
+        if (DynamicResolution && moving)
+        {
+            DrawReduced(frame);
+        }
+        else
+        {
+            DrawScene3D(frame);
+        }
+
+        if (frame.Hud is { } hud)
+        {
+            _hud.Draw(hud, frame.Width, frame.Height);
+        }
+        _gl.BindVertexArray(0);
+    }
+
+    private void DrawReduced(RenderFrame frame)
+    {
+        uint target = (uint)_gl.GetInteger(Gl.DrawFramebufferBinding);
+        int width = frame.Width, height = frame.Height;
+        int w = Math.Max(1, (int)(width * MovingScale)), h = Math.Max(1, (int)(height * MovingScale));
+        if (_reduced.Framebuffer == 0 || _reducedSize != (w, h))
+        {
+            _reduced.Delete(_gl);
+            _reduced = PlainFramebuffer.Create(_gl, w, h);
+            _reducedSize = (w, h);
+        }
+        _gl.BindFramebuffer(Gl.Framebuffer, _reduced.Framebuffer);
+        frame.Width = w;
+        frame.Height = h;
+        try
+        {
+            DrawScene3D(frame);
+        }
+        finally
+        {
+            frame.Width = width;
+            frame.Height = height;
+        }
+        _gl.BindFramebuffer(Gl.ReadFramebuffer, _reduced.Framebuffer);
+        _gl.BindFramebuffer(Gl.DrawFramebuffer, target);
+        _gl.BlitFramebuffer(0, 0, w, h, 0, 0, width, height, Gl.ColorBufferBit, (uint)Gl.Linear);
+        _gl.BindFramebuffer(Gl.Framebuffer, target);
+        _gl.Viewport(0, 0, width, height);
+        ReducedFrames++;
+    }
+
+    /// <summary>The table, the room, the balls, the cue and the debug lines, at the frame's size.</summary>
+    private void DrawScene3D(RenderFrame frame)
+    {
         var gl = _gl;
         var viewProjection = RenderMath.ViewProjection(frame);
         float radius = frame.BallRadius;
@@ -117,12 +189,6 @@ internal sealed class Renderer : IDisposable
         {
             _lines.Draw(viewProjection, frame.CollisionTriangles, frame.Width, frame.Height);
         }
-
-        if (frame.Hud is { } hud)
-        {
-            _hud.Draw(hud, frame.Width, frame.Height);
-        }
-        gl.BindVertexArray(0);
     }
 
     /// <summary>
@@ -348,6 +414,10 @@ internal sealed class Renderer : IDisposable
         _hud.Dispose();
         _tableLayer.Dispose();
         _sceneLayer.Dispose();
+        if (_reduced.Framebuffer != 0)
+        {
+            _reduced.Delete(_gl);
+        }
         _gl.DeleteProgram(_lit.Program);
         _gl.DeleteProgram(_gouraud.Program);
     }

@@ -50,6 +50,20 @@ public sealed class StoredLayerTests : IDisposable
         return frame;
     }
 
+    /// <summary>Mean of one colour channel over the 5 x 5 pixels round a point.</summary>
+    private static double Mean(byte[] pixels, Vector2 at, int channel)
+    {
+        double sum = 0;
+        for (int dy = -2; dy <= 2; dy++)
+        {
+            for (int dx = -2; dx <= 2; dx++)
+            {
+                sum += pixels[((((int)at.Y + dy) * Width) + (int)at.X + dx) * 4 + channel];
+            }
+        }
+        return sum / 25;
+    }
+
     /// <summary>Largest difference of any colour channel between two frames (0..255).</summary>
     private static int MaxDifference(byte[] a, byte[] b)
     {
@@ -94,6 +108,41 @@ public sealed class StoredLayerTests : IDisposable
         var old = RenderMath.ToPixel(vp, from, Width, Height)!.Value;
         int o = (((int)old.Y * Width) + (int)old.X) * 4;
         Assert.True(moved[o + 1] > moved[o] && moved[o + 1] > moved[o + 2], $"the old place of ball 1 is not cloth green: {moved[o]} {moved[o + 1]} {moved[o + 2]}");
+    }
+
+    [Fact]
+    public void AMovingCameraIsDrawnAtReducedResolutionAndAStillOneAtFullResolution()
+    {
+        var renderer = _renderer.Renderer;
+        renderer.DynamicResolution = true;
+        try
+        {
+            var at = new Vector3(0.3f, -0.3f, R);
+            var first = Frame(at);
+            _renderer.Render(first);
+            var moved = Frame(at);
+            moved.Eye += new Vector3(0.05f, 0.02f, 0);
+            long reduced = renderer.ReducedFrames;
+            byte[] moving = _renderer.Render(moved);
+            Assert.Equal(reduced + 1, renderer.ReducedFrames);
+            byte[] still = _renderer.Render(moved);
+            Assert.Equal(reduced + 1, renderer.ReducedFrames);
+            // The reduced frame is the same picture, softer: each ball in its place and colour.
+            var vp = RenderMath.ViewProjection(moved);
+            foreach (var ball in moved.Balls)
+            {
+                var p = RenderMath.ToPixel(vp, ball.Position, Width, Height)!.Value;
+                for (int c = 0; c < 3; c++)
+                {
+                    Assert.InRange(Math.Abs(Mean(moving, p, c) - Mean(still, p, c)), 0, 25);
+                }
+            }
+            Assert.True(MaxDifference(moving, still) > 0, "the moving frame was not drawn differently");
+        }
+        finally
+        {
+            renderer.DynamicResolution = false;
+        }
     }
 
     [Theory]
