@@ -29,7 +29,7 @@ public static class PlayCommand
         var script = new Option<string?>("--script") { Description = $"Replay a timed list of input events ({InputScript.Format} JSON); the game closes when it ends." };
         var stats = new Option<string?>("--stats") { Description = $"Write per-second frame rates, frame-time percentiles and input-to-frame delays ({FrameStats.Format} JSON) when the game ends." };
         var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball or straight-pool (default: the scene's rules)." };
-        var players = new Option<string?>("--players") { Description = "The two players, A,B: each human or computer:LEVEL (1-5); default human,human." };
+        var players = new Option<string?>("--players") { Description = $"The two players, A,B: each a name or human (a person), or computer:LEVEL (1-5; also cpu:LEVEL); default {DefaultPlayers}." };
         var record = new Option<string?>("--record") { Description = $"Write the match's rulings, state and HUD ({MatchRecord.Format} JSON) when the game ends." };
         var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record };
         command.SetAction(parse => Play(parse.GetValue(scene), PlatformWiring.Open, options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))
@@ -74,6 +74,11 @@ public static class PlayCommand
         {
             host.TimeScale = script!.Speed;
             scripted.IsAtRest = () => host.IsSettled;
+            if (host.Tree.Root.FindInTree<ComputerPlayerNode>() is { } computer)
+            {
+                // A scripted game must be the same game on any machine: no search is cut short by the clock.
+                computer.BudgetMs = 120_000;
+            }
         }
         var stats = statsPath is null ? null : new FrameStats();
         bool warm = false;
@@ -188,7 +193,7 @@ public static class PlayCommand
         {
             return players is null ? null : throw new CliException($"--players {players}: {scene.Path} names no rules; give --rules too");
         }
-        string[] parts = (players ?? "human,human").Split(',');
+        string[] parts = (players ?? DefaultPlayers).Split(',');
         if (parts.Length != 2)
         {
             throw new CliException($"--players {players}: expected two players A,B (each human or computer:LEVEL)");
@@ -198,13 +203,12 @@ public static class PlayCommand
         {
             seats[i] = MatchPlayer.Parse(parts[i], i)
                 ?? throw new CliException($"--players {players}: \"{parts[i]}\" is not a player (a name of 1-{MatchPlayer.MaxNameLength} characters, human, or computer:LEVEL with LEVEL 1-5)");
-            if (!seats[i].IsHuman)
-            {
-                throw new CliException($"--players {players}: computer players are not available in this build yet");
-            }
         }
         return new MatchSetup(g, seats);
     }
+
+    /// <summary>The players without <c>--players</c>: a person against the computer at level 3.</summary>
+    public const string DefaultPlayers = "human,computer:3";
 
     /// <summary>The shipped scene for a game: <c>assets/scenes/RULES.json</c>.</summary>
     public static string FindRulesScene(GameRules rules)

@@ -80,6 +80,8 @@ public sealed class MatchNode : Node
     private TableGeometry? _geometry;
     private GameState _atStrike;
     private BallId? _calledBall;
+    private Call? _adoptedCall;
+    private bool _hasAdoptedCall;
     private PocketId? _calledPocket;
     private int _games;
 
@@ -145,8 +147,80 @@ public sealed class MatchNode : Node
     /// <summary>Every shot struck in the match, in order: the state at the strike (with its call and placement) and the shot.</summary>
     public IReadOnlyList<(GameState Before, ShotSpec Shot)> Shots => _shots;
 
-    /// <summary>True while a computer player thinks or plays its move (the script's waits wait for it).</summary>
-    public bool IsComputerActing => false;
+    /// <summary>True while the computer is to move: its shot, or its choice among a ruling's options (a script's waits wait for it).</summary>
+    public bool IsComputerActing => !IsOver && !Players[State.Shooter].IsHuman;
+
+    /// <summary>The seed of the planner's search and of the computer's error for the shot to come: the same game, the same decisions.</summary>
+    public ulong ShotSeed(long stream) => Billiards.Core.Ai.PlannerRandom.Derive(MatchSeed, (_games * 10_000L) + State.Shot, stream);
+
+    /// <summary>The match's seed for the computer player (default 1).</summary>
+    public ulong MatchSeed { get; init; } = 1;
+
+    /// <summary>The cue's aim now (deg, from +x counter-clockwise).</summary>
+    public double AimDegrees => _cue is null ? 0 : ViewMath.AimDegrees(_cue.AimDirection);
+
+    /// <summary>Turns the cue to <paramref name="degrees"/> exactly (the camera's azimuth behind the cue ball).</summary>
+    public void AimAt(double degrees)
+    {
+        if (_camera is null || _physics is null || _physics.IsRolling)
+        {
+            return;
+        }
+        _camera.Camera.Translate(_physics.CueBallPosition - _camera.Camera.Centre);
+        _camera.Camera.SetPhi((degrees * Math.PI / 180) + Math.PI);
+    }
+
+    /// <summary>
+    /// Takes a plan (the computer's, or a hint for a person): the cue ball placed where it says (with
+    /// ball in hand), its call, its push-out, the power of its shot, and the aim turned to it.
+    /// </summary>
+    public void Adopt(Billiards.Core.Ai.Decision decision, bool exactCall)
+    {
+        ArgumentNullException.ThrowIfNull(decision);
+        if (_physics is null || !CanShoot)
+        {
+            return;
+        }
+        if (decision.Place is { } place && _physics.BallInHand)
+        {
+            var old = _physics.CueBallPosition;
+            if (_physics.TryPlaceCueBall(place) && _camera is not null)
+            {
+                _camera.Camera.Translate(_physics.CueBallPosition - old);
+            }
+        }
+        _calledBall = decision.Call is { IsSafety: false } c ? c.Ball : null;
+        _calledPocket = decision.Call is { IsSafety: false } c2 ? c2.Pocket : null;
+        _adoptedCall = exactCall ? decision.Call : null;
+        _hasAdoptedCall = exactCall;
+        if (decision.PushOut && _rules is GameRules.NineBall or GameRules.TenBall && State.Shot == 1)
+        {
+            State = State with { PushOut = true };
+        }
+        if (!exactCall)
+        {
+            // A hint sets the person's power; the computer strikes its own shot and leaves the person's power alone.
+            Power = Math.Clamp(decision.Shot.Speed, MinPower, MaxPower);
+        }
+        AimAt(decision.Shot.AimDeg);
+    }
+
+    /// <summary>Shows what a hint suggests: the call, the speed and how often the planner saw it succeed.</summary>
+    public void SayHint(Billiards.Core.Ai.Decision hint)
+    {
+        ArgumentNullException.ThrowIfNull(hint);
+        string what = hint.Call is { IsSafety: false } c ? $"the {c.Ball} in the {c.Pocket.ToName()} pocket" : hint.Call is { IsSafety: true } ? "a safety" : $"{hint.Kind.ToString().ToLowerInvariant()} on the {hint.Target}";
+        Say(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"Hint: {what} at {hint.Shot.Speed:0.0} m/s (works {hint.ExpectedPot * 100:0} % of the time); Space shoots."));
+    }
+
+    /// <summary>Strikes a shot the computer plays (its plan with its own error), with the call it adopted.</summary>
+    public void StrikeAsComputer(ShotSpec shot)
+    {
+        if (CanShoot)
+        {
+            _physics!.Strike(shot);
+        }
+    }
 
     /// <summary>
     /// The call the shooter makes now: the chosen ball (else the aimed one) and the chosen pocket
@@ -217,6 +291,11 @@ public sealed class MatchNode : Node
         if (e is not KeyInput { Pressed: true } key)
         {
             return false;
+        }
+        if (IsComputerActing)
+        {
+            // The computer's turn: the person watches (the camera and system keys still work).
+            return key.Key is >= Key.D1 and <= Key.D5 or Key.Space or Key.Left or Key.Right or Key.A or Key.D or Key.W or Key.Q or Key.O or Key.C or Key.B or Key.X;
         }
         switch (key.Key)
         {
@@ -307,7 +386,9 @@ public sealed class MatchNode : Node
     {
         // The breaker places the cue ball in the kitchen, as after a scratch (Core's GamePlayer.BallInHand).
         bool inHand = State.Shot == 0 || State.BallInHand != BallInHand.None;
-        _atStrike = State with { Call = CurrentCall, Placement = inHand ? _physics!.CueBallPosition : null };
+        _atStrike = State with { Call = _hasAdoptedCall ? _adoptedCall : CurrentCall, Placement = inHand ? _physics!.CueBallPosition : null };
+        _hasAdoptedCall = false;
+        _adoptedCall = null;
         _shots.Add((_atStrike, shot));
         _calledBall = null;
         _calledPocket = null;
