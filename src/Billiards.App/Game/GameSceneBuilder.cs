@@ -42,6 +42,7 @@ public static class GameSceneBuilder
         if (scene.Balls.Any(b => b.Id == BallId.Cue))
         {
             root.AddChild(new CueNode());
+            root.AddChild(new AimLineNode());
         }
         if (scene.Rules is { } rules)
         {

@@ -240,6 +240,9 @@ public sealed class MatchNode : Node
         }
     }
 
+    /// <summary>True when the rules call this shot (8-ball, 10-ball and 14.1 after the break; never 9-ball), as Core's planner has it.</summary>
+    public bool NeedsCall => Billiards.Core.Ai.ShotPlanner.NeedsCall(State);
+
     /// <summary>True when the shooter may strike now: balls at rest, no option pending, the game on.</summary>
     public bool CanShoot => _physics is { IsRolling: false, HasCueBall: true } && PendingOptions.Count == 0 && !IsOver;
 
@@ -386,7 +389,8 @@ public sealed class MatchNode : Node
     {
         // The breaker places the cue ball in the kitchen, as after a scratch (Core's GamePlayer.BallInHand).
         bool inHand = State.Shot == 0 || State.BallInHand != BallInHand.None;
-        _atStrike = State with { Call = _hasAdoptedCall ? _adoptedCall : CurrentCall, Placement = inHand ? _physics!.CueBallPosition : null };
+        var call = _hasAdoptedCall ? _adoptedCall : NeedsCall ? CurrentCall : null;
+        _atStrike = State with { Call = call, Placement = inHand ? _physics!.CueBallPosition : null };
         _hasAdoptedCall = false;
         _adoptedCall = null;
         _shots.Add((_atStrike, shot));

@@ -21,6 +21,7 @@ public sealed class HudNode : Node
     private RulesNode? _rules;
     private MatchNode? _match;
     private ComputerPlayerNode? _computer;
+    private AimLineNode? _aimLine;
 
     /// <summary>The frame-rate meter, fed every frame.</summary>
     public FrameRateMeter FrameRate { get; } = new();
@@ -39,6 +40,7 @@ public sealed class HudNode : Node
         _physics.Struck += _ => _sinceShot = 0;
         _match = FindInTree<MatchNode>();
         _computer = FindInTree<ComputerPlayerNode>();
+        _aimLine = FindInTree<AimLineNode>();
     }
 
     /// <summary>How long the meter keeps showing a shot's speed after the strike (s).</summary>
@@ -60,7 +62,7 @@ public sealed class HudNode : Node
     protected override void Draw(FrameBuilder frame)
     {
         BuildLines();
-        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, HelpText.Lines, Meter());
+        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, HelpText.Lines, Meter(), _aimLine?.Shapes(frame.Frame));
     }
 
     /// <summary>

@@ -61,10 +61,11 @@ public static class MatchLines
             {
                 lines.Add($"Ball in hand ({(physics.HandRegion == Core.Setup.PlacementRegion.Kitchen ? "kitchen" : "anywhere")}): M and drag to place");
             }
-            string call = match.CurrentCall is { } c ? $"{c.Ball} in {c.Pocket.ToName()}" : "none";
             string push = state.PushOut ? "  PUSH-OUT" : "";
             string pushKey = state.Rules is GameRules.NineBall or GameRules.TenBall && state.Shot == 1 ? "  O: push-out" : "";
-            lines.Add(string.Create(CultureInfo.InvariantCulture, $"Call: {call} (B ball, C pocket)  power {match.Power:0.00} m/s (Q/W, Space shoots, G hint){push}{pushKey}"));
+            // Only a shot the rules call (8-ball, 10-ball and 14.1 after the break) shows a call.
+            string call = !match.NeedsCall ? "" : match.CurrentCall is { } c ? $"Call: {c.Ball} in {c.Pocket.ToName()} (B ball, C pocket)  " : "Call: none (B ball, C pocket)  ";
+            lines.Add(string.Create(CultureInfo.InvariantCulture, $"{call}Power {match.Power:0.00} m/s (Q/W, Space shoots, G hint){push}{pushKey}"));
         }
         if (match.LastRuling is { } last)
         {

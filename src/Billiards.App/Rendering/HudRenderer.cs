@@ -87,6 +87,22 @@ internal sealed class HudRenderer : IDisposable
         var textColor = new Vector4(0.95f, 0.95f, 0.9f, 1);
         var panel = new Vector4(0, 0, 0, 0.45f);
 
+        if (hud.Aids is { } aids)
+        {
+            // Under the panel: the aim line's segments as thin quads, the ghost ball as a ring.
+            foreach (var aid in aids)
+            {
+                if (aid.Radius > 0)
+                {
+                    Disc(aid.A, aid.Radius, aid.Color, 3);
+                }
+                else
+                {
+                    Line(aid.A, aid.B, 1.5f * scale, aid.Color);
+                }
+            }
+        }
+
         if (hud.Lines.Count > 0)
         {
             int longest = hud.Lines.Max(l => l.Length);
@@ -220,6 +236,23 @@ internal sealed class HudRenderer : IDisposable
         Vertex(x, y, u0, v0, c, kind);
         Vertex(x + w, y + h, u1, v1, c, kind);
         Vertex(x, y + h, u0, v1, c, kind);
+    }
+
+    private void Line(Vector2 a, Vector2 b, float width, Vector4 c)
+    {
+        var d = b - a;
+        float length = d.Length();
+        if (length < 0.5f)
+        {
+            return;
+        }
+        var n = new Vector2(-d.Y, d.X) * (0.5f * width / length);
+        Vertex(a.X + n.X, a.Y + n.Y, 0, 0, c, 0);
+        Vertex(b.X + n.X, b.Y + n.Y, 0, 0, c, 0);
+        Vertex(b.X - n.X, b.Y - n.Y, 0, 0, c, 0);
+        Vertex(a.X + n.X, a.Y + n.Y, 0, 0, c, 0);
+        Vertex(b.X - n.X, b.Y - n.Y, 0, 0, c, 0);
+        Vertex(a.X - n.X, a.Y - n.Y, 0, 0, c, 0);
     }
 
     private void Rect(float x, float y, float w, float h, Vector4 c) => Quad(x, y, w, h, 0, 0, 0, 0, c, 0);

@@ -70,7 +70,15 @@ public readonly record struct CueVisual(bool Visible, Vector3 BallCentre, Vector
 /// <param name="ShowHelp">Whether the help overlay is open.</param>
 /// <param name="HelpLines">Lines of the help overlay: every key.</param>
 /// <param name="Power">The power meter while stroking (and briefly after), or null.</param>
-public sealed record HudInfo(IReadOnlyList<string> Lines, Vector2 SpinPoint, bool ShowHelp, IReadOnlyList<string> HelpLines, PowerMeter? Power = null);
+/// <param name="Aids">Aim aids drawn under the HUD's panel (the aim line and its ghost ball), or null.</param>
+public sealed record HudInfo(IReadOnlyList<string> Lines, Vector2 SpinPoint, bool ShowHelp, IReadOnlyList<string> HelpLines, PowerMeter? Power = null, IReadOnlyList<AidShape>? Aids = null);
+
+/// <summary>An aim aid in pixels (x right, y down): a line from <paramref name="A"/> to <paramref name="B"/>, or with a radius a ring around <paramref name="A"/>.</summary>
+/// <param name="A">Start of the line, or the ring's centre (pixels).</param>
+/// <param name="B">End of the line (pixels; ignored for a ring).</param>
+/// <param name="Radius">The ring's radius (pixels), 0 for a line.</param>
+/// <param name="Color">Colour and opacity (sRGB, alpha).</param>
+public readonly record struct AidShape(Vector2 A, Vector2 B, float Radius, Vector4 Color);
 
 /// <summary>The power meter under the table view.</summary>
 /// <param name="Fraction">How full the bar is, 0..1 (of the strongest stroke, or of the longest backswing).</param>
