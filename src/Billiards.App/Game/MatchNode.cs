@@ -375,14 +375,31 @@ public sealed class MatchNode : Node
             return;
         }
         _games++;
+        NewGame("New game");
+    }
+
+    /// <summary>The game starts again (the pause menu): the balls reracked, the same player breaks; games won stay.</summary>
+    public void Restart()
+    {
+        if (_physics is null || _physics.IsRolling)
+        {
+            return;
+        }
+        NewGame("Restart");
+    }
+
+    private void NewGame(string what)
+    {
         int breaker = (_opening.Shooter + _games) % 2;
         IsOver = false;
         Winner = null;
         PendingOptions = [];
+        _calledBall = null;
+        _calledPocket = null;
         State = new GameState(_rules) { Players = _opening.Players, Shooter = breaker, Target = _opening.Target };
         RerackAll();
         _physics!.GiveBallInHand(PlacementRegion.Kitchen);
-        Say($"New game: {State.ShooterName} breaks.");
+        Say($"{what}: {State.ShooterName} breaks.");
     }
 
     private void OnStruck(ShotSpec shot)
