@@ -136,26 +136,52 @@ public sealed class PlannerTable
 
     /// <summary>
     /// The best direct shot the player at the table has in <paramref name="state"/>: the largest
-    /// <see cref="DirectEase"/> over legal targets and pockets, 0 without a cue ball. This is the
-    /// one-shot look-ahead of the search.
+    /// <see cref="DirectEase"/> over legal targets and pockets, 0 without a cue ball.
     /// </summary>
-    public double BestEase(TablePosition position, GameState state)
+    public double BestEase(TablePosition position, GameState state, double aimStdDeg = ReferenceAimStdDeg) =>
+        Shots(position, state, aimStdDeg).Best;
+
+    /// <summary>
+    /// How good <paramref name="position"/> is for the player at the table in <paramref name="state"/>
+    /// whose aim error is <paramref name="aimStdDeg"/>: the one-shot look-ahead of the search.
+    /// Mostly the best next shot's <see cref="DirectEase"/>, and a little the best shot on another
+    /// ball, because a second way on keeps a run going when the first is missed in position (with
+    /// one legal ball, as in 9-ball, the best shot alone).
+    /// </summary>
+    public double PositionQuality(TablePosition position, GameState state, double aimStdDeg)
+    {
+        var (best, second) = Shots(position, state, aimStdDeg);
+        return LegalTargets(state, position).Count > 1 ? 0.85 * best + 0.15 * second : best;
+    }
+
+    // The best direct ease, and the best on a ball other than the best's.
+    private (double Best, double Second) Shots(TablePosition position, GameState state, double aimStdDeg)
     {
         ArgumentNullException.ThrowIfNull(position);
         ArgumentNullException.ThrowIfNull(state);
         if (position.Cue is not { } cue)
         {
-            return 0;
+            return (0, 0);
         }
-        double best = 0;
+        double best = 0, second = 0;
         foreach (var target in LegalTargets(state, position))
         {
+            double ball = 0;
             foreach (var pocket in Pockets)
             {
-                best = Math.Max(best, DirectEase(position, cue, target, pocket));
+                ball = Math.Max(ball, DirectEase(position, cue, target, pocket, aimStdDeg));
+            }
+            if (ball > best)
+            {
+                second = best;
+                best = ball;
+            }
+            else if (ball > second)
+            {
+                second = ball;
             }
         }
-        return best;
+        return (best, second);
     }
 
     /// <summary>
