@@ -83,7 +83,7 @@ public static class SuggestCommand
         using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
         {
             w.WriteStartObject();
-            GameRecordWriter.WriteShot(w, "shot", decision.Shot);
+            GameRecordFile.WriteShot(w, "shot", decision.Shot);
             if (decision.Place is { } p)
             {
                 w.WriteStartArray("place");
@@ -95,7 +95,14 @@ public static class SuggestCommand
             {
                 w.WriteNull("place");
             }
-            GameRecordWriter.WriteCall(w, decision.Call);
+            if (decision.Call is { } call)
+            {
+                GameBlockWriter.WriteCall(w, "call", call);
+            }
+            else
+            {
+                w.WriteNull("call");
+            }
             w.WriteStartObject("expected");
             w.WriteNumber("pot", Math.Round(decision.ExpectedPot, 4));
             if (decision.ExpectedRuling is { } ruling)

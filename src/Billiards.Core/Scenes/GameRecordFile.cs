@@ -80,15 +80,7 @@ public static class GameRecordFile
             {
                 w.WriteNull("call");
             }
-            w.WriteStartObject("shot");
-            w.WriteNumber("speed", input.Shot.Speed);
-            w.WriteNumber("aim_deg", input.Shot.AimDeg);
-            w.WriteStartArray("tip");
-            w.WriteNumberValue(input.Shot.TipSide);
-            w.WriteNumberValue(input.Shot.TipHeight);
-            w.WriteEndArray();
-            w.WriteNumber("elevation_deg", input.Shot.ElevationDeg);
-            w.WriteEndObject();
+            WriteShot(w, "shot", input.Shot);
             if (input.Choice is { } choice)
             {
                 w.WriteString("choice", choice.ToName());
@@ -102,6 +94,22 @@ public static class GameRecordFile
             w.WriteEndObject();
         }
         w.WriteEndArray();
+        w.WriteEndObject();
+    }
+
+    /// <summary>A shot as scenes and records write it: speed (m/s), aim (deg), tip (fractions of R), elevation (deg).</summary>
+    public static void WriteShot(Utf8JsonWriter w, string name, ShotSpec shot)
+    {
+        ArgumentNullException.ThrowIfNull(w);
+        ArgumentNullException.ThrowIfNull(shot);
+        w.WriteStartObject(name);
+        w.WriteNumber("speed", shot.Speed);
+        w.WriteNumber("aim_deg", shot.AimDeg);
+        w.WriteStartArray("tip");
+        w.WriteNumberValue(shot.TipSide);
+        w.WriteNumberValue(shot.TipHeight);
+        w.WriteEndArray();
+        w.WriteNumber("elevation_deg", shot.ElevationDeg);
         w.WriteEndObject();
     }
 
