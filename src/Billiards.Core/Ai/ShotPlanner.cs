@@ -27,13 +27,14 @@ namespace Billiards.Core.Ai;
 /// <item>Simulation: each variation from a snapshot of its root's position (taken once, restored
 /// before every shot), with the standard model's event integrator, several times with the player's
 /// own error (<see cref="SkillLevel"/>); the referee judges each result and a score says how good
-/// it is for the shooter: a won game 1, a lost game 0, staying at the table 0.55 plus 0.45 times
-/// the quality of the position for the next shot (<see cref="PlannerTable.PositionQuality"/>, with
-/// the shooter's own error), a legal miss 0.45 less 0.35 times the opponent's best shot (how
+/// it is for the shooter: a won game 1, a lost game 0, staying at the table 0.7 plus 0.3 times the
+/// quality of the position for the next shot (<see cref="PlannerTable.PositionQuality"/>, with the
+/// shooter's own error) less 0.04 per ball left without a straight way to a pocket
+/// (<see cref="PlannerTable.ProblemBalls"/>), a legal miss 0.5 less 0.4 times the opponent's best shot (how
 /// safeties are judged), a foul 0.08.</item>
 /// <item>Refinement: the best variations are simulated again with more error samples, at level 5
-/// in two rounds (the best 30 with 8 more, the best 8 of those with 40 more); the best mean of the
-/// last round wins.</item>
+/// in two rounds (the best 40 with 10 more, the best 10 of those with 60 more); the best mean of
+/// the last round wins.</item>
 /// </list>
 /// Determinism: every simulation draws its error from its own stream, derived from the seed and
 /// the variation's and sample's indices, and results are reduced in index order, so the threads
@@ -44,11 +45,15 @@ public sealed class ShotPlanner
     private const double MaxShotTime = 120;
     private const double MaxNormalSpeed = 6.5;
 
-    private static readonly double[] SpeedFactors = [1.0, 1.5, 2.3, 0.75, 3.2];
+    // A level takes the first of these (sorted before use): the strongest players also try the
+    // speeds in between.
+    private static readonly double[] SpeedFactors = [1.0, 1.5, 2.3, 0.75, 3.2, 1.2, 1.85];
 
-    // (side, height, elevation deg): stun, follow, draw, side either way, elevated draw.
+    // (side, height, elevation deg): stun, follow, draw, side either way, elevated draw; then
+    // half follow, half draw and side with draw either way.
     private static readonly (double Side, double Height, double Elevation)[] SpinSet =
-        [(0, 0, 0), (0, 0.4, 0), (0, -0.45, 0), (0.3, 0.1, 0), (-0.3, 0.1, 0), (0, -0.5, 8)];
+        [(0, 0, 0), (0, 0.4, 0), (0, -0.45, 0), (0.3, 0.1, 0), (-0.3, 0.1, 0), (0, -0.5, 8),
+         (0, 0.2, 0), (0, -0.25, 0), (0.3, -0.3, 0), (-0.3, -0.3, 0)];
 
     /// <summary>A planner for games on <paramref name="table"/> with balls of <paramref name="physics"/> (simulated with the standard model).</summary>
     public ShotPlanner(TableSpec table, PhysicsParams physics)
@@ -146,15 +151,19 @@ public sealed class ShotPlanner
         }
         if (ruling.Continue)
         {
+            // Position counts, but less than the pot: for a strong player a moderate next shot is
+            // still likely, and the pot in hand is certain. Each ball left without a straight way
+            // to a pocket costs a little, so that shots which free a cluster are preferred.
             double q = look ? Table.PositionQuality(after, ruling.Next, level.PositionAimStdDeg) : 0.5;
-            return 0.55 + 0.45 * q;
+            double problems = look ? 0.04 * Table.ProblemBalls(after, ruling.Next) : 0;
+            return 0.7 + 0.3 * q - problems;
         }
         if (!ruling.Legal)
         {
             return 0.08;
         }
         double opponent = look ? Table.BestEase(after, ruling.Next) : 0.5;
-        return 0.45 - 0.35 * opponent;
+        return 0.5 - 0.4 * opponent;
     }
 
     /// <summary>True when the game asks for a call on this shot (8-ball, 10-ball and 14.1 after the break).</summary>

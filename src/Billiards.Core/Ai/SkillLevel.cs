@@ -80,7 +80,7 @@ public sealed record SkillLevel(
         new(2, 0.55, 0.08, 0.07, Candidates: 6, Speeds: 3, Spins: 1, Samples: 2, RefineTop: 3, RefineSamples: 4, LookAhead: 0, Placements: 3),
         new(3, 0.30, 0.05, 0.05, Candidates: 8, Speeds: 3, Spins: 3, Samples: 2, RefineTop: 6, RefineSamples: 8, LookAhead: 1, Placements: 4),
         new(4, 0.16, 0.035, 0.03, Candidates: 10, Speeds: 4, Spins: 4, Samples: 3, RefineTop: 8, RefineSamples: 12, LookAhead: 1, Placements: 5),
-        new(5, 0.08, 0.02, 0.015, Candidates: 12, Speeds: 5, Spins: 6, Samples: 3, RefineTop: 8, RefineSamples: 40, LookAhead: 1, Placements: 6, ScreenTop: 30, ScreenSamples: 8),
+        new(5, 0.08, 0.02, 0.015, Candidates: 16, Speeds: 7, Spins: 10, Samples: 3, RefineTop: 10, RefineSamples: 60, LookAhead: 1, Placements: 6, ScreenTop: 40, ScreenSamples: 10, FirstRoundSimulations: 4000),
     ];
 
     /// <summary>The level <paramref name="level"/> (1 to 5).</summary>
