@@ -84,17 +84,7 @@ public static class SuggestCommand
         {
             w.WriteStartObject();
             GameRecordFile.WriteShot(w, "shot", decision.Shot);
-            if (decision.Place is { } p)
-            {
-                w.WriteStartArray("place");
-                w.WriteNumberValue(p.X);
-                w.WriteNumberValue(p.Y);
-                w.WriteEndArray();
-            }
-            else
-            {
-                w.WriteNull("place");
-            }
+            GameRecordFile.WritePlace(w, "place", decision.Place);
             if (decision.Call is { } call)
             {
                 GameBlockWriter.WriteCall(w, "call", call);

@@ -54,6 +54,9 @@ public sealed class PhysicsNode : Node
     /// <summary>The table.</summary>
     public TableSpec Table => _scene.Table;
 
+    /// <summary>The scene's physics parameters (the computer player plans with them).</summary>
+    public PhysicsParams Params => _scene.Physics.Params;
+
     /// <summary>Ball radius of the scene's model (m).</summary>
     public double BallRadius => _simulation.BallRadius;
 

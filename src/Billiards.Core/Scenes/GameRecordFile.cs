@@ -61,17 +61,7 @@ public static class GameRecordFile
             w.WriteStartObject();
             w.WritePropertyName("game");
             GameBlockWriter.WriteGame(w, played.Before);
-            if (input.Place is { } p)
-            {
-                w.WriteStartArray("place");
-                w.WriteNumberValue(p.X);
-                w.WriteNumberValue(p.Y);
-                w.WriteEndArray();
-            }
-            else
-            {
-                w.WriteNull("place");
-            }
+            WritePlace(w, "place", input.Place);
             if (input.Call is { } call)
             {
                 GameBlockWriter.WriteCall(w, "call", call);
@@ -95,6 +85,21 @@ public static class GameRecordFile
         }
         w.WriteEndArray();
         w.WriteEndObject();
+    }
+
+    /// <summary>A cue-ball placement as records write it: [x, y] (m), or null.</summary>
+    public static void WritePlace(Utf8JsonWriter w, string name, Vec3? place)
+    {
+        ArgumentNullException.ThrowIfNull(w);
+        if (place is not { } p)
+        {
+            w.WriteNull(name);
+            return;
+        }
+        w.WriteStartArray(name);
+        w.WriteNumberValue(p.X);
+        w.WriteNumberValue(p.Y);
+        w.WriteEndArray();
     }
 
     /// <summary>A shot as scenes and records write it: speed (m/s), aim (deg), tip (fractions of R), elevation (deg).</summary>
