@@ -83,9 +83,16 @@ public static class SuggestCommand
         using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
         {
             w.WriteStartObject();
-            GameRecordWriter.WriteShot(w, "shot", decision.Shot);
-            GameRecordWriter.WritePlace(w, "place", decision.Place);
-            GameRecordWriter.WriteCall(w, decision.Call);
+            GameRecordFile.WriteShot(w, "shot", decision.Shot);
+            GameRecordFile.WritePlace(w, "place", decision.Place);
+            if (decision.Call is { } call)
+            {
+                GameBlockWriter.WriteCall(w, "call", call);
+            }
+            else
+            {
+                w.WriteNull("call");
+            }
             w.WriteStartObject("expected");
             w.WriteNumber("pot", Math.Round(decision.ExpectedPot, 4));
             if (decision.ExpectedRuling is { } ruling)

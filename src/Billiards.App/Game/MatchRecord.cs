@@ -48,8 +48,8 @@ public static class MatchRecord
                 w.WriteStartObject();
                 w.WritePropertyName("before");
                 GameBlockWriter.WriteGame(w, before);
-                Cli.GameRecordWriter.WritePlace(w, "place", before.Placement);
-                Cli.GameRecordWriter.WriteShot(w, "shot", shot);
+                GameRecordFile.WritePlace(w, "place", before.Placement);
+                GameRecordFile.WriteShot(w, "shot", shot);
                 w.WriteEndObject();
             }
             w.WriteEndArray();
