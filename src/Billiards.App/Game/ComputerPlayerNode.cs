@@ -29,6 +29,7 @@ public sealed class ComputerPlayerNode : Node
 
     private MatchNode? _match;
     private PhysicsNode? _physics;
+    private SystemKeysNode? _keys;
     private ShotPlanner? _planner;
     private Task<Decision>? _thinking;
     private Task<RefereeOption>? _choosing;
@@ -58,6 +59,7 @@ public sealed class ComputerPlayerNode : Node
     {
         _match = GetInTree<MatchNode>();
         _physics = GetInTree<PhysicsNode>();
+        _keys = FindInTree<SystemKeysNode>();
         _planner = new ShotPlanner(_physics.Table, _physics.Params);
     }
 
@@ -87,6 +89,11 @@ public sealed class ComputerPlayerNode : Node
     {
         if (_match is null || _physics is null || _planner is null)
         {
+            return;
+        }
+        if (_keys is { Loop.Paused: true })
+        {
+            // Paused (P, or the menu): the computer waits too; its search may finish meanwhile.
             return;
         }
         FinishHint();

@@ -92,6 +92,25 @@ public class ComputerPlayerTests
     }
 
     [Fact]
+    public void A_paused_game_holds_the_computer_until_it_resumes()
+    {
+        using var game = new Game(new MatchPlayer("Anna"), new MatchPlayer("Computer L1", 1));
+        game.Press(Key.Q, 8);
+        game.Press(Key.Space);
+        game.RunUntil(() => game.Match.Rulings.Count >= 1 && !game.Host.World.Physics.IsRolling, "the break never ended");
+        game.Press(Key.P);
+        for (int i = 0; i < 100; i++)
+        {
+            game.Frame();
+            Thread.Sleep(2);
+        }
+        Assert.NotEmpty(game.Match.PendingOptions);
+        Assert.Single(game.Match.Shots);
+        game.Press(Key.P);
+        game.RunUntil(() => game.Match.Shots.Count >= 2, "the computer never played after the pause");
+    }
+
+    [Fact]
     public void The_hint_key_asks_the_planner_and_takes_its_aim_power_and_call()
     {
         using var game = new Game(new MatchPlayer("Anna"), new MatchPlayer("Ben"));
