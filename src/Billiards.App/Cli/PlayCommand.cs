@@ -37,9 +37,11 @@ public static class PlayCommand
             Rules = parse.GetValue(rules),
             Players = parse.GetValue(players),
             Record = parse.GetValue(record),
+            StartMenu = parse.GetValue(scene) is null && parse.GetValue(rules) is null && parse.GetValue(players) is null
+                && parse.GetValue(script) is null && parse.GetValue(stats) is null && parse.GetValue(record) is null,
         }, openAudio: OpenAudio));
         root.Add(command);
-        root.SetAction(_ => Play(null, PlatformWiring.Open, openAudio: OpenAudio));
+        root.SetAction(_ => Play(null, PlatformWiring.Open, options: new PlayOptions(null, null) { StartMenu = true }, openAudio: OpenAudio));
     }
 
     /// <summary>Loads the scene, opens the platform and runs the game until the window closes.</summary>
@@ -105,7 +107,14 @@ public static class PlayCommand
         {
             scripted.Raised += (e, _) => stats.InputRaised(e, e.Time + scripted.Waited);
         }
-        host.Run(platform.Loop, platform.Renderer);
+        if (options?.StartMenu == true && script is null && statsPath is null && recordPath is null)
+        {
+            RunWithStartMenu(host, platform, scene2 => new GameHost(scene2.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, scene2.Match), audio);
+        }
+        else
+        {
+            host.Run(platform.Loop, platform.Renderer);
+        }
         if (stats is not null && statsPath is not null)
         {
             stats.Ended(gameClock.Now);
@@ -119,6 +128,43 @@ public static class PlayCommand
             OutputFiles.Write(recordPath, MatchRecord.ToJson(matchNode, hud?.Lines ?? []));
         }
         return 0;
+    }
+
+    // The start menu shows over the default game; a different choice replaces the game (a new host
+    // on the same window) between two frames.
+    private static void RunWithStartMenu(GameHost first, GamePlatform platform, Func<(Scene Scene, MatchSetup Match), GameHost> create, IAudioOutput audio)
+    {
+        var current = first;
+        (GameRules Rules, MatchPlayer[] Players)? pending = null;
+        void Listen(GameHost h) => h.World.Menu.StartRequested += (rules, players) => pending = (rules, players);
+        Listen(first);
+        first.World.Menu.ShowStart();
+        try
+        {
+            platform.Loop.Run(() =>
+            {
+                if (pending is { } next)
+                {
+                    pending = null;
+                    var chosen = SceneLoader.Load(FindRulesScene(next.Rules));
+                    if (current != first)
+                    {
+                        current.Dispose();
+                    }
+                    current = create((chosen, new MatchSetup(next.Rules, next.Players)));
+                    current.Tree.Root.AddChild(new AudioNode(audio));
+                    Listen(current);
+                }
+                platform.Renderer.Draw(current.RunFrame());
+            });
+        }
+        finally
+        {
+            if (current != first)
+            {
+                current.Dispose();
+            }
+        }
     }
 
     /// <summary>
@@ -168,6 +214,9 @@ public static class PlayCommand
 
         /// <summary>Where to write the <see cref="MatchRecord"/>, or null.</summary>
         public string? Record { get; init; }
+
+        /// <summary>Open with the start menu (plain <c>play</c>: no scene, game, players, script, stats or record given).</summary>
+        public bool StartMenu { get; init; }
     }
 
     private static GameRules? ParseRules(string? name)

@@ -17,6 +17,8 @@ public enum MenuPage
     Pause,
     /// <summary>Quit asks first.</summary>
     ConfirmQuit,
+    /// <summary>The start menu: the game and the opponent.</summary>
+    Start,
 }
 
 /// <summary>
@@ -42,6 +44,38 @@ public sealed class MenuNode : Node
 
     /// <summary>Signal: the player confirmed quitting.</summary>
     public event Action? QuitConfirmed;
+
+    /// <summary>Signal: the start menu asks for a new game of these rules between these players.</summary>
+    public event Action<GameRules, MatchPlayer[]>? StartRequested;
+
+    /// <summary>The start menu's game.</summary>
+    public GameRules StartGame { get; private set; } = GameRules.EightBall;
+
+    /// <summary>The start menu's opponent: a computer level, or null for a person.</summary>
+    public int? StartOpponent { get; private set; } = 3;
+
+    /// <summary>Opens the start menu (the game paused behind it).</summary>
+    public void ShowStart()
+    {
+        if (_match is not null)
+        {
+            StartGame = _match.Rules;
+            StartOpponent = _match.Players[1].ComputerLevel;
+        }
+        Open();
+        Page = MenuPage.Start;
+    }
+
+    private void Begin()
+    {
+        Resume();
+        if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman)
+        {
+            return; // the game behind the menu is the one chosen
+        }
+        var opponent = StartOpponent is int level ? new MatchPlayer($"Computer L{level}", level) : new MatchPlayer("Player 2");
+        StartRequested?.Invoke(StartGame, [new MatchPlayer("Player 1"), opponent]);
+    }
 
     /// <inheritdoc />
     protected override void Ready()
@@ -84,6 +118,12 @@ public sealed class MenuNode : Node
                 return true;
             case MenuPage.None:
                 return false;
+            case MenuPage.Start:
+                if (key is Key.Enter or Key.Escape)
+                {
+                    Begin();
+                }
+                return true;
             case MenuPage.Pause:
                 switch (key)
                 {
@@ -157,11 +197,29 @@ public sealed class MenuNode : Node
         int scale = HudRenderer.Scale(height);
         float line = HudFont.LineHeight * scale;
         float buttonHeight = line + (8 * scale);
+        var rows = new List<List<(string Label, Action Act)>>();
         var items = new List<(string Label, Action Act)>();
+        rows.Add(items);
         string? title = null;
         float y;
         switch (Page)
         {
+            case MenuPage.Start:
+                title = "New game: the game, the opponent (a person or the computer's level), Start";
+                foreach (var game in (GameRules[])[GameRules.EightBall, GameRules.NineBall, GameRules.TenBall, GameRules.StraightPool])
+                {
+                    items.Add((Mark(game.ToName(), StartGame == game), () => StartGame = game));
+                }
+                var opponents = new List<(string Label, Action Act)> { (Mark("person", StartOpponent is null), () => StartOpponent = null) };
+                for (int level = 1; level <= 5; level++)
+                {
+                    int l = level;
+                    opponents.Add((Mark($"level {l}", StartOpponent == l), () => StartOpponent = l));
+                }
+                rows.Add(opponents);
+                rows.Add([("Start [Enter]", Begin)]);
+                y = height * 0.4f;
+                break;
             case MenuPage.Pause:
                 title = "Paused";
                 items.Add(("Resume [Esc]", Resume));
@@ -191,16 +249,22 @@ public sealed class MenuNode : Node
                 break;
         }
         float gap = 6 * scale;
-        float buttonWidth = (items.Max(i => i.Label.Length) * HudFont.Advance * scale) + (16 * scale);
-        float total = (items.Count * buttonWidth) + ((items.Count - 1) * gap);
-        float x = (width - total) / 2;
-        foreach (var (label, act) in items)
+        foreach (var row in rows)
         {
-            _buttons.Add((new HudButton(x, y, buttonWidth, buttonHeight, label), act));
-            x += buttonWidth + gap;
+            float buttonWidth = (row.Max(i => i.Label.Length) * HudFont.Advance * scale) + (16 * scale);
+            float total = (row.Count * buttonWidth) + ((row.Count - 1) * gap);
+            float x = (width - total) / 2;
+            foreach (var (label, act) in row)
+            {
+                _buttons.Add((new HudButton(x, y, buttonWidth, buttonHeight, label), act));
+                x += buttonWidth + gap;
+            }
+            y += buttonHeight + gap;
         }
         return title;
     }
+
+    private static string Mark(string label, bool chosen) => chosen ? $"> {label} <" : label;
 
     /// <summary>Presses the button whose label starts with <paramref name="label"/> (tests and scripts use clicks; this is the same action).</summary>
     public Vector2? CentreOf(string label)

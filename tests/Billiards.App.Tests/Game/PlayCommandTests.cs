@@ -67,3 +67,47 @@ public class PlayCommandTests
         Assert.EndsWith(Path.Combine("assets", "scenes", "eight-ball.json"), PlayCommand.FindDefaultScene(), StringComparison.Ordinal);
     }
 }
+
+public class StartMenuTests
+{
+    private sealed class ClickingLoop(ManualClock clock, FakeWindow window, RecordingRenderer renderer, string[] clicks) : IFrameLoop
+    {
+        public void Run(Action frame)
+        {
+            frame();
+            foreach (string label in clicks)
+            {
+                var button = renderer.Frames[^1].Hud!.Buttons!.First(b => b.Label.Contains(label, StringComparison.Ordinal));
+                window.MoveTo(button.X + (button.Width / 2), button.Y + (button.Height / 2));
+                window.Down();
+                window.Up();
+                clock.Advance(1.0 / 60);
+                frame();
+            }
+            for (int i = 0; i < 3; i++)
+            {
+                clock.Advance(1.0 / 60);
+                frame();
+            }
+        }
+    }
+
+    [Fact]
+    public void Plain_play_opens_the_start_menu_and_its_choice_starts_that_game()
+    {
+        var clock = new ManualClock();
+        var window = new FakeWindow { FramebufferSize = (1280, 720) };
+        var renderer = new RecordingRenderer();
+        var loop = new ClickingLoop(clock, window, renderer, ["nine-ball", "person", "Start"]);
+        int code = PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), TestScenes.Create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true });
+        Assert.Equal(0, code);
+        var first = renderer.Frames[0].Hud!;
+        Assert.Contains(first.Buttons!, b => b.Label == "> eight-ball <");
+        Assert.Contains(first.Buttons!, b => b.Label == "> level 3 <");
+        Assert.Contains(first.Lines, l => l.StartsWith("eight-ball", StringComparison.Ordinal));
+        var last = renderer.Frames[^1].Hud!;
+        Assert.Null(last.Buttons);
+        Assert.Contains(last.Lines, l => l.StartsWith("nine-ball", StringComparison.Ordinal));
+        Assert.Contains(last.Lines, l => l.Contains("Player 2: on the 1", StringComparison.Ordinal));
+    }
+}
