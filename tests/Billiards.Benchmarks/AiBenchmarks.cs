@@ -12,7 +12,7 @@ namespace Billiards.Benchmarks;
 /// <summary>
 /// The computer player: one whole decision at levels 1, 3 and 5 on fixed 8-ball positions (an
 /// open table after a seeded break, and ball in hand on it), and the planner's simulation rate
-/// (one shot from reset to rest with the event integrator, what the search repeats).
+/// (one shot from a restored snapshot to rest with the event integrator, what the search repeats).
 /// </summary>
 [MemoryDiagnoser]
 [MedianColumn]
@@ -23,6 +23,7 @@ public class AiBenchmarks
     private TablePosition _open = null!;
     private GameState _state = null!;
     private StandardSimulation _sim = null!;
+    private SimulationSnapshot _snapshot = null!;
     private ShotSpec _shot = null!;
 
     /// <summary>The player's level.</summary>
@@ -41,6 +42,7 @@ public class AiBenchmarks
         _open = TablePosition.Of(sim);
         _state = new GameState(GameRules.EightBall) { Shot = 1, BallInHand = _open.Cue is null ? BallInHand.Table : BallInHand.None };
         _sim = _open.CreateSimulation(Table, physics);
+        _snapshot = _sim.CreateSnapshot();
         _shot = _planner.Decide(_state, _open, SkillLevel.Of(3), new PlannerBudget(60_000, 1), 1).Shot;
     }
 
@@ -53,11 +55,11 @@ public class AiBenchmarks
     public double DecideBallInHand() =>
         _planner.Decide(_state with { BallInHand = BallInHand.Table }, _open.Without(Core.Balls.BallId.Cue), SkillLevel.Of(Level), new PlannerBudget(60_000), 1).ExpectedScore;
 
-    /// <summary>One simulated shot of the search (reset, strike, run to rest), on one core; the inverse is simulations per second.</summary>
+    /// <summary>One simulated shot of the search (restore the position's snapshot, strike, run to rest), on one core; the inverse is simulations per second.</summary>
     [Benchmark]
     public double SimulateShot()
     {
-        _sim.Reset();
+        _sim.Restore(_snapshot);
         _sim.Strike(_shot);
         _sim.AdvanceTo(120);
         return _sim.Time;

@@ -92,6 +92,9 @@ public sealed class OrbitCamera
         Distance = Math.Clamp(Distance * scale, MinDistance, MaxDistance);
     }
 
+    /// <summary>Turns the camera to the azimuth <paramref name="phi"/> (rad), exactly: a computer player's or a hint's aim.</summary>
+    public void SetPhi(double phi) => Phi = WrapPhi(phi);
+
     /// <summary>Lowers the polar angle to at most <paramref name="theta"/> (rad), i.e. raises the eye; never below <see cref="ThetaMin"/>.</summary>
     public void LimitTheta(double theta) => Theta = Math.Clamp(Math.Min(Theta, theta), ThetaMin, ThetaMax);
 

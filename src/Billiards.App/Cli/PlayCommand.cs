@@ -29,7 +29,7 @@ public static class PlayCommand
         var script = new Option<string?>("--script") { Description = $"Replay a timed list of input events ({InputScript.Format} JSON); the game closes when it ends." };
         var stats = new Option<string?>("--stats") { Description = $"Write per-second frame rates, frame-time percentiles and input-to-frame delays ({FrameStats.Format} JSON) when the game ends." };
         var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball or straight-pool (default: the scene's rules)." };
-        var players = new Option<string?>("--players") { Description = "The two players, A,B: each human or computer:LEVEL (1-5); default human,human." };
+        var players = new Option<string?>("--players") { Description = $"The two players, A,B: each a name or human (a person), or computer:LEVEL (1-5; also cpu:LEVEL); default {DefaultPlayers}." };
         var record = new Option<string?>("--record") { Description = $"Write the match's rulings, state and HUD ({MatchRecord.Format} JSON) when the game ends." };
         var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record };
         command.SetAction(parse => Play(parse.GetValue(scene), PlatformWiring.Open, options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))
@@ -70,6 +70,16 @@ public static class PlayCommand
         using var audio = openAudio?.Invoke() ?? new SilentAudio();
         using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, match);
         host.Tree.Root.AddChild(new AudioNode(audio));
+        if (scripted is not null)
+        {
+            host.TimeScale = script!.Speed;
+            scripted.IsAtRest = () => host.IsSettled;
+            if (host.Tree.Root.FindInTree<ComputerPlayerNode>() is { } computer)
+            {
+                // A scripted game must be the same game on any machine: no search is cut short by the clock.
+                computer.BudgetMs = 120_000;
+            }
+        }
         var stats = statsPath is null ? null : new FrameStats();
         bool warm = false;
         host.FrameStarting += now =>
@@ -93,7 +103,7 @@ public static class PlayCommand
         };
         if (scripted is not null && stats is not null)
         {
-            scripted.Raised += (e, _) => stats.InputRaised(e);
+            scripted.Raised += (e, _) => stats.InputRaised(e, e.Time + scripted.Waited);
         }
         host.Run(platform.Loop, platform.Renderer);
         if (stats is not null && statsPath is not null)
@@ -183,7 +193,7 @@ public static class PlayCommand
         {
             return players is null ? null : throw new CliException($"--players {players}: {scene.Path} names no rules; give --rules too");
         }
-        string[] parts = (players ?? "human,human").Split(',');
+        string[] parts = (players ?? DefaultPlayers).Split(',');
         if (parts.Length != 2)
         {
             throw new CliException($"--players {players}: expected two players A,B (each human or computer:LEVEL)");
@@ -192,14 +202,13 @@ public static class PlayCommand
         for (int i = 0; i < 2; i++)
         {
             seats[i] = MatchPlayer.Parse(parts[i], i)
-                ?? throw new CliException($"--players {players}: \"{parts[i]}\" is neither human nor computer:LEVEL with LEVEL 1-5");
-            if (!seats[i].IsHuman)
-            {
-                throw new CliException($"--players {players}: computer players are not available in this build yet");
-            }
+                ?? throw new CliException($"--players {players}: \"{parts[i]}\" is not a player (a name of 1-{MatchPlayer.MaxNameLength} characters, human, or computer:LEVEL with LEVEL 1-5)");
         }
         return new MatchSetup(g, seats);
     }
+
+    /// <summary>The players without <c>--players</c>: a person against the computer at level 3.</summary>
+    public const string DefaultPlayers = "human,computer:3";
 
     /// <summary>The shipped scene for a game: <c>assets/scenes/RULES.json</c>.</summary>
     public static string FindRulesScene(GameRules rules)

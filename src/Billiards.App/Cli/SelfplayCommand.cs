@@ -6,31 +6,37 @@ using System.Text.Json;
 using Billiards.Core.Ai;
 using Billiards.Core.Physics;
 using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
 using Billiards.Core.Table;
 
 namespace Billiards.App.Cli;
 
 /// <summary>
-/// <c>selfplay --rules R --games N --levels A,B --seed S [--out FILE.jsonl]</c>: the computer
-/// against itself on a 9 ft table; prints one summary JSON, writes one game record per line with
-/// <c>--out</c>, and reports progress on stderr.
+/// <c>selfplay --rules R --games N --levels A,B --seed S [--target P] [--out FILE.jsonl]</c>: the
+/// computer against itself on a 9 ft table; prints one summary JSON, writes one game record per line
+/// with <c>--out</c> (<see cref="GameRecordFile"/>'s record on one line, so each replays ruling for
+/// ruling), and reports progress on stderr.
 /// </summary>
 public static class SelfplayCommand
 {
     /// <summary>The most games one run plays.</summary>
     public const int MaxGames = 100_000;
 
+    /// <summary>The largest straight-pool target accepted.</summary>
+    public const int MaxTarget = 1000;
+
     /// <summary>Builds the verb.</summary>
     public static Command Create(TextWriter stdout, TextWriter stderr)
     {
-        var rules = new Option<string>("--rules") { Description = "The game: eight-ball, nine-ball or ten-ball.", Required = true };
+        var rules = new Option<string>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball or straight-pool.", Required = true };
         var games = new Option<int>("--games") { Description = "Number of games.", Required = true };
         var levels = new Option<string>("--levels") { Description = "The two players' levels, 1-5, e.g. 5,3 (the first is player 0).", Required = true };
         var seed = new Option<long>("--seed") { Description = "Seed of every rack and every error.", Required = true };
+        var target = new Option<int?>("--target") { Description = "Straight pool: the score that wins (default 100)." };
         var output = new Option<string?>("--out") { Description = "Write the game records (billiards-game/1, one per line) to FILE.jsonl." };
         var command = new Command("selfplay", "Play the computer against itself and print a summary JSON.")
         {
-            rules, games, levels, seed, output,
+            rules, games, levels, seed, target, output,
         };
         command.SetAction(parse =>
         {
@@ -39,9 +45,10 @@ public static class SelfplayCommand
             {
                 throw new CliException($"--rules {rulesName}: expected one of {string.Join(", ", RuleNames.GameNames)}");
             }
-            if (SelfPlay.RackOf(game) is null)
+            int points = parse.GetValue(target) ?? GameState.DefaultTarget;
+            if (points < 1 || points > MaxTarget)
             {
-                throw new CliException($"--rules {rulesName}: self-play plays eight-ball, nine-ball and ten-ball (not yet {rulesName})");
+                throw new CliException($"--target {points}: expected 1 to {MaxTarget}");
             }
             int count = parse.GetValue(games);
             if (count < 1 || count > MaxGames)
@@ -60,7 +67,7 @@ public static class SelfplayCommand
             var lastReport = TimeSpan.Zero;
             for (int g = 0; g < count; g++)
             {
-                played.Add(selfPlay.Play(game, pair, g % 2, PlannerRandom.Derive((ulong)seedValue, g), PlannerBudget.Default));
+                played.Add(selfPlay.Play(game, pair, g % 2, PlannerRandom.Derive((ulong)seedValue, g), PlannerBudget.Default, points));
                 if (clock.Elapsed - lastReport > TimeSpan.FromSeconds(5) || g == count - 1)
                 {
                     lastReport = clock.Elapsed;
@@ -71,12 +78,12 @@ public static class SelfplayCommand
             }
             if (outPath is not null)
             {
-                var lines = new StringBuilder();
+                using var lines = new MemoryStream();
                 foreach (var p in played)
                 {
-                    lines.Append(Encoding.UTF8.GetString(GameRecordWriter.ToUtf8(p, table, physics))).Append('\n');
+                    OneLine(GameRecordFile.ToUtf8(p.Record), lines);
                 }
-                OutputFiles.Write(outPath, Encoding.UTF8.GetBytes(lines.ToString()));
+                OutputFiles.Write(outPath, lines.ToArray());
             }
             stdout.WriteLine(Encoding.UTF8.GetString(Summary(game, seedValue, pair, played, clock.Elapsed.TotalMilliseconds)));
             return 0;
@@ -124,6 +131,7 @@ public static class SelfplayCommand
                 w.WriteNumber("pots", s.Pots);
                 w.WriteNumber("pot_attempts", s.PotAttempts);
                 w.WriteNumber("pot_rate", Round(s.PotAttempts > 0 ? (double)s.Pots / s.PotAttempts : 0));
+                w.WriteNumber("expected_pot_rate", Round(s.ExpectedPotRate));
                 w.WriteNumber("fouls", s.Fouls);
                 w.WriteNumber("breaks", s.Breaks);
                 w.WriteNumber("potting_breaks", s.PottingBreaks);
@@ -140,6 +148,17 @@ public static class SelfplayCommand
             w.WriteEndObject();
         }
         return stream.ToArray();
+    }
+
+    // The record as GameRecordFile writes it, on one line (numbers keep their text).
+    private static void OneLine(byte[] record, Stream output)
+    {
+        using var doc = JsonDocument.Parse(record);
+        using (var w = new Utf8JsonWriter(output))
+        {
+            doc.RootElement.WriteTo(w);
+        }
+        output.WriteByte((byte)'\n');
     }
 
     private static double Round(double x) => Math.Round(x, 4);

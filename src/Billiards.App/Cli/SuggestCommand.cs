@@ -83,19 +83,16 @@ public static class SuggestCommand
         using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
         {
             w.WriteStartObject();
-            GameRecordWriter.WriteShot(w, "shot", decision.Shot);
-            if (decision.Place is { } p)
+            GameRecordFile.WriteShot(w, "shot", decision.Shot);
+            GameRecordFile.WritePlace(w, "place", decision.Place);
+            if (decision.Call is { } call)
             {
-                w.WriteStartArray("place");
-                w.WriteNumberValue(p.X);
-                w.WriteNumberValue(p.Y);
-                w.WriteEndArray();
+                GameBlockWriter.WriteCall(w, "call", call);
             }
             else
             {
-                w.WriteNull("place");
+                w.WriteNull("call");
             }
-            GameRecordWriter.WriteCall(w, decision.Call);
             w.WriteStartObject("expected");
             w.WriteNumber("pot", Math.Round(decision.ExpectedPot, 4));
             if (decision.ExpectedRuling is { } ruling)

@@ -29,10 +29,16 @@ public sealed class CueNode : Node
     /// <summary>True when the cue is drawn: a cue ball on the table and nothing rolling.</summary>
     public bool IsVisible => _physics is { IsRolling: false, HasCueBall: true };
 
-    /// <summary>The stroke direction (unit, bed plane): from the camera to the cue ball (seed 4.4.3).</summary>
-    public Vec3 AimDirection => _physics is null || _camera is null
+    /// <summary>
+    /// The stroke direction (unit, bed plane): from the camera to the cue ball (seed 4.4.3). The
+    /// camera is centred on the cue ball while the player aims, so this is the camera's azimuth
+    /// alone, -(cos φ, sin φ): the eye's height (which the rail and cue limits change from frame to
+    /// frame) must not change the aim even in its last bit, or a scripted game would depend on the
+    /// frame rate.
+    /// </summary>
+    public Vec3 AimDirection => _camera is null
         ? new Vec3(1, 0, 0)
-        : ViewMath.BedForward(_camera.Camera.Eye, _physics.CueBallPosition);
+        : new Vec3(-Math.Cos(_camera.Camera.Phi), -Math.Sin(_camera.Camera.Phi), 0);
 
     /// <summary>The least elevation (deg) that clears the rail behind the cue ball along the aim (<see cref="CueClearance"/>).</summary>
     public double RailElevationDegrees => _physics is null

@@ -62,10 +62,12 @@ public sealed class FixedStepLoop
     }
 
     /// <summary>
-    /// Accounts for one frame of <paramref name="frameSeconds"/> and runs the whole steps it owes.
+    /// Accounts for one frame of <paramref name="frameSeconds"/> and runs the whole steps it owes;
+    /// with a <paramref name="timeScale"/> the game's time runs that many times faster (the frame
+    /// is clamped at <see cref="MaxFrameTime"/> before it is scaled).
     /// </summary>
     /// <returns>The number of steps run.</returns>
-    public int Advance(double frameSeconds, Action step)
+    public int Advance(double frameSeconds, Action step, double timeScale = 1)
     {
         if (Paused)
         {
@@ -79,7 +81,7 @@ public sealed class FixedStepLoop
             Steps++;
             return 1;
         }
-        Accumulator += Math.Clamp(frameSeconds, 0, MaxFrameTime);
+        Accumulator += Math.Clamp(frameSeconds, 0, MaxFrameTime) * timeScale;
         int count = 0;
         while (Accumulator + Slack >= Dt)
         {

@@ -20,7 +20,7 @@ public sealed class FrameStats
     public const string Format = "billiards-play-stats/1";
 
     private readonly List<double> _starts = [];
-    private readonly List<(ScriptEvent Event, int Frame)> _inputs = [];
+    private readonly List<(ScriptEvent Event, double Due, int Frame)> _inputs = [];
     private double? _zero;
     private double? _end;
 
@@ -46,8 +46,12 @@ public sealed class FrameStats
     // When frame k was on screen: the next frame's start, or the end for the last frame.
     private double? Shown(int k) => k + 1 < _starts.Count ? _starts[k + 1] : k + 1 == _starts.Count ? _end : null;
 
-    /// <summary>Records that a scripted event was raised in the frame started last.</summary>
-    public void InputRaised(ScriptEvent e) => _inputs.Add((e, _starts.Count - 1));
+    /// <summary>
+    /// Records that a scripted event was raised in the frame started last; <paramref name="due"/>
+    /// is when it was due, in the stats' time (s from the first frame): its script time, plus the
+    /// time the script stood still in waits before it (<see cref="ScriptedInput.Waited"/>).
+    /// </summary>
+    public void InputRaised(ScriptEvent e, double? due = null) => _inputs.Add((e, due ?? e.Time, _starts.Count - 1));
 
     /// <summary>One whole second's figures.</summary>
     /// <param name="Second">Which second (from 0).</param>
@@ -95,15 +99,15 @@ public sealed class FrameStats
     public List<InputDelay> Inputs()
     {
         var result = new List<InputDelay>();
-        foreach (var (e, frame) in _inputs)
+        foreach (var (e, due, frame) in _inputs)
         {
             if (frame < 0 || Shown(frame) is not { } shown)
             {
                 continue; // the frame that shows it never reached the screen
             }
-            int firstAfter = _starts.FindIndex(t => t >= e.Time);
+            int firstAfter = _starts.FindIndex(t => t >= due);
             int delayFrames = frame - (firstAfter < 0 ? frame : firstAfter) + 1;
-            result.Add(new InputDelay(e.Time, e.Describe(), frame, delayFrames, (shown - e.Time) * 1000));
+            result.Add(new InputDelay(e.Time, e.Describe(), frame, delayFrames, (shown - due) * 1000));
         }
         return result;
     }

@@ -54,6 +54,15 @@ public sealed class GameHost : IDisposable
     public FixedStepLoop Loop => _world.Loop;
 
     /// <summary>
+    /// How many times faster than the clock the game's physics runs (1 by default; a script may
+    /// ask for more to play a long game in a short time). Frames and input keep the clock's time.
+    /// </summary>
+    public double TimeScale { get; set; } = 1;
+
+    /// <summary>True when nothing moves and nobody but a person is to act: the balls rest and no computer player is at work.</summary>
+    public bool IsSettled => !_world.Physics.IsRolling && _world.Tree.Root.FindInTree<MatchNode>() is not { IsComputerActing: true };
+
+    /// <summary>
     /// One frame: the physics steps owed since the last frame, Process with the frame's time, then
     /// the frame to draw.
     /// </summary>
@@ -63,7 +72,7 @@ public sealed class GameHost : IDisposable
         FrameStarting?.Invoke(now);
         double frameTime = now - _lastFrame;
         _lastFrame = now;
-        _world.Loop.Advance(frameTime, _physicsStep);
+        _world.Loop.Advance(frameTime, _physicsStep, TimeScale);
         _world.Tree.Process(frameTime);
         var (width, height) = _window.FramebufferSize;
         var builder = new FrameBuilder(_world.Physics.Table, width, height, _world.Loop.Alpha);

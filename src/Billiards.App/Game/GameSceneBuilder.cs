@@ -51,6 +51,7 @@ public static class GameSceneBuilder
         if (match is not null && scene.Balls.Any(b => b.Id == BallId.Cue))
         {
             root.AddChild(new MatchNode(match.Rules, match.Players, scene.Game));
+            root.AddChild(new ComputerPlayerNode());
         }
         // Added after the modes: input runs from the last child back, so these keys come first.
         var keys = root.AddChild(new SystemKeysNode(loop));

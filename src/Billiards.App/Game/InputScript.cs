@@ -23,6 +23,11 @@ public enum ScriptAction
     MouseUp,
     /// <summary>The wheel turns (notches, positive away from the user).</summary>
     Wheel,
+    /// <summary>
+    /// No input: the script's clock stops here until every ball rests (and the referee has ruled),
+    /// so the events after it never reach a table still rolling, however slow the machine.
+    /// </summary>
+    WaitRest,
 }
 
 /// <summary>One timed input event of a script.</summary>
@@ -43,6 +48,7 @@ public sealed record ScriptEvent(double Time, ScriptAction Action, Key Key = Key
         ScriptAction.MouseMoveBy => string.Create(CultureInfo.InvariantCulture, $"mouse_move_by {Vector.X},{Vector.Y}"),
         ScriptAction.MouseDown => $"mouse_down {Button.ToString().ToLowerInvariant()}",
         ScriptAction.MouseUp => $"mouse_up {Button.ToString().ToLowerInvariant()}",
+        ScriptAction.WaitRest => "wait rest",
         _ => string.Create(CultureInfo.InvariantCulture, $"wheel {Amount}"),
     };
 }
@@ -64,9 +70,16 @@ public sealed record ScriptEvent(double Time, ScriptAction Action, Key Key = Key
 /// (letters, <c>D0</c>..<c>D9</c>, <c>Space</c>, <c>Escape</c>, <c>Up</c>, <c>F1</c>, ...), buttons
 /// <c>left</c>, <c>right</c>, <c>middle</c>; positions are window pixels, y down. The game closes
 /// at <c>duration</c> seconds (default: one second after the last event).
+/// <c>{ "t": 5.0, "wait": "rest" }</c> stops the script's clock at 5 s until every ball rests; the
+/// script's times are then its own clock's, which stands still while it waits. <c>"speed"</c> (default
+/// 1, at most 64) runs the game's physics that many times faster than the wall clock, so a long
+/// scripted game plays in a short time; the game played is the same at any speed and frame rate.
 /// </summary>
-public sealed record InputScript(IReadOnlyList<ScriptEvent> Events, double Duration)
+public sealed record InputScript(IReadOnlyList<ScriptEvent> Events, double Duration, double Speed = 1)
 {
+    /// <summary>The fastest <see cref="Speed"/> a script may ask for.</summary>
+    public const double MaxSpeed = 64;
+
     /// <summary>The format tag.</summary>
     public const string Format = "billiards-input-script/1";
 
@@ -136,14 +149,21 @@ public sealed record InputScript(IReadOnlyList<ScriptEvent> Events, double Durat
                     throw Bad(name, "$.duration", string.Create(CultureInfo.InvariantCulture, $"{duration} s ends before the last event ({last} s)"));
                 }
             }
+            double speed = 1;
+            if (root.TryGetProperty("speed", out var sp))
+            {
+                speed = sp.ValueKind == JsonValueKind.Number && sp.TryGetDouble(out double v) && double.IsFinite(v) && v > 0 && v <= MaxSpeed
+                    ? v
+                    : throw Bad(name, "$.speed", string.Create(CultureInfo.InvariantCulture, $"expected a number above 0, at most {MaxSpeed}"));
+            }
             foreach (var property in root.EnumerateObject())
             {
-                if (property.Name is not ("format" or "events" or "duration"))
+                if (property.Name is not ("format" or "events" or "duration" or "speed"))
                 {
-                    throw Bad(name, "$." + property.Name, "unknown field (expected format, duration, events)");
+                    throw Bad(name, "$." + property.Name, "unknown field (expected format, duration, speed, events)");
                 }
             }
-            return new InputScript(events, duration);
+            return new InputScript(events, duration, speed);
         }
     }
 
@@ -179,10 +199,13 @@ public sealed record InputScript(IReadOnlyList<ScriptEvent> Events, double Durat
                 "mouse_down" => new ScriptEvent(time, ScriptAction.MouseDown, Button: ParseButton(property.Value, name, where)),
                 "mouse_up" => new ScriptEvent(time, ScriptAction.MouseUp, Button: ParseButton(property.Value, name, where)),
                 "wheel" => new ScriptEvent(time, ScriptAction.Wheel, Amount: (float)Number(property.Value, name, where)),
-                _ => throw Bad(name, where, "unknown action (expected key_down, key_up, mouse_move, mouse_move_by, mouse_down, mouse_up or wheel)"),
+                "wait" => property.Value.ValueKind == JsonValueKind.String && property.Value.GetString() == "rest"
+                    ? new ScriptEvent(time, ScriptAction.WaitRest)
+                    : throw Bad(name, where, "expected \"rest\""),
+                _ => throw Bad(name, where, "unknown action (expected key_down, key_up, mouse_move, mouse_move_by, mouse_down, mouse_up, wheel or wait)"),
             };
         }
-        return result ?? throw Bad(name, at, "no action (key_down, key_up, mouse_move, mouse_move_by, mouse_down, mouse_up or wheel)");
+        return result ?? throw Bad(name, at, "no action (key_down, key_up, mouse_move, mouse_move_by, mouse_down, mouse_up, wheel or wait)");
     }
 
     private static double Number(JsonElement e, string name, string at) =>

@@ -20,19 +20,33 @@ public sealed record MatchPlayer(string Name, int? ComputerLevel = null)
     /// <summary>True for a person.</summary>
     public bool IsHuman => ComputerLevel is null;
 
-    /// <summary>Parses <c>human</c> or <c>computer:LEVEL</c> (level 1-5); null when it is neither.</summary>
+    /// <summary>Longest player name (characters).</summary>
+    public const int MaxNameLength = 24;
+
+    /// <summary>
+    /// Parses a seat: <c>human</c> (named "Player N"), <c>computer:LEVEL</c> or <c>cpu:LEVEL</c>
+    /// (level 1-5), or any other name, a person of that name; null when it is none of them
+    /// (empty, too long, a control character, or a computer without a level 1-5).
+    /// </summary>
     public static MatchPlayer? Parse(string text, int seat)
     {
-        string t = text.Trim().ToLowerInvariant();
+        ArgumentNullException.ThrowIfNull(text);
+        string name = text.Trim();
+        string t = name.ToLowerInvariant();
         if (t == "human")
         {
             return new MatchPlayer($"Player {seat + 1}");
         }
-        if (t.StartsWith("computer:", StringComparison.Ordinal) && int.TryParse(t["computer:".Length..], out int level) && level is >= 1 and <= 5)
+        foreach (string prefix in (string[])["computer:", "cpu:"])
         {
-            return new MatchPlayer($"Computer L{level}", level);
+            if (t.StartsWith(prefix, StringComparison.Ordinal))
+            {
+                return int.TryParse(t[prefix.Length..], out int level) && level is >= 1 and <= 5
+                    ? new MatchPlayer($"Computer L{level}", level)
+                    : null;
+            }
         }
-        return null;
+        return name.Length is > 0 and <= MaxNameLength && !name.Any(char.IsControl) ? new MatchPlayer(name) : null;
     }
 }
 
@@ -58,6 +72,7 @@ public sealed class MatchNode : Node
     private readonly GameRules _rules;
     private readonly GameState _opening;
     private readonly List<Ruling> _rulings = [];
+    private readonly List<(GameState, ShotSpec)> _shots = [];
     private PhysicsNode? _physics;
     private CueNode? _cue;
     private CameraNode? _camera;
@@ -65,6 +80,8 @@ public sealed class MatchNode : Node
     private TableGeometry? _geometry;
     private GameState _atStrike;
     private BallId? _calledBall;
+    private Call? _adoptedCall;
+    private bool _hasAdoptedCall;
     private PocketId? _calledPocket;
     private int _games;
 
@@ -118,17 +135,104 @@ public sealed class MatchNode : Node
     /// <summary>The keyboard power (m/s).</summary>
     public double Power { get; private set; } = 3.0;
 
-    /// <summary>The aim preview (first ball, ghost ball, object direction, easiest pocket), or null without a cue ball.</summary>
-    public AimPreview? Aim { get; private set; }
+    /// <summary>
+    /// The aim preview (first ball, ghost ball, object direction, easiest pocket), or null without
+    /// a cue ball or while balls roll. Computed when asked, from the aim of the moment: keys that
+    /// arrive in one frame see each other's effect as they would in separate frames.
+    /// </summary>
+    public AimPreview? Aim => _physics is { IsRolling: false, HasCueBall: true } physics && _cue is not null && _geometry is not null
+        ? AimPreview.Compute(physics.Simulation.Balls, physics.Simulation.Ids, physics.Simulation.IndexOf(BallId.Cue), _cue.AimDirection, physics.BallRadius, _geometry.Pockets)
+        : null;
 
-    /// <summary>The call the shooter makes now: the chosen ball and pocket, else the aimed ball's easiest pocket.</summary>
+    /// <summary>Every shot struck in the match, in order: the state at the strike (with its call and placement) and the shot.</summary>
+    public IReadOnlyList<(GameState Before, ShotSpec Shot)> Shots => _shots;
+
+    /// <summary>True while the computer is to move: its shot, or its choice among a ruling's options (a script's waits wait for it).</summary>
+    public bool IsComputerActing => !IsOver && !Players[State.Shooter].IsHuman;
+
+    /// <summary>The seed of the planner's search and of the computer's error for the shot to come: the same game, the same decisions.</summary>
+    public ulong ShotSeed(long stream) => Billiards.Core.Ai.PlannerRandom.Derive(MatchSeed, (_games * 10_000L) + State.Shot, stream);
+
+    /// <summary>The match's seed for the computer player (default 1).</summary>
+    public ulong MatchSeed { get; init; } = 1;
+
+    /// <summary>The cue's aim now (deg, from +x counter-clockwise).</summary>
+    public double AimDegrees => _cue is null ? 0 : ViewMath.AimDegrees(_cue.AimDirection);
+
+    /// <summary>Turns the cue to <paramref name="degrees"/> exactly (the camera's azimuth behind the cue ball).</summary>
+    public void AimAt(double degrees)
+    {
+        if (_camera is null || _physics is null || _physics.IsRolling)
+        {
+            return;
+        }
+        _camera.Camera.Translate(_physics.CueBallPosition - _camera.Camera.Centre);
+        _camera.Camera.SetPhi((degrees * Math.PI / 180) + Math.PI);
+    }
+
+    /// <summary>
+    /// Takes a plan (the computer's, or a hint for a person): the cue ball placed where it says (with
+    /// ball in hand), its call, its push-out, the power of its shot, and the aim turned to it.
+    /// </summary>
+    public void Adopt(Billiards.Core.Ai.Decision decision, bool exactCall)
+    {
+        ArgumentNullException.ThrowIfNull(decision);
+        if (_physics is null || !CanShoot)
+        {
+            return;
+        }
+        if (decision.Place is { } place && _physics.BallInHand)
+        {
+            var old = _physics.CueBallPosition;
+            if (_physics.TryPlaceCueBall(place) && _camera is not null)
+            {
+                _camera.Camera.Translate(_physics.CueBallPosition - old);
+            }
+        }
+        _calledBall = decision.Call is { IsSafety: false } c ? c.Ball : null;
+        _calledPocket = decision.Call is { IsSafety: false } c2 ? c2.Pocket : null;
+        _adoptedCall = exactCall ? decision.Call : null;
+        _hasAdoptedCall = exactCall;
+        if (decision.PushOut && _rules is GameRules.NineBall or GameRules.TenBall && State.Shot == 1)
+        {
+            State = State with { PushOut = true };
+        }
+        if (!exactCall)
+        {
+            // A hint sets the person's power; the computer strikes its own shot and leaves the person's power alone.
+            Power = Math.Clamp(decision.Shot.Speed, MinPower, MaxPower);
+        }
+        AimAt(decision.Shot.AimDeg);
+    }
+
+    /// <summary>Shows what a hint suggests: the call, the speed and how often the planner saw it succeed.</summary>
+    public void SayHint(Billiards.Core.Ai.Decision hint)
+    {
+        ArgumentNullException.ThrowIfNull(hint);
+        string what = hint.Call is { IsSafety: false } c ? $"the {c.Ball} in the {c.Pocket.ToName()} pocket" : hint.Call is { IsSafety: true } ? "a safety" : $"{hint.Kind.ToString().ToLowerInvariant()} on the {hint.Target}";
+        Say(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"Hint: {what} at {hint.Shot.Speed:0.0} m/s (works {hint.ExpectedPot * 100:0} % of the time); Space shoots."));
+    }
+
+    /// <summary>Strikes a shot the computer plays (its plan with its own error), with the call it adopted.</summary>
+    public void StrikeAsComputer(ShotSpec shot)
+    {
+        if (CanShoot)
+        {
+            _physics!.Strike(shot);
+        }
+    }
+
+    /// <summary>
+    /// The call the shooter makes now: the chosen ball (else the aimed one) and the chosen pocket
+    /// (else that ball's easiest pocket).
+    /// </summary>
     public Call? CurrentCall
     {
         get
         {
-            var ball = _calledBall ?? Aim?.Ball;
-            var pocket = _calledPocket ?? (_calledBall is null ? Aim?.Pocket : null) ?? PocketId.None;
-            if (ball is not { } b || pocket == PocketId.None)
+            var aim = Aim;
+            var ball = _calledBall ?? aim?.Ball;
+            if (ball is not { } b || PocketFor(b, aim) is not { } pocket || pocket == PocketId.None)
             {
                 return null;
             }
@@ -179,9 +283,6 @@ public sealed class MatchNode : Node
                 Message = null;
             }
         }
-        Aim = _physics is { IsRolling: false, HasCueBall: true } physics && _cue is not null && _geometry is not null
-            ? AimPreview.Compute(physics.Simulation.Balls, physics.Simulation.Ids, physics.Simulation.IndexOf(BallId.Cue), _cue.AimDirection, physics.BallRadius, _geometry.Pockets)
-            : null;
     }
 
     /// <inheritdoc />
@@ -190,6 +291,11 @@ public sealed class MatchNode : Node
         if (e is not KeyInput { Pressed: true } key)
         {
             return false;
+        }
+        if (IsComputerActing)
+        {
+            // The computer's turn: the person watches (the camera and system keys still work).
+            return key.Key is >= Key.D1 and <= Key.D5 or Key.Space or Key.Left or Key.Right or Key.A or Key.D or Key.W or Key.Q or Key.O or Key.C or Key.B or Key.X;
         }
         switch (key.Key)
         {
@@ -278,8 +384,12 @@ public sealed class MatchNode : Node
 
     private void OnStruck(ShotSpec shot)
     {
-        bool inHand = State.BallInHand != BallInHand.None;
-        _atStrike = State with { Call = CurrentCall, Placement = inHand ? _physics!.CueBallPosition : null };
+        // The breaker places the cue ball in the kitchen, as after a scratch (Core's GamePlayer.BallInHand).
+        bool inHand = State.Shot == 0 || State.BallInHand != BallInHand.None;
+        _atStrike = State with { Call = _hasAdoptedCall ? _adoptedCall : CurrentCall, Placement = inHand ? _physics!.CueBallPosition : null };
+        _hasAdoptedCall = false;
+        _adoptedCall = null;
+        _shots.Add((_atStrike, shot));
         _calledBall = null;
         _calledPocket = null;
     }
@@ -293,7 +403,8 @@ public sealed class MatchNode : Node
         var record = ShotRecord.LastShot(_physics.Simulation, _physics.LastShot);
         var ruling = _referee.Judge(_atStrike, record);
         _rulings.Add(ruling);
-        State = ruling.Next;
+        // A game that ended shows how it stood at the end (groups, fouls, score), not the next game's blank state.
+        State = ruling.GameOver ? _atStrike with { Shot = _atStrike.Shot + 1, Call = null, Placement = null, PushOut = false, BallInHand = BallInHand.None } : ruling.Next;
         Say(ruling.Message);
         if (ruling.GameOver)
         {
@@ -407,13 +518,13 @@ public sealed class MatchNode : Node
         }
         var sim = _physics.Simulation;
         var cue = _physics.CueBallPosition with { Z = 0 };
-        var ball = _calledBall ?? Aim?.Ball ?? Nearest(cue);
-        if (ball is not { } b)
+        var aim = Aim;
+        var ball = _calledBall ?? aim?.Ball ?? Nearest(cue);
+        if (ball is not { } b || PocketFor(b, aim) is not { } pocket)
         {
             return;
         }
         var target = sim.Balls[sim.IndexOf(b)].Position with { Z = 0 };
-        var pocket = _calledPocket ?? (_calledBall is null && Aim?.Ball == b ? Aim.Pocket : AimPreview.EasiestPocket(target, (target - cue).Normalized(), _geometry.Pockets));
         Vec3? centre = null;
         foreach (var circle in _geometry.Pockets)
         {
@@ -435,6 +546,28 @@ public sealed class MatchNode : Node
         Turn(turn);
         // The camera's eye is not exactly behind the ball after recentring: one more pass corrects the rest.
         Turn(Math.IEEERemainder(want - ViewMath.AimDegrees(_cue.AimDirection), 360));
+    }
+
+    // The pocket called for a ball: the one chosen with C, else the aimed ball's easiest pocket
+    // along its line from the ghost ball, else (a ball chosen with B) the easiest pocket along the
+    // line from the cue ball through it.
+    private PocketId? PocketFor(BallId ball, AimPreview? aim)
+    {
+        if (_calledPocket is { } chosen)
+        {
+            return chosen;
+        }
+        if (aim is not null && aim.Ball == ball)
+        {
+            return aim.Pocket;
+        }
+        if (_physics is null || _geometry is null || _physics.Simulation.IndexOf(ball) is not (>= 0 and var i))
+        {
+            return null;
+        }
+        var target = _physics.Simulation.Balls[i].Position with { Z = 0 };
+        var cue = _physics.CueBallPosition with { Z = 0 };
+        return AimPreview.EasiestPocket(target, (target - cue).Normalized(), _geometry.Pockets);
     }
 
     private BallId? Nearest(Vec3 from)
@@ -460,7 +593,7 @@ public sealed class MatchNode : Node
 
     private void CyclePocket()
     {
-        var current = _calledPocket ?? CurrentCall?.Pocket ?? PocketId.None;
+        var current = CurrentCall?.Pocket ?? _calledPocket ?? PocketId.None;
         int next = ((int)current + 1) % PocketIds.All.Count;
         _calledPocket = PocketIds.FromIndex(next);
         _calledBall ??= Aim?.Ball;
@@ -488,7 +621,6 @@ public sealed class MatchNode : Node
         var current = _calledBall ?? Aim?.Ball;
         int k = current is { } c ? onTable.IndexOf(c) : -1;
         _calledBall = onTable[(k + 1) % onTable.Count];
-        _calledPocket ??= Aim?.Pocket is { } p && p != PocketId.None ? p : PocketId.FootLeft;
     }
 
     private void Say(string message)

@@ -6,8 +6,9 @@ namespace Billiards.App.Game;
 
 /// <summary>
 /// <c>play --record FILE</c>: the match as it stood when the game closed, for tests and bug
-/// reports: every ruling the referee gave (in the scene format's ruling shape), the state of the
-/// game, the winner, and the HUD's lines of the last frame.
+/// reports: every shot struck (the game block before it with its call, the cue ball's placement by
+/// hand, the strike), every ruling the referee gave (in the scene format's ruling shape), the state
+/// of the game, the winner, and the HUD's lines of the last frame.
 /// </summary>
 public static class MatchRecord
 {
@@ -41,6 +42,17 @@ public static class MatchRecord
             {
                 w.WriteNull("winner");
             }
+            w.WriteStartArray("shots");
+            foreach (var (before, shot) in match.Shots)
+            {
+                w.WriteStartObject();
+                w.WritePropertyName("before");
+                GameBlockWriter.WriteGame(w, before);
+                GameRecordFile.WritePlace(w, "place", before.Placement);
+                GameRecordFile.WriteShot(w, "shot", shot);
+                w.WriteEndObject();
+            }
+            w.WriteEndArray();
             w.WriteStartArray("rulings");
             foreach (var ruling in match.Rulings)
             {

@@ -54,6 +54,9 @@ public sealed class PhysicsNode : Node
     /// <summary>The table.</summary>
     public TableSpec Table => _scene.Table;
 
+    /// <summary>The scene's physics parameters (the computer player plans with them).</summary>
+    public PhysicsParams Params => _scene.Physics.Params;
+
     /// <summary>Ball radius of the scene's model (m).</summary>
     public double BallRadius => _simulation.BallRadius;
 
@@ -244,7 +247,16 @@ public sealed class PhysicsNode : Node
             ref readonly var current = ref balls[i];
             ref readonly var previous = ref _previous[i];
             var position = Vector3.Lerp(previous.Position.ToVector3(), current.Position.ToVector3(), alpha);
-            var orientation = Quaternion.Slerp(Valid(previous.Orientation), Valid(current.Orientation), alpha);
+            // A ball at rest is drawn exactly where it is (interpolating between equal states still
+            // rounds differently with every alpha), so a still table stays bit for bit the same
+            // and the renderer can keep it.
+            var orientation = previous.Orientation == current.Orientation
+                ? Valid(current.Orientation)
+                : Quaternion.Slerp(Valid(previous.Orientation), Valid(current.Orientation), alpha);
+            if (previous.Position == current.Position)
+            {
+                position = current.Position.ToVector3();
+            }
             frame.Frame.Balls.Add(new BallVisual(_simulation.Ids[i], position, orientation, IsVisible(current)));
         }
     }

@@ -8,7 +8,8 @@ namespace Billiards.App.Game;
 /// of each frame (<see cref="Pump"/>) every event whose time has come is raised, as the window's
 /// own callbacks raise events polled at the start of a frame. While an event is raised the clock
 /// reads its scheduled time, so timings measured from input (the stroke's speed) follow the
-/// script, not the frame rate.
+/// script, not the frame rate. A wait stops the script's clock until <see cref="IsAtRest"/> holds,
+/// so a script's shots never meet a table still rolling, whatever the frame rate.
 /// </summary>
 public sealed class ScriptedInput : IGameWindow, IDisposable
 {
@@ -17,6 +18,7 @@ public sealed class ScriptedInput : IGameWindow, IDisposable
     private readonly ScriptClock _clock;
     private int _next;
     private double? _start;
+    private double _waited;
     private Vector2 _cursor;
 
     /// <summary>Wraps <paramref name="inner"/>; <paramref name="clock"/> is the one the game reads (it is overridden while events are raised).</summary>
@@ -64,6 +66,12 @@ public sealed class ScriptedInput : IGameWindow, IDisposable
     /// <summary>Clock time of the script's zero (the first frame), or null before it.</summary>
     public double? Start => _start;
 
+    /// <summary>Whether the game is at rest (a wait ends when it is); true when not set.</summary>
+    public Func<bool>? IsAtRest { get; set; }
+
+    /// <summary>Seconds the script's clock has stood still in waits.</summary>
+    public double Waited => _waited;
+
     /// <inheritdoc />
     public (int Width, int Height) FramebufferSize => _inner.FramebufferSize;
 
@@ -71,11 +79,25 @@ public sealed class ScriptedInput : IGameWindow, IDisposable
     public void Pump(double now)
     {
         _start ??= now;
-        double scriptTime = now - _start.Value;
+        double scriptTime = now - _start.Value - _waited;
         while (_next < _script.Events.Count && _script.Events[_next].Time <= scriptTime)
         {
-            var e = _script.Events[_next++];
-            _clock.Override = _start.Value + e.Time;
+            var e = _script.Events[_next];
+            if (e.Action == ScriptAction.WaitRest)
+            {
+                // The script's clock stands at the wait until the balls rest, and goes on from
+                // there: the events after it keep their spacing from the frame that saw the rest.
+                _waited = now - _start.Value - e.Time;
+                scriptTime = e.Time;
+                if (IsAtRest is { } atRest && !atRest())
+                {
+                    return;
+                }
+                _next++;
+                continue;
+            }
+            _next++;
+            _clock.Override = _start.Value + _waited + e.Time;
             try
             {
                 Raise(e);

@@ -6,7 +6,7 @@ namespace Billiards.App.Game;
 
 /// <summary>
 /// Keys that are not about playing: pause (P), single step (N), help (H or F1), debug collision
-/// geometry (G), fullscreen (F11) and quit (Escape). Window actions are signals the host connects
+/// geometry (F3), fullscreen (F11) and quit (Escape). Window actions are signals the host connects
 /// to the window; pause and step go to the fixed-step loop.
 /// </summary>
 public sealed class SystemKeysNode(FixedStepLoop loop) : Node
@@ -45,7 +45,7 @@ public sealed class SystemKeysNode(FixedStepLoop loop) : Node
             case Key.H or Key.F1:
                 ShowHelp = !ShowHelp;
                 return true;
-            case Key.G:
+            case Key.F3:
                 ShowCollisionGeometry = !ShowCollisionGeometry;
                 return true;
             case Key.F11:

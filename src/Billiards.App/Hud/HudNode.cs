@@ -20,6 +20,7 @@ public sealed class HudNode : Node
     private SystemKeysNode? _keys;
     private RulesNode? _rules;
     private MatchNode? _match;
+    private ComputerPlayerNode? _computer;
 
     /// <summary>The frame-rate meter, fed every frame.</summary>
     public FrameRateMeter FrameRate { get; } = new();
@@ -37,6 +38,7 @@ public sealed class HudNode : Node
         _rules = FindInTree<RulesNode>();
         _physics.Struck += _ => _sinceShot = 0;
         _match = FindInTree<MatchNode>();
+        _computer = FindInTree<ComputerPlayerNode>();
     }
 
     /// <summary>How long the meter keeps showing a shot's speed after the strike (s).</summary>
@@ -110,7 +112,7 @@ public sealed class HudNode : Node
         }
         if (_match is not null && _physics is not null)
         {
-            MatchLines.Add(_lines, _match, _physics);
+            MatchLines.Add(_lines, _match, _physics, _computer?.Status);
         }
         else if (_rules is not null)
         {

@@ -15,7 +15,7 @@ namespace Billiards.App.Hud;
 public static class MatchLines
 {
     /// <summary>Appends the match's lines for <paramref name="match"/> with the table's balls.</summary>
-    public static void Add(List<string> lines, MatchNode match, PhysicsNode physics)
+    public static void Add(List<string> lines, MatchNode match, PhysicsNode physics, string? computerStatus = null)
     {
         ArgumentNullException.ThrowIfNull(lines);
         ArgumentNullException.ThrowIfNull(match);
@@ -42,6 +42,14 @@ public static class MatchLines
         {
             lines.Add(match.Winner is int w ? $"GAME OVER: {state.Players[w]} wins. Enter: rematch" : "GAME OVER. Enter: rematch");
         }
+        else if (computerStatus is not null)
+        {
+            lines.Add(computerStatus);
+        }
+        else if (match.IsComputerActing)
+        {
+            lines.Add($"{state.ShooterName} (computer) is at the table.");
+        }
         else if (match.PendingOptions.Count > 0)
         {
             var options = match.PendingOptions.Select((o, i) => $"[{i + 1}] {o.ToName()}");
@@ -56,7 +64,7 @@ public static class MatchLines
             string call = match.CurrentCall is { } c ? $"{c.Ball} in {c.Pocket.ToName()}" : "none";
             string push = state.PushOut ? "  PUSH-OUT" : "";
             string pushKey = state.Rules is GameRules.NineBall or GameRules.TenBall && state.Shot == 1 ? "  O: push-out" : "";
-            lines.Add(string.Create(CultureInfo.InvariantCulture, $"Call: {call} (B ball, C pocket)  power {match.Power:0.00} m/s (Q/W, Space shoots){push}{pushKey}"));
+            lines.Add(string.Create(CultureInfo.InvariantCulture, $"Call: {call} (B ball, C pocket)  power {match.Power:0.00} m/s (Q/W, Space shoots, G hint){push}{pushKey}"));
         }
         if (match.LastRuling is { } last)
         {

@@ -1,6 +1,7 @@
 using System.Numerics;
 using System.Runtime.InteropServices;
 using Billiards.App.Native;
+using Billiards.App.Rendering;
 
 namespace Billiards.App.Platform;
 

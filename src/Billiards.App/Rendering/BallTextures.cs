@@ -1,5 +1,7 @@
 using System.Numerics;
 using Billiards.Core.Balls;
+using Billiards.Core.Scenes;
+using SkiaSharp;
 
 namespace Billiards.App.Rendering;
 
@@ -7,15 +9,16 @@ namespace Billiards.App.Rendering;
 /// Procedural ball textures: equirectangular RGBA images (u = longitude, v = latitude from the
 /// south pole) of the standard pool set. Solids are coloured with a white number disc at +x and
 /// -x of the ball's own frame, stripes are white with a coloured band round the equator, the 8
-/// is black, the cue ball white with small red spots so that its spin shows.
+/// is black, the cue ball white with small red spots so that its spin shows. Numbers are drawn
+/// with a TrueType font through SkiaSharp.
 /// </summary>
 public static class BallTextures
 {
     /// <summary>Texture width (longitude).</summary>
-    public const int Width = 512;
+    public const int Width = 1024;
 
     /// <summary>Texture height (latitude).</summary>
-    public const int Height = 256;
+    public const int Height = 512;
 
     private static readonly float[] s_sides = [1f, -1f];
 
@@ -45,77 +48,134 @@ public static class BallTextures
         return new Vector3(MathF.Cos(lat) * MathF.Cos(lon), MathF.Cos(lat) * MathF.Sin(lon), MathF.Sin(lat));
     }
 
-    /// <summary>The ball's texture, <see cref="Width"/> x <see cref="Height"/> sRGB RGBA, rows from v = 0.</summary>
+    /// <summary>The TrueType font of the numbers (DejaVu Sans Bold, assets/fonts, its licence beside it).</summary>
+    public static string NumberFontPath => Path.Combine(AssetFolder.Assets, "fonts", "DejaVuSans-Bold.ttf");
+
+    /// <summary>Side of the tangent-plane image a number is drawn into (px).</summary>
+    private const int NumberImage = 256;
+
+    /// <summary>
+    /// The ball's texture, <see cref="Width"/> x <see cref="Height"/> sRGB RGBA, rows from v = 0.
+    /// One sample a texel: the edges of the disc, the band and the spots are blended over the
+    /// texel's angular size, the number's ink comes antialiased from the font.
+    /// </summary>
     public static byte[] Generate(BallId id)
     {
         var pixels = new byte[Width * Height * 4];
         var white = new Vector3(0.97f, 0.96f, 0.92f);
         var ink = new Vector3(0.03f, 0.03f, 0.03f);
         var baseColor = BaseColor(id);
-        string label = id.Value.ToString(System.Globalization.CultureInfo.InvariantCulture);
-        const int Supersample = 3;
+        float[] number = id.IsCue ? [] : NumberCoverage(id.Value.ToString(System.Globalization.CultureInfo.InvariantCulture));
+        var cosLon = new float[Width];
+        var sinLon = new float[Width];
+        for (int i = 0; i < Width; i++)
+        {
+            float lon = (i + 0.5f) / Width * 2 * MathF.PI;
+            cosLon[i] = MathF.Cos(lon);
+            sinLon[i] = MathF.Sin(lon);
+        }
+        // A texel's angular size (rad): the width over which an edge is blended.
+        const float Texel = MathF.PI / Height;
         for (int j = 0; j < Height; j++)
         {
+            float lat = (((j + 0.5f) / Height) - 0.5f) * MathF.PI;
+            float cosLat = MathF.Cos(lat), z = MathF.Sin(lat);
             for (int i = 0; i < Width; i++)
             {
-                var sum = Vector3.Zero;
-                for (int sj = 0; sj < Supersample; sj++)
-                {
-                    for (int si = 0; si < Supersample; si++)
-                    {
-                        float u = (i + ((si + 0.5f) / Supersample)) / Width;
-                        float v = (j + ((sj + 0.5f) / Supersample)) / Height;
-                        sum += Shade(id, Direction(u, v), baseColor, white, ink, label);
-                    }
-                }
-                var c = sum / (Supersample * Supersample);
+                var d = new Vector3(cosLat * cosLon[i], cosLat * sinLon[i], z);
+                var c = Shade(id, d, baseColor, white, ink, number, Texel);
                 int o = ((j * Width) + i) * 4;
-                pixels[o] = (byte)Math.Clamp(c.X * 255 + 0.5f, 0, 255);
-                pixels[o + 1] = (byte)Math.Clamp(c.Y * 255 + 0.5f, 0, 255);
-                pixels[o + 2] = (byte)Math.Clamp(c.Z * 255 + 0.5f, 0, 255);
+                pixels[o] = (byte)Math.Clamp((c.X * 255) + 0.5f, 0, 255);
+                pixels[o + 1] = (byte)Math.Clamp((c.Y * 255) + 0.5f, 0, 255);
+                pixels[o + 2] = (byte)Math.Clamp((c.Z * 255) + 0.5f, 0, 255);
                 pixels[o + 3] = 255;
             }
         }
         return pixels;
     }
 
-    private static Vector3 Shade(BallId id, Vector3 d, Vector3 baseColor, Vector3 white, Vector3 ink, string label)
+    /// <summary>Part of a texel inside an edge at signed angular distance <paramref name="inside"/> (rad, positive inside).</summary>
+    private static float Cover(float inside, float texel) => Math.Clamp((inside / texel) + 0.5f, 0, 1);
+
+    private static Vector3 Shade(BallId id, Vector3 d, Vector3 baseColor, Vector3 white, Vector3 ink, float[] number, float texel)
     {
         if (id.IsCue)
         {
             // Six small red spots on the axes show the cue ball's rotation.
-            float spot = MathF.Max(MathF.Max(MathF.Abs(d.X), MathF.Abs(d.Y)), MathF.Abs(d.Z));
-            return spot > MathF.Cos(0.11f) ? new Vector3(0.80f, 0.08f, 0.08f) : baseColor;
+            float nearest = MathF.Max(MathF.Max(MathF.Abs(d.X), MathF.Abs(d.Y)), MathF.Abs(d.Z));
+            float spot = Cover(0.11f - MathF.Acos(MathF.Min(1, nearest)), texel);
+            return Vector3.Lerp(baseColor, new Vector3(0.80f, 0.08f, 0.08f), spot);
         }
-        var surface = id.IsStripe && MathF.Abs(d.Z) > StripeHalfHeight ? white : baseColor;
+        var surface = baseColor;
+        if (id.IsStripe)
+        {
+            // The band's edge as an angle: latitude asin(StripeHalfHeight).
+            float band = Cover(MathF.Asin(StripeHalfHeight) - MathF.Abs(MathF.Asin(d.Z)), texel);
+            surface = Vector3.Lerp(white, baseColor, band);
+        }
         // Number discs at +x and -x; read upright with z up.
         foreach (float side in s_sides)
         {
             float cos = d.X * side;
-            if (cos < MathF.Cos(DiscAngle))
+            if (cos < MathF.Cos(DiscAngle + texel))
             {
                 continue;
             }
+            float disc = Cover(DiscAngle - MathF.Acos(MathF.Min(1, cos)), texel);
             // Gnomonic coordinates on the disc's tangent plane: right and up as seen from outside.
             float right = d.Y * side / cos;
             float up = d.Z / cos;
-            float glyph = DigitCoverage(label, right, up);
-            return glyph > 0.36f ? ink : white;
+            var face = Vector3.Lerp(white, ink, Sample(number, right, up));
+            return Vector3.Lerp(surface, face, disc);
         }
         return surface;
     }
 
-    private static float DigitCoverage(string label, float right, float up)
+    /// <summary>
+    /// The number drawn with the TrueType font into a square image of the disc's tangent plane
+    /// (gnomonic coordinates -tan(disc) .. tan(disc) both ways, up is up), as ink coverage 0..1,
+    /// its digits <see cref="DigitHeight"/> tall and centred.
+    /// </summary>
+    public static float[] NumberCoverage(string label)
     {
-        float scale = BitmapFont.GlyphHeight / DigitHeight;
-        float width = ((label.Length * BitmapFont.Advance) - 1) / scale;
-        float x = (right + (width / 2)) * scale;
-        float y = ((DigitHeight / 2) - up) * scale;
-        int index = (int)MathF.Floor(x / BitmapFont.Advance);
-        if (index < 0 || index >= label.Length)
+        float extent = MathF.Tan(DiscAngle);
+        float pixelsPerUnit = NumberImage / (2 * extent);
+        using var typeface = SKTypeface.FromFile(NumberFontPath)
+            ?? throw new InvalidOperationException($"{NumberFontPath}: not a font file that can be read");
+        using var font = new SKFont(typeface, 100) { Edging = SKFontEdging.Antialias, Subpixel = true };
+        font.MeasureText("0", out var zero);
+        // Scale the font so that a digit's height is DigitHeight on the tangent plane.
+        font.Size = 100 * DigitHeight * pixelsPerUnit / zero.Height;
+        font.MeasureText(label, out var bounds);
+        using var bitmap = new SKBitmap(new SKImageInfo(NumberImage, NumberImage, SKColorType.Alpha8, SKAlphaType.Premul));
+        using (var canvas = new SKCanvas(bitmap))
         {
-            return 0;
+            canvas.Clear(SKColors.Transparent);
+            using var paint = new SKPaint { Color = SKColors.Black, IsAntialias = true };
+            float x = (NumberImage / 2f) - bounds.MidX;
+            float y = (NumberImage / 2f) - bounds.MidY;
+            canvas.DrawText(label, x, y, SKTextAlign.Left, font, paint);
         }
-        return BitmapFont.Sample(label[index], x - (index * BitmapFont.Advance), y);
+        var coverage = new float[NumberImage * NumberImage];
+        var bytes = bitmap.GetPixelSpan();
+        for (int k = 0; k < coverage.Length; k++)
+        {
+            coverage[k] = bytes[k] / 255f;
+        }
+        return coverage;
+    }
+
+    /// <summary>Bilinear ink coverage at gnomonic (right, up) from <see cref="NumberCoverage"/>; 0 outside.</summary>
+    private static float Sample(float[] number, float right, float up)
+    {
+        float extent = MathF.Tan(DiscAngle);
+        float x = ((right + extent) / (2 * extent) * NumberImage) - 0.5f;
+        float y = ((extent - up) / (2 * extent) * NumberImage) - 0.5f;
+        int x0 = (int)MathF.Floor(x), y0 = (int)MathF.Floor(y);
+        float fx = x - x0, fy = y - y0;
+        float At(int px, int py) => px < 0 || py < 0 || px >= NumberImage || py >= NumberImage ? 0 : number[(py * NumberImage) + px];
+        float top = At(x0, y0) + (fx * (At(x0 + 1, y0) - At(x0, y0)));
+        float bottom = At(x0, y0 + 1) + (fx * (At(x0 + 1, y0 + 1) - At(x0, y0 + 1)));
+        return top + (fy * (bottom - top));
     }
 }

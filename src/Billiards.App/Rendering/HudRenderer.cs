@@ -6,21 +6,27 @@ namespace Billiards.App.Rendering;
 /// <summary>
 /// Draws <see cref="HudInfo"/> over the scene in pixel coordinates: the text lines on a dark
 /// panel (top left), the cue-ball diagram with the spin point (bottom right) and the help
-/// overlay (centred). Text uses <see cref="BitmapFont"/> from a small atlas texture.
+/// overlay (centred). Text uses <see cref="HudFont"/>'s antialiased atlas.
 /// </summary>
 internal sealed class HudRenderer : IDisposable
 {
-    private const int AtlasColumns = 16, AtlasRows = 6;
     private const int Floats = 9; // position 2, uv 2, colour 4, kind 1
 
     private readonly Gl _gl;
-    private readonly uint _program, _vao, _vbo, _font;
+    private readonly uint _program, _vao, _vbo;
+    private uint _font;
+    private int _fontScale;
     private readonly int _screen, _fontSampler;
     private readonly List<float> _vertices = [];
+    private readonly HudLayer _layer;
+    private readonly Action<bool> _submit;
+    private int _width, _height;
 
     public HudRenderer(Gl gl)
     {
         _gl = gl;
+        _layer = new HudLayer(gl);
+        _submit = Submit;
         _program = gl.LinkProgram(gl.CompileShader(Gl.VertexShader, Shaders.HudVertex),
             gl.CompileShader(Gl.FragmentShader, Shaders.HudFragment), ["aPosition", "aUv", "aColor", "aKind"]);
         _screen = gl.GetUniformLocation(_program, "uScreen");
@@ -40,37 +46,30 @@ internal sealed class HudRenderer : IDisposable
         }
         gl.BindVertexArray(0);
 
-        _font = gl.GenTexture();
-        gl.BindTexture(Gl.Texture2D, _font);
-        gl.PixelStore(Gl.UnpackAlignment, 1);
-        gl.TexImage2D(Gl.Texture2D, 0, Gl.R8, AtlasColumns * BitmapFont.Advance, AtlasRows * BitmapFont.LineHeight, Gl.Red, Gl.UnsignedByte, Atlas());
-        gl.TexParameter(Gl.Texture2D, Gl.TextureMinFilter, Gl.Nearest);
-        gl.TexParameter(Gl.Texture2D, Gl.TextureMagFilter, Gl.Nearest);
-        gl.TexParameter(Gl.Texture2D, Gl.TextureWrapS, Gl.ClampToEdge);
-        gl.TexParameter(Gl.Texture2D, Gl.TextureWrapT, Gl.ClampToEdge);
     }
 
-    /// <summary>The font atlas: 16 x 6 cells of <see cref="BitmapFont.Advance"/> x <see cref="BitmapFont.LineHeight"/> pixels, characters 32..127, one byte a pixel.</summary>
-    public static byte[] Atlas()
+    /// <summary>Makes the font atlas for <paramref name="scale"/> pixels a HUD unit, unless it is already made.</summary>
+    private void EnsureFont(int scale)
     {
-        int width = AtlasColumns * BitmapFont.Advance, height = AtlasRows * BitmapFont.LineHeight;
-        var pixels = new byte[width * height];
-        for (int c = 32; c < 128; c++)
+        if (scale == _fontScale)
         {
-            int cell = c - 32;
-            int ox = cell % AtlasColumns * BitmapFont.Advance, oy = cell / AtlasColumns * BitmapFont.LineHeight;
-            for (int y = 0; y < BitmapFont.GlyphHeight; y++)
-            {
-                for (int x = 0; x < BitmapFont.GlyphWidth; x++)
-                {
-                    if (c < 127 && BitmapFont.Pixel((char)c, x, y))
-                    {
-                        pixels[((oy + y + 1) * width) + ox + x] = 255;
-                    }
-                }
-            }
+            return;
         }
-        return pixels;
+        if (_font != 0)
+        {
+            _gl.DeleteTexture(_font);
+        }
+        _fontScale = scale;
+        _font = _gl.GenTexture();
+        _gl.BindTexture(Gl.Texture2D, _font);
+        _gl.PixelStore(Gl.UnpackAlignment, 1);
+        _gl.TexImage2D(Gl.Texture2D, 0, Gl.R8, HudFont.Columns * HudFont.Advance * scale, HudFont.Rows * HudFont.LineHeight * scale, Gl.Red, Gl.UnsignedByte, HudFont.Atlas(scale));
+        // Mipmaps for text drawn smaller than the atlas (a help overlay fitted to a narrow window).
+        _gl.GenerateMipmap(Gl.Texture2D);
+        _gl.TexParameter(Gl.Texture2D, Gl.TextureMinFilter, Gl.LinearMipmapLinear);
+        _gl.TexParameter(Gl.Texture2D, Gl.TextureMagFilter, Gl.Linear);
+        _gl.TexParameter(Gl.Texture2D, Gl.TextureWrapS, Gl.ClampToEdge);
+        _gl.TexParameter(Gl.Texture2D, Gl.TextureWrapT, Gl.ClampToEdge);
     }
 
     /// <summary>Text scale (pixels per font pixel) for a framebuffer height.</summary>
@@ -78,9 +77,12 @@ internal sealed class HudRenderer : IDisposable
 
     public void Draw(HudInfo hud, int width, int height)
     {
+        _width = width;
+        _height = height;
         _vertices.Clear();
         int scale = Scale(height);
-        int lineHeight = BitmapFont.LineHeight * scale;
+        EnsureFont(scale);
+        int lineHeight = HudFont.LineHeight * scale;
         int margin = 8 * scale;
         var textColor = new Vector4(0.95f, 0.95f, 0.9f, 1);
         var panel = new Vector4(0, 0, 0, 0.45f);
@@ -88,7 +90,7 @@ internal sealed class HudRenderer : IDisposable
         if (hud.Lines.Count > 0)
         {
             int longest = hud.Lines.Max(l => l.Length);
-            Rect(margin, margin, (longest * BitmapFont.Advance * scale) + (2 * margin), (hud.Lines.Count * lineHeight) + (2 * margin) - (2 * scale), panel);
+            Rect(margin, margin, (longest * HudFont.Advance * scale) + (2 * margin), (hud.Lines.Count * lineHeight) + (2 * margin) - (2 * scale), panel);
             for (int i = 0; i < hud.Lines.Count; i++)
             {
                 Text(hud.Lines[i], 2 * margin, 2 * margin + (i * lineHeight), scale, textColor);
@@ -115,7 +117,7 @@ internal sealed class HudRenderer : IDisposable
             Rect(bx - scale, by - scale, barW + (2 * scale), barH + (2 * scale), new Vector4(0, 0, 0, 0.6f));
             var fill = power.Pushing ? new Vector4(0.95f, 0.55f + (0.4f * (1 - power.Fraction)), 0.1f, 0.95f) : new Vector4(0.6f, 0.6f, 0.6f, 0.9f);
             Rect(bx, by, barW * Math.Clamp(power.Fraction, 0, 1), barH, fill);
-            float labelW = power.Label.Length * BitmapFont.Advance * scale;
+            float labelW = power.Label.Length * HudFont.Advance * scale;
             Text(power.Label, (width - labelW) / 2, by - lineHeight - scale, scale, textColor);
         }
 
@@ -125,21 +127,22 @@ internal sealed class HudRenderer : IDisposable
             int helpScale = scale;
             var lines = hud.HelpLines;
             int longest = lines.Max(l => l.Length);
-            while (helpScale > 1 && (longest * BitmapFont.Advance * helpScale) + (4 * margin) > width)
+            while (helpScale > 1 && (longest * HudFont.Advance * helpScale) + (4 * margin) > width)
             {
                 helpScale--;
             }
-            int fit = Math.Max(10, (int)((width - (4 * margin)) / (BitmapFont.Advance * helpScale)));
+            int fit = Math.Max(10, (int)((width - (4 * margin)) / (HudFont.Advance * helpScale)));
             if (longest > fit)
             {
                 lines = Wrap(lines, fit);
                 longest = lines.Max(l => l.Length);
             }
-            int helpLine = BitmapFont.LineHeight * helpScale;
-            float w = (longest * BitmapFont.Advance * helpScale) + (4 * margin);
+            int helpLine = HudFont.LineHeight * helpScale;
+            float w = (longest * HudFont.Advance * helpScale) + (4 * margin);
             float h = (lines.Count * helpLine) + (4 * margin);
             float x = MathF.Max(0, (width - w) / 2), y = MathF.Max(0, (height - h) / 2);
-            Rect(x, y, w, h, new Vector4(0.02f, 0.03f, 0.02f, 0.82f));
+            // Opaque: the layer copies it back instead of blending the largest panel (HudLayer).
+            Rect(x, y, w, h, new Vector4(0.02f, 0.03f, 0.02f, 1));
             Rect(x, y, w, scale, new Vector4(0.8f, 0.7f, 0.3f, 1));
             for (int i = 0; i < lines.Count; i++)
             {
@@ -147,11 +150,26 @@ internal sealed class HudRenderer : IDisposable
             }
         }
 
+        _layer.Draw(_vertices, Floats, width, height, _submit);
+    }
+
+    /// <summary>Frames whose HUD was put back from the stored layer.</summary>
+    public long Reused => _layer.Reused;
+
+    private void Submit(bool premultiplied)
+    {
         _gl.Disable(Gl.DepthTest);
         _gl.Enable(Gl.Blend);
-        _gl.BlendFunc(Gl.SrcAlpha, Gl.OneMinusSrcAlpha);
+        if (premultiplied)
+        {
+            _gl.BlendFuncSeparate(Gl.SrcAlpha, Gl.OneMinusSrcAlpha, Gl.One, Gl.OneMinusSrcAlpha);
+        }
+        else
+        {
+            _gl.BlendFunc(Gl.SrcAlpha, Gl.OneMinusSrcAlpha);
+        }
         _gl.UseProgram(_program);
-        _gl.Uniform2(_screen, width, height);
+        _gl.Uniform2(_screen, _width, _height);
         _gl.Uniform1(_fontSampler, 0);
         _gl.ActiveTexture(Gl.Texture0);
         _gl.BindTexture(Gl.Texture2D, _font);
@@ -211,20 +229,20 @@ internal sealed class HudRenderer : IDisposable
 
     private void Text(string text, float x, float y, int scale, Vector4 color)
     {
-        float atlasW = AtlasColumns * BitmapFont.Advance, atlasH = AtlasRows * BitmapFont.LineHeight;
+        float atlasW = HudFont.Columns * HudFont.Advance, atlasH = HudFont.Rows * HudFont.LineHeight;
         foreach (char ch in text)
         {
             int c = ch is >= ' ' and <= '~' ? ch : '?';
             if (c != ' ')
             {
                 int cell = c - 32;
-                float u0 = cell % AtlasColumns * BitmapFont.Advance / atlasW, v0 = cell / AtlasColumns * BitmapFont.LineHeight / atlasH;
-                float u1 = u0 + (BitmapFont.Advance / atlasW), v1 = v0 + (BitmapFont.LineHeight / atlasH);
+                float u0 = cell % HudFont.Columns * HudFont.Advance / atlasW, v0 = cell / HudFont.Columns * HudFont.LineHeight / atlasH;
+                float u1 = u0 + (HudFont.Advance / atlasW), v1 = v0 + (HudFont.LineHeight / atlasH);
                 // A one-pixel drop shadow keeps text readable on the bright cloth.
-                Quad(x + scale, y + scale, BitmapFont.Advance * scale, BitmapFont.LineHeight * scale, u0, v0, u1, v1, new Vector4(0, 0, 0, 0.8f), 1);
-                Quad(x, y, BitmapFont.Advance * scale, BitmapFont.LineHeight * scale, u0, v0, u1, v1, color, 1);
+                Quad(x + scale, y + scale, HudFont.Advance * scale, HudFont.LineHeight * scale, u0, v0, u1, v1, new Vector4(0, 0, 0, 0.8f), 1);
+                Quad(x, y, HudFont.Advance * scale, HudFont.LineHeight * scale, u0, v0, u1, v1, color, 1);
             }
-            x += BitmapFont.Advance * scale;
+            x += HudFont.Advance * scale;
         }
     }
 
@@ -234,5 +252,6 @@ internal sealed class HudRenderer : IDisposable
         _gl.DeleteVertexArray(_vao);
         _gl.DeleteTexture(_font);
         _gl.DeleteProgram(_program);
+        _layer.Dispose();
     }
 }

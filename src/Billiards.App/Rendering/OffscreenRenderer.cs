@@ -5,17 +5,21 @@ namespace Billiards.App.Rendering;
 
 /// <summary>
 /// Renders frames without a window: an offscreen context (EGL surfaceless or a hidden GLFW
-/// window), a 4x multisampled framebuffer object resolved by a blit, read back as RGBA.
+/// window), a 4x multisampled framebuffer object resolved by a blit, read back as RGBA. With one
+/// sample it draws straight into the framebuffer that is read back, as a window on a software
+/// rasteriser does.
 /// </summary>
 internal sealed class OffscreenRenderer : IDisposable
 {
     private readonly IGlContext _context;
     private readonly Gl _gl;
     private readonly Renderer _renderer;
+    private readonly int _samples;
     private Target? _target;
 
-    public OffscreenRenderer(Func<Billiards.Core.Table.TableSpec, string>? modelPath = null)
+    public OffscreenRenderer(Func<Billiards.Core.Table.TableSpec, string>? modelPath = null, int samples = 4)
     {
+        _samples = samples;
         _context = OffscreenContext.Create();
         try
         {
@@ -33,6 +37,9 @@ internal sealed class OffscreenRenderer : IDisposable
 
     /// <summary>How the context was made and what draws, e.g. "EGL surfaceless, llvmpipe (LLVM 15.0.6, 256 bits)".</summary>
     public string Description { get; }
+
+    /// <summary>The renderer (for its statistics).</summary>
+    public Renderer Renderer => _renderer;
 
     /// <summary>The table model file last drawn.</summary>
     public string? TableSource => _renderer.TableSource;
@@ -60,13 +67,16 @@ internal sealed class OffscreenRenderer : IDisposable
         if (_target is null || _target.Width != frame.Width || _target.Height != frame.Height)
         {
             _target?.Dispose();
-            _target = new Target(_gl, frame.Width, frame.Height);
+            _target = new Target(_gl, frame.Width, frame.Height, _samples);
         }
         _gl.BindFramebuffer(Gl.Framebuffer, _target.Multisampled);
         _renderer.Draw(frame);
-        _gl.BindFramebuffer(Gl.ReadFramebuffer, _target.Multisampled);
-        _gl.BindFramebuffer(Gl.DrawFramebuffer, _target.Resolved);
-        _gl.BlitFramebuffer(0, 0, frame.Width, frame.Height, 0, 0, frame.Width, frame.Height, Gl.ColorBufferBit, (uint)Gl.Nearest);
+        if (_target.Multisampled != _target.Resolved)
+        {
+            _gl.BindFramebuffer(Gl.ReadFramebuffer, _target.Multisampled);
+            _gl.BindFramebuffer(Gl.DrawFramebuffer, _target.Resolved);
+            _gl.BlitFramebuffer(0, 0, frame.Width, frame.Height, 0, 0, frame.Width, frame.Height, Gl.ColorBufferBit, (uint)Gl.Nearest);
+        }
         _gl.BindFramebuffer(Gl.ReadFramebuffer, _target.Resolved);
         _gl.PixelStore(Gl.PackAlignment, 1);
         int stride = frame.Width * 4;
@@ -99,18 +109,29 @@ internal sealed class OffscreenRenderer : IDisposable
         _context.Dispose();
     }
 
-    /// <summary>The multisampled framebuffer (colour and depth) and the single-sampled one it resolves into.</summary>
+    /// <summary>
+    /// The multisampled framebuffer (colour and depth) and the single-sampled one it resolves
+    /// into; with one sample, one framebuffer with colour and a depth-stencil buffer like a window's.
+    /// </summary>
     private sealed class Target : IDisposable
     {
         private readonly Gl _gl;
         private readonly uint _colorMs, _depthMs, _color;
+        private readonly PlainFramebuffer _plain;
 
-        public Target(Gl gl, int width, int height)
+        public Target(Gl gl, int width, int height, int samplesWanted)
         {
             _gl = gl;
             Width = width;
             Height = height;
-            int samples = Math.Clamp(gl.GetInteger(Gl.MaxSamples), 1, 4);
+            if (samplesWanted <= 1)
+            {
+                _plain = PlainFramebuffer.Create(gl, width, height);
+                Resolved = Multisampled = _plain.Framebuffer;
+                Check(gl, "single-sampled");
+                return;
+            }
+            int samples = Math.Clamp(gl.GetInteger(Gl.MaxSamples), 1, samplesWanted);
             Multisampled = gl.GenFramebuffer();
             gl.BindFramebuffer(Gl.Framebuffer, Multisampled);
             _colorMs = gl.GenRenderbuffer();
@@ -148,6 +169,11 @@ internal sealed class OffscreenRenderer : IDisposable
 
         public void Dispose()
         {
+            if (_plain.Framebuffer != 0)
+            {
+                _plain.Delete(_gl);
+                return;
+            }
             _gl.DeleteFramebuffer(Multisampled);
             _gl.DeleteFramebuffer(Resolved);
             _gl.DeleteRenderbuffer(_colorMs);

@@ -20,13 +20,30 @@ internal sealed class Renderer : IDisposable
     private readonly Func<TableSpec, string> _modelPath;
     private readonly LitProgram _lit;
     private readonly LitProgram _gouraud;
-    private readonly GpuMesh _sphere;
+    private readonly (int Slices, GpuMesh Mesh)[] _spheres;
     private readonly GpuMesh _cue;
     private readonly Dictionary<int, uint> _ballTextures = [];
     private readonly DebugLines _lines;
     private readonly ShadowDecals _shadows;
     private readonly HudRenderer _hud;
+    private readonly StaticLayer _tableLayer;
+    private readonly StaticLayer _sceneLayer;
+    private readonly Action _drawTable;
+    private readonly Action _drawScene;
+    private readonly List<BallVisual> _lastBalls = [];
+    private float _lastRadius;
+    private long _ballsVersion;
+    private StaticLayer.ViewKey _view;
+    private Vector3? _lastEye;
+    private Matrix4x4 _lastViewProjection;
+    private PlainFramebuffer _reduced;
+    private (int Width, int Height) _reducedSize;
+    private readonly float[] _lamps = new float[12];
+    private RenderFrame? _tableFrame;
+    private Matrix4x4 _tableViewProjection;
     private TableModel? _table;
+    private TableModel? _room;
+    private readonly DetailTextures _details;
     private TableSpec? _tableSpec;
 
     /// <summary>Creates the GPU resources. <paramref name="modelPath"/> picks the table model file (default: <see cref="TableModels.PathFor"/>).</summary>
@@ -40,13 +57,25 @@ internal sealed class Renderer : IDisposable
         _gouraud = new LitProgram(gl, gl.LinkProgram(
             gl.CompileShader(Gl.VertexShader, Shaders.GouraudVertex),
             gl.CompileShader(Gl.FragmentShader, Shaders.GouraudFragment), s_meshAttributes));
-        // 32 x 24 is smooth at the size a ball is ever drawn; llvmpipe sets up every triangle on one thread.
-        _sphere = GpuMesh.From(gl, Primitives.Sphere(32, 24));
+        // Levels of detail: a software rasteriser pays for every triangle in every tile it touches,
+        // and a ball 15 px across needs no 1,536 triangles (the overhead view shows 16 of them).
+        _details = new DetailTextures(gl);
+        _spheres = [.. SphereSlices.Select(n => (n, GpuMesh.From(gl, Primitives.Sphere(n, (3 * n) / 4))))];
         _cue = GpuMesh.From(gl, Primitives.Cue());
         _lines = new DebugLines(gl);
         _shadows = new ShadowDecals(gl);
         _hud = new HudRenderer(gl);
+        _tableLayer = new StaticLayer(gl);
+        _sceneLayer = new StaticLayer(gl);
+        _drawTable = DrawTable;
+        _drawScene = DrawScene;
     }
+
+    /// <summary>Frames whose table (alone, or with the balls at rest) was put back from a stored layer.</summary>
+    public long LayersReused => _tableLayer.Reused + _sceneLayer.Reused;
+
+    /// <summary>Frames whose HUD was put back from its stored layer.</summary>
+    public long HudReused => _hud.Reused;
 
     /// <summary>The model file of the table last drawn.</summary>
     public string? TableSource => _table?.Source;
@@ -57,34 +86,132 @@ internal sealed class Renderer : IDisposable
     /// <summary>Height of the fill light over the centre of the bed (m): the seed's 1 cm.</summary>
     public const float FillHeight = 0.01f;
 
+    /// <summary>
+    /// Draw the 3D scene at <see cref="MovingScale"/> of the resolution while the camera moves,
+    /// then scale it up; full resolution again as soon as the view stands still. For a window on a
+    /// software rasteriser, where a moving view cannot be kept in the stored layers and a full
+    /// frame costs more than a 60 Hz frame's time.
+    /// </summary>
+    public bool DynamicResolution { get; set; }
+
+    /// <summary>Scale of the 3D scene's resolution while the camera moves (with <see cref="DynamicResolution"/>).</summary>
+    public const float MovingScale = 0.5f;
+
+    /// <summary>Frames drawn at the reduced resolution because the camera moved.</summary>
+    public long ReducedFrames { get; private set; }
+
     /// <summary>Draws the frame into the bound framebuffer, viewport (0, 0, Width, Height).</summary>
     public void Draw(RenderFrame frame)
     {
         EnsureTable(frame.Table);
-        var gl = _gl;
-        gl.Viewport(0, 0, frame.Width, frame.Height);
-        gl.ClearColor(0.018f, 0.016f, 0.014f, 1);
-        gl.Clear(Gl.ColorBufferBit | Gl.DepthBufferBit);
-        gl.Enable(Gl.DepthTest);
-        gl.DepthFunc(Gl.LessEqual);
-        gl.Disable(Gl.CullFace);
-        gl.Disable(Gl.Blend);
-        gl.Enable(Gl.Multisample);
+        var viewProjection = RenderMath.ViewProjection(frame);
+        bool moving = _lastEye is { } eye && (eye != frame.Eye || _lastViewProjection != viewProjection);
+        _lastEye = frame.Eye;
+        _lastViewProjection = viewProjection;
+        if (DynamicResolution && moving)
+        {
+            DrawReduced(frame);
+        }
+        else
+        {
+            DrawScene3D(frame);
+        }
 
+        if (frame.Hud is { } hud)
+        {
+            _hud.Draw(hud, frame.Width, frame.Height);
+        }
+        _gl.BindVertexArray(0);
+    }
+
+    private void DrawReduced(RenderFrame frame)
+    {
+        uint target = (uint)_gl.GetInteger(Gl.DrawFramebufferBinding);
+        int width = frame.Width, height = frame.Height;
+        int w = Math.Max(1, (int)(width * MovingScale)), h = Math.Max(1, (int)(height * MovingScale));
+        if (_reduced.Framebuffer == 0 || _reducedSize != (w, h))
+        {
+            _reduced.Delete(_gl);
+            _reduced = PlainFramebuffer.Create(_gl, w, h);
+            _reducedSize = (w, h);
+        }
+        _gl.BindFramebuffer(Gl.Framebuffer, _reduced.Framebuffer);
+        frame.Width = w;
+        frame.Height = h;
+        try
+        {
+            DrawScene3D(frame);
+        }
+        finally
+        {
+            frame.Width = width;
+            frame.Height = height;
+        }
+        _gl.BindFramebuffer(Gl.ReadFramebuffer, _reduced.Framebuffer);
+        _gl.BindFramebuffer(Gl.DrawFramebuffer, target);
+        _gl.BlitFramebuffer(0, 0, w, h, 0, 0, width, height, Gl.ColorBufferBit, (uint)Gl.Linear);
+        _gl.BindFramebuffer(Gl.Framebuffer, target);
+        _gl.Viewport(0, 0, width, height);
+        ReducedFrames++;
+    }
+
+    /// <summary>The table, the room, the balls, the cue and the debug lines, at the frame's size.</summary>
+    private void DrawScene3D(RenderFrame frame)
+    {
+        var gl = _gl;
         var viewProjection = RenderMath.ViewProjection(frame);
         float radius = frame.BallRadius;
         Span<float> lamps = stackalloc float[12];
         Lamps(frame.Table, lamps);
-        _gouraud.Begin(viewProjection, frame.Eye, lamps);
-        foreach (var part in _table!.Parts)
+        lamps.CopyTo(_lamps);
+        _tableFrame = frame;
+        _tableViewProjection = viewProjection;
+        var view = new StaticLayer.ViewKey(viewProjection, frame.Eye, frame.Table, frame.Width, frame.Height);
+        _view = view;
+        _sceneLayer.Draw(view, BallsVersion(frame), _drawScene);
+        gl.Viewport(0, 0, frame.Width, frame.Height);
+        gl.Enable(Gl.DepthTest);
+        gl.DepthFunc(Gl.LessEqual);
+        gl.Disable(Gl.Blend);
+        gl.Enable(Gl.CullFace);
+        gl.CullFaceMode(Gl.Back);
+        _lit.Begin(viewProjection, frame.Eye, lamps);
+
+        if (frame.Cue.Visible)
         {
-            _gouraud.Material(part.Diffuse, part.Specular, part.Shininess, reflect: 0);
-            _gouraud.Draw(Matrix4x4.Identity, texture: 0, part.Mesh);
+            _lit.Material(Vector4.One, new Vector3(0.25f), 40, reflect: 0.02f);
+            _lit.Draw(Primitives.CuePlacement(frame.Cue, radius), texture: 0, _cue);
         }
 
-        _shadows.Draw(viewProjection, frame.Balls, radius, lamps, LampRadius, Ambient);
+        gl.Disable(Gl.CullFace);
 
-        _lit.Begin(viewProjection, frame.Eye, lamps);
+        if (frame.ShowCollisionGeometry && frame.CollisionTriangles.Count > 0)
+        {
+            _lines.Draw(viewProjection, frame.CollisionTriangles, frame.Width, frame.Height);
+        }
+    }
+
+    /// <summary>
+    /// The table, then the balls' shadows and the balls: the part of the frame that stands still
+    /// between shots. The table alone is its own layer, kept while the balls roll.
+    /// </summary>
+    private void DrawScene()
+    {
+        var gl = _gl;
+        var frame = _tableFrame!;
+        float radius = frame.BallRadius;
+        _tableLayer.Draw(_view, 0, _drawTable);
+        gl.Viewport(0, 0, frame.Width, frame.Height);
+        gl.Enable(Gl.DepthTest);
+        gl.DepthFunc(Gl.LessEqual);
+        gl.Disable(Gl.Blend);
+        _shadows.Draw(_tableViewProjection, frame.Balls, radius, _lamps, LampRadius, Ambient);
+
+        _lit.Begin(_tableViewProjection, frame.Eye, _lamps);
+        // Balls and the cue are closed and wound counter-clockwise outwards: their far halves are
+        // dropped before rasterising.
+        gl.Enable(Gl.CullFace);
+        gl.CullFaceMode(Gl.Back);
         foreach (var ball in frame.Balls)
         {
             if (!ball.Visible)
@@ -93,26 +220,76 @@ internal sealed class Renderer : IDisposable
             }
             var model = Matrix4x4.CreateScale(radius) * Matrix4x4.CreateFromQuaternion(Normalized(ball.Orientation)) * Matrix4x4.CreateTranslation(ball.Position);
             _lit.Material(Vector4.One, new Vector3(0.55f), 160, reflect: 0.045f);
-            _lit.Draw(model, BallTexture(ball.Id), _sphere);
+            _lit.Draw(model, BallTexture(ball.Id), SphereFor(ball.Position, frame, radius));
         }
-
-        if (frame.Cue.Visible)
-        {
-            _lit.Material(Vector4.One, new Vector3(0.25f), 40, reflect: 0.02f);
-            _lit.Draw(Primitives.CuePlacement(frame.Cue, radius), texture: 0, _cue);
-        }
-
-        if (frame.ShowCollisionGeometry && frame.CollisionTriangles.Count > 0)
-        {
-            _lines.Draw(viewProjection, frame.CollisionTriangles, frame.Width, frame.Height);
-        }
-
-        if (frame.Hud is { } hud)
-        {
-            _hud.Draw(hud, frame.Width, frame.Height);
-        }
-        gl.BindVertexArray(0);
+        gl.Disable(Gl.CullFace);
     }
+
+    /// <summary>A number that changes whenever the balls drawn change (position, orientation, visibility, radius).</summary>
+    private long BallsVersion(RenderFrame frame)
+    {
+        var balls = System.Runtime.InteropServices.CollectionsMarshal.AsSpan(frame.Balls);
+        if (frame.BallRadius != _lastRadius || !balls.SequenceEqual(System.Runtime.InteropServices.CollectionsMarshal.AsSpan(_lastBalls)))
+        {
+            _lastBalls.Clear();
+            _lastBalls.AddRange(balls);
+            _lastRadius = frame.BallRadius;
+            _ballsVersion++;
+        }
+        return _ballsVersion;
+    }
+
+    private void DrawTable()
+    {
+        var gl = _gl;
+        var frame = _tableFrame!;
+        gl.Viewport(0, 0, frame.Width, frame.Height);
+        gl.ClearColor(0.018f, 0.016f, 0.014f, 1);
+        gl.Clear(Gl.ColorBufferBit | Gl.DepthBufferBit);
+        gl.Enable(Gl.DepthTest);
+        gl.DepthFunc(Gl.LessEqual);
+        gl.Disable(Gl.CullFace);
+        gl.Disable(Gl.Blend);
+        gl.Enable(Gl.Multisample);
+        _gouraud.Begin(_tableViewProjection, frame.Eye, _lamps);
+        _gouraud.Half((float)frame.Table.HalfLength, (float)frame.Table.HalfWidth);
+        foreach (var part in _table!.Parts)
+        {
+            DrawPart(part);
+        }
+        // From above the lamps the camera would look down past them at the bed, and they would hide
+        // the balls: they are drawn only for a view from below them, as a player's eye at the table.
+        bool lampsInView = frame.Eye.Z < LampHeight - 0.02f;
+        // A camera outside the room (above the ceiling, beyond a wall) looks in through them.
+        bool inRoom = Room.Contains(frame.Table, frame.Eye);
+        foreach (var part in _room!.Parts)
+        {
+            bool lamp = part.Name == Room.Shade.Name || part.Name == Room.Bulb.Name;
+            if (inRoom && (!lamp || lampsInView))
+            {
+                DrawPart(part);
+            }
+        }
+    }
+
+    private void DrawPart(ModelPart part)
+    {
+        _gouraud.Material(part.Diffuse, part.Specular, part.Shininess, reflect: 0);
+        var (detail, texture, repeat) = DetailOf(part.Name);
+        _gouraud.Detail(detail, repeat);
+        _gouraud.Emissive(part.Name == Room.Bulb.Name ? new Vector3(1.0f, 0.97f, 0.88f) : Vector3.Zero);
+        _gouraud.Draw(Matrix4x4.Identity, texture, part.Mesh);
+    }
+
+    /// <summary>How a part's colour is textured: 0 plain, 1 across the bed's plane, 2 along the rail it belongs to.</summary>
+    private (int Mapping, uint Texture, float Repeat) DetailOf(string part) => part switch
+    {
+        "cloth" or "cushion" => (1, _details.Cloth, SurfaceTextures.ClothRepeat),
+        "rail" or "frame" => (2, _details.Wood, SurfaceTextures.WoodRepeat),
+        "floor" => (1, _details.Planks, SurfaceTextures.PlankRepeat),
+        "pocket" => (1, _details.Cloth, SurfaceTextures.ClothRepeat / 4),
+        _ => (0, 0u, 1f),
+    };
 
     /// <summary>Radius of a lamp's shade as a light source (m).</summary>
     public const float LampRadius = 0.14f;
@@ -133,6 +310,50 @@ internal sealed class Renderer : IDisposable
         }
     }
 
+    /// <summary>Slices of the sphere's levels of detail, coarse to fine (stacks are three quarters).</summary>
+    public static readonly int[] SphereSlices = [12, 20, 32, 48];
+
+    /// <summary>Largest gap between a ball's drawn outline and the true circle (px).</summary>
+    public const float OutlineTolerancePixels = 0.5f;
+
+    /// <summary>
+    /// The fewest slices whose outline, a polygon of that many sides around a circle of
+    /// <paramref name="radiusPixels"/>, stays within <see cref="OutlineTolerancePixels"/> of it:
+    /// the sagitta r (1 - cos(pi / n)).
+    /// </summary>
+    public static int SlicesFor(float radiusPixels)
+    {
+        foreach (int n in SphereSlices)
+        {
+            if (radiusPixels * (1 - MathF.Cos(MathF.PI / n)) <= OutlineTolerancePixels)
+            {
+                return n;
+            }
+        }
+        return SphereSlices[^1];
+    }
+
+    /// <summary>The ball's radius on screen (px) at <paramref name="position"/>, seen from the frame's eye.</summary>
+    public static float RadiusPixels(Vector3 position, RenderFrame frame, float radius)
+    {
+        float distance = MathF.Max(Vector3.Distance(position, frame.Eye), RenderMath.Near);
+        float focal = 0.5f * frame.Height / MathF.Tan(frame.FovYDegrees * MathF.PI / 360);
+        return radius * focal / distance;
+    }
+
+    private GpuMesh SphereFor(Vector3 position, RenderFrame frame, float radius)
+    {
+        int slices = SlicesFor(RadiusPixels(position, frame, radius));
+        foreach (var (n, mesh) in _spheres)
+        {
+            if (n == slices)
+            {
+                return mesh;
+            }
+        }
+        return _spheres[^1].Mesh;
+    }
+
     private static Quaternion Normalized(Quaternion q) =>
         q.LengthSquared() > 1e-12f ? Quaternion.Normalize(q) : Quaternion.Identity;
 
@@ -145,6 +366,12 @@ internal sealed class Renderer : IDisposable
         var loaded = TableModel.Load(_gl, _modelPath(spec));
         _table?.Dispose();
         _table = loaded;
+        Span<float> lamps = stackalloc float[12];
+        Lamps(spec, lamps);
+        _room?.Dispose();
+        _room = TableModel.FromBuilders(_gl, "room",
+            [Room.Walls(spec), Room.CeilingMesh(spec), Room.Shades(lamps), Room.Bulbs(lamps)],
+            refine: [true, true, false, false]);
         _tableSpec = spec;
     }
 
@@ -163,6 +390,7 @@ internal sealed class Renderer : IDisposable
         _gl.TexParameter(Gl.Texture2D, Gl.TextureMagFilter, Gl.Linear);
         _gl.TexParameter(Gl.Texture2D, Gl.TextureWrapS, Gl.Repeat);
         _gl.TexParameter(Gl.Texture2D, Gl.TextureWrapT, Gl.ClampToEdge);
+        DetailTextures.Anisotropic(_gl);
         _ballTextures[id.Value] = texture;
         return texture;
     }
@@ -170,7 +398,12 @@ internal sealed class Renderer : IDisposable
     public void Dispose()
     {
         _table?.Dispose();
-        _sphere.Dispose();
+        _room?.Dispose();
+        _details.Dispose();
+        foreach (var (_, mesh) in _spheres)
+        {
+            mesh.Dispose();
+        }
         _cue.Dispose();
         foreach (uint texture in _ballTextures.Values)
         {
@@ -179,6 +412,12 @@ internal sealed class Renderer : IDisposable
         _lines.Dispose();
         _shadows.Dispose();
         _hud.Dispose();
+        _tableLayer.Dispose();
+        _sceneLayer.Dispose();
+        if (_reduced.Framebuffer != 0)
+        {
+            _reduced.Delete(_gl);
+        }
         _gl.DeleteProgram(_lit.Program);
         _gl.DeleteProgram(_gouraud.Program);
     }
@@ -199,6 +438,10 @@ internal sealed class Renderer : IDisposable
         private readonly int _texture = gl.GetUniformLocation(program, "uTexture");
         private readonly int _ambient = gl.GetUniformLocation(program, "uAmbient");
         private readonly int _exposure = gl.GetUniformLocation(program, "uExposure");
+        private readonly int _detail = gl.GetUniformLocation(program, "uDetail");
+        private readonly int _detailRepeat = gl.GetUniformLocation(program, "uDetailRepeat");
+        private readonly int _half = gl.GetUniformLocation(program, "uHalf");
+        private readonly int _emissive = gl.GetUniformLocation(program, "uEmissive");
 
         public uint Program { get; } = program;
 
@@ -221,6 +464,19 @@ internal sealed class Renderer : IDisposable
             gl.Uniform1(_shininess, shininess);
             gl.Uniform1(_reflect, reflect);
         }
+
+        /// <summary>The detail texture's mapping (0 none) and the metres one repeat covers.</summary>
+        public void Detail(int mapping, float repeat)
+        {
+            gl.Uniform1(_detail, mapping);
+            gl.Uniform1(_detailRepeat, 1 / repeat);
+        }
+
+        /// <summary>Half the bed's length and width (m): where the rails along x give way to those along y.</summary>
+        public void Half(float x, float y) => gl.Uniform2(_half, x, y);
+
+        /// <summary>Light the surface gives off itself (tone-mapped colour; zero for none).</summary>
+        public void Emissive(Vector3 color) => gl.Uniform3(_emissive, color.X, color.Y, color.Z);
 
         public void Draw(Matrix4x4 model, uint texture, GpuMesh mesh)
         {

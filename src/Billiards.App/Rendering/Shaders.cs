@@ -100,21 +100,42 @@ internal static class Shaders
         in vec3 aColor;
         uniform mat4 uModel;
         uniform mat4 uViewProj;
+        uniform vec3 uEmissive;
         out vec4 vShaded;
+        out vec3 vWorld;
         """ + Shade + """
         void main() {
             vec4 world = uModel * vec4(aPosition, 1.0);
             vec4 base = uBaseColor * vec4(aColor, 1.0);
-            vShaded = vec4(shade(world.xyz, mat3(uModel) * aNormal, base.rgb), base.a);
+            vShaded = uEmissive.r > 0.0 ? vec4(uEmissive, 1.0) : vec4(shade(world.xyz, mat3(uModel) * aNormal, base.rgb), base.a);
+            vWorld = world.xyz;
             gl_Position = uViewProj * world;
         }
         """;
 
+    // The lit colour times a detail texture (cloth weave, wood grain, floor boards; a byte holds
+    // half the factor). Mapping 1 lays it across the bed's plane; 2 runs it along the rail the
+    // point belongs to (x on the long rails, y on the short ones), with height for the sides.
     public const string GouraudFragment = """
         #version 330 core
         in vec4 vShaded;
+        in vec3 vWorld;
+        uniform int uDetail;
+        uniform float uDetailRepeat;
+        uniform vec2 uHalf;
+        uniform sampler2D uTexture;
         out vec4 fragColor;
-        void main() { fragColor = vShaded; }
+        void main() {
+            float m = 1.0;
+            if (uDetail == 1) {
+                m = 2.0 * texture(uTexture, vWorld.xy * uDetailRepeat).r;
+            } else if (uDetail == 2) {
+                bool alongX = abs(vWorld.y) - uHalf.y > abs(vWorld.x) - uHalf.x;
+                vec2 a = alongX ? vWorld.xy : vWorld.yx;
+                m = 2.0 * texture(uTexture, vec2(a.x, a.y + vWorld.z) * uDetailRepeat).r;
+            }
+            fragColor = vec4(vShaded.rgb * m, vShaded.a);
+        }
         """;
 
     // A ball's shadow on the bed: a quad around the ball at bed height, multiplied into the frame.

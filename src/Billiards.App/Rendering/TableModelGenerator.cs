@@ -40,7 +40,7 @@ public static class TableModelGenerator
         public static readonly MeshMaterial Rail = new("rail", new(0.36f, 0.16f, 0.07f), new(0.12f, 0.1f, 0.09f), 120);
         public static readonly MeshMaterial Frame = new("frame", new(0.26f, 0.11f, 0.045f), new(0.1f, 0.09f, 0.08f), 80);
         public static readonly MeshMaterial Sight = new("sight", new(0.95f, 0.93f, 0.86f), new(0.6f, 0.6f, 0.6f), 80);
-        public static readonly MeshMaterial Pocket = new("pocket", new(0.025f, 0.025f, 0.025f), new(0.05f, 0.05f, 0.05f), 10);
+        public static readonly MeshMaterial Pocket = new("pocket", new(0.16f, 0.09f, 0.05f), new(0.12f, 0.1f, 0.08f), 30);
         public static readonly MeshMaterial Trim = new("trim", new(0.06f, 0.05f, 0.045f), new(0.3f, 0.3f, 0.3f), 40);
         public static readonly MeshMaterial Floor = new("floor", new(0.24f, 0.17f, 0.12f), new(0.06f, 0.06f, 0.06f), 12);
     }

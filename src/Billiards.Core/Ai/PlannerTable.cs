@@ -136,26 +136,87 @@ public sealed class PlannerTable
 
     /// <summary>
     /// The best direct shot the player at the table has in <paramref name="state"/>: the largest
-    /// <see cref="DirectEase"/> over legal targets and pockets, 0 without a cue ball. This is the
-    /// one-shot look-ahead of the search.
+    /// <see cref="DirectEase"/> over legal targets and pockets, 0 without a cue ball.
     /// </summary>
-    public double BestEase(TablePosition position, GameState state)
+    public double BestEase(TablePosition position, GameState state, double aimStdDeg = ReferenceAimStdDeg) =>
+        Shots(position, state, aimStdDeg).Best;
+
+    /// <summary>
+    /// How good <paramref name="position"/> is for the player at the table in <paramref name="state"/>
+    /// whose aim error is <paramref name="aimStdDeg"/>: the one-shot look-ahead of the search.
+    /// The run ahead: mostly the best next shot's <see cref="DirectEase"/> b, and a little the best
+    /// shot on another ball s, 0.85 b + 0.15 s, so that of two leaves with the same next shot the one
+    /// whose next-but-one choice is easier wins (a run goes on when the first way is missed in
+    /// position). With one legal ball (9-ball, or the last of a group) it is b.
+    /// </summary>
+    public double PositionQuality(TablePosition position, GameState state, double aimStdDeg)
+    {
+        var (best, second) = Shots(position, state, aimStdDeg);
+        return LegalTargets(state, position).Count > 1 ? 0.85 * best + 0.15 * second : best;
+    }
+
+    /// <summary>
+    /// The balls the player at the table must still pot (the legal targets, and in 8-ball the 8)
+    /// that no pocket can take straight from where they lie: every way to a pocket is blocked or
+    /// outside its window. Each needs a bank, a combination or a break-out to clear the table.
+    /// </summary>
+    public int ProblemBalls(TablePosition position, GameState state)
+    {
+        ArgumentNullException.ThrowIfNull(position);
+        ArgumentNullException.ThrowIfNull(state);
+        var balls = LegalTargets(state, position).ToList();
+        var eight = new BallId(8);
+        if (state.Rules == GameRules.EightBall && !balls.Contains(eight) && position.IndexOf(eight) >= 0)
+        {
+            balls.Add(eight);
+        }
+        int problems = 0;
+        foreach (var ball in balls)
+        {
+            var o = position.Positions[position.IndexOf(ball)];
+            bool open = false;
+            foreach (var pocket in Pockets)
+            {
+                var aim = AimPoint(pocket);
+                if (Window(pocket, (aim - o).XY.Normalized()) > 0 && !Blocked(position, o, aim, ball))
+                {
+                    open = true;
+                    break;
+                }
+            }
+            problems += open ? 0 : 1;
+        }
+        return problems;
+    }
+
+    // The best direct ease, and the best on a ball other than the best's.
+    private (double Best, double Second) Shots(TablePosition position, GameState state, double aimStdDeg)
     {
         ArgumentNullException.ThrowIfNull(position);
         ArgumentNullException.ThrowIfNull(state);
         if (position.Cue is not { } cue)
         {
-            return 0;
+            return (0, 0);
         }
-        double best = 0;
+        double best = 0, second = 0;
         foreach (var target in LegalTargets(state, position))
         {
+            double ball = 0;
             foreach (var pocket in Pockets)
             {
-                best = Math.Max(best, DirectEase(position, cue, target, pocket));
+                ball = Math.Max(ball, DirectEase(position, cue, target, pocket, aimStdDeg));
+            }
+            if (ball > best)
+            {
+                second = best;
+                best = ball;
+            }
+            else if (ball > second)
+            {
+                second = ball;
             }
         }
-        return best;
+        return (best, second);
     }
 
     /// <summary>

@@ -15,7 +15,8 @@ namespace Billiards.Core.Ai;
 /// <param name="RunOuts">Games won by the player's own last shot in a visit that started after the opponent had been at the table (the visit cleared what was left).</param>
 /// <param name="DecisionMedianMs">Median decision time (ms).</param>
 /// <param name="DecisionP95Ms">95th percentile of the decision time (ms).</param>
-public sealed record PlayerStats(int Level, int GamesWon, int Shots, int PotAttempts, int Pots, int Fouls, int Breaks, int PottingBreaks, int BreakAndRuns, int RunOuts, double DecisionMedianMs, double DecisionP95Ms);
+/// <param name="ExpectedPotRate">The planner's mean expected pot probability over the attempted pots (against <see cref="Pots"/> / <see cref="PotAttempts"/> it shows how far the search's estimate is from what happened).</param>
+public sealed record PlayerStats(int Level, int GamesWon, int Shots, int PotAttempts, int Pots, int Fouls, int Breaks, int PottingBreaks, int BreakAndRuns, int RunOuts, double DecisionMedianMs, double DecisionP95Ms, double ExpectedPotRate);
 
 /// <summary>Sums up self-play games per player.</summary>
 public static class SelfPlayStats
@@ -26,6 +27,7 @@ public static class SelfPlayStats
         ArgumentNullException.ThrowIfNull(games);
         int won = 0, shots = 0, attempts = 0, pots = 0, fouls = 0, breaks = 0, pottingBreaks = 0, bnr = 0, runOuts = 0;
         var times = new List<double>();
+        double expected = 0;
         int level = games.Count > 0 ? games[0].Levels[player] : 0;
         foreach (var game in games)
         {
@@ -44,6 +46,7 @@ public static class SelfPlayStats
                 {
                     attempts++;
                     pots += s.Made ? 1 : 0;
+                    expected += s.ExpectedPot;
                 }
             }
             // Only wins the player pocketed count: a win by the opponent's loss of game is neither.
@@ -60,7 +63,7 @@ public static class SelfPlayStats
             }
         }
         times.Sort();
-        return new PlayerStats(level, won, shots, attempts, pots, fouls, breaks, pottingBreaks, bnr, runOuts, Percentile(times, 0.5), Percentile(times, 0.95));
+        return new PlayerStats(level, won, shots, attempts, pots, fouls, breaks, pottingBreaks, bnr, runOuts, Percentile(times, 0.5), Percentile(times, 0.95), attempts > 0 ? expected / attempts : 0);
     }
 
     /// <summary>The <paramref name="q"/> quantile of sorted values (nearest rank), 0 for none.</summary>

@@ -5,6 +5,7 @@ using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Physics.Standard;
 using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
 using Billiards.Core.Table;
 
 namespace Billiards.Core.Ai;
@@ -23,13 +24,17 @@ namespace Billiards.Core.Ai;
 /// combination, carom) ranked by their geometric ease, plus safeties.</item>
 /// <item>Variations: each candidate at several speeds and spins (follow, stun, draw, side with the
 /// squirt corrected, an elevated draw), its aim corrected for collision-induced throw.</item>
-/// <item>Simulation: each variation from its root's position, with the standard model's event
-/// integrator, several times with the player's own error (<see cref="SkillLevel"/>); the referee
-/// judges each result and a score says how good it is for the shooter: a won game 1, a lost game
-/// 0, staying at the table 0.6 plus 0.4 times the ease of the best next shot, a legal miss 0.45
-/// less 0.35 times the opponent's best shot (how safeties are judged), a foul 0.12.</item>
-/// <item>Refinement: the best variations are simulated again with more error samples; the best
-/// mean wins.</item>
+/// <item>Simulation: each variation from a snapshot of its root's position (taken once, restored
+/// before every shot), with the standard model's event integrator, several times with the player's
+/// own error (<see cref="SkillLevel"/>); the referee judges each result and a score says how good
+/// it is for the shooter: a won game 1, a lost game 0, staying at the table 0.7 plus 0.3 times the
+/// quality of the position for the next shot (<see cref="PlannerTable.PositionQuality"/>, with the
+/// shooter's own error) less 0.04 per ball left without a straight way to a pocket
+/// (<see cref="PlannerTable.ProblemBalls"/>), a legal miss 0.5 less 0.4 times the opponent's best shot (how
+/// safeties are judged), a foul 0.08.</item>
+/// <item>Refinement: the best variations are simulated again with more error samples, at level 5
+/// in two rounds (the best 40 with 10 more, the best 10 of those with 60 more); the best mean of
+/// the last round wins.</item>
 /// </list>
 /// Determinism: every simulation draws its error from its own stream, derived from the seed and
 /// the variation's and sample's indices, and results are reduced in index order, so the threads
@@ -40,17 +45,29 @@ public sealed class ShotPlanner
     private const double MaxShotTime = 120;
     private const double MaxNormalSpeed = 6.5;
 
-    private static readonly double[] SpeedFactors = [1.0, 1.5, 2.3, 0.75, 3.2];
+    // A level takes the first of these (sorted before use): the strongest players also try the
+    // speeds in between.
+    private static readonly double[] SpeedFactors = [1.0, 1.5, 2.3, 0.75, 3.2, 1.2, 1.85];
 
-    // (side, height, elevation deg): stun, follow, draw, side either way, elevated draw.
+    // (side, height, elevation deg): stun, follow, draw, side either way, elevated draw; then
+    // half follow, half draw and side with draw either way.
     private static readonly (double Side, double Height, double Elevation)[] SpinSet =
-        [(0, 0, 0), (0, 0.4, 0), (0, -0.45, 0), (0.3, 0.1, 0), (-0.3, 0.1, 0), (0, -0.5, 8)];
+        [(0, 0, 0), (0, 0.4, 0), (0, -0.45, 0), (0.3, 0.1, 0), (-0.3, 0.1, 0), (0, -0.5, 8),
+         (0, 0.2, 0), (0, -0.25, 0), (0.3, -0.3, 0), (-0.3, -0.3, 0)];
 
     /// <summary>A planner for games on <paramref name="table"/> with balls of <paramref name="physics"/> (simulated with the standard model).</summary>
     public ShotPlanner(TableSpec table, PhysicsParams physics)
     {
         Table = new PlannerTable(table, physics);
+        PhysicsConfig = TablePosition.PlannerPhysics(physics);
+        Model = new StandardTableModel(table, PhysicsConfig);
     }
+
+    /// <summary>The physics the planner simulates with (the standard model's event integrator).</summary>
+    public PhysicsConfig PhysicsConfig { get; }
+
+    // Built once: every search simulation shares its geometry, and snapshots move between them.
+    private StandardTableModel Model { get; }
 
     /// <summary>The planner's view of the table.</summary>
     public PlannerTable Table { get; }
@@ -107,12 +124,17 @@ public sealed class ShotPlanner
 
     /// <summary>
     /// The score of a judged shot for the player who shot it (see the class remarks), with the
-    /// balls after it in <paramref name="after"/>.
+    /// balls after it in <paramref name="after"/>, as <paramref name="level"/> judges it: levels
+    /// without look-ahead see only the ruling; the others also the next shot, their own judged with
+    /// their own error (<see cref="SkillLevel.PositionAimStdDeg"/>), the opponent's with the
+    /// reference error.
     /// </summary>
-    public double Score(GameState before, Ruling ruling, TablePosition after, int lookAhead)
+    public double Score(GameState before, Ruling ruling, TablePosition after, SkillLevel level)
     {
         ArgumentNullException.ThrowIfNull(before);
         ArgumentNullException.ThrowIfNull(ruling);
+        ArgumentNullException.ThrowIfNull(level);
+        bool look = level.LookAhead > 0;
         if (ruling.GameOver)
         {
             return ruling.Winner is not { } w ? 0.5 : w == before.Shooter ? 1 : 0;
@@ -124,20 +146,24 @@ public sealed class ShotPlanner
                 return 0.1;
             }
             // The opponent shoots a good leave and hands back a bad one: leave one in between.
-            double q = lookAhead > 0 ? Table.BestEase(after, ruling.Next) : 0.5;
+            double q = look ? Table.BestEase(after, ruling.Next) : 0.5;
             return 0.4 - 0.3 * Math.Abs(2 * q - 1);
         }
         if (ruling.Continue)
         {
-            double q = lookAhead > 0 ? Table.BestEase(after, ruling.Next) : 0.5;
-            return 0.6 + 0.4 * q;
+            // Position counts, but less than the pot: for a strong player a moderate next shot is
+            // still likely, and the pot in hand is certain. Each ball left without a straight way
+            // to a pocket costs a little, so that shots which free a cluster are preferred.
+            double q = look ? Table.PositionQuality(after, ruling.Next, level.PositionAimStdDeg) : 0.5;
+            double problems = look ? 0.04 * Table.ProblemBalls(after, ruling.Next) : 0;
+            return 0.7 + 0.3 * q - problems;
         }
         if (!ruling.Legal)
         {
-            return 0.12;
+            return 0.08;
         }
-        double opponent = lookAhead > 0 ? Table.BestEase(after, ruling.Next) : 0.5;
-        return 0.45 - 0.35 * opponent;
+        double opponent = look ? Table.BestEase(after, ruling.Next) : 0.5;
+        return 0.5 - 0.4 * opponent;
     }
 
     /// <summary>True when the game asks for a call on this shot (8-ball, 10-ball and 14.1 after the break).</summary>
@@ -191,25 +217,30 @@ public sealed class ShotPlanner
         return aim;
     }
 
-    private sealed record Root(TablePosition Position, Vec3 Cue, Vec3? Place);
+    private sealed record Root(TablePosition Position, Vec3 Cue, Vec3? Place)
+    {
+        // The position at rest, captured once; every worker restores it before each shot.
+        public SimulationSnapshot? Snapshot { get; set; }
+    }
 
     private sealed record Variation(int Root, Candidate Candidate, ShotSpec Shot, GameState Before);
 
     private sealed class Worker(ShotPlanner planner, IReadOnlyList<Root> roots)
     {
-        private readonly StandardSimulation?[] _sims = new StandardSimulation?[roots.Count];
+        private readonly Simulation?[] _sims = new Simulation?[roots.Count];
         private readonly ShotRecord _record = new();
 
-        public (double Score, bool Pot, Ruling Ruling) Run(Variation v, ShotSpec shot, IReferee referee, int lookAhead)
+        public (double Score, bool Pot, Ruling Ruling) Run(Variation v, ShotSpec shot, IReferee referee, SkillLevel level)
         {
-            var sim = _sims[v.Root] ??= roots[v.Root].Position.CreateSimulation(planner.Table.Table, planner.Table.Physics);
-            sim.Reset();
+            var root = roots[v.Root];
+            var sim = _sims[v.Root] ??= root.Position.CreateSimulation(planner.Model);
+            sim.Restore(root.Snapshot!);
             sim.Strike(shot);
             sim.AdvanceTo(MaxShotTime);
             _record.Capture(sim, 0, shot);
             var ruling = referee.Judge(v.Before, _record);
             var after = TablePosition.After(_record);
-            double score = planner.Score(v.Before, ruling, after, lookAhead);
+            double score = planner.Score(v.Before, ruling, after, level);
             bool pot = ruling.GameOver ? ruling.Winner == v.Before.Shooter : ruling.Continue;
             return (score, pot, ruling);
         }
@@ -224,6 +255,10 @@ public sealed class ShotPlanner
         public Decision Run()
         {
             var roots = Roots();
+            foreach (var r in roots)
+            {
+                r.Snapshot = r.Position.CreateSimulation(planner.Model).CreateSnapshot();
+            }
             var variations = new List<Variation>();
             int perRoot = roots.Count > 1 ? Math.Max(3, level.Candidates / 2) : level.Candidates;
             for (int i = 0; i < roots.Count; i++)
@@ -237,26 +272,32 @@ public sealed class ShotPlanner
                 workers[w] = new Worker(planner, roots);
             }
 
-            // Round 1: every variation with a few error samples.
+            // Round 1: every variation with a few error samples; then the best again with more,
+            // and the best of those with many more: the winner comes from the last round, so its
+            // mean rests on enough samples that a lucky few do not decide.
             var sum = new double[variations.Count];
             var pots = new int[variations.Count];
             var count = new int[variations.Count];
-            Simulate(workers, variations, Enumerable.Range(0, variations.Count), 0, level.Samples, sum, pots, count);
-
-            // Round 2: the best again with more samples; the winner must come from these.
-            var order = Enumerable.Range(0, variations.Count).Where(i => count[i] > 0)
-                .OrderByDescending(i => sum[i] / count[i]).ThenBy(i => i).ToList();
-            var finalists = order.Take(Math.Max(1, level.RefineTop)).ToList();
+            int first = Math.Clamp(level.FirstRoundSimulations / Math.Max(1, variations.Count), 1, level.Samples);
+            Simulate(workers, variations, Enumerable.Range(0, variations.Count), 0, first, sum, pots, count);
+            int samples = first;
+            var field = Ranked(variations.Count, sum, count);
+            if (level.ScreenTop > 0 && level.ScreenSamples > 0)
+            {
+                field = field.Take(level.ScreenTop).ToList();
+                Simulate(workers, variations, field, samples, level.ScreenSamples, sum, pots, count);
+                samples += level.ScreenSamples;
+                field = Ranked(field, sum, count);
+            }
+            var finalists = field.Take(Math.Max(1, level.RefineTop)).ToList();
             if (level.RefineSamples > 0)
             {
-                Simulate(workers, variations, finalists, level.Samples, level.RefineSamples, sum, pots, count);
+                Simulate(workers, variations, finalists, samples, level.RefineSamples, sum, pots, count);
             }
-            int best = finalists.Count > 0
-                ? finalists.OrderByDescending(i => sum[i] / count[i]).ThenBy(i => i).First()
-                : 0;
+            int best = finalists.Count > 0 ? Ranked(finalists, sum, count)[0] : 0;
             var chosen = variations[best];
             var root = roots[chosen.Root];
-            var expected = workers[0].Run(chosen, chosen.Shot, _referee, level.LookAhead).Ruling;
+            var expected = workers[0].Run(chosen, chosen.Shot, _referee, level).Ruling;
             _simulations++;
             var c = chosen.Candidate;
             return new Decision(
@@ -275,6 +316,12 @@ public sealed class ShotPlanner
                 ExpectedRuling = expected,
             };
         }
+
+        // Best mean first, ties by index (so the order never depends on the threads).
+        private static List<int> Ranked(IEnumerable<int> which, double[] sum, int[] count) =>
+            [.. which.Where(i => count[i] > 0).OrderByDescending(i => sum[i] / count[i]).ThenBy(i => i)];
+
+        private static List<int> Ranked(int n, double[] sum, int[] count) => Ranked(Enumerable.Range(0, n), sum, count);
 
         private void Simulate(Worker[] workers, List<Variation> variations, IEnumerable<int> which, int firstSample, int samples, double[] sum, int[] pots, int[] count)
         {
@@ -296,7 +343,7 @@ public sealed class ShotPlanner
                     var (v, s) = items[i];
                     var random = new PlannerRandom(PlannerRandom.Derive(seed, v, s));
                     var shot = level.Execute(variations[v].Shot, random);
-                    var (score, pot, _) = workers[w].Run(variations[v], shot, _referee, level.LookAhead);
+                    var (score, pot, _) = workers[w].Run(variations[v], shot, _referee, level);
                     scores[i] = score;
                     made[i] = pot;
                     done[i] = true;

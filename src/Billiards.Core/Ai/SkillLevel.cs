@@ -31,10 +31,16 @@ namespace Billiards.Core.Ai;
 /// <param name="Speeds">Speeds tried per candidate.</param>
 /// <param name="Spins">Spin and elevation variants tried per candidate (1: centre ball only).</param>
 /// <param name="Samples">Simulations per variant in the first round, each with its own error sample.</param>
-/// <param name="RefineTop">Variants simulated again in the second round.</param>
-/// <param name="RefineSamples">Extra simulations per refined variant.</param>
+/// <param name="RefineTop">Variants simulated again in the last round, from which the shot is chosen.</param>
+/// <param name="RefineSamples">Extra simulations per variant of the last round.</param>
 /// <param name="LookAhead">0: judge a shot by its ruling only; 1: also by the next shot it leaves.</param>
 /// <param name="Placements">Cue-ball placements searched with ball in hand.</param>
+/// <param name="ScreenTop">Variants simulated again in a middle round between the first and the last (0: none).</param>
+/// <param name="ScreenSamples">Extra simulations per variant of the middle round.</param>
+/// <param name="FirstRoundSimulations">
+/// Cap on the first round's simulations: with many variations (ball in hand searches several
+/// placements) each gets fewer samples, at least one, and the later rounds sort them out.
+/// </param>
 public sealed record SkillLevel(
     int Level,
     double AimStdDeg,
@@ -47,8 +53,18 @@ public sealed record SkillLevel(
     int RefineTop,
     int RefineSamples,
     int LookAhead,
-    int Placements)
+    int Placements,
+    int ScreenTop = 0,
+    int ScreenSamples = 0,
+    int FirstRoundSimulations = 1500)
 {
+    /// <summary>
+    /// The aim error (deg) a position is judged with when this player will shoot the next shot: the
+    /// player's own aim error widened 2.5 times for the errors of speed and spin the look-ahead
+    /// does not model, so that a strong player still prefers the easier of two shots it would make.
+    /// </summary>
+    public double PositionAimStdDeg => 2.5 * AimStdDeg;
+
     /// <summary>The lowest level.</summary>
     public const int Min = 1;
 
@@ -64,7 +80,7 @@ public sealed record SkillLevel(
         new(2, 0.55, 0.08, 0.07, Candidates: 6, Speeds: 3, Spins: 1, Samples: 2, RefineTop: 3, RefineSamples: 4, LookAhead: 0, Placements: 3),
         new(3, 0.30, 0.05, 0.05, Candidates: 8, Speeds: 3, Spins: 3, Samples: 2, RefineTop: 6, RefineSamples: 8, LookAhead: 1, Placements: 4),
         new(4, 0.16, 0.035, 0.03, Candidates: 10, Speeds: 4, Spins: 4, Samples: 3, RefineTop: 8, RefineSamples: 12, LookAhead: 1, Placements: 5),
-        new(5, 0.08, 0.02, 0.015, Candidates: 12, Speeds: 5, Spins: 6, Samples: 3, RefineTop: 10, RefineSamples: 20, LookAhead: 1, Placements: 6),
+        new(5, 0.08, 0.02, 0.015, Candidates: 16, Speeds: 7, Spins: 10, Samples: 3, RefineTop: 10, RefineSamples: 60, LookAhead: 1, Placements: 6, ScreenTop: 40, ScreenSamples: 10, FirstRoundSimulations: 4000),
     ];
 
     /// <summary>The level <paramref name="level"/> (1 to 5).</summary>

@@ -96,31 +96,6 @@ public sealed class TablePosition
     public TablePosition Without(BallId id) => new(Enumerate().Where(b => b.Id != id));
 
     /// <summary>
-    /// This position with <paramref name="balls"/> put back on the foot spot (rules.md: on it, or as
-    /// close behind it on the long axis as it fits), lowest number first.
-    /// </summary>
-    public TablePosition Spotted(IEnumerable<BallId> balls, TableSpec table, double radius)
-    {
-        ArgumentNullException.ThrowIfNull(balls);
-        var position = this;
-        foreach (var id in balls.OrderBy(b => b.Value))
-        {
-            var spot = Initializer.FootSpot(table, radius);
-            var p = spot;
-            for (double dx = 0; dx < table.HalfLength; dx += radius / 8)
-            {
-                p = spot with { X = spot.X + dx };
-                if (p.X <= table.HalfLength - radius && position.IsFree(p, radius, id))
-                {
-                    break;
-                }
-            }
-            position = position.With(id, p);
-        }
-        return position;
-    }
-
-    /// <summary>
     /// True when a ball of radius <paramref name="radius"/> at <paramref name="p"/> lies on the bed
     /// inside the region and touches no ball but <paramref name="ignore"/>.
     /// </summary>
@@ -143,11 +118,27 @@ public sealed class TablePosition
     /// A simulation of this position with the standard model's event integrator (the fastest),
     /// the planner's way to try shots: <see cref="Simulation.Reset"/> brings it back here.
     /// </summary>
-    public StandardSimulation CreateSimulation(TableSpec table, PhysicsParams physics)
+    public StandardSimulation CreateSimulation(TableSpec table, PhysicsParams physics) =>
+        new(Scene(table, PlannerPhysics(physics)));
+
+    /// <summary>
+    /// A simulation of this position on a shared table model (no geometry is built): its
+    /// snapshots restore into every other simulation of the same model and balls.
+    /// </summary>
+    public Simulation CreateSimulation(TableModel model)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        return model.CreateSimulation(Scene(model.Table, model.Physics));
+    }
+
+    /// <summary>The physics the planner simulates with: the standard model's event integrator and <paramref name="physics"/>.</summary>
+    public static PhysicsConfig PlannerPhysics(PhysicsParams physics) =>
+        new(ModelRegistry.Standard, Integrators.Event, PhysicsConfig.DefaultDt, physics);
+
+    private Scene Scene(TableSpec table, PhysicsConfig physics)
     {
         var balls = Enumerate().Select(b => new BallSetup(b.Id, b.Position, Vec3.Zero, Vec3.Zero)).ToList();
-        var scene = new Scene("planner", null, table, new PhysicsConfig(ModelRegistry.Standard, Integrators.Event, PhysicsConfig.DefaultDt, physics), null, balls, null, null);
-        return new StandardSimulation(scene);
+        return new Scene("planner", null, table, physics, null, balls, null, null);
     }
 
     /// <summary>The balls as (id, centre) pairs.</summary>

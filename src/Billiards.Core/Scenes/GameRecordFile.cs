@@ -61,17 +61,7 @@ public static class GameRecordFile
             w.WriteStartObject();
             w.WritePropertyName("game");
             GameBlockWriter.WriteGame(w, played.Before);
-            if (input.Place is { } p)
-            {
-                w.WriteStartArray("place");
-                w.WriteNumberValue(p.X);
-                w.WriteNumberValue(p.Y);
-                w.WriteEndArray();
-            }
-            else
-            {
-                w.WriteNull("place");
-            }
+            WritePlace(w, "place", input.Place);
             if (input.Call is { } call)
             {
                 GameBlockWriter.WriteCall(w, "call", call);
@@ -80,15 +70,7 @@ public static class GameRecordFile
             {
                 w.WriteNull("call");
             }
-            w.WriteStartObject("shot");
-            w.WriteNumber("speed", input.Shot.Speed);
-            w.WriteNumber("aim_deg", input.Shot.AimDeg);
-            w.WriteStartArray("tip");
-            w.WriteNumberValue(input.Shot.TipSide);
-            w.WriteNumberValue(input.Shot.TipHeight);
-            w.WriteEndArray();
-            w.WriteNumber("elevation_deg", input.Shot.ElevationDeg);
-            w.WriteEndObject();
+            WriteShot(w, "shot", input.Shot);
             if (input.Choice is { } choice)
             {
                 w.WriteString("choice", choice.ToName());
@@ -102,6 +84,37 @@ public static class GameRecordFile
             w.WriteEndObject();
         }
         w.WriteEndArray();
+        w.WriteEndObject();
+    }
+
+    /// <summary>A cue-ball placement as records write it: [x, y] (m), or null.</summary>
+    public static void WritePlace(Utf8JsonWriter w, string name, Vec3? place)
+    {
+        ArgumentNullException.ThrowIfNull(w);
+        if (place is not { } p)
+        {
+            w.WriteNull(name);
+            return;
+        }
+        w.WriteStartArray(name);
+        w.WriteNumberValue(p.X);
+        w.WriteNumberValue(p.Y);
+        w.WriteEndArray();
+    }
+
+    /// <summary>A shot as scenes and records write it: speed (m/s), aim (deg), tip (fractions of R), elevation (deg).</summary>
+    public static void WriteShot(Utf8JsonWriter w, string name, ShotSpec shot)
+    {
+        ArgumentNullException.ThrowIfNull(w);
+        ArgumentNullException.ThrowIfNull(shot);
+        w.WriteStartObject(name);
+        w.WriteNumber("speed", shot.Speed);
+        w.WriteNumber("aim_deg", shot.AimDeg);
+        w.WriteStartArray("tip");
+        w.WriteNumberValue(shot.TipSide);
+        w.WriteNumberValue(shot.TipHeight);
+        w.WriteEndArray();
+        w.WriteNumber("elevation_deg", shot.ElevationDeg);
         w.WriteEndObject();
     }
 

@@ -108,6 +108,10 @@ public sealed class AiCommandTests : IDisposable
             var shots = game.RootElement.GetProperty("shots");
             Assert.True(shots.GetArrayLength() > 0);
             Assert.Equal(0, shots[0].GetProperty("game").GetProperty("shot").GetInt32());
+            // The record is the Core's, and its shots reproduce every ruling.
+            var record = GameRecordFile.Parse(line, output);
+            Assert.Equal(shots.GetArrayLength(), record.Shots.Count);
+            Assert.Equal(-1, GameRecordFile.Replay(record, out _));
         }
     }
 
@@ -115,7 +119,7 @@ public sealed class AiCommandTests : IDisposable
     [InlineData("--levels", "5", "--levels 5")]
     [InlineData("--levels", "5,9", "--levels 5,9")]
     [InlineData("--rules", "snooker", "--rules snooker")]
-    [InlineData("--rules", "straight-pool", "--rules straight-pool")]
+    [InlineData("--target", "0", "--target 0")]
     [InlineData("--games", "0", "--games 0")]
     public void SelfplayRefusesABadArgumentInOneLine(string option, string value, string expected)
     {

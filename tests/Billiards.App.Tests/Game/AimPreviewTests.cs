@@ -59,7 +59,7 @@ public class AimPreviewTests
     }
 
     [Theory]
-    [InlineData("robot")]
+    [InlineData("cpu:9")]
     [InlineData("computer:0")]
     [InlineData("computer:6")]
     [InlineData("computer:")]

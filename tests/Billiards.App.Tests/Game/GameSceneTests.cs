@@ -142,11 +142,11 @@ public class SystemKeysAndHudTests
     }
 
     [Fact]
-    public void G_toggles_the_collision_geometry()
+    public void F3_toggles_the_collision_geometry()
     {
         using var game = new TestGame();
         Assert.False(game.Frame().ShowCollisionGeometry);
-        game.Window.Press(Key.G);
+        game.Window.Press(Key.F3);
         var frame = game.Frame();
         Assert.True(frame.ShowCollisionGeometry);
         // The scene's model's real geometry, not a stand-in.

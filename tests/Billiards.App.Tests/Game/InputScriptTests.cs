@@ -40,11 +40,52 @@ public class InputScriptTests
     [InlineData("""{ "format": "billiards-input-script/1", "events": [ { "t": 1, "mouse_down": "thumb" } ] }""", "s.json: $.events[0].mouse_down: expected")]
     [InlineData("""{ "format": "billiards-input-script/1", "duration": 1, "events": [ { "t": 2, "wheel": 1 } ] }""", "s.json: $.duration: 1 s ends before")]
     [InlineData("""[1]""", "s.json: $: expected an object")]
+    [InlineData("""{ "format": "billiards-input-script/1", "events": [ { "t": 1, "wait": "keys" } ] }""", "s.json: $.events[0].wait: expected \"rest\"")]
+    [InlineData("""{ "format": "billiards-input-script/1", "speed": 0, "events": [] }""", "s.json: $.speed: expected a number above 0, at most 64")]
+    [InlineData("""{ "format": "billiards-input-script/1", "speed": 65, "events": [] }""", "s.json: $.speed: expected a number above 0, at most 64")]
     public void A_bad_script_names_the_file_the_path_and_the_problem(string json, string expected)
     {
         var e = Assert.Throws<CliException>(() => InputScript.Parse(json, "s.json"));
         Assert.StartsWith(expected, e.Message, StringComparison.Ordinal);
         Assert.DoesNotContain('\n', e.Message);
+    }
+
+    [Fact]
+    public void A_wait_holds_the_scripts_clock_until_the_game_rests_and_the_events_after_it_keep_their_spacing()
+    {
+        var script = InputScript.Parse("""
+            { "format": "billiards-input-script/1", "speed": 8, "duration": 1.5, "events": [
+              { "t": 0.1, "key_down": "Space" }, { "t": 0.2, "wait": "rest" }, { "t": 0.5, "key_down": "X" } ] }
+            """, "s.json");
+        Assert.Equal(8, script.Speed);
+        Assert.Equal("wait rest", script.Events[1].Describe());
+        var window = new FakeWindow();
+        var manual = new ManualClock { Now = 100 };
+        var clock = new ScriptClock(manual);
+        using var scripted = new ScriptedInput(window, script, clock);
+        bool rest = false;
+        scripted.IsAtRest = () => rest;
+        var seen = new List<(Key Key, double Time)>();
+        window.KeyDown += _ => { };
+        scripted.KeyDown += k => seen.Add((k, clock.Now));
+        scripted.Pump(100);
+        scripted.Pump(100.3);               // Space raised; the wait holds
+        Assert.Equal([Key.Space], seen.Select(s => s.Key));
+        scripted.Pump(105);                 // still rolling: nothing, and the script does not end
+        Assert.Single(seen);
+        Assert.False(scripted.Finished);
+        rest = true;
+        scripted.Pump(110);                 // at rest: the script's clock goes on from the wait's 0.2 s
+        Assert.Single(seen);
+        Assert.Equal(110 - 100 - 0.2, scripted.Waited, 9);
+        scripted.Pump(110.29);
+        Assert.Single(seen);
+        scripted.Pump(110.31);              // 0.3 s after the wait, as in the script
+        Assert.Equal(Key.X, seen[^1].Key);
+        Assert.Equal(110.3, seen[^1].Time, 9); // stamped with its own time, waits included
+        Assert.False(scripted.Finished);
+        scripted.Pump(111.31);
+        Assert.True(scripted.Finished);
     }
 
     [Fact]

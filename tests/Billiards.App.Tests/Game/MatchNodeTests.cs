@@ -82,3 +82,31 @@ public class MatchNodeTests
         Assert.Equal(PlacementRegion.Kitchen, game.Host.World.Physics.HandRegion);
     }
 }
+
+public class MatchPlayerTests
+{
+    [Theory]
+    [InlineData("human", 1, "Player 2", null)]
+    [InlineData("Anna", 0, "Anna", null)]
+    [InlineData(" Ben ", 1, "Ben", null)]
+    [InlineData("computer:3", 0, "Computer L3", 3)]
+    [InlineData("cpu:1", 1, "Computer L1", 1)]
+    [InlineData("CPU:5", 0, "Computer L5", 5)]
+    public void A_seat_is_a_person_by_name_or_the_computer_at_a_level(string text, int seat, string name, int? level)
+    {
+        var player = MatchPlayer.Parse(text, seat)!;
+        Assert.Equal(name, player.Name);
+        Assert.Equal(level, player.ComputerLevel);
+        Assert.Equal(level is null, player.IsHuman);
+    }
+
+    [Theory]
+    [InlineData("")]
+    [InlineData("   ")]
+    [InlineData("computer:0")]
+    [InlineData("computer:6")]
+    [InlineData("cpu:x")]
+    [InlineData("a name far longer than twenty-four characters")]
+    [InlineData("tab\there")]
+    public void Anything_else_is_refused(string text) => Assert.Null(MatchPlayer.Parse(text, 0));
+}

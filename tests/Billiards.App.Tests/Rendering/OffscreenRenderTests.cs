@@ -131,6 +131,76 @@ public class OffscreenRenderTests(GlFixture gl, ITestOutputHelper output)
         Assert.True(redLine, "no red collision edge");
     }
 
+    /// <summary>Green channel averaged over a square of pixels round a point on the bed.</summary>
+    private static double Green(byte[] pixels, Matrix4x4 vp, Vector3 onBed, int radius)
+    {
+        var at = RenderMath.ToPixel(vp, onBed, Width, Height)!.Value;
+        double sum = 0;
+        int n = 0;
+        for (int dy = -radius; dy <= radius; dy++)
+        {
+            for (int dx = -radius; dx <= radius; dx++)
+            {
+                sum += Pixel(pixels, (int)at.X + dx, (int)at.Y + dy).G;
+                n++;
+            }
+        }
+        return sum / n;
+    }
+
+    [Fact]
+    public void Render_TheClothIsTexturedNotOneFlatColour()
+    {
+        // The lamps' light varies smoothly over the bed (a few levels over hundreds of pixels); the
+        // cloth's weave and mottle change from one pixel to the next. Mean absolute difference of
+        // horizontal neighbours in a patch of open cloth, green channel.
+        var frame = KnownFrame();
+        frame.Balls.Clear();
+        frame.Eye = new Vector3(-0.6f, 0, 0.5f);
+        frame.Target = new Vector3(-0.2f, 0, 0);
+        byte[] pixels = gl.Renderer.Render(frame);
+        var centre = RenderMath.ToPixel(RenderMath.ViewProjection(frame), new Vector3(-0.25f, 0, 0), Width, Height)!.Value;
+        double differences = 0;
+        int n = 0;
+        var levels = new HashSet<int>();
+        for (int y = (int)centre.Y - 30; y < (int)centre.Y + 30; y++)
+        {
+            for (int x = (int)centre.X - 60; x < (int)centre.X + 60; x++)
+            {
+                var (r, g, b) = Pixel(pixels, x, y);
+                Assert.Equal(Hue.Green, Classify(r, g, b));
+                differences += Math.Abs(g - Pixel(pixels, x + 1, y).G);
+                levels.Add(g);
+                n++;
+            }
+        }
+        double mean = differences / n;
+        output.WriteLine($"cloth: mean neighbour difference {mean:F2} levels, {levels.Count} green levels");
+        Assert.True(mean > 0.8, $"the cloth is flat: neighbours differ by {mean:F2} levels on average");
+        Assert.True(levels.Count >= 12, $"the cloth has only {levels.Count} green levels");
+    }
+
+    [Fact]
+    public void Render_ABallCastsAShadowOnTheClothAwayFromTheLamps()
+    {
+        // A ball at y = 0.4 m: the lamps hang over the long axis (y = 0), so its shadow falls
+        // outwards, towards +y, and at its foot. Both are darker than open cloth at the same
+        // distance from the lamps on the other side of the long axis.
+        var frame = KnownFrame();
+        frame.Balls.Clear();
+        var ball = new Vector3(0.1f, 0.4f, frame.BallRadius);
+        frame.Balls.Add(new BallVisual(new BallId(2), ball, s_sideways));
+        frame.Eye = new Vector3(-1.2f, 0, 1.4f);
+        frame.Target = new Vector3(0.1f, 0.2f, 0);
+        var vp = RenderMath.ViewProjection(frame);
+        byte[] pixels = gl.Renderer.Render(frame);
+        float r = frame.BallRadius;
+        double open = Green(pixels, vp, new Vector3(ball.X, -ball.Y - (1.15f * r), 0), 1);
+        double outside = Green(pixels, vp, new Vector3(ball.X, ball.Y + (1.15f * r), 0), 1);
+        output.WriteLine($"open cloth {open:F1}, beside the ball away from the lamps {outside:F1}");
+        Assert.True(outside < 0.85 * open, $"no shadow beside the ball: {outside:F1} against {open:F1} on open cloth");
+    }
+
     private static (int R, int G, int B) Pixel(byte[] pixels, int x, int y)
     {
         int i = ((y * Width) + x) * 4;

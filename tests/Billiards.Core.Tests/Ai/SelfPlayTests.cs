@@ -2,6 +2,7 @@ using Billiards.Core.Ai;
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
 using static Billiards.Core.Tests.Ai.PlannerKit;
 
 namespace Billiards.Core.Tests.Ai;
@@ -47,17 +48,40 @@ public class SelfPlayTests
     }
 
     [Fact]
-    public void SpottedBallsGoOnTheFootSpotOrBehindIt()
+    public void TheGameRecordReplaysRulingForRuling()
     {
-        var spot = Billiards.Core.Setup.Initializer.FootSpot(Pool, Params.R);
-        var position = new TablePosition([(BallId.Cue, new Vec3(-0.5, 0, Params.R))]);
-        var one = position.Spotted([new BallId(9)], Pool, Params.R);
-        Assert.Equal(spot, one.Positions[one.IndexOf(new BallId(9))]);
+        var selfPlay = new SelfPlay(Pool, Params);
+        var game = selfPlay.Play(GameRules.EightBall, new PerPlayer<int>(3, 1), 1, 5, new PlannerBudget(600_000, 2));
 
-        var occupied = new TablePosition([(BallId.Cue, spot)]);
-        var behind = occupied.Spotted([new BallId(9)], Pool, Params.R);
-        var p = behind.Positions[behind.IndexOf(new BallId(9))];
-        Assert.Equal(0, p.Y);
-        Assert.InRange(p.X - spot.X, 2 * Params.R, 2 * Params.R + Params.R / 8 + 1e-12);
+        // The record is the game player's: the same shots, struck as executed, judged the same way.
+        Assert.Equal(game.Shots.Count, game.Record.Shots.Count);
+        for (int i = 0; i < game.Shots.Count; i++)
+        {
+            Assert.Equal(game.Shots[i].Executed, game.Record.Shots[i].Input.Shot);
+            Assert.Equal(game.Shots[i].Ruling, game.Record.Shots[i].Ruling);
+        }
+        Assert.Equal(1, game.Shots[0].Before.Shooter);
+        byte[] written = GameRecordFile.ToUtf8(game.Record);
+        var record = GameRecordFile.Parse(System.Text.Encoding.UTF8.GetString(written), "game.json");
+        Assert.Equal(-1, GameRecordFile.Replay(record, out var replayed));
+        Assert.Equal(written, GameRecordFile.ToUtf8(replayed));
+    }
+
+    [Fact]
+    public void StraightPoolIsPlayedToItsTarget()
+    {
+        var selfPlay = new SelfPlay(Pool, Params);
+        var game = selfPlay.Play(GameRules.StraightPool, new PerPlayer<int>(4, 4), 0, 3, new PlannerBudget(600_000, 2), target: 8);
+
+        var w = Assert.NotNull(game.Winner);
+        var last = game.Shots[^1];
+        Assert.True(last.Ruling.GameOver);
+        Assert.Equal(w, last.Before.Shooter);
+        // A point per ball legally pocketed: the winning shot brings the winner to the target.
+        int points = last.Before.Score[w] + last.Ruling.Pocketed.Count(b => !b.IsCue);
+        Assert.True(last.Ruling.Legal);
+        Assert.True(last.Before.Score[w] < 8 && points >= 8, $"winner's score {last.Before.Score[w]} + {points - last.Before.Score[w]}");
+        // Every shot after the break is called (14.1 is call-shot).
+        Assert.All(game.Shots.Skip(1), s => Assert.NotNull(s.Before.Call));
     }
 }

@@ -1,6 +1,7 @@
 using Billiards.Core.Ai;
 using Billiards.Core.Balls;
 using Billiards.Core.Rules;
+using Billiards.Core.Mathematics;
 using Billiards.Core.Table;
 using static Billiards.Core.Tests.Ai.PlannerKit;
 
@@ -131,5 +132,61 @@ public class ShotPlannerTests
         // rad at the object ball, i.e. the aim turns clockwise (more cut), by less than a degree.
         Assert.True(corrected < plain, $"corrected {corrected} deg, plain {plain} deg");
         Assert.True(plain - corrected < 1.5);
+    }
+}
+
+/// <summary>Position play: the look-ahead's judgement of a leave, and a shot chosen for its leave.</summary>
+public class PositionPlayTests
+{
+    private static readonly GameState Solids = new(GameRules.EightBall)
+    {
+        Shot = 5,
+        Groups = new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes),
+    };
+
+    [Fact]
+    public void ABallWithEveryWayToAPocketBlockedIsAProblemBall()
+    {
+        // The 1 in the middle of the table; a stripe on the line to each of the six pockets, 0.15 m out.
+        var table = Planner.Table;
+        var one = new Vec3(0.2, 0.1, Params.R);
+        var balls = new List<(BallId, Vec3)> { (BallId.Cue, new Vec3(-0.9, -0.4, Params.R)), (new BallId(1), one), (new BallId(8), new Vec3(-1.0, 0.45, Params.R)) };
+        int id = 9;
+        foreach (var pocket in PocketIds.All)
+        {
+            var u = (table.AimPoint(pocket) - one).XY.Normalized();
+            balls.Add((new BallId(id++), (one + u * 0.15) with { Z = Params.R }));
+        }
+        var blocked = new TablePosition(balls);
+        Assert.Equal(1, table.ProblemBalls(blocked, Solids));
+
+        // Take away the stripe towards one pocket: the 1 has a way again.
+        var opened = blocked.Without(new BallId(9));
+        Assert.Equal(0, table.ProblemBalls(opened, Solids));
+    }
+
+    [Fact]
+    public void TheLookAheadWeighsTheNextButOneChoice()
+    {
+        // A long straight-in shot on the 1 and a shorter one on the 2 just behind the cue ball: the
+        // 2 is the best next shot, the 1 the next-but-one choice. Without the 2, the 1 is all there is.
+        var line = StraightIn(PocketId.FootLeft, 1.0, 1.0);
+        var cue = line.Cue!.Value;
+        var one = line.Positions[line.IndexOf(new BallId(1))];
+        var eight = new Vec3(-1.1, 0.5, Params.R);
+        var two = new TablePosition([(BallId.Cue, cue), (new BallId(1), one), (new BallId(2), new Vec3(cue.X - 0.3, cue.Y, Params.R)), (new BallId(8), eight)]);
+        var single = new TablePosition([(BallId.Cue, cue), (new BallId(1), one), (new BallId(8), eight)]);
+        double sigma = PlannerTable.ReferenceAimStdDeg;
+        var table = Planner.Table;
+
+        // One ball to play: the quality is that shot's ease, neither more nor less.
+        double oneAlone = table.BestEase(single, Solids, sigma);
+        Assert.InRange(oneAlone, 0.05, 0.95);
+        Assert.Equal(oneAlone, table.PositionQuality(single, Solids, sigma), 12);
+        // Two: between the harder and the easier shot, nearer the easier (0.85 and 0.15).
+        double best = table.BestEase(two, Solids, sigma);
+        Assert.True(best > oneAlone + 0.1, $"the 2's shot {best}, the 1's {oneAlone}");
+        double quality = table.PositionQuality(two, Solids, sigma);
+        Assert.Equal(0.85 * best + 0.15 * oneAlone, quality, 9);
     }
 }

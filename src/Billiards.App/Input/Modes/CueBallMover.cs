@@ -19,9 +19,12 @@ public static class CueBallMover
     /// <param name="table">The table, for the clamp.</param>
     /// <param name="radius">Ball radius (m).</param>
     /// <returns>The new centre (m), at the same height.</returns>
-    public static Vec3 Move(Vec3 ball, Vec3 eye, double dx, double dy, TableSpec table, double radius)
+    public static Vec3 Move(Vec3 ball, Vec3 eye, double dx, double dy, TableSpec table, double radius) =>
+        MoveAlong(ball, ViewMath.BedForward(eye, ball), dx, dy, table, radius);
+
+    /// <summary>As <see cref="Move"/>, with f given: the bed-plane unit vector the camera looks along.</summary>
+    public static Vec3 MoveAlong(Vec3 ball, Vec3 f, double dx, double dy, TableSpec table, double radius)
     {
-        var f = ViewMath.BedForward(eye, ball);
         var s = ViewMath.BedRight(f);
         var p = ball + (-dy * f + dx * s) * SeedControls.MoveMetresPerPixel;
         return ClampToBed(p, table, radius);

@@ -236,7 +236,10 @@ public sealed class InputModeNode : Node
             return;
         }
         var old = _physics.CueBallPosition;
-        var moved = CueBallMover.Move(old, _camera.Camera.Eye, dx, dy, _physics.Table, _physics.BallRadius);
+        // Along the cue's aim, the camera's azimuth: exact whatever the eye's height (a scripted drag places the ball bit for bit).
+        var moved = _cue is null
+            ? CueBallMover.Move(old, _camera.Camera.Eye, dx, dy, _physics.Table, _physics.BallRadius)
+            : CueBallMover.MoveAlong(old, _cue.AimDirection, dx, dy, _physics.Table, _physics.BallRadius);
         if (_physics.TryPlaceCueBall(moved))
         {
             // Formel 35: camera = p + c with c = camera_old - ball_old, i.e. it moves with the ball.

@@ -1,0 +1,202 @@
+using Billiards.App.Input;
+using Billiards.App.Nodes;
+using Billiards.App.Platform;
+using Billiards.Core.Ai;
+using Billiards.Core.Rules;
+
+namespace Billiards.App.Game;
+
+/// <summary>
+/// The computer at the table, and the hint for a person, both from Core's <see cref="ShotPlanner"/>.
+/// A decision is searched on a background task (the frames go on: the search leaves one core to
+/// the game), then the cue turns to the planned aim for <see cref="AimSeconds"/> before the strike,
+/// so the player sees what the computer does. A ruling's options are chosen the same way. The
+/// computer's own error comes from <see cref="SkillLevel.Execute"/>; every seed derives from the
+/// match's seed, the game and the shot, so the same game gets the same decisions.
+/// <see cref="HintKey"/> asks the planner (at <see cref="HintLevel"/>) for a person's shot and
+/// takes its placement, call, power and aim.
+/// </summary>
+public sealed class ComputerPlayerNode : Node
+{
+    /// <summary>How long the cue takes to turn to the computer's aim (s).</summary>
+    public const double AimSeconds = 0.8;
+
+    /// <summary>The key that asks for a hint.</summary>
+    public const Key HintKey = Key.G;
+
+    /// <summary>The planner's level for hints.</summary>
+    public const int HintLevel = 3;
+
+    private MatchNode? _match;
+    private PhysicsNode? _physics;
+    private ShotPlanner? _planner;
+    private Task<Decision>? _thinking;
+    private Task<RefereeOption>? _choosing;
+    private Task<Decision>? _hinting;
+    private Decision? _decision;
+    private int _decisionLevel;
+    private double _aimFrom;
+    private double _aimTime;
+
+    /// <summary>The planner's wall-clock cap per decision (ms); a script raises it so that no search is cut short by a slow machine.</summary>
+    public int BudgetMs { get; set; } = PlannerBudget.DefaultMilliseconds;
+
+    /// <summary>What the computer does now, for the HUD, or null.</summary>
+    public string? Status { get; private set; }
+
+    /// <summary>True while a hint is being searched.</summary>
+    public bool IsHinting => _hinting is not null;
+
+    /// <summary>The last hint taken, or null.</summary>
+    public Decision? LastHint { get; private set; }
+
+    // Leave a core to the game's frames: the search runs beside them, never in their way.
+    private static PlannerBudget Budget(int ms) => new(ms, Math.Max(1, Environment.ProcessorCount - 1));
+
+    /// <inheritdoc />
+    protected override void Ready()
+    {
+        _match = GetInTree<MatchNode>();
+        _physics = GetInTree<PhysicsNode>();
+        _planner = new ShotPlanner(_physics.Table, _physics.Params);
+    }
+
+    /// <inheritdoc />
+    protected override bool Input(InputEvent e)
+    {
+        if (e is not KeyInput { Pressed: true, Key: HintKey } || _match is null || _physics is null || _planner is null)
+        {
+            return false;
+        }
+        if (_match.IsComputerActing || !_match.CanShoot || _hinting is not null)
+        {
+            return true;
+        }
+        var state = _match.State;
+        var position = TablePosition.Of(_physics.Simulation);
+        var planner = _planner;
+        ulong seed = _match.ShotSeed(3);
+        var budget = Budget(BudgetMs);
+        _hinting = Task.Run(() => planner.Decide(state, position, SkillLevel.Of(HintLevel), budget, seed));
+        Status = "Looking for a shot...";
+        return true;
+    }
+
+    /// <inheritdoc />
+    protected override void Process(double dt)
+    {
+        if (_match is null || _physics is null || _planner is null)
+        {
+            return;
+        }
+        FinishHint();
+        if (_match.IsOver || !_match.IsComputerActing)
+        {
+            _decision = null;
+            if (_hinting is null)
+            {
+                Status = null;
+            }
+            return;
+        }
+        if (_physics.IsRolling)
+        {
+            Status = null;
+            return;
+        }
+        int level = _match.Shooter.ComputerLevel ?? HintLevel;
+        if (_match.PendingOptions.Count > 0)
+        {
+            ChooseOption();
+            return;
+        }
+        if (!_match.CanShoot)
+        {
+            return;
+        }
+        if (_decision is null && _thinking is null)
+        {
+            var state = _match.State;
+            var position = TablePosition.Of(_physics.Simulation);
+            var planner = _planner;
+            ulong seed = _match.ShotSeed(1);
+            var budget = Budget(BudgetMs);
+            _decisionLevel = level;
+            _thinking = Task.Run(() => planner.Decide(state, position, SkillLevel.Of(level), budget, seed));
+            Status = $"{_match.Shooter.Name} is thinking...";
+            return;
+        }
+        if (_thinking is { IsCompleted: true } done)
+        {
+            _thinking = null;
+            if (!done.IsCompletedSuccessfully)
+            {
+                // A planner that fails must not stop the game: the computer plays a plain shot along its cue.
+                Status = null;
+                _match.StrikeAsComputer(new Billiards.Core.Cue.ShotSpec(3, _match.AimDegrees));
+                return;
+            }
+            _decision = done.Result;
+            // Adopt turns the cue to the aim at once; the turn is shown from where it was.
+            _aimFrom = _match.AimDegrees;
+            _match.Adopt(_decision, exactCall: true);
+            _aimTime = 0;
+            Status = $"{_match.Shooter.Name} aims.";
+        }
+        if (_decision is { } d)
+        {
+            _aimTime += dt;
+            double f = Math.Min(1, _aimTime / AimSeconds);
+            if (f < 1)
+            {
+                double smooth = f * f * (3 - (2 * f));
+                _match.AimAt(_aimFrom + (smooth * Math.IEEERemainder(d.Shot.AimDeg - _aimFrom, 360)));
+                return;
+            }
+            _match.AimAt(d.Shot.AimDeg);
+            var struck = SkillLevel.Of(_decisionLevel).Execute(d.Shot, new PlannerRandom(_match.ShotSeed(2)));
+            _decision = null;
+            Status = null;
+            _match.StrikeAsComputer(struck);
+        }
+    }
+
+    private void ChooseOption()
+    {
+        if (_choosing is null)
+        {
+            var ruling = _match!.LastRuling!;
+            var position = TablePosition.Of(_physics!.Simulation);
+            var planner = _planner!;
+            _choosing = Task.Run(() => planner.ChooseOption(ruling, position));
+            Status = $"{_match.Shooter.Name} chooses...";
+            return;
+        }
+        if (_choosing.IsCompleted)
+        {
+            var option = _choosing.IsCompletedSuccessfully ? _choosing.Result : _match!.PendingOptions[0];
+            _choosing = null;
+            Status = null;
+            if (_match!.PendingOptions.Contains(option))
+            {
+                _match.Choose(option);
+            }
+        }
+    }
+
+    private void FinishHint()
+    {
+        if (_hinting is not { IsCompleted: true } done)
+        {
+            return;
+        }
+        _hinting = null;
+        Status = null;
+        if (done.IsCompletedSuccessfully && _match is { IsComputerActing: false, CanShoot: true })
+        {
+            LastHint = done.Result;
+            _match.Adopt(done.Result, exactCall: false);
+            _match.SayHint(done.Result);
+        }
+    }
+}

@@ -1,0 +1,116 @@
+using Billiards.App.Game;
+using Billiards.App.Platform;
+using Billiards.Core.Ai;
+using Billiards.Core.Physics;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Tests.Game;
+
+/// <summary>The computer at the table and the hint, on the real physics and Core's planner, through a fake window.</summary>
+public class ComputerPlayerTests
+{
+    private sealed class Game : IDisposable
+    {
+        public Game(params MatchPlayer[] players)
+        {
+            var scene = SceneLoader.Load(AssetFolder.Scene("eight-ball.json"));
+            Host = new GameHost(scene, SimulationFactory.Create, Window, Clock, new MatchSetup(GameRules.EightBall, players));
+            Match = Host.Tree.Root.GetInTree<MatchNode>();
+            Computer = Host.Tree.Root.GetInTree<ComputerPlayerNode>();
+            Computer.BudgetMs = 120_000; // never cut short: the same decisions every run
+        }
+
+        public FakeWindow Window { get; } = new();
+        public ManualClock Clock { get; } = new();
+        public GameHost Host { get; }
+        public MatchNode Match { get; }
+        public ComputerPlayerNode Computer { get; }
+
+        public void Press(Key key, int times = 1)
+        {
+            for (int i = 0; i < times; i++)
+            {
+                Window.Press(key);
+                Frame();
+            }
+        }
+
+        public void Frame()
+        {
+            Clock.Advance(1.0 / 30);
+            Host.RunFrame();
+        }
+
+        // Frames until the condition holds; the planner's background search takes wall-clock time.
+        public void RunUntil(Func<bool> done, string what)
+        {
+            var limit = DateTime.UtcNow.AddSeconds(120);
+            while (!done() && DateTime.UtcNow < limit)
+            {
+                Frame();
+                if (!Host.World.Physics.IsRolling)
+                {
+                    Thread.Sleep(5);
+                }
+            }
+            Assert.True(done(), what);
+        }
+
+        public void Dispose() => Host.Dispose();
+    }
+
+    private static List<(GameState Before, Billiards.Core.Cue.ShotSpec Shot)> ComputerTurnAfterASoftBreak()
+    {
+        using var game = new Game(new MatchPlayer("Anna"), new MatchPlayer("Computer L1", 1));
+        game.Press(Key.Q, 8); // 1 m/s: a bad break, the computer chooses accept or rerack
+        game.Press(Key.Space);
+        game.RunUntil(() => game.Match.Rulings.Count >= 1 && !game.Host.World.Physics.IsRolling, "the break never ended");
+        Assert.NotEmpty(game.Match.PendingOptions);
+        Assert.True(game.Match.IsComputerActing);
+        // Anna's keys do nothing on the computer's turn.
+        game.Press(Key.D1);
+        game.Press(Key.Space);
+        Assert.False(game.Host.World.Physics.IsRolling);
+        // The computer chooses, then shoots (after turning its cue), and the referee rules.
+        game.RunUntil(() => game.Match.Shots.Count >= 2 && !game.Host.World.Physics.IsRolling && game.Match.Rulings.Count >= 2, "the computer never played");
+        Assert.Empty(game.Match.PendingOptions);
+        var shot = game.Match.Shots[1];
+        Assert.Equal(1, shot.Before.Shooter);
+        Assert.True(game.Match.Rulings.Count == game.Match.Shots.Count);
+        return [.. game.Match.Shots];
+    }
+
+    [Fact]
+    public void The_computer_chooses_its_option_then_plays_its_shot_and_the_same_game_plays_it_the_same_way()
+    {
+        var first = ComputerTurnAfterASoftBreak();
+        var second = ComputerTurnAfterASoftBreak();
+        // Seeds derive from the match, the game and the shot: the computer's shot is the same to the last bit.
+        Assert.Equal(first[1].Shot, second[1].Shot);
+        Assert.Equal(first[1].Before, second[1].Before);
+    }
+
+    [Fact]
+    public void The_hint_key_asks_the_planner_and_takes_its_aim_power_and_call()
+    {
+        using var game = new Game(new MatchPlayer("Anna"), new MatchPlayer("Ben"));
+        game.Frame();
+        game.Press(ComputerPlayerNode.HintKey);
+        Assert.True(game.Computer.IsHinting);
+        game.RunUntil(() => game.Computer.LastHint is not null, "no hint came");
+        var hint = game.Computer.LastHint!;
+        Assert.Equal(hint.Shot.AimDeg, game.Match.AimDegrees, 9);
+        Assert.Equal(Math.Clamp(hint.Shot.Speed, MatchNode.MinPower, MatchNode.MaxPower), game.Match.Power, 12);
+        Assert.StartsWith("Hint: ", game.Match.Message, StringComparison.Ordinal);
+        if (hint.Place is { } place)
+        {
+            Assert.Equal(place.X, game.Host.World.Physics.CueBallPosition.X, 9);
+            Assert.Equal(place.Y, game.Host.World.Physics.CueBallPosition.Y, 9);
+        }
+        // Space plays it as a person's shot, at the hint's aim.
+        game.Press(Key.Space);
+        Assert.Equal(hint.Shot.AimDeg, game.Match.Shots[0].Shot.AimDeg, 9);
+        Assert.Equal(0, game.Match.Shots[0].Before.Shooter);
+    }
+}

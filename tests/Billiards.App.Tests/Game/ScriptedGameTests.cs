@@ -1,0 +1,172 @@
+using System.Text.Json;
+using Billiards.App.Cli;
+using Billiards.App.Game;
+using Billiards.App.Platform;
+using Billiards.App.Tests.Rendering;
+using Billiards.Core.Physics;
+using Billiards.Core.Scenes;
+using Billiards.Core.Table;
+
+namespace Billiards.App.Tests.Game;
+
+/// <summary>
+/// The shipped whole 8-ball game, <c>assets/scripts/eight-ball-game.json</c>: two people play it
+/// through real input (keys, and a mouse drag to place the cue ball in hand) from the break to a
+/// winner the referee declares. Checked headless at very different frame rates (the same game bit
+/// for bit) and in a real window under Xvfb (the record's rulings and the HUD).
+/// </summary>
+public class ScriptedGameTests
+{
+    public static string Script => Path.Combine(AssetFolder.Assets, "scripts", "eight-ball-game.json");
+
+    private static readonly string[] Players = ["Anna", "Ben"];
+
+    /// <summary>Plays the script through <c>play</c> on a fake window at a fixed frame time; returns the record's JSON.</summary>
+    internal static JsonDocument PlayHeadless(double frameSeconds)
+    {
+        string record = Path.Combine(Path.GetTempPath(), $"record-{Guid.NewGuid():N}.json");
+        try
+        {
+            var clock = new ManualClock();
+            var window = new FakeWindow { FramebufferSize = (1280, 720) };
+            var loop = new UntilClosedLoop(clock, window, frameSeconds);
+            int code = PlayCommand.Play(null, _ => new GamePlatform(window, loop, new NullRenderer()), SimulationFactory.Create, clock,
+                new PlayCommand.PlayOptions(Script, null) { Rules = "eight-ball", Players = string.Join(',', Players), Record = record });
+            Assert.Equal(0, code);
+            Assert.True(window.Closed, "the script never ended");
+            return JsonDocument.Parse(File.ReadAllText(record));
+        }
+        finally
+        {
+            File.Delete(record);
+        }
+    }
+
+    [Fact]
+    public void The_scripted_game_is_the_same_game_at_60_fps_and_at_3_fps()
+    {
+        using var fast = PlayHeadless(1.0 / 60);
+        using var slow = PlayHeadless(0.3); // 0.3 s frames at speed 16: up to 8 s of play per frame
+        var a = fast.RootElement;
+        var b = slow.RootElement;
+        Assert.True(a.GetProperty("over").GetBoolean());
+        // Every shot (state, call, placement, strike to the last bit) and every ruling agree.
+        Assert.Equal(a.GetProperty("shots").GetRawText(), b.GetProperty("shots").GetRawText());
+        Assert.Equal(a.GetProperty("rulings").GetRawText(), b.GetProperty("rulings").GetRawText());
+        Assert.Equal(a.GetProperty("winner").GetInt32(), b.GetProperty("winner").GetInt32());
+        AssertGame(a);
+    }
+
+    // Internal so that the window test below can share it.
+    internal static void AssertGame(JsonElement root) => AssertWholeGame(root, TableSpec.FromPreset("pool-9ft"));
+
+    // A whole game from the record: the break, a pot, a scratch with the cue ball back in hand and
+    // placed by the player, turns passed as the referee ruled, and a winner shown on the HUD.
+    private static void AssertWholeGame(JsonElement root, TableSpec table)
+    {
+        var shots = root.GetProperty("shots").EnumerateArray().ToList();
+        var rulings = root.GetProperty("rulings").EnumerateArray().ToList();
+        Assert.Equal(shots.Count, rulings.Count);
+        Assert.True(rulings.Count >= 4);
+
+        // The break: shot 0, from the kitchen, at the break's speed.
+        var first = shots[0].GetProperty("before");
+        Assert.Equal(0, first.GetProperty("shot").GetInt32());
+        Assert.True(shots[0].GetProperty("shot").GetProperty("speed").GetDouble() >= 6);
+        Assert.True(shots[0].GetProperty("place")[0].GetDouble() <= (-table.Length / 4) + 1e-9, "the break is played from the kitchen (behind the head string)");
+
+        // Turns: the shooter stays after a ruling that continues, else the other player shoots.
+        for (int i = 0; i + 1 < shots.Count; i++)
+        {
+            int shooter = shots[i].GetProperty("before").GetProperty("shooter").GetInt32();
+            int next = shots[i + 1].GetProperty("before").GetProperty("shooter").GetInt32();
+            Assert.Equal(rulings[i].GetProperty("continue").GetBoolean() ? shooter : 1 - shooter, next);
+            Assert.Equal(i + 1, shots[i + 1].GetProperty("before").GetProperty("shot").GetInt32());
+        }
+
+        // A legal pot that keeps the shooter at the table, after the break.
+        Assert.Contains(rulings.Skip(1), r => r.GetProperty("legal").GetBoolean() && r.GetProperty("continue").GetBoolean() && r.GetProperty("pocketed").GetArrayLength() > 0);
+
+        // A scratch: a foul, the cue ball in hand anywhere for the other player, who places it by
+        // hand away from where it came back (the head spot, free in this game) before shooting.
+        int scratch = rulings.FindIndex(r => r.GetProperty("fouls").EnumerateArray().Any(f => f.GetString() == "cue-ball-pocketed"));
+        Assert.True(scratch >= 0, "no scratch in the game");
+        Assert.False(rulings[scratch].GetProperty("legal").GetBoolean());
+        Assert.Equal("table", rulings[scratch].GetProperty("ball_in_hand").GetString());
+        Assert.True(scratch + 1 < shots.Count);
+        var place = shots[scratch + 1].GetProperty("place");
+        Assert.Equal(JsonValueKind.Array, place.ValueKind);
+        double dx = place[0].GetDouble() + (table.Length / 4), dy = place[1].GetDouble();
+        Assert.True(Math.Sqrt((dx * dx) + (dy * dy)) > 0.05, "the cue ball was not moved from where it came back");
+
+        // The end: the referee's last ruling ends the game with a winner, the match and the HUD agree.
+        var last = rulings[^1];
+        Assert.True(last.GetProperty("game_over").GetBoolean());
+        Assert.All(rulings.Take(rulings.Count - 1), r => Assert.False(r.GetProperty("game_over").GetBoolean()));
+        int winner = last.GetProperty("winner").GetInt32();
+        Assert.True(root.GetProperty("over").GetBoolean());
+        Assert.Equal(winner, root.GetProperty("winner").GetInt32());
+        var hud = root.GetProperty("hud").EnumerateArray().Select(l => l.GetString()!).ToList();
+        Assert.Contains($"GAME OVER: {Players[winner]} wins. Enter: rematch", hud);
+        Assert.Contains($"Last ruling: {last.GetProperty("message").GetString()}", hud);
+    }
+
+    private sealed class NullRenderer : IFrameRenderer
+    {
+        public void Draw(Billiards.App.Rendering.RenderFrame frame)
+        {
+        }
+    }
+}
+
+/// <summary>The shipped game in a real GLFW window (under Xvfb when there is no display).</summary>
+[Collection("GL")]
+public class ScriptedGameWindowTests
+{
+    [Fact]
+    public void The_scripted_game_plays_in_a_window_to_a_winner_the_referee_declares()
+    {
+        TestDisplay.Ensure();
+        string record = Path.Combine(Path.GetTempPath(), $"record-{Guid.NewGuid():N}.json");
+        string stats = Path.Combine(Path.GetTempPath(), $"stats-{Guid.NewGuid():N}.json");
+        try
+        {
+            int code = PlayCommand.Play(null, PlatformWiring.Open, options: new PlayCommand.PlayOptions(ScriptedGameTests.Script, stats)
+            {
+                Rules = "eight-ball",
+                Players = "Anna,Ben",
+                Record = record,
+            });
+            Assert.Equal(0, code);
+            using var doc = JsonDocument.Parse(File.ReadAllText(record));
+            ScriptedGameTests.AssertGame(doc.RootElement);
+            // The window played the same game as the headless run.
+            using var headless = ScriptedGameTests.PlayHeadless(1.0 / 30);
+            Assert.Equal(headless.RootElement.GetProperty("rulings").GetRawText(), doc.RootElement.GetProperty("rulings").GetRawText());
+
+            // Every input reached the screen on the frame after it was due, waits and all.
+            using var s = JsonDocument.Parse(File.ReadAllText(stats));
+            var inputs = s.RootElement.GetProperty("inputs").EnumerateArray().ToList();
+            Assert.NotEmpty(inputs);
+            Assert.All(inputs, i => Assert.Equal(1, i.GetProperty("delay_frames").GetInt32()));
+        }
+        finally
+        {
+            File.Delete(record);
+            File.Delete(stats);
+        }
+    }
+}
+
+/// <summary>A frame loop that runs frames of a fixed length on a manual clock until the window closes.</summary>
+internal sealed class UntilClosedLoop(ManualClock clock, FakeWindow window, double frameSeconds, int maxFrames = 1_000_000) : IFrameLoop
+{
+    public void Run(Action frame)
+    {
+        for (int i = 0; i < maxFrames && !window.Closed; i++)
+        {
+            clock.Advance(frameSeconds);
+            frame();
+        }
+    }
+}
