@@ -54,6 +54,7 @@ public static class GameSceneBuilder
         {
             root.AddChild(new MatchNode(match.Rules, match.Players, scene.Game));
             root.AddChild(new ComputerPlayerNode());
+            root.AddChild(new CallPickerNode());
         }
         // Added after the modes: input runs from the last child back, so these keys come first.
         var keys = root.AddChild(new SystemKeysNode(loop));

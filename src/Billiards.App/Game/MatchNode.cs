@@ -213,6 +213,26 @@ public sealed class MatchNode : Node
         Say(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"Hint: {what} at {hint.Shot.Speed:0.0} m/s (works {hint.ExpectedPot * 100:0} % of the time); Space shoots."));
     }
 
+    /// <summary>Calls a ball (a click on it): its easiest pocket until a pocket is called.</summary>
+    public void CallBall(BallId ball)
+    {
+        if (CanShoot)
+        {
+            _calledBall = ball;
+            _calledPocket = null;
+        }
+    }
+
+    /// <summary>Calls a pocket (a click on it) for the called ball, or for the aimed one.</summary>
+    public void CallPocket(PocketId pocket)
+    {
+        if (CanShoot)
+        {
+            _calledBall ??= Aim?.Ball;
+            _calledPocket = pocket;
+        }
+    }
+
     /// <summary>Strikes a shot the computer plays (its plan with its own error), with the call it adopted.</summary>
     public void StrikeAsComputer(ShotSpec shot)
     {

@@ -4,6 +4,7 @@ using Billiards.App.Platform;
 using Billiards.App.Rendering;
 using Billiards.Core.Balls;
 using Billiards.Core.Rules;
+using Billiards.Core.Table;
 
 namespace Billiards.App.Tests.Game;
 
@@ -79,5 +80,55 @@ public class CallLineTests
         Assert.Equal(shot, host.Tree.Root.GetInTree<MatchNode>().State.Shot);
         Assert.Equal(shown, lines.Any(l => l.StartsWith("Call: ", StringComparison.Ordinal)));
         Assert.Contains(lines, l => l.Contains("Space shoots", StringComparison.Ordinal));
+    }
+}
+
+public class CallPickerTests
+{
+    [Fact]
+    public void A_click_on_a_ball_calls_it_and_a_click_on_a_pocket_calls_that_pocket_a_drag_calls_nothing()
+    {
+        var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
+        var scene = TestScenes.TwoBalls(rules: "eight-ball") with { Game = new GameState(GameRules.EightBall) { Shot = 3, Players = new PerPlayer<string>("Anna", "Ben") } };
+        var window = new FakeWindow { FramebufferSize = (1280, 720) };
+        var clock = new ManualClock();
+        using var host = new GameHost(scene, TestScenes.Create, window, clock, new MatchSetup(GameRules.EightBall, players));
+        var match = host.Tree.Root.GetInTree<MatchNode>();
+        host.RunFrame();
+        for (int i = 0; i < 20; i++)
+        {
+            window.Press(Key.Right); // aim 20 deg off the 1: nothing on the line, no call
+        }
+        var frame = host.RunFrame();
+        Assert.Null(match.CurrentCall);
+        var vp = RenderMath.ViewProjection(frame);
+        var r = (float)host.World.Physics.BallRadius;
+        var ball = RenderMath.ToPixel(vp, new Vector3(0.635f, 0, r), 1280, 720)!.Value;
+        var pockets = Billiards.Core.Table.TableGeometry.Build(scene.Table, r).Pockets.ToArray();
+        var footLeft = pockets.Single(p => PocketIds.FromIndex(p.Pocket) == PocketId.FootLeft);
+        var pocket = RenderMath.ToPixel(vp, footLeft.Centre.ToVector3() with { Z = 0 }, 1280, 720)!.Value;
+
+        window.MoveTo(ball.X, ball.Y);
+        window.Down();
+        window.Up();
+        Assert.Equal(new BallId(1), match.CurrentCall!.Ball);
+        window.MoveTo(pocket.X, pocket.Y);
+        window.Down();
+        window.Up();
+        Assert.Equal(new Call(new BallId(1), PocketId.FootLeft), match.CurrentCall);
+        var footRight = pockets.Single(p => PocketIds.FromIndex(p.Pocket) == PocketId.FootRight);
+        var other = RenderMath.ToPixel(vp, footRight.Centre.ToVector3() with { Z = 0 }, 1280, 720)!.Value;
+        window.MoveTo(other.X, other.Y);
+        window.Down();
+        window.Up();
+        Assert.Equal(new Call(new BallId(1), PocketId.FootRight), match.CurrentCall);
+
+        // A drag that starts on a pocket orbits the camera and calls nothing.
+        var left = RenderMath.ToPixel(vp, footLeft.Centre.ToVector3() with { Z = 0 }, 1280, 720)!.Value;
+        window.MoveTo(left.X, left.Y);
+        window.Down();
+        window.MoveTo(left.X + 40, left.Y);
+        window.Up();
+        Assert.Equal(new Call(new BallId(1), PocketId.FootRight), match.CurrentCall);
     }
 }
