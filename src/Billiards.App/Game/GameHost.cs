@@ -33,7 +33,7 @@ public sealed class GameHost : IDisposable
         _clock = clock;
         _world = GameSceneBuilder.Build(scene, createSimulation, match);
         _physicsStep = () => _world.Tree.PhysicsProcess(_world.Loop.Dt);
-        _world.SystemKeys.QuitRequested += window.Close;
+        _world.Menu.QuitConfirmed += window.Close;
         _world.SystemKeys.FullscreenRequested += window.ToggleFullscreen;
         _world.InputModes.MouseCaptureChanged += window.SetMouseCaptured;
         _world.Tree.Start();

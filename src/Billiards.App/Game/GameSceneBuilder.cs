@@ -14,7 +14,8 @@ namespace Billiards.App.Game;
 /// <param name="Physics">The physics node.</param>
 /// <param name="InputModes">The control modes.</param>
 /// <param name="SystemKeys">Pause, step, help, debug, fullscreen and quit.</param>
-public sealed record GameWorld(SceneTree Tree, FixedStepLoop Loop, PhysicsNode Physics, InputModeNode InputModes, SystemKeysNode SystemKeys);
+/// <param name="Menu">The pause menu and the option buttons.</param>
+public sealed record GameWorld(SceneTree Tree, FixedStepLoop Loop, PhysicsNode Physics, InputModeNode InputModes, SystemKeysNode SystemKeys, MenuNode Menu);
 
 /// <summary>A match to play: the game and the two players.</summary>
 /// <param name="Rules">The game.</param>
@@ -42,6 +43,7 @@ public static class GameSceneBuilder
         if (scene.Balls.Any(b => b.Id == BallId.Cue))
         {
             root.AddChild(new CueNode());
+            root.AddChild(new AimLineNode());
         }
         if (scene.Rules is { } rules)
         {
@@ -52,10 +54,13 @@ public static class GameSceneBuilder
         {
             root.AddChild(new MatchNode(match.Rules, match.Players, scene.Game));
             root.AddChild(new ComputerPlayerNode());
+            root.AddChild(new CallPickerNode());
         }
         // Added after the modes: input runs from the last child back, so these keys come first.
         var keys = root.AddChild(new SystemKeysNode(loop));
         root.AddChild(new HudNode());
-        return new GameWorld(new SceneTree(root), loop, physics, modes, keys);
+        // Last: it draws over the HUD and takes input first (a menu takes it all).
+        var menu = root.AddChild(new MenuNode());
+        return new GameWorld(new SceneTree(root), loop, physics, modes, keys, menu);
     }
 }

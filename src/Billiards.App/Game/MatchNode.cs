@@ -213,6 +213,26 @@ public sealed class MatchNode : Node
         Say(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"Hint: {what} at {hint.Shot.Speed:0.0} m/s (works {hint.ExpectedPot * 100:0} % of the time); Space shoots."));
     }
 
+    /// <summary>Calls a ball (a click on it): its easiest pocket until a pocket is called.</summary>
+    public void CallBall(BallId ball)
+    {
+        if (CanShoot)
+        {
+            _calledBall = ball;
+            _calledPocket = null;
+        }
+    }
+
+    /// <summary>Calls a pocket (a click on it) for the called ball, or for the aimed one.</summary>
+    public void CallPocket(PocketId pocket)
+    {
+        if (CanShoot)
+        {
+            _calledBall ??= Aim?.Ball;
+            _calledPocket = pocket;
+        }
+    }
+
     /// <summary>Strikes a shot the computer plays (its plan with its own error), with the call it adopted.</summary>
     public void StrikeAsComputer(ShotSpec shot)
     {
@@ -239,6 +259,9 @@ public sealed class MatchNode : Node
             return new Call(b, pocket);
         }
     }
+
+    /// <summary>True when the rules call this shot (8-ball, 10-ball and 14.1 after the break; never 9-ball), as Core's planner has it.</summary>
+    public bool NeedsCall => Billiards.Core.Ai.ShotPlanner.NeedsCall(State);
 
     /// <summary>True when the shooter may strike now: balls at rest, no option pending, the game on.</summary>
     public bool CanShoot => _physics is { IsRolling: false, HasCueBall: true } && PendingOptions.Count == 0 && !IsOver;
@@ -372,21 +395,39 @@ public sealed class MatchNode : Node
             return;
         }
         _games++;
+        NewGame("New game");
+    }
+
+    /// <summary>The game starts again (the pause menu): the balls reracked, the same player breaks; games won stay.</summary>
+    public void Restart()
+    {
+        if (_physics is null || _physics.IsRolling)
+        {
+            return;
+        }
+        NewGame("Restart");
+    }
+
+    private void NewGame(string what)
+    {
         int breaker = (_opening.Shooter + _games) % 2;
         IsOver = false;
         Winner = null;
         PendingOptions = [];
+        _calledBall = null;
+        _calledPocket = null;
         State = new GameState(_rules) { Players = _opening.Players, Shooter = breaker, Target = _opening.Target };
         RerackAll();
         _physics!.GiveBallInHand(PlacementRegion.Kitchen);
-        Say($"New game: {State.ShooterName} breaks.");
+        Say($"{what}: {State.ShooterName} breaks.");
     }
 
     private void OnStruck(ShotSpec shot)
     {
         // The breaker places the cue ball in the kitchen, as after a scratch (Core's GamePlayer.BallInHand).
         bool inHand = State.Shot == 0 || State.BallInHand != BallInHand.None;
-        _atStrike = State with { Call = _hasAdoptedCall ? _adoptedCall : CurrentCall, Placement = inHand ? _physics!.CueBallPosition : null };
+        var call = _hasAdoptedCall ? _adoptedCall : NeedsCall ? CurrentCall : null;
+        _atStrike = State with { Call = call, Placement = inHand ? _physics!.CueBallPosition : null };
         _hasAdoptedCall = false;
         _adoptedCall = null;
         _shots.Add((_atStrike, shot));

@@ -176,6 +176,17 @@ public sealed class PhysicsNode : Node
         return head;
     }
 
+    /// <summary>Puts every ball back where the scene had it (practice's restart); the scene's own shot is not played again.</summary>
+    public void Restart()
+    {
+        _simulation.Reset();
+        _simulation.Balls.CopyTo(_previous);
+        _eventsSeen = 0;
+        IsRolling = false;
+        LastShot = null;
+        EndBallInHand();
+    }
+
     /// <summary>Strikes the cue ball; refused while balls roll.</summary>
     /// <exception cref="InvalidOperationException">When balls are still rolling or there is no cue ball.</exception>
     public void Strike(ShotSpec shot)

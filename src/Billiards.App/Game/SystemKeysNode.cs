@@ -6,7 +6,7 @@ namespace Billiards.App.Game;
 
 /// <summary>
 /// Keys that are not about playing: pause (P), single step (N), help (H or F1), debug collision
-/// geometry (F3), fullscreen (F11) and quit (Escape). Window actions are signals the host connects
+/// geometry (F3) and fullscreen (F11); Escape opens the menu (<see cref="Hud.MenuNode"/>). Window actions are signals the host connects
 /// to the window; pause and step go to the fixed-step loop.
 /// </summary>
 public sealed class SystemKeysNode(FixedStepLoop loop) : Node
@@ -23,8 +23,6 @@ public sealed class SystemKeysNode(FixedStepLoop loop) : Node
     /// <summary>Signal: F11 was pressed.</summary>
     public event Action? FullscreenRequested;
 
-    /// <summary>Signal: Escape was pressed.</summary>
-    public event Action? QuitRequested;
 
     /// <inheritdoc />
     protected override bool Input(InputEvent e)
@@ -50,9 +48,6 @@ public sealed class SystemKeysNode(FixedStepLoop loop) : Node
                 return true;
             case Key.F11:
                 FullscreenRequested?.Invoke();
-                return true;
-            case Key.Escape:
-                QuitRequested?.Invoke();
                 return true;
             default:
                 return false;

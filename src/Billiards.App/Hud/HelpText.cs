@@ -21,10 +21,11 @@ public static class HelpText
         "Match (the referee's rulings pass the turn)",
         "  Left / Right aim 1 deg; A / D aim 0.1 deg; X aim at the called ball's ghost ball",
         "  Q / W        shot power down / up; Space shoots at that power",
-        "  B / C        call another ball / another pocket",
+        "  B / C        call another ball / another pocket (or click a ball, then a pocket)",
         "  G            hint: the computer's shot for you (placement, call, aim, power)",
+        "  L            aim line: path, ghost ball, object ball's direction (on / off)",
         "  O            declare a push-out (9-ball and 10-ball, the shot after the break)",
-        "  1 .. 5       take one of the incoming player's options shown in the HUD",
+        "  1 .. 5       take one of the incoming player's options (or click its button)",
         "  Enter        rematch once a game is over (the other player breaks)",
         "Game",
         "  P            pause / resume",
@@ -34,6 +35,6 @@ public static class HelpText
         "  U            mute / unmute the sound",
         "  H or F1      show / hide this help",
         "  F11          fullscreen",
-        "  Escape       quit",
+        "  Escape       menu: resume, restart, quit (quit asks first)",
     ];
 }

@@ -14,6 +14,7 @@ namespace Billiards.App.Hud;
 public sealed class HudNode : Node
 {
     private readonly List<string> _lines = [];
+    private readonly List<HudIcon> _icons = [];
     private PhysicsNode? _physics;
     private InputModeNode? _modes;
     private CueNode? _cue;
@@ -21,6 +22,7 @@ public sealed class HudNode : Node
     private RulesNode? _rules;
     private MatchNode? _match;
     private ComputerPlayerNode? _computer;
+    private AimLineNode? _aimLine;
 
     /// <summary>The frame-rate meter, fed every frame.</summary>
     public FrameRateMeter FrameRate { get; } = new();
@@ -39,6 +41,7 @@ public sealed class HudNode : Node
         _physics.Struck += _ => _sinceShot = 0;
         _match = FindInTree<MatchNode>();
         _computer = FindInTree<ComputerPlayerNode>();
+        _aimLine = FindInTree<AimLineNode>();
     }
 
     /// <summary>How long the meter keeps showing a shot's speed after the strike (s).</summary>
@@ -60,7 +63,7 @@ public sealed class HudNode : Node
     protected override void Draw(FrameBuilder frame)
     {
         BuildLines();
-        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, HelpText.Lines, Meter());
+        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, HelpText.Lines, Meter(), _aimLine?.Shapes(frame.Frame), _icons.ToArray());
     }
 
     /// <summary>
@@ -91,6 +94,7 @@ public sealed class HudNode : Node
     {
         var c = CultureInfo.InvariantCulture;
         _lines.Clear();
+        _icons.Clear();
         if (_modes is not null)
         {
             string locked = _modes.IsLocked ? " (balls rolling: view only)" : "";
@@ -112,7 +116,7 @@ public sealed class HudNode : Node
         }
         if (_match is not null && _physics is not null)
         {
-            MatchLines.Add(_lines, _match, _physics, _computer?.Status);
+            MatchLines.Add(_lines, _match, _physics, _computer?.Status, _icons);
         }
         else if (_rules is not null)
         {

@@ -15,7 +15,7 @@ namespace Billiards.App.Hud;
 public static class MatchLines
 {
     /// <summary>Appends the match's lines for <paramref name="match"/> with the table's balls.</summary>
-    public static void Add(List<string> lines, MatchNode match, PhysicsNode physics, string? computerStatus = null)
+    public static void Add(List<string> lines, MatchNode match, PhysicsNode physics, string? computerStatus = null, List<Rendering.HudIcon>? icons = null)
     {
         ArgumentNullException.ThrowIfNull(lines);
         ArgumentNullException.ThrowIfNull(match);
@@ -27,7 +27,8 @@ public static class MatchLines
         {
             string mark = p == state.Shooter && !match.IsOver ? "> " : "  ";
             var sb = new StringBuilder();
-            sb.Append(CultureInfo.InvariantCulture, $"{mark}{state.Players[p]}: {Target(state, p, onTable)}");
+            var (target, needed) = Target(state, p, onTable);
+            sb.Append(CultureInfo.InvariantCulture, $"{mark}{state.Players[p]}: {target}");
             if (state.Rules == GameRules.StraightPool)
             {
                 sb.Append(CultureInfo.InvariantCulture, $"  score {state.Score[p]}/{state.Target}");
@@ -37,6 +38,10 @@ public static class MatchLines
                 sb.Append(CultureInfo.InvariantCulture, $"  fouls in a row {state.FoulsInRow[p]}");
             }
             lines.Add(sb.ToString());
+            foreach (int n in needed)
+            {
+                icons?.Add(new Rendering.HudIcon(lines.Count - 1, n));
+            }
         }
         if (match.IsOver)
         {
@@ -61,10 +66,11 @@ public static class MatchLines
             {
                 lines.Add($"Ball in hand ({(physics.HandRegion == Core.Setup.PlacementRegion.Kitchen ? "kitchen" : "anywhere")}): M and drag to place");
             }
-            string call = match.CurrentCall is { } c ? $"{c.Ball} in {c.Pocket.ToName()}" : "none";
             string push = state.PushOut ? "  PUSH-OUT" : "";
             string pushKey = state.Rules is GameRules.NineBall or GameRules.TenBall && state.Shot == 1 ? "  O: push-out" : "";
-            lines.Add(string.Create(CultureInfo.InvariantCulture, $"Call: {call} (B ball, C pocket)  power {match.Power:0.00} m/s (Q/W, Space shoots, G hint){push}{pushKey}"));
+            // Only a shot the rules call (8-ball, 10-ball and 14.1 after the break) shows a call.
+            string call = !match.NeedsCall ? "" : match.CurrentCall is { } c ? $"Call: {c.Ball} in {c.Pocket.ToName()} (B ball, C pocket)  " : "Call: none (B ball, C pocket)  ";
+            lines.Add(string.Create(CultureInfo.InvariantCulture, $"{call}Power {match.Power:0.00} m/s (Q/W, Space shoots, G hint){push}{pushKey}"));
         }
         if (match.LastRuling is { } last)
         {
@@ -90,23 +96,24 @@ public static class MatchLines
         return set;
     }
 
-    // What the player still needs, from the referee's state (groups) and the balls on the table.
-    private static string Target(GameState state, int player, HashSet<int> onTable)
+    // What the player still needs, from the referee's state (groups) and the balls on the table:
+    // the words for the line and the balls for its icons.
+    private static (string Text, IReadOnlyList<int> Balls) Target(GameState state, int player, HashSet<int> onTable)
     {
         switch (state.Rules)
         {
             case GameRules.EightBall:
                 if (state.Groups is not { } groups)
                 {
-                    return "open table";
+                    return ("open table", []);
                 }
                 var group = groups[player];
                 var need = onTable.Where(n => group == BallGroup.Solids ? n is >= 1 and <= 7 : n is >= 9 and <= 15).Order().ToList();
-                return need.Count == 0 ? $"{group.ToName()}, on the 8" : $"{group.ToName()}: {string.Join(" ", need)}";
+                return need.Count == 0 ? ($"{group.ToName()}, on the 8", [8]) : ($"{group.ToName()}: {string.Join(" ", need)}", need);
             case GameRules.NineBall or GameRules.TenBall:
-                return onTable.Count == 0 ? "-" : $"on the {onTable.Min()}";
+                return onTable.Count == 0 ? ("-", []) : ($"on the {onTable.Min()}", [onTable.Min()]);
             default:
-                return $"{onTable.Count} balls on the table";
+                return ($"{onTable.Count} balls on the table", []);
         }
     }
 }

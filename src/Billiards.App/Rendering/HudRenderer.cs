@@ -87,13 +87,69 @@ internal sealed class HudRenderer : IDisposable
         var textColor = new Vector4(0.95f, 0.95f, 0.9f, 1);
         var panel = new Vector4(0, 0, 0, 0.45f);
 
+        if (hud.Aids is { } aids)
+        {
+            // Under the panel: the aim line's segments as thin quads, the ghost ball as a ring.
+            foreach (var aid in aids)
+            {
+                if (aid.Radius > 0)
+                {
+                    Disc(aid.A, aid.Radius, aid.Color, 3);
+                }
+                else
+                {
+                    Line(aid.A, aid.B, 1.5f * scale, aid.Color);
+                }
+            }
+        }
+
         if (hud.Lines.Count > 0)
         {
-            int longest = hud.Lines.Max(l => l.Length);
-            Rect(margin, margin, (longest * HudFont.Advance * scale) + (2 * margin), (hud.Lines.Count * lineHeight) + (2 * margin) - (2 * scale), panel);
+            float icon = lineHeight;
+            float widest = 0;
+            for (int i = 0; i < hud.Lines.Count; i++)
+            {
+                int icons = hud.Icons?.Count(c => c.Line == i) ?? 0;
+                widest = MathF.Max(widest, (hud.Lines[i].Length * HudFont.Advance * scale) + (icons > 0 ? (icons + 0.5f) * icon : 0));
+            }
+            Rect(margin, margin, widest + (2 * margin), (hud.Lines.Count * lineHeight) + (2 * margin) - (2 * scale), panel);
             for (int i = 0; i < hud.Lines.Count; i++)
             {
                 Text(hud.Lines[i], 2 * margin, 2 * margin + (i * lineHeight), scale, textColor);
+            }
+            if (hud.Icons is { } iconList)
+            {
+                var next = new Dictionary<int, int>();
+                foreach (var ic in iconList)
+                {
+                    if (ic.Line < 0 || ic.Line >= hud.Lines.Count)
+                    {
+                        continue;
+                    }
+                    int k = next.GetValueOrDefault(ic.Line);
+                    next[ic.Line] = k + 1;
+                    float x = (2 * margin) + (hud.Lines[ic.Line].Length * HudFont.Advance * scale) + ((k + 1) * icon);
+                    BallIcon(new Vector2(x, 2 * margin + (ic.Line * lineHeight) + (lineHeight / 2f) - scale), icon * 0.47f, ic.Number, scale);
+                }
+            }
+        }
+
+        if (hud.Buttons is { Count: > 0 } buttons)
+        {
+            if (hud.Title is { } title)
+            {
+                float tw = title.Length * HudFont.Advance * scale;
+                float ty = buttons.Min(b => b.Y) - (2 * lineHeight);
+                Rect(((width - tw) / 2) - margin, ty - margin, tw + (2 * margin), lineHeight + (2 * margin) - (2 * scale), new Vector4(0.02f, 0.03f, 0.02f, 1));
+                Text(title, (width - tw) / 2, ty, scale, textColor);
+            }
+            foreach (var b in buttons)
+            {
+                // Opaque, so that the stored layer copies them instead of blending.
+                Rect(b.X, b.Y, b.Width, b.Height, new Vector4(0.8f, 0.7f, 0.3f, 1));
+                Rect(b.X + scale, b.Y + scale, b.Width - (2 * scale), b.Height - (2 * scale), new Vector4(0.05f, 0.12f, 0.07f, 1));
+                float lw = b.Label.Length * HudFont.Advance * scale;
+                Text(b.Label, b.X + ((b.Width - lw) / 2), b.Y + ((b.Height - lineHeight) / 2) + scale, scale, textColor);
             }
         }
 
@@ -222,12 +278,51 @@ internal sealed class HudRenderer : IDisposable
         Vertex(x, y + h, u0, v1, c, kind);
     }
 
+    private void Line(Vector2 a, Vector2 b, float width, Vector4 c)
+    {
+        var d = b - a;
+        float length = d.Length();
+        if (length < 0.5f)
+        {
+            return;
+        }
+        var n = new Vector2(-d.Y, d.X) * (0.5f * width / length);
+        Vertex(a.X + n.X, a.Y + n.Y, 0, 0, c, 0);
+        Vertex(b.X + n.X, b.Y + n.Y, 0, 0, c, 0);
+        Vertex(b.X - n.X, b.Y - n.Y, 0, 0, c, 0);
+        Vertex(a.X + n.X, a.Y + n.Y, 0, 0, c, 0);
+        Vertex(b.X - n.X, b.Y - n.Y, 0, 0, c, 0);
+        Vertex(a.X - n.X, a.Y - n.Y, 0, 0, c, 0);
+    }
+
+    // A pool ball seen from above: its colour (a white disc with a coloured band for a stripe), a
+    // white spot and the number in ink.
+    private void BallIcon(Vector2 centre, float radius, int number, int scale)
+    {
+        var colour = BallTextures.BaseColor(new Billiards.Core.Balls.BallId(number));
+        var c = new Vector4(colour, 1);
+        if (number > 8)
+        {
+            Disc(centre, radius, new Vector4(0.97f, 0.96f, 0.92f, 1), 2);
+            Quad(centre.X - radius, centre.Y - (radius * 0.55f), 2 * radius, radius * 1.1f, 0, 0, 0, 0, c, 0);
+        }
+        else
+        {
+            Disc(centre, radius, c, 2);
+        }
+        Disc(centre, radius * 0.6f, new Vector4(0.97f, 0.96f, 0.92f, 1), 2);
+        int small = Math.Max(1, scale - 1);
+        string text = number.ToString(System.Globalization.CultureInfo.InvariantCulture);
+        float tw = text.Length * HudFont.Advance * small;
+        Text(text, centre.X - (tw / 2), centre.Y - (HudFont.LineHeight * small / 2f), small, new Vector4(0.05f, 0.05f, 0.05f, 1), shadow: false);
+    }
+
     private void Rect(float x, float y, float w, float h, Vector4 c) => Quad(x, y, w, h, 0, 0, 0, 0, c, 0);
 
     private void Disc(Vector2 centre, float radius, Vector4 c, int kind) =>
         Quad(centre.X - radius, centre.Y - radius, 2 * radius, 2 * radius, -1, -1, 1, 1, c, kind);
 
-    private void Text(string text, float x, float y, int scale, Vector4 color)
+    private void Text(string text, float x, float y, int scale, Vector4 color, bool shadow = true)
     {
         float atlasW = HudFont.Columns * HudFont.Advance, atlasH = HudFont.Rows * HudFont.LineHeight;
         foreach (char ch in text)
@@ -239,7 +334,10 @@ internal sealed class HudRenderer : IDisposable
                 float u0 = cell % HudFont.Columns * HudFont.Advance / atlasW, v0 = cell / HudFont.Columns * HudFont.LineHeight / atlasH;
                 float u1 = u0 + (HudFont.Advance / atlasW), v1 = v0 + (HudFont.LineHeight / atlasH);
                 // A one-pixel drop shadow keeps text readable on the bright cloth.
-                Quad(x + scale, y + scale, HudFont.Advance * scale, HudFont.LineHeight * scale, u0, v0, u1, v1, new Vector4(0, 0, 0, 0.8f), 1);
+                if (shadow)
+                {
+                    Quad(x + scale, y + scale, HudFont.Advance * scale, HudFont.LineHeight * scale, u0, v0, u1, v1, new Vector4(0, 0, 0, 0.8f), 1);
+                }
                 Quad(x, y, HudFont.Advance * scale, HudFont.LineHeight * scale, u0, v0, u1, v1, color, 1);
             }
             x += HudFont.Advance * scale;

@@ -70,7 +70,36 @@ public readonly record struct CueVisual(bool Visible, Vector3 BallCentre, Vector
 /// <param name="ShowHelp">Whether the help overlay is open.</param>
 /// <param name="HelpLines">Lines of the help overlay: every key.</param>
 /// <param name="Power">The power meter while stroking (and briefly after), or null.</param>
-public sealed record HudInfo(IReadOnlyList<string> Lines, Vector2 SpinPoint, bool ShowHelp, IReadOnlyList<string> HelpLines, PowerMeter? Power = null);
+/// <param name="Aids">Aim aids drawn under the HUD's panel (the aim line and its ghost ball), or null.</param>
+/// <param name="Icons">Ball icons drawn after text lines (the balls each player still needs), or null.</param>
+/// <param name="Buttons">Clickable buttons (menus, the incoming player's options), or null.</param>
+/// <param name="Title">A title over the buttons (a menu's question), or null.</param>
+public sealed record HudInfo(IReadOnlyList<string> Lines, Vector2 SpinPoint, bool ShowHelp, IReadOnlyList<string> HelpLines, PowerMeter? Power = null, IReadOnlyList<AidShape>? Aids = null,
+    IReadOnlyList<HudIcon>? Icons = null, IReadOnlyList<HudButton>? Buttons = null, string? Title = null);
+
+/// <summary>A ball icon after a HUD line: a small disc in the ball's colour with its number.</summary>
+/// <param name="Line">Index of the line it follows.</param>
+/// <param name="Number">The ball's number (1-15).</param>
+public readonly record struct HudIcon(int Line, int Number);
+
+/// <summary>A button in pixels (x right, y down from the top left); the game hit-tests the same rectangle.</summary>
+/// <param name="X">Left (pixels).</param>
+/// <param name="Y">Top (pixels).</param>
+/// <param name="Width">Width (pixels).</param>
+/// <param name="Height">Height (pixels).</param>
+/// <param name="Label">Its text.</param>
+public readonly record struct HudButton(float X, float Y, float Width, float Height, string Label)
+{
+    /// <summary>True when the pixel lies on the button.</summary>
+    public bool Contains(Vector2 p) => p.X >= X && p.X < X + Width && p.Y >= Y && p.Y < Y + Height;
+}
+
+/// <summary>An aim aid in pixels (x right, y down): a line from <paramref name="A"/> to <paramref name="B"/>, or with a radius a ring around <paramref name="A"/>.</summary>
+/// <param name="A">Start of the line, or the ring's centre (pixels).</param>
+/// <param name="B">End of the line (pixels; ignored for a ring).</param>
+/// <param name="Radius">The ring's radius (pixels), 0 for a line.</param>
+/// <param name="Color">Colour and opacity (sRGB, alpha).</param>
+public readonly record struct AidShape(Vector2 A, Vector2 B, float Radius, Vector4 Color);
 
 /// <summary>The power meter under the table view.</summary>
 /// <param name="Fraction">How full the bar is, 0..1 (of the strongest stroke, or of the longest backswing).</param>

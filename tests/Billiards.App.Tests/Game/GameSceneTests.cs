@@ -131,14 +131,60 @@ public class GameSceneTests
 public class SystemKeysAndHudTests
 {
     [Fact]
-    public void Escape_quits_and_F11_toggles_fullscreen()
+    public void Escape_opens_the_menu_whose_quit_asks_first_and_F11_toggles_fullscreen()
     {
         using var game = new TestGame();
         game.Window.Press(Key.F11);
         Assert.Equal(1, game.Window.FullscreenToggles);
-        Assert.False(game.Window.Closed);
+        var menu = game.World.Menu;
         game.Window.Press(Key.Escape);
+        Assert.Equal(Hud.MenuPage.Pause, menu.Page);
+        Assert.True(game.World.Loop.Paused);
+        var frame = game.Frame();
+        Assert.Equal(["Resume [Esc]", "Restart [R]", "Quit [Q]"], frame.Hud!.Buttons!.Select(b => b.Label));
+        Assert.Equal("Paused", frame.Hud.Title);
+        // The game takes no input meanwhile.
+        game.Window.Press(Key.M);
+        Assert.Equal(InputMode.View, game.World.InputModes.Mode);
+        game.Window.Press(Key.Q);
+        Assert.Equal(Hud.MenuPage.ConfirmQuit, menu.Page);
+        game.Window.Press(Key.N);
+        Assert.Equal(Hud.MenuPage.Pause, menu.Page);
+        game.Window.Press(Key.Escape);
+        Assert.Equal(Hud.MenuPage.None, menu.Page);
+        Assert.False(game.World.Loop.Paused);
+        Assert.Null(game.Frame().Hud!.Buttons);
+        Assert.False(game.Window.Closed);
+        // By the mouse: Escape, then Quit, then Yes.
+        game.Window.Press(Key.Escape);
+        game.Frame();
+        Click(game, menu.CentreOf("Quit")!.Value);
+        Assert.Equal(Hud.MenuPage.ConfirmQuit, menu.Page);
+        Assert.False(game.Window.Closed);
+        Click(game, menu.CentreOf("Yes")!.Value);
         Assert.True(game.Window.Closed);
+    }
+
+    [Fact]
+    public void Restart_puts_the_practice_balls_back()
+    {
+        using var game = new TestGame();
+        game.Frame();
+        var start = game.World.Physics.CueBallPosition;
+        game.World.Physics.Strike(new Billiards.Core.Cue.ShotSpec(2, 90));
+        game.RunUntilRest();
+        Assert.NotEqual(start, game.World.Physics.CueBallPosition);
+        game.Window.Press(Key.Escape);
+        game.Window.Press(Key.R);
+        Assert.Equal(start, game.World.Physics.CueBallPosition);
+        Assert.Equal(Hud.MenuPage.None, game.World.Menu.Page);
+    }
+
+    internal static void Click(TestGame game, System.Numerics.Vector2 at)
+    {
+        game.Window.MoveTo(at.X, at.Y);
+        game.Window.Down();
+        game.Window.Up();
     }
 
     [Fact]

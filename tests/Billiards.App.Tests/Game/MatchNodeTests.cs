@@ -1,5 +1,6 @@
 using Billiards.App.Game;
 using Billiards.App.Platform;
+using Billiards.App.Rendering;
 using Billiards.Core.Balls;
 using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
@@ -80,6 +81,59 @@ public class MatchNodeTests
         Assert.Empty(game.Match.PendingOptions);
         Assert.Equal(0, game.Match.State.Shot);
         Assert.Equal(PlacementRegion.Kitchen, game.Host.World.Physics.HandRegion);
+    }
+}
+
+public class MatchHudTests
+{
+    [Fact]
+    public void The_options_are_buttons_a_click_takes_and_the_hud_shows_each_players_balls_as_icons()
+    {
+        var scene = SceneLoader.Load(AssetFolder.Scene("eight-ball.json"));
+        var window = new FakeWindow { FramebufferSize = (1280, 720) };
+        var clock = new ManualClock();
+        using var host = new GameHost(scene, SimulationFactory.Create, window, clock, new MatchSetup(GameRules.EightBall, [new("Anna"), new("Ben")]));
+        var match = host.Tree.Root.GetInTree<MatchNode>();
+        void Frame()
+        {
+            clock.Advance(1.0 / 30);
+            host.RunFrame();
+        }
+        for (int i = 0; i < 8; i++)
+        {
+            window.Press(Key.Q);
+        }
+        window.Press(Key.Space);
+        for (int i = 0; i < 30 * 120 && host.World.Physics.IsRolling; i++)
+        {
+            Frame();
+        }
+        clock.Advance(1.0 / 30);
+        var frame = host.RunFrame();
+        Assert.NotEmpty(match.PendingOptions);
+        var buttons = frame.Hud!.Buttons!;
+        Assert.Equal(match.PendingOptions.Select((o, i) => $"{o.ToName()} [{i + 1}]"), buttons.Select(b => b.Label));
+        Assert.Equal("Ben chooses:", frame.Hud.Title);
+        var rerack = buttons.Single(b => b.Label.StartsWith("rerack", StringComparison.Ordinal));
+        window.MoveTo(rerack.X + 2, rerack.Y + 2);
+        window.Down();
+        window.Up();
+        Assert.Empty(match.PendingOptions);
+        Assert.Equal(0, match.State.Shot);
+        Assert.Null(host.RunFrame().Hud!.Buttons);
+
+        // Groups taken: each player's line is followed by the balls still needed.
+        var lines = new List<string>();
+        var icons = new List<HudIcon>();
+        var sim = host.World.Physics.Simulation;
+        sim.RemoveBall(new BallId(3));
+        var taken = match.State with { Groups = new PerPlayer<BallGroup>(BallGroup.Stripes, BallGroup.Solids), Shot = 4 };
+        typeof(MatchNode).GetProperty(nameof(MatchNode.State))!.SetValue(match, taken);
+        Billiards.App.Hud.MatchLines.Add(lines, match, host.World.Physics, icons: icons);
+        int anna = lines.FindIndex(l => l.Contains("Anna: stripes", StringComparison.Ordinal));
+        int ben = lines.FindIndex(l => l.Contains("Ben: solids", StringComparison.Ordinal));
+        Assert.Equal([9, 10, 11, 12, 13, 14, 15], icons.Where(i => i.Line == anna).Select(i => i.Number));
+        Assert.Equal([1, 2, 4, 5, 6, 7], icons.Where(i => i.Line == ben).Select(i => i.Number));
     }
 }
 

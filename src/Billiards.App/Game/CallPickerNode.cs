@@ -1,0 +1,112 @@
+using System.Numerics;
+using Billiards.App.Input;
+using Billiards.App.Nodes;
+using Billiards.App.Platform;
+using Billiards.App.Rendering;
+using Billiards.Core.Balls;
+using Billiards.Core.Table;
+
+namespace Billiards.App.Game;
+
+/// <summary>
+/// Calling with the mouse: a click (press and release without a drag) on a ball calls that ball
+/// (with its easiest pocket), a click then on a pocket calls that pocket. A drag still orbits
+/// the camera; the click is told from it by moving less than <see cref="ClickSlopPixels"/>.
+/// </summary>
+public sealed class CallPickerNode : Node
+{
+    /// <summary>Largest movement (pixels) between press and release that is still a click.</summary>
+    public const float ClickSlopPixels = 4;
+
+    private MatchNode? _match;
+    private PhysicsNode? _physics;
+    private PocketCircle[] _pockets = [];
+    private Matrix4x4 _viewProjection;
+    private (int Width, int Height) _size;
+    private Vector2? _down;
+
+    /// <inheritdoc />
+    protected override void Ready()
+    {
+        _match = GetInTree<MatchNode>();
+        _physics = GetInTree<PhysicsNode>();
+        _pockets = TableGeometry.Build(_physics.Table, _physics.BallRadius).Pockets.ToArray();
+    }
+
+    /// <inheritdoc />
+    protected override bool Input(InputEvent e)
+    {
+        switch (e)
+        {
+            case MouseButtonInput { Button: MouseButton.Left, Pressed: true } down:
+                _down = down.Position;
+                return false;
+            case MouseButtonInput { Button: MouseButton.Left, Pressed: false } up when _down is { } start:
+                _down = null;
+                if (Vector2.Distance(start, up.Position) <= ClickSlopPixels)
+                {
+                    Click(up.Position);
+                }
+                // The release goes on to the control modes, which track the button.
+                return false;
+            default:
+                return false;
+        }
+    }
+
+    // The ball under the cursor calls that ball; else, with a ball called, the pocket under it.
+    private bool Click(Vector2 at)
+    {
+        if (_match is not { CanShoot: true, IsComputerActing: false } match || !match.NeedsCall || _physics is null || _size.Width == 0)
+        {
+            return false;
+        }
+        var sim = _physics.Simulation;
+        float r = (float)_physics.BallRadius;
+        BallId? best = null;
+        float bestDistance = float.MaxValue;
+        for (int i = 0; i < sim.Ids.Count; i++)
+        {
+            if (sim.Ids[i] == BallId.Cue || sim.Balls[i].IsPocketed)
+            {
+                continue;
+            }
+            var p = sim.Balls[i].Position.ToVector3();
+            if (Pixel(p) is { } centre && Pixel(p + new Vector3(r, 0, 0)) is { } edge)
+            {
+                float d = Vector2.Distance(centre, at);
+                float reach = MathF.Max(Vector2.Distance(centre, edge), Vector2.Distance(centre, Pixel(p + new Vector3(0, r, 0)) ?? centre)) + 3;
+                if (d <= reach && d < bestDistance)
+                {
+                    (best, bestDistance) = (sim.Ids[i], d);
+                }
+            }
+        }
+        if (best is { } ball)
+        {
+            match.CallBall(ball);
+            return true;
+        }
+        foreach (var pocket in _pockets)
+        {
+            var c = pocket.Centre.ToVector3() with { Z = 0 };
+            if (Pixel(c) is { } centre && Pixel(c + new Vector3((float)pocket.Radius, 0, 0)) is { } edge
+                && Vector2.Distance(centre, at) <= MathF.Max(Vector2.Distance(centre, edge) * 1.5f, 12))
+            {
+                match.CallPocket(PocketIds.FromIndex(pocket.Pocket));
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private Vector2? Pixel(Vector3 world) => RenderMath.ToPixel(_viewProjection, world, _size.Width, _size.Height);
+
+    /// <inheritdoc />
+    protected override void Draw(FrameBuilder frame)
+    {
+        // The camera has drawn: this frame's view is the one the next click is seen in.
+        _viewProjection = RenderMath.ViewProjection(frame.Frame);
+        _size = (frame.Frame.Width, frame.Frame.Height);
+    }
+}

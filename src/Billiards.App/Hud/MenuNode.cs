@@ -1,0 +1,218 @@
+using System.Numerics;
+using Billiards.App.Game;
+using Billiards.App.Input;
+using Billiards.App.Nodes;
+using Billiards.App.Platform;
+using Billiards.App.Rendering;
+using Billiards.Core.Rules;
+
+namespace Billiards.App.Hud;
+
+/// <summary>What the menu shows.</summary>
+public enum MenuPage
+{
+    /// <summary>No menu: the game.</summary>
+    None,
+    /// <summary>The pause menu: resume, restart, quit.</summary>
+    Pause,
+    /// <summary>Quit asks first.</summary>
+    ConfirmQuit,
+}
+
+/// <summary>
+/// The pause menu (Escape: resume, restart, quit; quit asks before it quits) and the buttons of
+/// the incoming player's options. Buttons are laid out here in pixels and hit-tested against the
+/// same rectangles the HUD draws; each also has its key (Escape, R, Q, Y, N; 1-5 for the options).
+/// While a menu is open the game is paused and takes no other input.
+/// </summary>
+public sealed class MenuNode : Node
+{
+    private readonly List<(HudButton Button, Action Act)> _buttons = [];
+    private SystemKeysNode? _keys;
+    private MatchNode? _match;
+    private PhysicsNode? _physics;
+    private bool _wasPaused;
+    private (int Width, int Height) _size = (1280, 720);
+
+    /// <summary>The page shown.</summary>
+    public MenuPage Page { get; private set; }
+
+    /// <summary>The buttons of the last frame drawn.</summary>
+    public IReadOnlyList<HudButton> Buttons => _buttons.Select(b => b.Button).ToList();
+
+    /// <summary>Signal: the player confirmed quitting.</summary>
+    public event Action? QuitConfirmed;
+
+    /// <inheritdoc />
+    protected override void Ready()
+    {
+        _keys = GetInTree<SystemKeysNode>();
+        _match = FindInTree<MatchNode>();
+        _physics = GetInTree<PhysicsNode>();
+    }
+
+    /// <inheritdoc />
+    protected override bool Input(InputEvent e)
+    {
+        if (e is MouseButtonInput { Pressed: true, Button: MouseButton.Left } click)
+        {
+            Layout();
+            foreach (var (button, act) in _buttons)
+            {
+                if (button.Contains(click.Position))
+                {
+                    act();
+                    return true;
+                }
+            }
+            return Page != MenuPage.None;
+        }
+        if (e is KeyInput { Pressed: true } key)
+        {
+            return OnKey(key.Key);
+        }
+        // A menu takes every other input while it is open.
+        return Page != MenuPage.None;
+    }
+
+    private bool OnKey(Key key)
+    {
+        switch (Page)
+        {
+            case MenuPage.None when key == Key.Escape:
+                Open();
+                return true;
+            case MenuPage.None:
+                return false;
+            case MenuPage.Pause:
+                switch (key)
+                {
+                    case Key.Escape:
+                        Resume();
+                        break;
+                    case Key.R:
+                        Restart();
+                        break;
+                    case Key.Q:
+                        Page = MenuPage.ConfirmQuit;
+                        break;
+                }
+                return true;
+            default:
+                switch (key)
+                {
+                    case Key.Y:
+                        QuitConfirmed?.Invoke();
+                        break;
+                    case Key.N or Key.Escape:
+                        Page = MenuPage.Pause;
+                        break;
+                }
+                return true;
+        }
+    }
+
+    private void Open()
+    {
+        _wasPaused = _keys!.Loop.Paused;
+        _keys.Loop.Paused = true;
+        Page = MenuPage.Pause;
+    }
+
+    private void Resume()
+    {
+        Page = MenuPage.None;
+        _keys!.Loop.Paused = _wasPaused;
+    }
+
+    private void Restart()
+    {
+        if (_match is not null)
+        {
+            _match.Restart();
+        }
+        else
+        {
+            _physics?.Restart();
+        }
+        Resume();
+    }
+
+    /// <inheritdoc />
+    protected override void Draw(FrameBuilder frame)
+    {
+        _size = (frame.Frame.Width, frame.Frame.Height);
+        string? title = Layout();
+        if (frame.Frame.Hud is { } hud && _buttons.Count > 0)
+        {
+            frame.Frame.Hud = hud with { Buttons = Buttons, Title = title };
+        }
+    }
+
+    // The buttons of the page (or the options), centred; returns the title.
+    private string? Layout()
+    {
+        _buttons.Clear();
+        var (width, height) = _size;
+        int scale = HudRenderer.Scale(height);
+        float line = HudFont.LineHeight * scale;
+        float buttonHeight = line + (8 * scale);
+        var items = new List<(string Label, Action Act)>();
+        string? title = null;
+        float y;
+        switch (Page)
+        {
+            case MenuPage.Pause:
+                title = "Paused";
+                items.Add(("Resume [Esc]", Resume));
+                items.Add(("Restart [R]", Restart));
+                items.Add(("Quit [Q]", () => Page = MenuPage.ConfirmQuit));
+                y = height / 2f;
+                break;
+            case MenuPage.ConfirmQuit:
+                title = "Quit the game?";
+                items.Add(("Yes, quit [Y]", () => QuitConfirmed?.Invoke()));
+                items.Add(("No [N]", () => Page = MenuPage.Pause));
+                y = height / 2f;
+                break;
+            default:
+                if (_match is not { PendingOptions.Count: > 0, IsComputerActing: false } match)
+                {
+                    return null;
+                }
+                title = $"{match.State.ShooterName} chooses:";
+                for (int i = 0; i < match.PendingOptions.Count; i++)
+                {
+                    var option = match.PendingOptions[i];
+                    items.Add(($"{option.ToName()} [{i + 1}]", () => match.Choose(option)));
+                }
+                // Low in the view, clear of the table's middle.
+                y = height * 0.78f;
+                break;
+        }
+        float gap = 6 * scale;
+        float buttonWidth = (items.Max(i => i.Label.Length) * HudFont.Advance * scale) + (16 * scale);
+        float total = (items.Count * buttonWidth) + ((items.Count - 1) * gap);
+        float x = (width - total) / 2;
+        foreach (var (label, act) in items)
+        {
+            _buttons.Add((new HudButton(x, y, buttonWidth, buttonHeight, label), act));
+            x += buttonWidth + gap;
+        }
+        return title;
+    }
+
+    /// <summary>Presses the button whose label starts with <paramref name="label"/> (tests and scripts use clicks; this is the same action).</summary>
+    public Vector2? CentreOf(string label)
+    {
+        Layout();
+        foreach (var (b, _) in _buttons)
+        {
+            if (b.Label.StartsWith(label, StringComparison.Ordinal))
+            {
+                return new Vector2(b.X + (b.Width / 2), b.Y + (b.Height / 2));
+            }
+        }
+        return null;
+    }
+}

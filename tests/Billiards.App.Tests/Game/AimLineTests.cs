@@ -1,0 +1,134 @@
+using System.Numerics;
+using Billiards.App.Game;
+using Billiards.App.Platform;
+using Billiards.App.Rendering;
+using Billiards.Core.Balls;
+using Billiards.Core.Rules;
+using Billiards.Core.Table;
+
+namespace Billiards.App.Tests.Game;
+
+public class AimLineTests
+{
+    [Fact]
+    public void The_line_runs_to_the_ghost_ball_draws_its_ring_and_the_object_balls_direction_and_L_hides_it()
+    {
+        using var game = new TestGame(); // practice: the line starts on
+        var frame = game.Frame();
+        var aids = frame.Hud!.Aids!;
+        var line = game.World.Tree.Find<AimLineNode>()!;
+        Assert.True(line.Visible);
+        // Aiming along +x from (-0.635, 0) at the 1 on (0.635, 0): a full hit, the ghost ball 2R short of it.
+        double r = game.World.Physics.BallRadius;
+        Assert.Equal(new BallId(1), line.Preview!.Ball);
+        Assert.Equal(0.635 - (2 * r), line.Preview.Ghost.X, 9);
+        var vp = RenderMath.ViewProjection(frame);
+        Vector2 Pixel(double x) => RenderMath.ToPixel(vp, new Vector3((float)x, 0, (float)r), frame.Width, frame.Height)!.Value;
+        var ring = Assert.Single(aids, a => a.Radius > 0);
+        Assert.Equal(Pixel(0.635 - (2 * r)), ring.A);
+        var lines = aids.Where(a => a.Radius == 0).ToList();
+        Assert.Equal(2, lines.Count);
+        Assert.Equal(Pixel(-0.635 + r), lines[0].A);   // from the cue ball's front
+        Assert.Equal(ring.A, lines[0].B);              // to the ghost ball
+        Assert.Equal(Pixel(0.635), lines[1].A);        // the 1 goes on along +x
+        Assert.Equal(Pixel(0.635 + AimLineNode.ObjectLineLength), lines[1].B);
+        // The ring is a ball's radius across at the ghost ball's distance.
+        Assert.InRange(ring.Radius, 1, 60);
+
+        game.Window.Press(AimLineNode.ToggleKey);
+        Assert.Empty(game.Frame().Hud!.Aids!);
+        game.Window.Press(AimLineNode.ToggleKey);
+        Assert.NotEmpty(game.Frame().Hud!.Aids!);
+    }
+
+    [Fact]
+    public void Nothing_is_drawn_while_the_balls_roll()
+    {
+        using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
+        Assert.Empty(game.Frame().Hud!.Aids!);
+    }
+
+    [Theory]
+    [InlineData("Anna", "Ben", false)]
+    [InlineData("Anna", "cpu:3", false)]
+    [InlineData("Anna", "cpu:2", true)]
+    [InlineData("computer:1", "Ben", true)]
+    public void In_a_match_it_starts_on_only_against_a_computer_of_level_two_or_less(string a, string b, bool on)
+    {
+        var players = new[] { MatchPlayer.Parse(a, 0)!, MatchPlayer.Parse(b, 1)! };
+        var scene = TestScenes.TwoBalls(rules: "eight-ball");
+        using var host = new GameHost(scene, TestScenes.Create, new FakeWindow(), new ManualClock(), new MatchSetup(GameRules.EightBall, players));
+        Assert.Equal(on, host.Tree.Root.GetInTree<AimLineNode>().Visible);
+    }
+}
+
+public class CallLineTests
+{
+    [Theory]
+    [InlineData("nine-ball", GameRules.NineBall, 0, false)]
+    [InlineData("nine-ball", GameRules.NineBall, 3, false)]
+    [InlineData("eight-ball", GameRules.EightBall, 0, false)]
+    [InlineData("eight-ball", GameRules.EightBall, 3, true)]
+    [InlineData("ten-ball", GameRules.TenBall, 3, true)]
+    public void The_hud_shows_a_call_only_where_the_rules_call_the_shot(string name, GameRules rules, int shot, bool shown)
+    {
+        var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
+        // A scene's game block sets the shot number.
+        var scene = TestScenes.TwoBalls(rules: name) with { Game = new GameState(rules) { Shot = shot, Players = new PerPlayer<string>("Anna", "Ben") } };
+        using var host = new GameHost(scene, TestScenes.Create, new FakeWindow(), new ManualClock(), new MatchSetup(rules, players));
+        var lines = host.RunFrame().Hud!.Lines;
+        Assert.Equal(shot, host.Tree.Root.GetInTree<MatchNode>().State.Shot);
+        Assert.Equal(shown, lines.Any(l => l.StartsWith("Call: ", StringComparison.Ordinal)));
+        Assert.Contains(lines, l => l.Contains("Space shoots", StringComparison.Ordinal));
+    }
+}
+
+public class CallPickerTests
+{
+    [Fact]
+    public void A_click_on_a_ball_calls_it_and_a_click_on_a_pocket_calls_that_pocket_a_drag_calls_nothing()
+    {
+        var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
+        var scene = TestScenes.TwoBalls(rules: "eight-ball") with { Game = new GameState(GameRules.EightBall) { Shot = 3, Players = new PerPlayer<string>("Anna", "Ben") } };
+        var window = new FakeWindow { FramebufferSize = (1280, 720) };
+        var clock = new ManualClock();
+        using var host = new GameHost(scene, TestScenes.Create, window, clock, new MatchSetup(GameRules.EightBall, players));
+        var match = host.Tree.Root.GetInTree<MatchNode>();
+        host.RunFrame();
+        for (int i = 0; i < 20; i++)
+        {
+            window.Press(Key.Right); // aim 20 deg off the 1: nothing on the line, no call
+        }
+        var frame = host.RunFrame();
+        Assert.Null(match.CurrentCall);
+        var vp = RenderMath.ViewProjection(frame);
+        var r = (float)host.World.Physics.BallRadius;
+        var ball = RenderMath.ToPixel(vp, new Vector3(0.635f, 0, r), 1280, 720)!.Value;
+        var pockets = Billiards.Core.Table.TableGeometry.Build(scene.Table, r).Pockets.ToArray();
+        var footLeft = pockets.Single(p => PocketIds.FromIndex(p.Pocket) == PocketId.FootLeft);
+        var pocket = RenderMath.ToPixel(vp, footLeft.Centre.ToVector3() with { Z = 0 }, 1280, 720)!.Value;
+
+        window.MoveTo(ball.X, ball.Y);
+        window.Down();
+        window.Up();
+        Assert.Equal(new BallId(1), match.CurrentCall!.Ball);
+        window.MoveTo(pocket.X, pocket.Y);
+        window.Down();
+        window.Up();
+        Assert.Equal(new Call(new BallId(1), PocketId.FootLeft), match.CurrentCall);
+        var footRight = pockets.Single(p => PocketIds.FromIndex(p.Pocket) == PocketId.FootRight);
+        var other = RenderMath.ToPixel(vp, footRight.Centre.ToVector3() with { Z = 0 }, 1280, 720)!.Value;
+        window.MoveTo(other.X, other.Y);
+        window.Down();
+        window.Up();
+        Assert.Equal(new Call(new BallId(1), PocketId.FootRight), match.CurrentCall);
+
+        // A drag that starts on a pocket orbits the camera and calls nothing.
+        var left = RenderMath.ToPixel(vp, footLeft.Centre.ToVector3() with { Z = 0 }, 1280, 720)!.Value;
+        window.MoveTo(left.X, left.Y);
+        window.Down();
+        window.MoveTo(left.X + 40, left.Y);
+        window.Up();
+        Assert.Equal(new Call(new BallId(1), PocketId.FootRight), match.CurrentCall);
+    }
+}
