@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Billiards.Core.Physics.Roots;
 
 /// <summary>
@@ -40,21 +42,8 @@ public static class Polynomial
     /// </summary>
     public static int EffectiveDegree(ReadOnlySpan<double> c, double tMax)
     {
-        double scale = 0;
-        double power = 1;
-        Span<double> magnitude = stackalloc double[MaxDegree + 1];
-        for (int k = 0; k < c.Length; k++)
-        {
-            magnitude[k] = Math.Abs(c[k]) * power;
-            scale = Math.Max(scale, magnitude[k]);
-            power *= tMax;
-        }
-        int degree = c.Length - 1;
-        while (degree > 0 && magnitude[degree] <= NegligibleTerm * scale)
-        {
-            degree--;
-        }
-        return degree;
+        var p = Load(c);
+        return EffectiveDegree(ref p, c.Length - 1, tMax);
     }
 
     /// <summary>
@@ -68,60 +57,10 @@ public static class Polynomial
     /// <param name="roots">Receives the roots; needs room for the degree's count.</param>
     public static int RealRoots(ReadOnlySpan<double> c, double lo, double hi, Span<double> roots)
     {
-        int degree = c.Length - 1;
-        while (degree > 0 && c[degree] == 0)
-        {
-            degree--;
-        }
-        if (degree <= 0)
-        {
-            return 0;
-        }
-        if (degree == 1)
-        {
-            double t = -c[0] / c[1];
-            if (t >= lo && t <= hi)
-            {
-                roots[0] = t;
-                return 1;
-            }
-            return 0;
-        }
-        if (degree == 2)
-        {
-            return QuadraticRoots(c[0], c[1], c[2], lo, hi, roots);
-        }
-
-        Span<double> derivative = stackalloc double[degree];
-        for (int k = 1; k <= degree; k++)
-        {
-            derivative[k - 1] = k * c[k];
-        }
-        Span<double> critical = stackalloc double[MaxDegree];
-        int nc = RealRoots(derivative, lo, hi, critical);
-
-        int count = 0;
-        double a = lo;
-        double fa = Evaluate(c[..(degree + 1)], a);
-        for (int piece = 0; piece <= nc; piece++)
-        {
-            double b = piece < nc ? critical[piece] : hi;
-            double fb = Evaluate(c[..(degree + 1)], b);
-            if (fa == 0 && (count == 0 || roots[count - 1] != a))
-            {
-                roots[count++] = a;
-            }
-            else if ((fa < 0 && fb > 0) || (fa > 0 && fb < 0))
-            {
-                roots[count++] = Bracketed(c[..(degree + 1)], a, b, fa);
-            }
-            a = b;
-            fa = fb;
-        }
-        if (fa == 0 && (count == 0 || roots[count - 1] != a))
-        {
-            roots[count++] = a;
-        }
+        var p = Load(c);
+        Coefficients found = default;
+        int count = RealRoots(ref p, c.Length - 1, lo, hi, ref found);
+        ((ReadOnlySpan<double>)found)[..count].CopyTo(roots);
         return count;
     }
 
@@ -143,27 +82,37 @@ public static class Polynomial
     /// <param name="overlapTolerance">How far below zero a gap may start and still count as a contact.</param>
     public static double FirstEntry(ReadOnlySpan<double> c, double tMax, double overlapTolerance)
     {
+        var p = Load(c);
+        return FirstEntry(ref p, c.Length - 1, tMax, overlapTolerance);
+    }
+
+    /// <summary>
+    /// <see cref="FirstEntry(ReadOnlySpan{double}, double, double)"/> of the polynomial of degree
+    /// <paramref name="n"/> (at most 4) held in <paramref name="p"/> (unchanged), with no span
+    /// or stack buffer: the event engine's hot path.
+    /// </summary>
+    internal static double FirstEntry(ref Coefficients p, int n, double tMax, double overlapTolerance)
+    {
         if (!(tMax > 0))
         {
             tMax = 0;
         }
-        int degree = EffectiveDegree(c, tMax);
+        int degree = EffectiveDegree(ref p, n, tMax);
         if (degree == 0)
         {
             return double.PositiveInfinity;
         }
-        var p = c[..(degree + 1)];
 
-        Span<double> derivative = stackalloc double[MaxDegree];
+        Coefficients derivative = default;
         for (int k = 1; k <= degree; k++)
         {
             derivative[k - 1] = k * p[k];
         }
-        Span<double> critical = stackalloc double[MaxDegree];
-        int nc = RealRoots(derivative[..degree], 0, tMax, critical);
+        Coefficients critical = default;
+        int nc = RealRoots(ref derivative, degree - 1, 0, tMax, ref critical);
 
         double a = 0;
-        double fa = Evaluate(p, 0);
+        double fa = Evaluate(ref p, degree, 0);
         for (int piece = 0; piece <= nc; piece++)
         {
             double b = piece < nc ? critical[piece] : tMax;
@@ -171,10 +120,10 @@ public static class Polynomial
             {
                 continue;
             }
-            double fb = Evaluate(p, b);
+            double fb = Evaluate(ref p, degree, b);
             // Monotone piece: decreasing when its end is lower; at the very start of a piece the
             // derivative decides (a piece of zero length has fb == fa).
-            bool decreasing = fb < fa || (fb == fa && Evaluate(derivative[..degree], a) < 0);
+            bool decreasing = fb < fa || (fb == fa && Evaluate(ref derivative, degree - 1, a) < 0);
             if (decreasing)
             {
                 if (fa <= 0)
@@ -186,7 +135,7 @@ public static class Polynomial
                 }
                 else if (fb < 0)
                 {
-                    return Bracketed(p, a, b, fa);
+                    return Bracketed(ref p, degree, a, b, fa);
                 }
                 else if (fb == 0 && piece == nc)
                 {
@@ -201,7 +150,110 @@ public static class Polynomial
         return double.PositiveInfinity;
     }
 
-    private static int QuadraticRoots(double c0, double c1, double c2, double lo, double hi, Span<double> roots)
+    private static Coefficients Load(ReadOnlySpan<double> c)
+    {
+        if (c.Length is 0 or > MaxDegree + 1)
+        {
+            throw new ArgumentException($"expected 1 to {MaxDegree + 1} coefficients, got {c.Length}", nameof(c));
+        }
+        Coefficients p = default;
+        c.CopyTo(p);
+        return p;
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static int EffectiveDegree(ref Coefficients c, int n, double tMax)
+    {
+        double scale = 0;
+        double power = 1;
+        Coefficients magnitude = default;
+        for (int k = 0; k <= n; k++)
+        {
+            magnitude[k] = Math.Abs(c[k]) * power;
+            scale = Math.Max(scale, magnitude[k]);
+            power *= tMax;
+        }
+        int degree = n;
+        while (degree > 0 && magnitude[degree] <= NegligibleTerm * scale)
+        {
+            degree--;
+        }
+        return degree;
+    }
+
+    // Horner over c[0..degree]; the first step (0 t + c[degree]) is kept so that every caller
+    // rounds exactly as the span version does.
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static double Evaluate(ref Coefficients c, int degree, double t)
+    {
+        double r = 0;
+        for (int k = degree; k >= 0; k--)
+        {
+            r = r * t + c[k];
+        }
+        return r;
+    }
+
+    private static int RealRoots(ref Coefficients c, int n, double lo, double hi, ref Coefficients roots)
+    {
+        int degree = n;
+        while (degree > 0 && c[degree] == 0)
+        {
+            degree--;
+        }
+        if (degree <= 0)
+        {
+            return 0;
+        }
+        if (degree == 1)
+        {
+            double t = -c[0] / c[1];
+            if (t >= lo && t <= hi)
+            {
+                roots[0] = t;
+                return 1;
+            }
+            return 0;
+        }
+        if (degree == 2)
+        {
+            return QuadraticRoots(c[0], c[1], c[2], lo, hi, ref roots);
+        }
+
+        Coefficients derivative = default;
+        for (int k = 1; k <= degree; k++)
+        {
+            derivative[k - 1] = k * c[k];
+        }
+        Coefficients critical = default;
+        int nc = RealRoots(ref derivative, degree - 1, lo, hi, ref critical);
+
+        int count = 0;
+        double a = lo;
+        double fa = Evaluate(ref c, degree, a);
+        for (int piece = 0; piece <= nc; piece++)
+        {
+            double b = piece < nc ? critical[piece] : hi;
+            double fb = Evaluate(ref c, degree, b);
+            if (fa == 0 && (count == 0 || roots[count - 1] != a))
+            {
+                roots[count++] = a;
+            }
+            else if ((fa < 0 && fb > 0) || (fa > 0 && fb < 0))
+            {
+                roots[count++] = Bracketed(ref c, degree, a, b, fa);
+            }
+            a = b;
+            fa = fb;
+        }
+        if (fa == 0 && (count == 0 || roots[count - 1] != a))
+        {
+            roots[count++] = a;
+        }
+        return count;
+    }
+
+    private static int QuadraticRoots(double c0, double c1, double c2, double lo, double hi, ref Coefficients roots)
     {
         double disc = c1 * c1 - 4 * c2 * c0;
         if (disc < 0)
@@ -228,18 +280,40 @@ public static class Polynomial
         return count;
     }
 
-    // The root in [a, b] of a polynomial monotone there with a sign change; fa = p(a).
-    private static double Bracketed(ReadOnlySpan<double> p, double a, double b, double fa)
+    // The root in [a, b] of a polynomial of the given degree (1 to 4) monotone there with a sign
+    // change; fa = p(a). Newton, safeguarded by bisection; Horner unrolled per degree in the same
+    // order of operations as a loop would take.
+    private static double Bracketed(ref Coefficients p, int degree, double a, double b, double fa)
     {
+        double p0 = p[0], p1 = p[1], p2 = p[2], p3 = p[3], p4 = p[4];
         double x = 0.5 * (a + b);
         for (int iteration = 0; iteration < 100; iteration++)
         {
-            double f = p[^1];
-            double df = 0;
-            for (int k = p.Length - 2; k >= 0; k--)
+            double f, df = 0;
+            switch (degree)
             {
-                df = df * x + f;
-                f = f * x + p[k];
+                case 4:
+                    f = p4;
+                    df = df * x + f; f = f * x + p3;
+                    df = df * x + f; f = f * x + p2;
+                    df = df * x + f; f = f * x + p1;
+                    df = df * x + f; f = f * x + p0;
+                    break;
+                case 3:
+                    f = p3;
+                    df = df * x + f; f = f * x + p2;
+                    df = df * x + f; f = f * x + p1;
+                    df = df * x + f; f = f * x + p0;
+                    break;
+                case 2:
+                    f = p2;
+                    df = df * x + f; f = f * x + p1;
+                    df = df * x + f; f = f * x + p0;
+                    break;
+                default:
+                    f = p1;
+                    df = df * x + f; f = f * x + p0;
+                    break;
             }
             if (f == 0)
             {
@@ -268,4 +342,11 @@ public static class Polynomial
         }
         return x;
     }
+}
+
+/// <summary>The ascending coefficients of a polynomial of degree at most <see cref="Polynomial.MaxDegree"/>, held inline.</summary>
+[InlineArray(Polynomial.MaxDegree + 1)]
+internal struct Coefficients
+{
+    private double _element;
 }

@@ -278,9 +278,11 @@ public sealed class EventEngine
                 Sync(a);
                 Sync(b);
                 _resolver.Pair(a, b, Time);
-                Repredict(a);
-                Repredict(b);
+                // Ball b's side is not predicted yet, so the pair itself waits for b's turn; ball a
+                // is listed as active first, so that b, if it stopped, still finds it.
+                Repredict(a, skip: b);
                 UpdateActive(a);
+                Repredict(b);
                 UpdateActive(b);
                 break;
             default:
@@ -368,7 +370,7 @@ public sealed class EventEngine
         {
             foreach (int j in _grid.Candidates(i))
             {
-                if (j > i)
+                if (j > i) // Candidates may list i itself
                 {
                     double t = PredictPair(i, j);
                     if (t < double.PositiveInfinity)
@@ -386,13 +388,14 @@ public sealed class EventEngine
         _queue.Build();
     }
 
-    // Everything that involves ball i, after its state changed (at the engine's time).
-    private void Repredict(int i)
+    // Everything that involves ball i, after its state changed (at the engine's time); the pair
+    // with ball `skip` (if any) is left to that ball's own Repredict, which follows.
+    private void Repredict(int i, int skip = -1)
     {
         Sync(i);
         ClearPairs(i);
         _predictor.PredictBall(i, Time);
-        PredictPairsOf(i);
+        PredictPairsOf(i, skip);
         UpdateKey(i);
     }
 
@@ -406,10 +409,21 @@ public sealed class EventEngine
         UpdateKey(i);
     }
 
-    private void PredictPairsOf(int i)
+    private void PredictPairsOf(int i, int skip = -1)
     {
-        foreach (int j in _grid.Candidates(i))
+        // On a one-cell grid every ball is a candidate, but a ball that does not move can only be
+        // met by one that does: then only the active balls need a look (every ball that moves is
+        // active, the others would fail MayMeet anyway, and which balls are looked at in what
+        // order changes no prediction).
+        var partners = _grid.IsSingleCell && !BallMotion.Translates(_balls[i].State)
+            ? _active.AsSpan(0, ActiveCount)
+            : _grid.Candidates(i);
+        foreach (int j in partners)
         {
+            if (j == i || j == skip)
+            {
+                continue;
+            }
             double t = i < j ? PredictPair(i, j) : PredictPair(j, i);
             if (t < double.PositiveInfinity)
             {

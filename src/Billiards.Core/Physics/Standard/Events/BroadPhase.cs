@@ -74,6 +74,9 @@ internal sealed class BroadPhase
     /// </summary>
     public double LookAhead { get; }
 
+    /// <summary>True when the grid is one cell (small tables): every listed ball is every other's candidate.</summary>
+    public bool IsSingleCell => _cells.Length == 1;
+
     /// <summary>Lists no ball anywhere.</summary>
     public void Clear()
     {
@@ -81,13 +84,21 @@ internal sealed class BroadPhase
         _cellRect.AsSpan().Fill((-1, -1, -1, -1));
     }
 
-    /// <summary>The balls that share a cell with ball i, other than i (valid until the next call).</summary>
+    /// <summary>
+    /// The balls that share a cell with ball i, each once; ball i itself may be among them (valid
+    /// until the next call).
+    /// </summary>
     public ReadOnlySpan<int> Candidates(int i)
     {
         var rect = _cellRect[i];
         if (rect.X0 < 0)
         {
             return [];
+        }
+        if (IsSingleCell)
+        {
+            // One cell: its list is the answer, with no need to weed out repeats.
+            return _cells[0].AsSpan(0, _cellCount[0]);
         }
         if (++_stampValue == int.MaxValue)
         {

@@ -130,7 +130,7 @@ internal sealed class Predictor
         double horizon = Math.Min(duration, MaxHorizon);
         var box = PathBox(b.Position, b.Velocity, acc, horizon);
         double r = _r;
-        Span<double> c = stackalloc double[5];
+        Coefficients c = default;
         double best = double.PositiveInfinity;
 
         var segments = _geometry.Segments;
@@ -145,7 +145,7 @@ internal sealed class Predictor
             c[0] = Vec3.Dot(g.Normal, b.Position - g.Start) - r;
             c[1] = Vec3.Dot(g.Normal, b.Velocity);
             c[2] = 0.5 * Vec3.Dot(g.Normal, acc);
-            double t = Polynomial.FirstEntry(c[..3], horizon, OverlapTolerance);
+            double t = Polynomial.FirstEntry(ref c, 2, horizon, OverlapTolerance);
             if (t < best)
             {
                 // The contact must fall on the face; past its ends the noses take over.
@@ -170,8 +170,8 @@ internal sealed class Predictor
                 continue;
             }
             double reach = r + noses[s].Radius;
-            CircleGap(b.Position - noses[s].Centre, b.Velocity, acc, reach, c);
-            double t = Polynomial.FirstEntry(c, horizon, 2 * reach * OverlapTolerance);
+            CircleGap(b.Position - noses[s].Centre, b.Velocity, acc, reach, ref c);
+            double t = Polynomial.FirstEntry(ref c, 4, horizon, 2 * reach * OverlapTolerance);
             if (t < best)
             {
                 best = t;
@@ -188,9 +188,9 @@ internal sealed class Predictor
             {
                 continue;
             }
-            CircleGap(b.Position - pockets[s].Centre, b.Velocity, acc, pockets[s].Radius, c);
+            CircleGap(b.Position - pockets[s].Centre, b.Velocity, acc, pockets[s].Radius, ref c);
             // Any centre inside the circle and going deeper is pocketed.
-            double t = Polynomial.FirstEntry(c, horizon, double.PositiveInfinity);
+            double t = Polynomial.FirstEntry(ref c, 4, horizon, double.PositiveInfinity);
             if (t < best)
             {
                 best = t;
@@ -260,6 +260,50 @@ internal sealed class Predictor
         return !(ba.X0 - bb.X1 > 2 * r || bb.X0 - ba.X1 > 2 * r || ba.Y0 - bb.Y1 > 2 * r || bb.Y0 - ba.Y1 > 2 * r);
     }
 
+    // True when the relative path d + v t + a t^2 / 2 (bed plane), t in [0, t], provably stays
+    // farther than reach from the origin, by a margin above every rounding error of the quartic's
+    // coefficients, its evaluation and the degree cut (about 1e-14 of the largest term M^2, where
+    // M bounds |d| + |v| t + |a| t^2 / 2): then every value the root finder computes on [0, t] is
+    // positive and it would return +infinity too, bit for bit the same answer without the solve.
+    // The path lies in the triangle of its quadratic Bezier control points, d, d + v t / 2 and
+    // its end; this catches what ClearOf's straight line plus drift misses on long, curved paths.
+    private static bool HullClear(Vec3 d, Vec3 v, Vec3 a, double t, double reach)
+    {
+        if (!(t > 0))
+        {
+            return false;
+        }
+        double hx = 0.5 * a.X, hy = 0.5 * a.Y;
+        double m = Math.Sqrt(d.X * d.X + d.Y * d.Y) + Math.Sqrt(v.X * v.X + v.Y * v.Y) * t + Math.Sqrt(hx * hx + hy * hy) * t * t;
+        double margin = 1e-13 * (m * m + reach * reach) + 1e-9 * reach * reach;
+        double dist = TriangleDistance(d.X, d.Y, d.X + v.X * (0.5 * t), d.Y + v.Y * (0.5 * t),
+            d.X + v.X * t + hx * t * t, d.Y + v.Y * t + hy * t * t);
+        return dist > reach && (dist - reach) * (dist + reach) > margin;
+    }
+
+    // Distance from the origin to the triangle (a, b, c), 0 inside.
+    private static double TriangleDistance(double ax, double ay, double bx, double by, double cx, double cy)
+    {
+        double c1 = (bx - ax) * (-ay) - (by - ay) * (-ax);
+        double c2 = (cx - bx) * (-by) - (cy - by) * (-bx);
+        double c3 = (ax - cx) * (-cy) - (ay - cy) * (-cx);
+        if ((c1 >= 0 && c2 >= 0 && c3 >= 0) || (c1 <= 0 && c2 <= 0 && c3 <= 0))
+        {
+            return 0;
+        }
+        return Math.Sqrt(Math.Min(SegmentDistance2(ax, ay, bx, by), Math.Min(SegmentDistance2(bx, by, cx, cy), SegmentDistance2(cx, cy, ax, ay))));
+    }
+
+    // Squared distance from the origin to the segment (a, b).
+    private static double SegmentDistance2(double ax, double ay, double bx, double by)
+    {
+        double ex = bx - ax, ey = by - ay;
+        double ee = ex * ex + ey * ey;
+        double s = ee > 0 ? Math.Clamp(-(ax * ex + ay * ey) / ee, 0, 1) : 0;
+        double x = ax + ex * s, y = ay + ey * s;
+        return x * x + y * y;
+    }
+
     /// <summary>Time of the first contact of balls i &lt; j, both synced to <paramref name="time"/> (s, absolute), or +infinity.</summary>
     public double PairContact(int i, int j, double time)
     {
@@ -274,9 +318,13 @@ internal sealed class Predictor
         {
             return double.PositiveInfinity;
         }
-        Span<double> c = stackalloc double[5];
-        CircleGap(d, dv, da, 2 * r, c);
-        double t = Polynomial.FirstEntry(c, horizon, 4 * r * OverlapTolerance);
+        if (HullClear(d, dv, da, horizon, 2 * r))
+        {
+            return double.PositiveInfinity;
+        }
+        Coefficients c = default;
+        CircleGap(d, dv, da, 2 * r, ref c);
+        double t = Polynomial.FirstEntry(ref c, 4, horizon, 4 * r * OverlapTolerance);
         return time + t;
     }
 
@@ -308,7 +356,7 @@ internal sealed class Predictor
     }
 
     // |d + v t + a t^2 / 2|^2 - reach^2 as ascending coefficients (bed plane only).
-    private static void CircleGap(Vec3 d, Vec3 v, Vec3 a, double reach, Span<double> c)
+    private static void CircleGap(Vec3 d, Vec3 v, Vec3 a, double reach, ref Coefficients c)
     {
         var h = a.XY * 0.5;
         var dv = v.XY;
