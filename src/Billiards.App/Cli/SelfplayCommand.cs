@@ -22,6 +22,12 @@ public static class SelfplayCommand
     /// <summary>The most games one run plays.</summary>
     public const int MaxGames = 100_000;
 
+    /// <summary>
+    /// The decisions' time cap: far above any level's own search, so that a loaded machine slows
+    /// the games down but never cuts a search short, and a seed gives the same games bit for bit.
+    /// </summary>
+    public static readonly PlannerBudget Budget = new(60_000);
+
     /// <summary>The largest straight-pool target accepted.</summary>
     public const int MaxTarget = 1000;
 
@@ -67,7 +73,7 @@ public static class SelfplayCommand
             var lastReport = TimeSpan.Zero;
             for (int g = 0; g < count; g++)
             {
-                played.Add(selfPlay.Play(game, pair, g % 2, PlannerRandom.Derive((ulong)seedValue, g), PlannerBudget.Default, points));
+                played.Add(selfPlay.Play(game, pair, g % 2, PlannerRandom.Derive((ulong)seedValue, g), Budget, points));
                 if (clock.Elapsed - lastReport > TimeSpan.FromSeconds(5) || g == count - 1)
                 {
                     lastReport = clock.Elapsed;

@@ -32,9 +32,10 @@ namespace Billiards.Core.Ai;
 /// shooter's own error) less 0.04 per ball left without a straight way to a pocket
 /// (<see cref="PlannerTable.ProblemBalls"/>), a legal miss 0.5 less 0.4 times the opponent's best shot (how
 /// safeties are judged), a foul 0.08.</item>
-/// <item>Refinement: the best variations are simulated again with more error samples, at level 5
-/// in two rounds (the best 40 with 10 more, the best 10 of those with 60 more); the best mean of
-/// the last round wins.</item>
+/// <item>Refinement: the best variations are simulated again with more error samples, at levels 4
+/// and 5 in two rounds (at level 5 the best 40 with 10 more, the best 10 of those with 60 more);
+/// of the last round the best mean less its standard error wins, so that of two shots with nearly
+/// the same mean the surer one is played.</item>
 /// </list>
 /// Determinism: every simulation draws its error from its own stream, derived from the seed and
 /// the variation's and sample's indices, and results are reduced in index order, so the threads
@@ -251,6 +252,7 @@ public sealed class ShotPlanner
         private readonly PlannerTable _table = planner.Table;
         private readonly IReferee _referee = Referee.For(state.Rules, planner.Table.Table, planner.Table.R);
         private int _simulations;
+        private double[] _squares = [];
 
         public Decision Run()
         {
@@ -276,6 +278,7 @@ public sealed class ShotPlanner
             // and the best of those with many more: the winner comes from the last round, so its
             // mean rests on enough samples that a lucky few do not decide.
             var sum = new double[variations.Count];
+            _squares = new double[variations.Count];
             var pots = new int[variations.Count];
             var count = new int[variations.Count];
             int first = Math.Clamp(level.FirstRoundSimulations / Math.Max(1, variations.Count), 1, level.Samples);
@@ -294,7 +297,11 @@ public sealed class ShotPlanner
             {
                 Simulate(workers, variations, finalists, samples, level.RefineSamples, sum, pots, count);
             }
-            int best = finalists.Count > 0 ? Ranked(finalists, sum, count)[0] : 0;
+            // The winner by a cautious mean: its mean less one standard error, so that of two shots
+            // with nearly the same mean the one whose outcome varies less (the surer pot) wins.
+            int best = finalists.Count > 0
+                ? finalists.OrderByDescending(i => Cautious(i, sum, count)).ThenBy(i => i).First()
+                : 0;
             var chosen = variations[best];
             var root = roots[chosen.Root];
             var expected = workers[0].Run(chosen, chosen.Shot, _referee, level).Ruling;
@@ -315,6 +322,18 @@ public sealed class ShotPlanner
             {
                 ExpectedRuling = expected,
             };
+        }
+
+        private double Cautious(int i, double[] sum, int[] count)
+        {
+            if (count[i] == 0)
+            {
+                return double.NegativeInfinity;
+            }
+            double n = count[i];
+            double mean = sum[i] / n;
+            double variance = Math.Max(0, _squares[i] / n - mean * mean);
+            return mean - Math.Sqrt(variance / n);
         }
 
         // Best mean first, ties by index (so the order never depends on the threads).
@@ -356,6 +375,7 @@ public sealed class ShotPlanner
                 {
                     int v = items[i].v;
                     sum[v] += scores[i];
+                    _squares[v] += scores[i] * scores[i];
                     pots[v] += made[i] ? 1 : 0;
                     count[v]++;
                     _simulations++;

@@ -79,7 +79,7 @@ public sealed record SkillLevel(
         new(1, 1.00, 0.12, 0.10, Candidates: 4, Speeds: 2, Spins: 1, Samples: 1, RefineTop: 2, RefineSamples: 2, LookAhead: 0, Placements: 2),
         new(2, 0.55, 0.08, 0.07, Candidates: 6, Speeds: 3, Spins: 1, Samples: 2, RefineTop: 3, RefineSamples: 4, LookAhead: 0, Placements: 3),
         new(3, 0.30, 0.05, 0.05, Candidates: 8, Speeds: 3, Spins: 3, Samples: 2, RefineTop: 6, RefineSamples: 8, LookAhead: 1, Placements: 4),
-        new(4, 0.16, 0.035, 0.03, Candidates: 10, Speeds: 4, Spins: 4, Samples: 3, RefineTop: 8, RefineSamples: 12, LookAhead: 1, Placements: 5),
+        new(4, 0.16, 0.035, 0.03, Candidates: 10, Speeds: 4, Spins: 4, Samples: 3, RefineTop: 6, RefineSamples: 24, LookAhead: 1, Placements: 5, ScreenTop: 20, ScreenSamples: 6),
         new(5, 0.08, 0.02, 0.015, Candidates: 16, Speeds: 7, Spins: 10, Samples: 3, RefineTop: 10, RefineSamples: 60, LookAhead: 1, Placements: 6, ScreenTop: 40, ScreenSamples: 10, FirstRoundSimulations: 4000),
     ];
 
