@@ -245,7 +245,49 @@ public sealed class EulerStepper
                     break;
                 }
             }
+            if (b.State != MotionState.Pocketed && !TableBounds.Contains(_geometry.Spec, b.Position, r))
+            {
+                LeftTheTable(ref b, i, time);
+            }
         }
+    }
+
+    /// <summary>
+    /// A ball whose step ended off the table (neither on the bed nor in a mouth). Every cushion
+    /// face and nose is swept, so the only way out is through a mouth: a ball bounced deep in the
+    /// jaws within one long step (a hard masse at dt 0.1) can travel on past the jaws' ends, over
+    /// the hole, without its straight path meeting the capture circle. Over the hole it falls: it
+    /// drops into the pocket whose capture circle its step's path came nearest. Should that path
+    /// pass no mouth (which the sweep rules out), the ball goes back to where the step started
+    /// and stops, so that no result ever holds a ball off the table.
+    /// </summary>
+    private void LeftTheTable(ref BallState b, int i, double time)
+    {
+        double best = double.PositiveInfinity;
+        int nearest = -1;
+        var p0 = _start[i];
+        var d = (b.Position - p0).XY;
+        foreach (ref readonly var pocket in _geometry.Pockets)
+        {
+            var f = (pocket.Centre - p0).XY;
+            double s = d.LengthSquared > 0 ? Math.Clamp(Vec3.Dot(f, d) / d.LengthSquared, 0, 1) : 0;
+            double distance = (f - d * s).Length;
+            if (distance < best)
+            {
+                (best, nearest) = (distance, pocket.Pocket);
+            }
+        }
+        var spec = _geometry.Spec;
+        double reach = Math.Max(spec.CornerPocketMouth, spec.SidePocketMouth) / 2 + 2 * _params.R;
+        if (nearest >= 0 && best <= reach)
+        {
+            Drop(ref b, i, nearest, time);
+            return;
+        }
+        b.Position = _start[i];
+        b.Velocity = Vec3.Zero;
+        b.Spin = new Vec3(0, 0, b.Spin.Z);
+        BallMotion.Classify(ref b, _k);
     }
 
     /// <summary>

@@ -589,7 +589,7 @@ public sealed partial class PhysicsEngine
         }
         else if (cue >= 0 && _balls[cue].IsPocketed)
         {
-            _balls[cue].Position = _startPositions[cue];
+            _balls[cue].Position = FreeSpotNear(cue, _startPositions[cue]);
             _balls[cue].Pocket = -1;
             _balls[cue].IsPocketed = false;
             LastShotEnd = ShotEnd.CueBallRespotted;
@@ -601,6 +601,58 @@ public sealed partial class PhysicsEngine
         Queue.Reset();
         LastCueDisplacement = cue >= 0 ? _balls[cue].Position - _cueShotStart : Vector3.Zero;
         IsAtRest = true;
+        return true;
+    }
+
+    // Step (cm) of the rings FreeSpotNear searches, and their number of points.
+    private const float RespotStep = 0.1f;
+    private const int RespotPoints = 72;
+
+    /// <summary>
+    /// Where ball <paramref name="index"/> goes back to: <paramref name="start"/> when no ball on
+    /// the bed lies within a diameter of it, else the nearest free point on the bed around it, to
+    /// within <see cref="RespotStep"/> (rings of growing radius, each walked from the head side).
+    /// The seed put the cue ball back on its start even onto a ball lying there, which left the two
+    /// overlapping at rest.
+    /// </summary>
+    private Vector3 FreeSpotNear(int index, Vector3 start)
+    {
+        if (IsFree(index, start))
+        {
+            return start;
+        }
+        float maxRadius = 2 * (Table.HalfLength + Table.HalfWidth);
+        for (float radius = RespotStep; radius < maxRadius; radius += RespotStep)
+        {
+            for (int k = 0; k < RespotPoints; k++)
+            {
+                double angle = Math.PI + 2 * Math.PI * k / RespotPoints;
+                var p = new Vector3(start.X + radius * (float)Math.Cos(angle), start.Y, start.Z + radius * (float)Math.Sin(angle));
+                if (IsFree(index, p))
+                {
+                    return p;
+                }
+            }
+        }
+        return start; // a full table: nothing better exists
+    }
+
+    // On the bed, R inside the cushion noses, and clear of every other ball on it (with a margin
+    // well above single precision's round-off).
+    private bool IsFree(int index, Vector3 p)
+    {
+        if (Math.Abs(p.X) > Table.HalfLength - BallRadius || Math.Abs(p.Z) > Table.HalfWidth - BallRadius)
+        {
+            return false;
+        }
+        const float clear = (BallDiameter + 0.01f) * (BallDiameter + 0.01f);
+        for (int j = 0; j < _balls.Length; j++)
+        {
+            if (j != index && _balls[j].IsOnBed && Vector3.DistanceSquared(_balls[j].Position, p) < clear)
+            {
+                return false;
+            }
+        }
         return true;
     }
 

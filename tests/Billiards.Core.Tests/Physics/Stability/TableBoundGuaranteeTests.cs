@@ -99,6 +99,36 @@ public class TableBoundGuaranteeTests
         }
     }
 
+    /// <summary>
+    /// The euler integrator's last line of the guarantee: a ball whose long step carried it past a
+    /// pocket's jaws, over the hole (as a hard masse bounced deep in the jaws at dt 0.1 did, seed 1
+    /// shot 2049 of the soak), falls into that pocket. Set up directly: a ball three radii behind
+    /// the left-head corner's capture circle, moving on outward, off the table after one step
+    /// (the scene loader would refuse such a start; the stepper must not leave it there).
+    /// </summary>
+    [Theory]
+    [InlineData(0.1)]
+    [InlineData(1.0 / 30)]
+    public void Euler_drops_a_ball_that_a_long_step_carried_past_the_jaws(double dt)
+    {
+        var table = TableSpec.FromPreset("pool-9ft");
+        double r = PhysicsParams.DefaultRadius;
+        var pocket = TableGeometry.Build(table, r).Pockets[0];
+        var outward = new Vec3(-1, 1, 0).Normalized();
+        var start = pocket.Centre + outward * (3 * r) + new Vec3(0, 0, r);
+        Assert.False(TableBounds.Contains(table, start + outward * (2 * dt), r)); // where the step ends
+        var physics = PhysicsConfig.Default with { Integrator = "euler", Dt = dt };
+        var rolling = outward * 2.0;
+        var scene = new Scene("jaws", null, table, physics, null,
+            [new BallSetup(BallId.Cue, start, rolling, Vec3.Cross(Vec3.UnitZ, rolling) / r)], null, null);
+        var sim = SimulationFactory.Create(scene);
+        sim.Step();
+        var b = sim.Balls[0];
+        Assert.True(b.IsPocketed, $"dt {dt}: ended at {b.Position}, {b.State}");
+        Assert.Equal(pocket.Pocket, b.Pocket);
+        Assert.Contains(sim.Events.AsSpan().ToArray(), e => e.Kind == EventKind.BallPocket && e.Feature == pocket.Pocket);
+    }
+
     private static void CheckByReflection(Simulation sim, double radius, bool overlap)
     {
         // The checker is [Conditional("DEBUG")]: called directly from a Release build it would vanish.

@@ -57,6 +57,34 @@ public class ShotEndTests
     }
 
     [Fact]
+    public void A_pocketed_cue_ball_goes_to_the_nearest_free_point_when_a_ball_lies_on_its_start()
+    {
+        // As above, but once the cue ball is on its way another ball is put on its start: the
+        // seed put the cue ball back onto it anyway, leaving them overlapping at rest.
+        var start = new Vector3(110, Y, 51);
+        var cue = new Ball(0, start) { Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
+        var other = At(1, -50, 0);
+        var engine = Engine("thesis", cue, other);
+        for (int k = 0; k < 10; k++)
+        {
+            engine.CalculatePhysics();
+        }
+        other.Position = start;
+        RunToRest(engine);
+        Assert.Equal(ShotEnd.CueBallRespotted, engine.LastShotEnd);
+        Assert.Equal(start, other.Position);
+        Assert.False(cue.IsPocketed);
+        // Clear of the other ball, and the nearest such point to within the search's 0.1 cm rings
+        // (plus its 0.01 cm margin): one diameter from the start.
+        float distance = Vector3.Distance(cue.Position, start);
+        Assert.InRange(distance, PhysicsEngine.BallDiameter, PhysicsEngine.BallDiameter + 0.12f);
+        Assert.Equal(Y, cue.Position.Y);
+        // On the bed, a radius inside the noses.
+        Assert.InRange(Math.Abs(cue.Position.X), 0, engine.Table.HalfLength - PhysicsEngine.BallRadius);
+        Assert.InRange(Math.Abs(cue.Position.Z), 0, engine.Table.HalfWidth - PhysicsEngine.BallRadius);
+    }
+
+    [Fact]
     public void A_pocketed_8_ball_resets_the_game()
     {
         var cue = At(0, -60, 0);
