@@ -79,7 +79,7 @@ public sealed class ComputerPlayerNode : Node
         var planner = _planner;
         ulong seed = _match.ShotSeed(3);
         var budget = Budget(BudgetMs);
-        _hinting = Task.Run(() => planner.Decide(state, position, SkillLevel.Of(HintLevel), budget, seed));
+        _hinting = BackgroundWork.Run(() => planner.Decide(state, position, SkillLevel.Of(HintLevel), budget, seed));
         Status = "Looking for a shot...";
         return true;
     }
@@ -129,7 +129,7 @@ public sealed class ComputerPlayerNode : Node
             ulong seed = _match.ShotSeed(1);
             var budget = Budget(BudgetMs);
             _decisionLevel = level;
-            _thinking = Task.Run(() => planner.Decide(state, position, SkillLevel.Of(level), budget, seed));
+            _thinking = BackgroundWork.Run(() => planner.Decide(state, position, SkillLevel.Of(level), budget, seed));
             Status = $"{_match.Shooter.Name} is thinking...";
             return;
         }
@@ -175,7 +175,7 @@ public sealed class ComputerPlayerNode : Node
             var ruling = _match!.LastRuling!;
             var position = TablePosition.Of(_physics!.Simulation);
             var planner = _planner!;
-            _choosing = Task.Run(() => planner.ChooseOption(ruling, position));
+            _choosing = BackgroundWork.Run(() => planner.ChooseOption(ruling, position));
             Status = $"{_match.Shooter.Name} chooses...";
             return;
         }
