@@ -59,12 +59,8 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
     /// <summary>MSAA samples asked for when the window was opened.</summary>
     public int Samples { get; }
 
-    /// <summary>True when the context renders in software (Mesa llvmpipe or softpipe): every pixel is paid in CPU time.</summary>
-    public bool IsSoftwareRenderer => IsSoftware(Gl.GetString(Gl.RendererName));
-
-    /// <summary>True for the renderer strings of Mesa's CPU rasterisers.</summary>
-    public static bool IsSoftware(string renderer) =>
-        renderer.Contains("llvmpipe", StringComparison.OrdinalIgnoreCase) || renderer.Contains("softpipe", StringComparison.OrdinalIgnoreCase);
+    /// <summary>True when the context renders in software (<see cref="Gl.IsSoftwareRasterizer"/>).</summary>
+    public bool IsSoftwareRenderer => Gl.IsSoftwareRasterizer;
 
     /// <summary>The GL functions of this window's context.</summary>
     public Gl Gl { get; }

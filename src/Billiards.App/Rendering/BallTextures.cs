@@ -140,9 +140,7 @@ public static class BallTextures
     {
         float extent = MathF.Tan(DiscAngle);
         float pixelsPerUnit = NumberImage / (2 * extent);
-        using var typeface = SKTypeface.FromFile(NumberFontPath)
-            ?? throw new InvalidOperationException($"{NumberFontPath}: not a font file that can be read");
-        using var font = new SKFont(typeface, 100) { Edging = SKFontEdging.Antialias, Subpixel = true };
+        using var font = new SKFont(FontFile.Open(NumberFontPath), 100) { Edging = SKFontEdging.Antialias, Subpixel = true };
         font.MeasureText("0", out var zero);
         // Scale the font so that a digit's height is DigitHeight on the tangent plane.
         font.Size = 100 * DigitHeight * pixelsPerUnit / zero.Height;

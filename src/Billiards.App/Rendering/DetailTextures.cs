@@ -41,7 +41,7 @@ internal sealed class DetailTextures : IDisposable
     /// </summary>
     public static void Anisotropic(Gl gl)
     {
-        if (Platform.GlfwWindow.IsSoftware(gl.GetString(Gl.RendererName)))
+        if (gl.IsSoftwareRasterizer)
         {
             return;
         }

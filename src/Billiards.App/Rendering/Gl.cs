@@ -49,7 +49,15 @@ internal sealed unsafe class Gl
         {
             throw new InvalidOperationException("the OpenGL context reports no version");
         }
+        IsSoftwareRasterizer = IsSoftware(GetString(RendererName));
     }
+
+    /// <summary>True when the context renders in software (Mesa llvmpipe or softpipe): every pixel is paid in CPU time.</summary>
+    public bool IsSoftwareRasterizer { get; }
+
+    /// <summary>True for the renderer strings of Mesa's CPU rasterisers.</summary>
+    private static bool IsSoftware(string renderer) =>
+        renderer.Contains("llvmpipe", StringComparison.OrdinalIgnoreCase) || renderer.Contains("softpipe", StringComparison.OrdinalIgnoreCase);
 
     public string GetString(uint name) => _gl.GetStringS((StringName)name) ?? "";
     public uint GetError() => (uint)_gl.GetError();

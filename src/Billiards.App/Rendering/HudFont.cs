@@ -31,9 +31,7 @@ public static class HudFont
     {
         int cellW = Advance * scale, cellH = LineHeight * scale;
         int width = Columns * cellW, height = Rows * cellH;
-        using var typeface = SKTypeface.FromFile(FontPath)
-            ?? throw new InvalidOperationException($"{FontPath}: not a font file that can be read");
-        using var font = new SKFont(typeface, 100) { Edging = SKFontEdging.Antialias, Hinting = SKFontHinting.None };
+        using var font = new SKFont(FontFile.Open(FontPath), 100) { Edging = SKFontEdging.Antialias, Hinting = SKFontHinting.None };
         float advance = font.MeasureText("M");
         // The span of the tallest and deepest characters drawn: ascenders, descenders, brackets.
         const string Span = "Mbdfhkl|gjpqy()[]{}_";

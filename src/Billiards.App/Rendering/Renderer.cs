@@ -40,7 +40,6 @@ internal sealed class Renderer : IDisposable
     private (int Width, int Height) _reducedSize;
     private readonly float[] _lamps = new float[12];
     private RenderFrame? _tableFrame;
-    private Matrix4x4 _tableViewProjection;
     private TableModel? _table;
     private TableModel? _room;
     private readonly DetailTextures _details;
@@ -165,7 +164,6 @@ internal sealed class Renderer : IDisposable
         Lamps(frame.Table, lamps);
         lamps.CopyTo(_lamps);
         _tableFrame = frame;
-        _tableViewProjection = viewProjection;
         var view = new StaticLayer.ViewKey(viewProjection, frame.Eye, frame.Table, frame.Width, frame.Height);
         _view = view;
         _sceneLayer.Draw(view, BallsVersion(frame), _drawScene);
@@ -205,9 +203,9 @@ internal sealed class Renderer : IDisposable
         gl.Enable(Gl.DepthTest);
         gl.DepthFunc(Gl.LessEqual);
         gl.Disable(Gl.Blend);
-        _shadows.Draw(_tableViewProjection, frame.Balls, radius, _lamps, LampRadius, Ambient);
+        _shadows.Draw(_view.ViewProjection, frame.Balls, radius, _lamps, LampRadius, Ambient);
 
-        _lit.Begin(_tableViewProjection, frame.Eye, _lamps);
+        _lit.Begin(_view.ViewProjection, frame.Eye, _lamps);
         // Balls and the cue are closed and wound counter-clockwise outwards: their far halves are
         // dropped before rasterising.
         gl.Enable(Gl.CullFace);
@@ -251,7 +249,7 @@ internal sealed class Renderer : IDisposable
         gl.Disable(Gl.CullFace);
         gl.Disable(Gl.Blend);
         gl.Enable(Gl.Multisample);
-        _gouraud.Begin(_tableViewProjection, frame.Eye, _lamps);
+        _gouraud.Begin(_view.ViewProjection, frame.Eye, _lamps);
         _gouraud.Half((float)frame.Table.HalfLength, (float)frame.Table.HalfWidth);
         foreach (var part in _table!.Parts)
         {
