@@ -1,40 +1,30 @@
+using System.Collections.Concurrent;
 using System.Runtime.InteropServices;
 
 namespace Billiards.App.Platform;
 
 /// <summary>
-/// Work that must not take the frames' CPU: the computer player's search. It runs on its own
-/// thread at the lowest priority the system gives (Linux: nice 19 for that thread alone; Windows:
-/// the lowest thread priority), so that a software rasteriser's threads, which want every core,
-/// keep drawing while the computer thinks and the search takes what they leave.
+/// Work that must not take the frames' CPU: the computer player's search. It runs on a small pool
+/// of threads of its own, each at the lowest priority the system gives (Linux: nice 19 for that
+/// thread alone; Windows: the lowest thread priority), so that a software rasteriser's threads,
+/// which want every core, keep drawing while the computer thinks and the search takes what they
+/// leave. Parallel loops inside the work run on the same low-priority threads (they are the
+/// work's <see cref="TaskScheduler.Current"/>), never on the shared thread pool.
 /// </summary>
+/// <remarks>
+/// Poll the returned task (<see cref="Task.IsCompleted"/>) from the frame loop rather than awaiting
+/// it: on Linux a thread inherits the nice value of the thread that creates it, so continuations
+/// started from these threads could leave a thread-pool thread at the lowest priority.
+/// </remarks>
 public static partial class BackgroundWork
 {
     private const int PrioProcess = 0, Nicest = 19;
 
-    /// <summary>Runs <paramref name="work"/> on a new low-priority thread.</summary>
-    public static Task<T> Run<T>(Func<T> work)
-    {
-        var done = new TaskCompletionSource<T>(TaskCreationOptions.RunContinuationsAsynchronously);
-        var thread = new Thread(() =>
-        {
-            Lower();
-            try
-            {
-                done.SetResult(work());
-            }
-            catch (Exception e)
-            {
-                done.SetException(e);
-            }
-        })
-        {
-            IsBackground = true,
-            Name = "computer player",
-        };
-        thread.Start();
-        return done.Task;
-    }
+    private static readonly Lazy<LowPriorityScheduler> Scheduler = new(() => new LowPriorityScheduler(Math.Max(2, Environment.ProcessorCount)));
+
+    /// <summary>Runs <paramref name="work"/> on one of the low-priority threads.</summary>
+    public static Task<T> Run<T>(Func<T> work) =>
+        Task.Factory.StartNew(work, CancellationToken.None, TaskCreationOptions.DenyChildAttach, Scheduler.Value);
 
     /// <summary>Lowers the calling thread's priority; true when the system took it.</summary>
     public static bool Lower()
@@ -66,4 +56,50 @@ public static partial class BackgroundWork
 
     [LibraryImport("libc", EntryPoint = "gettid")]
     private static partial int GetTid();
+
+    /// <summary>A fixed set of background threads, each lowered once when it starts.</summary>
+    private sealed class LowPriorityScheduler : TaskScheduler
+    {
+        private readonly BlockingCollection<Task> _queue = [];
+        private readonly HashSet<int> _threads = [];
+
+        public LowPriorityScheduler(int threads)
+        {
+            for (int i = 0; i < threads; i++)
+            {
+                var thread = new Thread(Serve) { IsBackground = true, Name = "computer player " + (i + 1) };
+                thread.Start();
+            }
+        }
+
+        public override int MaximumConcurrencyLevel => _threads.Count;
+
+        private void Serve()
+        {
+            Lower();
+            lock (_threads)
+            {
+                _threads.Add(Environment.CurrentManagedThreadId);
+            }
+            foreach (var task in _queue.GetConsumingEnumerable())
+            {
+                TryExecuteTask(task);
+            }
+        }
+
+        protected override void QueueTask(Task task) => _queue.Add(task);
+
+        // Inline only on our own threads, so no task of this scheduler runs at a normal priority.
+        protected override bool TryExecuteTaskInline(Task task, bool taskWasPreviouslyQueued)
+        {
+            bool ours;
+            lock (_threads)
+            {
+                ours = _threads.Contains(Environment.CurrentManagedThreadId);
+            }
+            return ours && TryExecuteTask(task);
+        }
+
+        protected override IEnumerable<Task> GetScheduledTasks() => [.. _queue];
+    }
 }

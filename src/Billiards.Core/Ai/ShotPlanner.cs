@@ -350,7 +350,10 @@ public sealed class ShotPlanner
             var done = new bool[items.Length];
             int next = -1;
             double cap = budget.Milliseconds;
-            Parallel.For(0, workers.Length, new ParallelOptions { MaxDegreeOfParallelism = workers.Length }, w =>
+            // On the caller's scheduler: a game runs the search on low-priority threads of its own,
+            // and Parallel.For would otherwise take the shared thread pool.
+            var options = new ParallelOptions { MaxDegreeOfParallelism = workers.Length, TaskScheduler = TaskScheduler.Current };
+            Parallel.For(0, workers.Length, options, w =>
             {
                 int i;
                 while ((i = Interlocked.Increment(ref next)) < items.Length)

@@ -4,17 +4,48 @@ namespace Billiards.App.Tests.Platform;
 
 public class BackgroundWorkTests
 {
+    // Polled as the frame loop does, so that the checks after the work run on the calling thread.
+    private static T Polled<T>(Task<T> task)
+    {
+        while (!task.IsCompleted)
+        {
+            Thread.Sleep(1);
+        }
+        return task.Result;
+    }
+
     [Fact]
-    public async Task WorkRunsOnItsOwnThreadAtTheLowestPriorityAndLeavesTheCallerAlone()
+    public void WorkRunsOnItsOwnThreadAtTheLowestPriorityAndLeavesTheCallerAlone()
     {
         int caller = Environment.CurrentManagedThreadId;
         int? callerNice = BackgroundWork.Niceness();
-        var (thread, nice) = await BackgroundWork.Run(() => (Environment.CurrentManagedThreadId, BackgroundWork.Niceness()));
+        var (thread, nice) = Polled(BackgroundWork.Run(() => (Environment.CurrentManagedThreadId, BackgroundWork.Niceness())));
         Assert.NotEqual(caller, thread);
+        Assert.Equal(caller, Environment.CurrentManagedThreadId);
         if (OperatingSystem.IsLinux())
         {
             Assert.Equal(19, nice);
             Assert.Equal(callerNice, BackgroundWork.Niceness());
+        }
+    }
+
+    [Fact]
+    public void AParallelLoopInsideTheWorkRunsOnlyOnLowPriorityThreads()
+    {
+        var seen = Polled(BackgroundWork.Run(() =>
+        {
+            var nices = new System.Collections.Concurrent.ConcurrentBag<(int Thread, int? Nice)>();
+            Parallel.For(0, 64, new ParallelOptions { MaxDegreeOfParallelism = 2, TaskScheduler = TaskScheduler.Current }, _ =>
+            {
+                nices.Add((Environment.CurrentManagedThreadId, BackgroundWork.Niceness()));
+                Thread.SpinWait(20_000);
+            });
+            return nices.ToArray();
+        }));
+        Assert.Equal(64, seen.Length);
+        if (OperatingSystem.IsLinux())
+        {
+            Assert.All(seen, s => Assert.Equal(19, s.Nice));
         }
     }
 

@@ -66,6 +66,42 @@ public class ShotPlannerTests
     }
 
     [Fact]
+    public async Task TheSearchRunsOnTheCallersSchedulerAndDecidesAsItDoesOnThePool()
+    {
+        var line = StraightIn(PocketId.FootLeft, 0.5, 0.6);
+        var state = NineBall;
+        var plain = Planner.Decide(state, line, SkillLevel.Of(3), new PlannerBudget(600_000, 2), 5);
+
+        var scheduler = new CountingScheduler();
+        var scheduled = await Task.Factory.StartNew(
+            () => Planner.Decide(state, line, SkillLevel.Of(3), new PlannerBudget(600_000, 2), 5),
+            CancellationToken.None, TaskCreationOptions.None, scheduler);
+
+        // The outer task and at least one worker of the parallel search were queued to it.
+        Assert.True(scheduler.Queued >= 2, $"queued {scheduler.Queued}");
+        Assert.Equal(plain.Shot, scheduled.Shot);
+        Assert.Equal(plain.ExpectedScore, scheduled.ExpectedScore);
+    }
+
+    /// <summary>Runs each task on a new thread and counts them.</summary>
+    private sealed class CountingScheduler : TaskScheduler
+    {
+        private int _queued;
+
+        public int Queued => _queued;
+
+        protected override void QueueTask(Task task)
+        {
+            Interlocked.Increment(ref _queued);
+            new Thread(() => TryExecuteTask(task)) { IsBackground = true }.Start();
+        }
+
+        protected override bool TryExecuteTaskInline(Task task, bool taskWasPreviouslyQueued) => false;
+
+        protected override IEnumerable<Task> GetScheduledTasks() => [];
+    }
+
+    [Fact]
     public void BallInHandPlacesTheCueBallLegallyAndPots()
     {
         var position = StraightIn(PocketId.HeadRight, 0.4, 0.5).Without(BallId.Cue);
