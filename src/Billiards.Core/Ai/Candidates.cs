@@ -196,15 +196,19 @@ internal static class CandidateGenerator
     }
 
     /// <summary>
-    /// Safeties on every legal target: full, half and thin contacts on both sides at soft speeds,
-    /// and one-rail kicks at the target when it cannot be seen.
+    /// Safeties on every legal target: full, half and thin contacts on both sides, the object ball
+    /// sent a short, a middle and a long way, and one-rail kicks at the target when it cannot be
+    /// seen. The list takes the targets in turn (each target's first safety, then each one's
+    /// second, ...), so that a search that takes the first few looks at every ball.
     /// </summary>
     public static List<Candidate> Safeties(PlannerTable table, GameState state, TablePosition position, Vec3 cue)
     {
-        var result = new List<Candidate>();
+        var perTarget = new List<List<Candidate>>();
         double r = table.R;
         foreach (var t in PlannerTable.LegalTargets(state, position))
         {
+            var result = new List<Candidate>();
+            perTarget.Add(result);
             var o = position.Positions[position.IndexOf(t)];
             var line = (o - cue).XY;
             double dist = line.Length;
@@ -212,10 +216,13 @@ internal static class CandidateGenerator
             var n = new Vec3(-u.Y, u.X, 0);
             if (!table.Blocked(position, cue, o, t))
             {
-                foreach (double offset in (ReadOnlySpan<double>)[0, 0.9, -0.9, 1.7, -1.7])
+                foreach (double travel in (ReadOnlySpan<double>)[0.4, 1.2, 0.15])
                 {
-                    var aim = o + n * (offset * r);
-                    result.Add(new Candidate(ShotKind.Safety, t, t, PocketId.None, o, Vec3.Zero, aim, Speed(dist, 0.4, 1), 0.1));
+                    foreach (double offset in (ReadOnlySpan<double>)[0, 0.9, -0.9, 1.7, -1.7])
+                    {
+                        var aim = o + n * (offset * r);
+                        result.Add(new Candidate(ShotKind.Safety, t, t, PocketId.None, o, Vec3.Zero, aim, Speed(dist, travel, 1), 0.1));
+                    }
                 }
             }
             else
@@ -231,7 +238,12 @@ internal static class CandidateGenerator
                 }
             }
         }
-        return result;
+        var interleaved = new List<Candidate>();
+        for (int k = 0; perTarget.Any(l => k < l.Count); k++)
+        {
+            interleaved.AddRange(perTarget.Where(l => k < l.Count).Select(l => l[k]));
+        }
+        return interleaved;
     }
 
     /// <summary>The cue ball's way to a rail when no shot is possible: straight at each legal target.</summary>

@@ -31,11 +31,13 @@ namespace Billiards.Core.Ai;
 /// quality of the position for the next shot (<see cref="PlannerTable.PositionQuality"/>, with the
 /// shooter's own error) less 0.04 per ball left without a straight way to a pocket
 /// (<see cref="PlannerTable.ProblemBalls"/>), a legal miss 0.5 less 0.4 times the opponent's best shot (how
-/// safeties are judged), a foul 0.08.</item>
+/// safeties are judged; the opponent judged at least as good as the player,
+/// <see cref="SkillLevel.OpponentAimStdDeg"/>), a foul 0.08.</item>
 /// <item>Refinement: the best variations are simulated again with more error samples, at levels 4
 /// and 5 in two rounds (at level 5 the best 40 with 10 more, the best 10 of those with 60 more);
 /// of the last round the best mean less its standard error wins, so that of two shots with nearly
-/// the same mean the surer one is played.</item>
+/// the same mean the surer one is played. A chosen pot that none of its (at least ten) simulations
+/// made is played, and called where the game calls, as a safety: it was chosen for what it leaves.</item>
 /// </list>
 /// Determinism: every simulation draws its error from its own stream, derived from the seed and
 /// the variation's and sample's indices, and results are reduced in index order, so the threads
@@ -127,8 +129,8 @@ public sealed class ShotPlanner
     /// The score of a judged shot for the player who shot it (see the class remarks), with the
     /// balls after it in <paramref name="after"/>, as <paramref name="level"/> judges it: levels
     /// without look-ahead see only the ruling; the others also the next shot, their own judged with
-    /// their own error (<see cref="SkillLevel.PositionAimStdDeg"/>), the opponent's with the
-    /// reference error.
+    /// their own error (<see cref="SkillLevel.PositionAimStdDeg"/>), the opponent's as if the
+    /// opponent were at least as good (<see cref="SkillLevel.OpponentAimStdDeg"/>).
     /// </summary>
     public double Score(GameState before, Ruling ruling, TablePosition after, SkillLevel level)
     {
@@ -163,7 +165,7 @@ public sealed class ShotPlanner
         {
             return 0.08;
         }
-        double opponent = look ? Table.BestEase(after, ruling.Next) : 0.5;
+        double opponent = look ? Table.BestEase(after, ruling.Next, level.OpponentAimStdDeg) : 0.5;
         return 0.5 - 0.4 * opponent;
     }
 
@@ -216,6 +218,23 @@ public sealed class ShotPlanner
         double aim = Math.Atan2(d.Y, d.X) * 180 / Math.PI;
         aim -= CueStrike.SquirtAngle(tipSide, p.M / p.CueEndMass) * 180 / Math.PI;
         return aim;
+    }
+
+    /// <summary>The fewest simulations of a chosen pot, none of them potting, that make it a safety.</summary>
+    internal const int SafetyEvidence = 10;
+
+    /// <summary>
+    /// How a chosen candidate is declared: a pot that none of at least <see cref="SafetyEvidence"/>
+    /// simulations made is not meant to pot (it was chosen for what it leaves), so it is played as a
+    /// safety and called as one where the game has a call; anything else as it is.
+    /// </summary>
+    internal static (ShotKind Kind, PocketId Pocket, Call? Call) Declared(Candidate candidate, Call? call, int pots, int simulations)
+    {
+        bool pot = candidate.Kind is ShotKind.Direct or ShotKind.Bank or ShotKind.Combination or ShotKind.Carom
+            || (candidate.Kind == ShotKind.Kick && candidate.Pocket != PocketId.None);
+        return pot && pots == 0 && simulations >= SafetyEvidence
+            ? (ShotKind.Safety, PocketId.None, call is null ? null : Call.Safety)
+            : (candidate.Kind, candidate.Pocket, call);
     }
 
     private sealed record Root(TablePosition Position, Vec3 Cue, Vec3? Place)
@@ -303,6 +322,12 @@ public sealed class ShotPlanner
                 ? finalists.OrderByDescending(i => Cautious(i, sum, count)).ThenBy(i => i).First()
                 : 0;
             var chosen = variations[best];
+            var (kind, pocket, declared) = Declared(chosen.Candidate, chosen.Before.Call, pots[best], count[best]);
+            chosen = chosen with
+            {
+                Candidate = chosen.Candidate with { Kind = kind, Pocket = pocket },
+                Before = chosen.Before with { Call = declared },
+            };
             var root = roots[chosen.Root];
             var expected = workers[0].Run(chosen, chosen.Shot, _referee, level).Ruling;
             _simulations++;

@@ -65,6 +65,14 @@ public sealed record SkillLevel(
     /// </summary>
     public double PositionAimStdDeg => 2.5 * AimStdDeg;
 
+    /// <summary>
+    /// The aim error (deg) the opponent's reply to a miss or a safety is judged with: the player
+    /// assumes an opponent at least as good as itself (<see cref="PositionAimStdDeg"/>) and at least
+    /// as good as the reference player (<see cref="PlannerTable.ReferenceAimStdDeg"/>), so that a
+    /// strong player fears leaving an open table more than a beginner does.
+    /// </summary>
+    public double OpponentAimStdDeg => Math.Min(PositionAimStdDeg, PlannerTable.ReferenceAimStdDeg);
+
     /// <summary>The lowest level.</summary>
     public const int Min = 1;
 
