@@ -20,13 +20,26 @@ internal sealed class HudRenderer : IDisposable
     private readonly List<float> _vertices = [];
     private readonly HudLayer _layer;
     private readonly Action<bool> _submit;
+
+    // The help overlay has a layer of its own: it is the same whenever it opens, so opening and
+    // closing it put back a stored texture instead of redrawing thousands of glyphs, and the HUD's
+    // own layer stays stored meanwhile.
+    private readonly List<float> _help = [];
+    private readonly HudLayer _helpLayer;
+    private readonly Action<bool> _submitHelp;
+
+    // The list the quad helpers append to: the HUD's or the help overlay's.
+    private List<float> _out;
     private int _width, _height;
 
     public HudRenderer(Gl gl)
     {
         _gl = gl;
         _layer = new HudLayer(gl);
-        _submit = Submit;
+        _helpLayer = new HudLayer(gl);
+        _submit = premultiplied => Submit(_vertices, premultiplied);
+        _submitHelp = premultiplied => Submit(_help, premultiplied);
+        _out = _vertices;
         _program = gl.LinkProgram(gl.CompileShader(Gl.VertexShader, Shaders.HudVertex),
             gl.CompileShader(Gl.FragmentShader, Shaders.HudFragment), ["aPosition", "aUv", "aColor", "aKind"]);
         _screen = gl.GetUniformLocation(_program, "uScreen");
@@ -80,6 +93,7 @@ internal sealed class HudRenderer : IDisposable
         _width = width;
         _height = height;
         _vertices.Clear();
+        _out = _vertices;
         int scale = Scale(height);
         EnsureFont(scale);
         int lineHeight = HudFont.LineHeight * scale;
@@ -177,8 +191,12 @@ internal sealed class HudRenderer : IDisposable
             Text(power.Label, (width - labelW) / 2, by - lineHeight - scale, scale, textColor);
         }
 
+        _layer.Draw(_vertices, Floats, width, height, _submit);
+
         if (hud.ShowHelp && hud.HelpLines.Count > 0)
         {
+            _help.Clear();
+            _out = _help;
             // The overlay fits the window: a smaller text scale first, then lines wrapped.
             int helpScale = scale;
             var lines = hud.HelpLines;
@@ -204,15 +222,18 @@ internal sealed class HudRenderer : IDisposable
             {
                 Text(lines[i], x + (2 * margin), y + (2 * margin) + (i * helpLine), helpScale, textColor);
             }
+            _out = _vertices;
+            _helpLayer.Draw(_help, Floats, width, height, _submitHelp);
         }
-
-        _layer.Draw(_vertices, Floats, width, height, _submit);
     }
 
     /// <summary>Frames whose HUD was put back from the stored layer.</summary>
     public long Reused => _layer.Reused;
 
-    private void Submit(bool premultiplied)
+    /// <summary>Frames whose help overlay was put back from its stored layer.</summary>
+    public long HelpReused => _helpLayer.Reused;
+
+    private void Submit(List<float> vertices, bool premultiplied)
     {
         _gl.Disable(Gl.DepthTest);
         _gl.Enable(Gl.Blend);
@@ -231,9 +252,9 @@ internal sealed class HudRenderer : IDisposable
         _gl.BindTexture(Gl.Texture2D, _font);
         _gl.BindVertexArray(_vao);
         _gl.BindBuffer(Gl.ArrayBuffer, _vbo);
-        var data = System.Runtime.InteropServices.CollectionsMarshal.AsSpan(_vertices);
+        var data = System.Runtime.InteropServices.CollectionsMarshal.AsSpan(vertices);
         _gl.BufferData<float>(Gl.ArrayBuffer, data, Gl.DynamicDraw);
-        _gl.DrawArrays(Gl.Triangles, 0, _vertices.Count / Floats);
+        _gl.DrawArrays(Gl.Triangles, 0, vertices.Count / Floats);
         _gl.Disable(Gl.Blend);
         _gl.Enable(Gl.DepthTest);
     }
@@ -263,9 +284,9 @@ internal sealed class HudRenderer : IDisposable
 
     private void Vertex(float x, float y, float u, float v, Vector4 c, float kind)
     {
-        _vertices.Add(x); _vertices.Add(y); _vertices.Add(u); _vertices.Add(v);
-        _vertices.Add(c.X); _vertices.Add(c.Y); _vertices.Add(c.Z); _vertices.Add(c.W);
-        _vertices.Add(kind);
+        _out.Add(x); _out.Add(y); _out.Add(u); _out.Add(v);
+        _out.Add(c.X); _out.Add(c.Y); _out.Add(c.Z); _out.Add(c.W);
+        _out.Add(kind);
     }
 
     private void Quad(float x, float y, float w, float h, float u0, float v0, float u1, float v1, Vector4 c, float kind)
@@ -351,5 +372,6 @@ internal sealed class HudRenderer : IDisposable
         _gl.DeleteTexture(_font);
         _gl.DeleteProgram(_program);
         _layer.Dispose();
+        _helpLayer.Dispose();
     }
 }

@@ -76,6 +76,9 @@ internal sealed class Renderer : IDisposable
     /// <summary>Frames whose HUD was put back from its stored layer.</summary>
     public long HudReused => _hud.Reused;
 
+    /// <summary>Frames whose help overlay was put back from its stored layer.</summary>
+    public long HelpReused => _hud.HelpReused;
+
     /// <summary>The model file of the table last drawn.</summary>
     public string? TableSource => _table?.Source;
 

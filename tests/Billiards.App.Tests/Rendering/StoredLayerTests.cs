@@ -91,6 +91,27 @@ public sealed class StoredLayerTests : IDisposable
     }
 
     [Fact]
+    public void TheHelpOverlayOpensAgainFromItsStoredLayerAndTheHudStaysStored()
+    {
+        var at = new Vector3(0.3f, -0.3f, R);
+        var open = Frame(at);
+        var closed = Frame(at);
+        closed.Hud = closed.Hud! with { ShowHelp = false };
+        for (int i = 0; i < 3; i++)
+        {
+            _renderer.Render(open);
+        }
+        _renderer.Render(closed);
+        long help = _renderer.Renderer.HelpReused, hud = _renderer.Renderer.HudReused;
+        byte[] reopened = _renderer.Render(open);
+
+        Assert.True(_renderer.Renderer.HelpReused > help, "the reopened help overlay was drawn afresh");
+        Assert.True(_renderer.Renderer.HudReused > hud, "opening the help overlay redrew the HUD");
+        using var afresh = new OffscreenRenderer(samples: 1);
+        Assert.InRange(MaxDifference(afresh.Render(open), reopened), 0, 1);
+    }
+
+    [Fact]
     public void ABallThatMovesShowsAtOnceAndItsOldPlaceIsCloth()
     {
         var from = new Vector3(0.3f, -0.3f, R);
