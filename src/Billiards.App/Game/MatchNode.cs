@@ -126,6 +126,15 @@ public sealed class MatchNode : Node
     /// <summary>True once the referee ended the game.</summary>
     public bool IsOver { get; private set; }
 
+    /// <summary>Seconds a game between two computers stays over before the next one starts by itself.</summary>
+    public const double AutoRematchSeconds = 6;
+
+    /// <summary>
+    /// Seconds until the next game starts by itself (two computers at the table, nobody to press
+    /// Enter), or null when a person decides.
+    /// </summary>
+    public double? RematchIn { get; private set; }
+
     /// <summary>The winner (0 or 1) of the game just ended, or null.</summary>
     public int? Winner { get; private set; }
 
@@ -298,6 +307,14 @@ public sealed class MatchNode : Node
     /// <inheritdoc />
     protected override void Process(double dt)
     {
+        if (IsOver && RematchIn is double left)
+        {
+            RematchIn = left - dt;
+            if (RematchIn <= 0)
+            {
+                Rematch();
+            }
+        }
         if (MessageTimeLeft > 0)
         {
             MessageTimeLeft -= dt;
@@ -412,6 +429,7 @@ public sealed class MatchNode : Node
     {
         int breaker = (_opening.Shooter + _games) % 2;
         IsOver = false;
+        RematchIn = null;
         Winner = null;
         PendingOptions = [];
         _calledBall = null;
@@ -451,6 +469,7 @@ public sealed class MatchNode : Node
         {
             IsOver = true;
             Winner = ruling.Winner;
+            RematchIn = Players.Any(p => p.IsHuman) ? null : AutoRematchSeconds;
             if (ruling.Winner is int w)
             {
                 GamesWon = GamesWon.With(w, GamesWon[w] + 1);

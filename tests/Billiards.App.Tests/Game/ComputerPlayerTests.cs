@@ -91,6 +91,65 @@ public class ComputerPlayerTests
         Assert.Equal(first[1].Before, second[1].Before);
     }
 
+    // The scene's own shot pots the called 8 and wins: the game is over once the balls stop.
+    private static (GameHost Host, MatchNode Match, Action Frame) GameWonByTheScenesShot(params MatchPlayer[] players)
+    {
+        var scene = SceneLoader.Load(AssetFolder.Scene("rules/eight-ball-on-the-eight.json"));
+        var clock = new ManualClock();
+        var host = new GameHost(scene, SimulationFactory.Create, new FakeWindow(), clock, new MatchSetup(GameRules.EightBall, players));
+        var match = host.Tree.Root.GetInTree<MatchNode>();
+        void Frame()
+        {
+            clock.Advance(1.0 / 30);
+            host.RunFrame();
+        }
+        for (int i = 0; i < 30 * 60 && !match.IsOver; i++)
+        {
+            Frame();
+        }
+        Assert.True(match.IsOver, "the scene's shot did not end the game");
+        return (host, match, Frame);
+    }
+
+    [Fact]
+    public void Two_computers_start_the_next_game_by_themselves_a_few_seconds_after_one_ends()
+    {
+        var (host, match, frame) = GameWonByTheScenesShot(new MatchPlayer("Computer A", 1), new MatchPlayer("Computer B", 1));
+        using (host)
+        {
+            Assert.Equal(0, match.Winner);
+            Assert.InRange(match.RematchIn!.Value, MatchNode.AutoRematchSeconds - 0.1, MatchNode.AutoRematchSeconds);
+            for (int i = 0; i < 30 * (MatchNode.AutoRematchSeconds - 1); i++)
+            {
+                frame();
+            }
+            Assert.True(match.IsOver, "the next game started before its time");
+            for (int i = 0; i < 60 && match.IsOver; i++)
+            {
+                frame();
+            }
+            Assert.False(match.IsOver, "the next game never started");
+            Assert.Null(match.RematchIn);
+            Assert.Equal(0, match.State.Shot);
+            Assert.Equal(1, match.State.Shooter); // the other player breaks
+        }
+    }
+
+    [Fact]
+    public void With_a_person_at_the_table_the_next_game_waits_for_Enter()
+    {
+        var (host, match, frame) = GameWonByTheScenesShot(new MatchPlayer("Anna"), new MatchPlayer("Computer", 1));
+        using (host)
+        {
+            Assert.Null(match.RematchIn);
+            for (int i = 0; i < 30 * (MatchNode.AutoRematchSeconds + 2); i++)
+            {
+                frame();
+            }
+            Assert.True(match.IsOver);
+        }
+    }
+
     [Fact]
     public void A_paused_game_holds_the_computer_until_it_resumes()
     {
