@@ -218,7 +218,8 @@ public sealed class MenuNode : Node
                 }
                 rows.Add(opponents);
                 rows.Add([("Start [Enter]", Begin)]);
-                y = height * 0.4f;
+                // Below the HUD panel, whose lines reach about 0.4 of the height at the start.
+                y = height * 0.5f;
                 break;
             case MenuPage.Pause:
                 title = "Paused";
