@@ -26,6 +26,18 @@ public enum ShotKind
     PushOut,
 }
 
+/// <summary>What a kind of shot means.</summary>
+public static class ShotKinds
+{
+    /// <summary>
+    /// True for a shot meant to pot a ball: a direct shot, bank, combination or carom, and a kick
+    /// with a <paramref name="pocket"/> (a kick without one is a safety).
+    /// </summary>
+    public static bool IsPot(ShotKind kind, PocketId pocket) =>
+        kind is ShotKind.Direct or ShotKind.Bank or ShotKind.Combination or ShotKind.Carom
+        || (kind == ShotKind.Kick && pocket != PocketId.None);
+}
+
 /// <summary>
 /// One candidate shot before the search varies it: which ball the cue ball should contact, where
 /// the first ball should go (for a pot), the call, a base speed and a geometric prior.

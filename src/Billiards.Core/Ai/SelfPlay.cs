@@ -22,14 +22,13 @@ namespace Billiards.Core.Ai;
 public sealed record PlayedShot(GameState Before, Vec3? Place, ShotSpec Planned, ShotSpec Executed, ShotKind Kind, Ruling Ruling, RefereeOption? Option, double DecisionMs, int Simulations)
 {
     /// <summary>True when the shot meant to pot a ball (not a break, safety or push-out).</summary>
-    public bool AttemptedPot => Kind is ShotKind.Direct or ShotKind.Bank or ShotKind.Combination or ShotKind.Carom
-        || (Kind == ShotKind.Kick && PotKick);
+    public bool AttemptedPot => ShotKinds.IsPot(Kind, Pocket);
 
     /// <summary>True when the shooter stayed at the table or won.</summary>
     public bool Made => Ruling.GameOver ? Ruling.Winner == Before.Shooter : Ruling.Continue;
 
-    /// <summary>A kick meant to pot (it has a pocket); set by the player.</summary>
-    public bool PotKick { get; init; }
+    /// <summary>The pocket the player meant, or <see cref="PocketId.None"/>; set by the player.</summary>
+    public PocketId Pocket { get; init; } = PocketId.None;
 
     /// <summary>The planner's expected pot probability of the shot (<see cref="Decision.ExpectedPot"/>).</summary>
     public double ExpectedPot { get; init; }
@@ -106,7 +105,7 @@ public sealed class SelfPlay
             var played = game.Play(new GameShot(executed, decision.Call, place, decision.PushOut, option));
             shots.Add(new PlayedShot(played.Before, place, decision.Shot, executed, decision.Kind, played.Ruling, option, decision.Milliseconds, decision.Simulations)
             {
-                PotKick = decision.Kind == ShotKind.Kick && decision.Pocket != PocketId.None,
+                Pocket = decision.Pocket,
                 ExpectedPot = decision.ExpectedPot,
             });
         }

@@ -230,9 +230,7 @@ public sealed class ShotPlanner
     /// </summary>
     internal static (ShotKind Kind, PocketId Pocket, Call? Call) Declared(Candidate candidate, Call? call, int pots, int simulations)
     {
-        bool pot = candidate.Kind is ShotKind.Direct or ShotKind.Bank or ShotKind.Combination or ShotKind.Carom
-            || (candidate.Kind == ShotKind.Kick && candidate.Pocket != PocketId.None);
-        return pot && pots == 0 && simulations >= SafetyEvidence
+        return ShotKinds.IsPot(candidate.Kind, candidate.Pocket) && pots == 0 && simulations >= SafetyEvidence
             ? (ShotKind.Safety, PocketId.None, call is null ? null : Call.Safety)
             : (candidate.Kind, candidate.Pocket, call);
     }
