@@ -60,11 +60,15 @@ public static partial class BackgroundWork
     /// <summary>A fixed set of background threads, each lowered once when it starts.</summary>
     private sealed class LowPriorityScheduler : TaskScheduler
     {
+        [ThreadStatic]
+        private static bool t_serving;
+
         private readonly BlockingCollection<Task> _queue = [];
-        private readonly HashSet<int> _threads = [];
+        private readonly int _threads;
 
         public LowPriorityScheduler(int threads)
         {
+            _threads = threads;
             for (int i = 0; i < threads; i++)
             {
                 var thread = new Thread(Serve) { IsBackground = true, Name = "computer player " + (i + 1) };
@@ -72,15 +76,12 @@ public static partial class BackgroundWork
             }
         }
 
-        public override int MaximumConcurrencyLevel => _threads.Count;
+        public override int MaximumConcurrencyLevel => _threads;
 
         private void Serve()
         {
             Lower();
-            lock (_threads)
-            {
-                _threads.Add(Environment.CurrentManagedThreadId);
-            }
+            t_serving = true;
             foreach (var task in _queue.GetConsumingEnumerable())
             {
                 TryExecuteTask(task);
@@ -89,16 +90,8 @@ public static partial class BackgroundWork
 
         protected override void QueueTask(Task task) => _queue.Add(task);
 
-        // Inline only on our own threads, so no task of this scheduler runs at a normal priority.
-        protected override bool TryExecuteTaskInline(Task task, bool taskWasPreviouslyQueued)
-        {
-            bool ours;
-            lock (_threads)
-            {
-                ours = _threads.Contains(Environment.CurrentManagedThreadId);
-            }
-            return ours && TryExecuteTask(task);
-        }
+        // Inline only on these threads, so no task of this scheduler runs at a normal priority.
+        protected override bool TryExecuteTaskInline(Task task, bool taskWasPreviouslyQueued) => t_serving && TryExecuteTask(task);
 
         protected override IEnumerable<Task> GetScheduledTasks() => [.. _queue];
     }
