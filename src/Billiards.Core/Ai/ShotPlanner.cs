@@ -24,6 +24,11 @@ namespace Billiards.Core.Ai;
 /// combination, carom) ranked by their geometric ease, plus safeties.</item>
 /// <item>Variations: each candidate at several speeds and spins (follow, stun, draw, side with the
 /// squirt corrected, an elevated draw), its aim corrected for collision-induced throw.</item>
+/// <item>Aim by trial (levels 3 to 5): each pot's aim is tried without error at
+/// <see cref="SkillLevel.AimTrials"/> steps of <see cref="AimTrialStepDeg"/> either side of the
+/// geometric aim, and the middle of the range of aims that pot is played, so that the player's own
+/// error is spent evenly on both sides of the pocket (the geometry's throw and squirt corrections, and
+/// the banks' and kicks' mirror images, are approximations the physics then corrects).</item>
 /// <item>Simulation: each variation from a snapshot of its root's position (taken once, restored
 /// before every shot), with the standard model's event integrator, several times with the player's
 /// own error (<see cref="SkillLevel"/>); the referee judges each result and a score says how good
@@ -220,6 +225,77 @@ public sealed class ShotPlanner
         return aim;
     }
 
+    /// <summary>The step (deg) between the aims tried without error either side of a pot's geometric aim.</summary>
+    public const double AimTrialStepDeg = 0.3;
+
+    // Halvings of the step at each end of the potting range: its ends are then known to a quarter step.
+    private const int EdgeHalvings = 2;
+
+    /// <summary>
+    /// The aim (deg) in the middle of the range of aims that pot: <paramref name="pots"/> says whether
+    /// the shot aimed at an angle pots without error. It is tried at <paramref name="trials"/> steps of
+    /// <see cref="AimTrialStepDeg"/> either side of <paramref name="aim"/>; of the runs of potting aims the
+    /// one whose middle is nearest <paramref name="aim"/> is taken, and each of its ends inside the tried
+    /// range is found to a quarter step by halving. Without a potting aim, <paramref name="aim"/> itself.
+    /// </summary>
+    /// <returns>The centred aim and the number of trials it took.</returns>
+    internal static (double AimDeg, int Trials) CentredAim(Func<double, bool> pots, double aim, int trials)
+    {
+        ArgumentNullException.ThrowIfNull(pots);
+        int n = 2 * trials + 1;
+        Span<bool> made = stackalloc bool[n];
+        for (int j = 0; j < n; j++)
+        {
+            made[j] = pots(aim + (j - trials) * AimTrialStepDeg);
+        }
+        int tried = n;
+        int lo = -1, hi = -1;
+        double nearest = double.MaxValue;
+        for (int j = 0; j < n;)
+        {
+            if (!made[j])
+            {
+                j++;
+                continue;
+            }
+            int start = j;
+            while (j < n && made[j])
+            {
+                j++;
+            }
+            double off = Math.Abs((start + j - 1) / 2.0 - trials);
+            if (off < nearest)
+            {
+                (nearest, lo, hi) = (off, start, j - 1);
+            }
+        }
+        if (lo < 0)
+        {
+            return (aim, tried);
+        }
+        double At(int j) => aim + (j - trials) * AimTrialStepDeg;
+        double Edge(double inside, double outside)
+        {
+            for (int k = 0; k < EdgeHalvings; k++)
+            {
+                double middle = (inside + outside) / 2;
+                tried++;
+                if (pots(middle))
+                {
+                    inside = middle;
+                }
+                else
+                {
+                    outside = middle;
+                }
+            }
+            return (inside + outside) / 2;
+        }
+        double lower = lo > 0 ? Edge(At(lo), At(lo - 1)) : At(lo);
+        double upper = hi < n - 1 ? Edge(At(hi), At(hi + 1)) : At(hi);
+        return ((lower + upper) / 2, tried);
+    }
+
     /// <summary>The fewest simulations of a chosen pot, none of them potting, that make it a safety.</summary>
     internal const int SafetyEvidence = 10;
 
@@ -250,17 +326,27 @@ public sealed class ShotPlanner
 
         public (double Score, bool Pot, Ruling Ruling) Run(Variation v, ShotSpec shot, IReferee referee, SkillLevel level)
         {
+            var ruling = Judge(v, shot, referee);
+            var after = TablePosition.After(_record);
+            double score = planner.Score(v.Before, ruling, after, level);
+            return (score, Made(v, ruling), ruling);
+        }
+
+        /// <summary>Whether the shot, struck as given, pots for the shooter (judged, not scored).</summary>
+        public bool Pots(Variation v, ShotSpec shot, IReferee referee) => Made(v, Judge(v, shot, referee));
+
+        private static bool Made(Variation v, Ruling ruling) =>
+            ruling.GameOver ? ruling.Winner == v.Before.Shooter : ruling.Continue;
+
+        private Ruling Judge(Variation v, ShotSpec shot, IReferee referee)
+        {
             var root = roots[v.Root];
             var sim = _sims[v.Root] ??= root.Position.CreateSimulation(planner.Model);
             sim.Restore(root.Snapshot!);
             sim.Strike(shot);
             sim.AdvanceTo(MaxShotTime);
             _record.Capture(sim, 0, shot);
-            var ruling = referee.Judge(v.Before, _record);
-            var after = TablePosition.After(_record);
-            double score = planner.Score(v.Before, ruling, after, level);
-            bool pot = ruling.GameOver ? ruling.Winner == v.Before.Shooter : ruling.Continue;
-            return (score, pot, ruling);
+            return referee.Judge(v.Before, _record);
         }
     }
 
@@ -289,6 +375,11 @@ public sealed class ShotPlanner
             for (int w = 0; w < threads; w++)
             {
                 workers[w] = new Worker(planner, roots);
+            }
+
+            if (level.AimTrials > 0)
+            {
+                CentreAims(workers, variations);
             }
 
             // Round 1: every variation with a few error samples; then the best again with more,
@@ -345,6 +436,34 @@ public sealed class ShotPlanner
             {
                 ExpectedRuling = expected,
             };
+        }
+
+        // Every pot's aim moved to the middle of its potting range (CentredAim), a variation per
+        // work item; each result depends on its variation alone, so not on the threads.
+        private void CentreAims(Worker[] workers, List<Variation> variations)
+        {
+            var which = Enumerable.Range(0, variations.Count)
+                .Where(i => ShotKinds.IsPot(variations[i].Candidate.Kind, variations[i].Candidate.Pocket))
+                .ToArray();
+            var aims = new double[which.Length];
+            var trials = new int[which.Length];
+            int next = -1;
+            var options = new ParallelOptions { MaxDegreeOfParallelism = workers.Length, TaskScheduler = TaskScheduler.Current };
+            Parallel.For(0, workers.Length, options, w =>
+            {
+                int j;
+                while ((j = Interlocked.Increment(ref next)) < which.Length)
+                {
+                    var v = variations[which[j]];
+                    (aims[j], trials[j]) = CentredAim(a => workers[w].Pots(v, v.Shot with { AimDeg = a }, _referee), v.Shot.AimDeg, level.AimTrials);
+                }
+            });
+            for (int j = 0; j < which.Length; j++)
+            {
+                var v = variations[which[j]];
+                variations[which[j]] = v with { Shot = v.Shot with { AimDeg = aims[j] } };
+                _simulations += trials[j];
+            }
         }
 
         private double Cautious(int i, double[] sum, int[] count)

@@ -21,7 +21,9 @@ namespace Billiards.Core.Ai;
 /// The error is clamped to four standard deviations, and the tip to the miscue limit (0.6 R
 /// from the centre). Lower levels also search less: fewer candidate shots, speeds, spins and
 /// samples of their own error; levels 1 and 2 judge a shot by the referee's ruling alone, levels
-/// 3 to 5 also by the next shot it leaves (one shot ahead), and a safety by the opponent's best reply.
+/// 3 to 5 also by the next shot it leaves (one shot ahead), and a safety by the opponent's best reply;
+/// levels 3 to 5 also aim by trial (<see cref="AimTrials"/>): they know where a shot really goes,
+/// where levels 1 and 2 aim by the geometry.
 /// </remarks>
 /// <param name="Level">1 to 5.</param>
 /// <param name="AimStdDeg">Standard deviation of the aim angle (deg).</param>
@@ -37,6 +39,10 @@ namespace Billiards.Core.Ai;
 /// <param name="Placements">Cue-ball placements searched with ball in hand.</param>
 /// <param name="ScreenTop">Variants simulated again in a middle round between the first and the last (0: none).</param>
 /// <param name="ScreenSamples">Extra simulations per variant of the middle round.</param>
+/// <param name="AimTrials">
+/// Aims tried without error either side of each pot's geometric aim, <see cref="ShotPlanner.AimTrialStepDeg"/>
+/// apart, to play the middle of the range that pots (0: the geometric aim as it is).
+/// </param>
 /// <param name="FirstRoundSimulations">
 /// Cap on the first round's simulations: with many variations (ball in hand searches several
 /// placements) each gets fewer samples, at least one, and the later rounds sort them out.
@@ -56,6 +62,7 @@ public sealed record SkillLevel(
     int Placements,
     int ScreenTop = 0,
     int ScreenSamples = 0,
+    int AimTrials = 0,
     int FirstRoundSimulations = 1500)
 {
     /// <summary>
@@ -86,9 +93,9 @@ public sealed record SkillLevel(
     [
         new(1, 1.00, 0.12, 0.10, Candidates: 4, Speeds: 2, Spins: 1, Samples: 1, RefineTop: 2, RefineSamples: 2, LookAhead: 0, Placements: 2),
         new(2, 0.55, 0.08, 0.07, Candidates: 6, Speeds: 3, Spins: 1, Samples: 2, RefineTop: 3, RefineSamples: 4, LookAhead: 0, Placements: 3),
-        new(3, 0.30, 0.05, 0.05, Candidates: 8, Speeds: 3, Spins: 3, Samples: 2, RefineTop: 6, RefineSamples: 8, LookAhead: 1, Placements: 4),
-        new(4, 0.16, 0.035, 0.03, Candidates: 10, Speeds: 4, Spins: 4, Samples: 3, RefineTop: 6, RefineSamples: 24, LookAhead: 1, Placements: 5, ScreenTop: 20, ScreenSamples: 6),
-        new(5, 0.08, 0.02, 0.015, Candidates: 16, Speeds: 7, Spins: 10, Samples: 3, RefineTop: 10, RefineSamples: 60, LookAhead: 1, Placements: 6, ScreenTop: 40, ScreenSamples: 10, FirstRoundSimulations: 4000),
+        new(3, 0.30, 0.05, 0.05, Candidates: 8, Speeds: 3, Spins: 3, Samples: 2, RefineTop: 6, RefineSamples: 8, LookAhead: 1, Placements: 4, AimTrials: 4),
+        new(4, 0.16, 0.035, 0.03, Candidates: 10, Speeds: 4, Spins: 4, Samples: 3, RefineTop: 6, RefineSamples: 24, LookAhead: 1, Placements: 5, ScreenTop: 20, ScreenSamples: 6, AimTrials: 4),
+        new(5, 0.08, 0.02, 0.015, Candidates: 16, Speeds: 7, Spins: 10, Samples: 3, RefineTop: 10, RefineSamples: 60, LookAhead: 1, Placements: 6, ScreenTop: 40, ScreenSamples: 10, AimTrials: 4, FirstRoundSimulations: 4000),
     ];
 
     /// <summary>The level <paramref name="level"/> (1 to 5).</summary>
