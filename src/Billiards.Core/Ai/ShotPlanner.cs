@@ -439,7 +439,8 @@ public sealed class ShotPlanner
         }
 
         // Every pot's aim moved to the middle of its potting range (CentredAim), a variation per
-        // work item; each result depends on its variation alone, so not on the threads.
+        // work item; each result depends on its variation alone, so not on the threads (unless the
+        // time cap stops the work, like the search's rounds).
         private void CentreAims(Worker[] workers, List<Variation> variations)
         {
             var which = Enumerable.Range(0, variations.Count)
@@ -447,19 +448,31 @@ public sealed class ShotPlanner
                 .ToArray();
             var aims = new double[which.Length];
             var trials = new int[which.Length];
+            var done = new bool[which.Length];
             int next = -1;
+            double cap = budget.Milliseconds;
             var options = new ParallelOptions { MaxDegreeOfParallelism = workers.Length, TaskScheduler = TaskScheduler.Current };
             Parallel.For(0, workers.Length, options, w =>
             {
                 int j;
                 while ((j = Interlocked.Increment(ref next)) < which.Length)
                 {
+                    if (clock.Elapsed.TotalMilliseconds > cap)
+                    {
+                        break;
+                    }
                     var v = variations[which[j]];
                     (aims[j], trials[j]) = CentredAim(a => workers[w].Pots(v, v.Shot with { AimDeg = a }, _referee), v.Shot.AimDeg, level.AimTrials);
+                    done[j] = true;
                 }
             });
+            // Past the time cap the rest keep their geometric aim.
             for (int j = 0; j < which.Length; j++)
             {
+                if (!done[j])
+                {
+                    continue;
+                }
                 var v = variations[which[j]];
                 variations[which[j]] = v with { Shot = v.Shot with { AimDeg = aims[j] } };
                 _simulations += trials[j];

@@ -54,6 +54,22 @@ public class AimTrialTests
     }
 
     [Fact]
+    public void AimingByTrialStopsAtTheTimeCap()
+    {
+        // A cap of 0 ms is passed before the first trial: no thread takes a variation, and the one
+        // simulation left is the chosen shot's without error. Without the cap the trials alone
+        // would be 13 for each of the hundreds of pot variations of level 5.
+        var position = StraightIn(PocketId.FootLeft, 0.5, 0.6);
+        var state = new GameState(GameRules.NineBall) { Shot = 3 };
+
+        var capped = Planner.Decide(state, position, SkillLevel.Of(5), new PlannerBudget(0, 2), 1);
+        var free = Planner.Decide(state, position, SkillLevel.Of(5), new PlannerBudget(60_000, 2), 1);
+
+        Assert.InRange(capped.Simulations, 1, 1 + 2 * 13);
+        Assert.True(free.Simulations > 1000, $"{free.Simulations} simulations without the cap");
+    }
+
+    [Fact]
     public void LevelsThreeToFiveAimByTrialAndLevelsOneAndTwoByTheGeometry()
     {
         Assert.Equal([0, 0, 4, 4, 4], Enumerable.Range(1, 5).Select(l => SkillLevel.Of(l).AimTrials));
