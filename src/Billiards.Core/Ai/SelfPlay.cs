@@ -25,7 +25,7 @@ public sealed record PlayedShot(GameState Before, Vec3? Place, ShotSpec Planned,
     public bool AttemptedPot => ShotKinds.IsPot(Kind, Pocket);
 
     /// <summary>True when the shooter stayed at the table or won.</summary>
-    public bool Made => Ruling.GameOver ? Ruling.Winner == Before.Shooter : Ruling.Continue;
+    public bool Made => ShotPlanner.Made(Ruling, Before.Shooter);
 
     /// <summary>The pocket the player meant, or <see cref="PocketId.None"/>; set by the player.</summary>
     public PocketId Pocket { get; init; } = PocketId.None;

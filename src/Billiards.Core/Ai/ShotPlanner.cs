@@ -296,6 +296,10 @@ public sealed class ShotPlanner
         return ((lower + upper) / 2, tried);
     }
 
+    /// <summary>True when the ruling keeps <paramref name="shooter"/> at the table or gives them the game: the shot was made.</summary>
+    internal static bool Made(Ruling ruling, int shooter) =>
+        ruling.GameOver ? ruling.Winner == shooter : ruling.Continue;
+
     /// <summary>The fewest simulations of a chosen pot, none of them potting, that make it a safety.</summary>
     internal const int SafetyEvidence = 10;
 
@@ -329,14 +333,11 @@ public sealed class ShotPlanner
             var ruling = Judge(v, shot, referee);
             var after = TablePosition.After(_record);
             double score = planner.Score(v.Before, ruling, after, level);
-            return (score, Made(v, ruling), ruling);
+            return (score, Made(ruling, v.Before.Shooter), ruling);
         }
 
         /// <summary>Whether the shot, struck as given, pots for the shooter (judged, not scored).</summary>
-        public bool Pots(Variation v, ShotSpec shot, IReferee referee) => Made(v, Judge(v, shot, referee));
-
-        private static bool Made(Variation v, Ruling ruling) =>
-            ruling.GameOver ? ruling.Winner == v.Before.Shooter : ruling.Continue;
+        public bool Pots(Variation v, ShotSpec shot, IReferee referee) => Made(Judge(v, shot, referee), v.Before.Shooter);
 
         private Ruling Judge(Variation v, ShotSpec shot, IReferee referee)
         {
@@ -448,23 +449,10 @@ public sealed class ShotPlanner
                 .ToArray();
             var aims = new double[which.Length];
             var trials = new int[which.Length];
-            var done = new bool[which.Length];
-            int next = -1;
-            double cap = budget.Milliseconds;
-            var options = new ParallelOptions { MaxDegreeOfParallelism = workers.Length, TaskScheduler = TaskScheduler.Current };
-            Parallel.For(0, workers.Length, options, w =>
+            var done = RunUntilCap(workers, which.Length, (worker, j) =>
             {
-                int j;
-                while ((j = Interlocked.Increment(ref next)) < which.Length)
-                {
-                    if (clock.Elapsed.TotalMilliseconds > cap)
-                    {
-                        break;
-                    }
-                    var v = variations[which[j]];
-                    (aims[j], trials[j]) = CentredAim(a => workers[w].Pots(v, v.Shot with { AimDeg = a }, _referee), v.Shot.AimDeg, level.AimTrials);
-                    done[j] = true;
-                }
+                var v = variations[which[j]];
+                (aims[j], trials[j]) = CentredAim(a => worker.Pots(v, v.Shot with { AimDeg = a }, _referee), v.Shot.AimDeg, level.AimTrials);
             });
             // Past the time cap the rest keep their geometric aim.
             for (int j = 0; j < which.Length; j++)
@@ -497,34 +485,39 @@ public sealed class ShotPlanner
 
         private static List<int> Ranked(int n, double[] sum, int[] count) => Ranked(Enumerable.Range(0, n), sum, count);
 
+        // Work items 0..count-1 shared out to the workers, one thread each, until the time cap: an
+        // item is run whole by one worker, and the result says which ran (to reduce in item order,
+        // whichever thread ran what). On the caller's scheduler: a game runs the search on
+        // low-priority threads of its own, and Parallel.For would otherwise take the shared pool.
+        private bool[] RunUntilCap(Worker[] workers, int count, Action<Worker, int> item)
+        {
+            var done = new bool[count];
+            int next = -1;
+            double cap = budget.Milliseconds;
+            var options = new ParallelOptions { MaxDegreeOfParallelism = workers.Length, TaskScheduler = TaskScheduler.Current };
+            Parallel.For(0, workers.Length, options, w =>
+            {
+                int i;
+                while ((i = Interlocked.Increment(ref next)) < count && clock.Elapsed.TotalMilliseconds <= cap)
+                {
+                    item(workers[w], i);
+                    done[i] = true;
+                }
+            });
+            return done;
+        }
+
         private void Simulate(Worker[] workers, List<Variation> variations, IEnumerable<int> which, int firstSample, int samples, double[] sum, int[] pots, int[] count)
         {
             var items = which.SelectMany(v => Enumerable.Range(firstSample, samples).Select(s => (v, s))).ToArray();
             var scores = new double[items.Length];
             var made = new bool[items.Length];
-            var done = new bool[items.Length];
-            int next = -1;
-            double cap = budget.Milliseconds;
-            // On the caller's scheduler: a game runs the search on low-priority threads of its own,
-            // and Parallel.For would otherwise take the shared thread pool.
-            var options = new ParallelOptions { MaxDegreeOfParallelism = workers.Length, TaskScheduler = TaskScheduler.Current };
-            Parallel.For(0, workers.Length, options, w =>
+            var done = RunUntilCap(workers, items.Length, (worker, i) =>
             {
-                int i;
-                while ((i = Interlocked.Increment(ref next)) < items.Length)
-                {
-                    if (clock.Elapsed.TotalMilliseconds > cap)
-                    {
-                        break;
-                    }
-                    var (v, s) = items[i];
-                    var random = new PlannerRandom(PlannerRandom.Derive(seed, v, s));
-                    var shot = level.Execute(variations[v].Shot, random);
-                    var (score, pot, _) = workers[w].Run(variations[v], shot, _referee, level);
-                    scores[i] = score;
-                    made[i] = pot;
-                    done[i] = true;
-                }
+                var (v, s) = items[i];
+                var random = new PlannerRandom(PlannerRandom.Derive(seed, v, s));
+                var shot = level.Execute(variations[v].Shot, random);
+                (scores[i], made[i], _) = worker.Run(variations[v], shot, _referee, level);
             });
             // Reduced in item order, whichever thread ran what.
             for (int i = 0; i < items.Length; i++)
