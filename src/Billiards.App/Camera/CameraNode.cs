@@ -5,6 +5,7 @@ using Billiards.App.Input.Modes;
 using Billiards.App.Nodes;
 using Billiards.App.Platform;
 using Billiards.App.Rendering;
+using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Table;
 

@@ -210,6 +210,7 @@ public sealed class MatchNode : Node
         {
             // A hint sets the person's power; the computer strikes its own shot and leaves the person's power alone.
             Power = Math.Clamp(decision.Shot.Speed, MinPower, MaxPower);
+            _cue?.Take(decision.Shot);
         }
         AimAt(decision.Shot.AimDeg);
     }
@@ -247,7 +248,7 @@ public sealed class MatchNode : Node
     {
         if (CanShoot)
         {
-            _physics!.Strike(shot);
+            _physics!.Strike(_cue?.Playable(shot) ?? shot);
         }
     }
 

@@ -107,11 +107,12 @@ public sealed class HudNode : Node
         _lines.Add(_physics?.LastShot is { } shot
             ? string.Create(c, $"Last shot: {shot.Speed:0.00} m/s")
             : "Last shot: -");
-        if (_cue is not null)
+        // The cue's settings only while it is there to be set: rolling balls would show stale ones.
+        if (_cue is { IsVisible: true })
         {
             _lines.Add(string.Create(c, $"Spin: side {_cue.Tip.SideFraction:+0.00;-0.00;0.00} R, height {_cue.Tip.HeightFraction:+0.00;-0.00;0.00} R"));
             _lines.Add(_cue.EffectiveElevationDegrees > _cue.ElevationDegrees + 0.5
-                ? string.Create(c, $"Elevation: {_cue.EffectiveElevationDegrees:0} deg (over the rail)")
+                ? string.Create(c, $"Elevation: {_cue.EffectiveElevationDegrees:0} deg ({(_cue.RailElevationDegrees >= _cue.ClearanceDegrees - 1e-9 ? "over the rail" : "over a ball")})")
                 : string.Create(c, $"Elevation: {_cue.ElevationDegrees:0} deg"));
         }
         if (_match is not null && _physics is not null)

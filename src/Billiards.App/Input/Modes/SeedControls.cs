@@ -36,7 +36,7 @@ public static class SeedControls
     public const double ElevationStepDegrees = 1;
 
     /// <summary>Largest cue elevation (deg); Core accepts up to 90, but the cue would stand on the ball.</summary>
-    public const double MaxElevationDegrees = 80;
+    public const double MaxElevationDegrees = Billiards.Core.Cue.CueClearance.MaxElevationDegrees;
 
     /// <summary>Gap between the tip and the ball's surface at rest (m), the seed's cue offset d when not stroking; visual only.</summary>
     public const double CueRestGap = 0.01;
