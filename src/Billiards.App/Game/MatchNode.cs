@@ -55,7 +55,7 @@ public sealed record MatchPlayer(string Name, int? ComputerLevel = null)
 /// the referee the state with the shooter's call, when the balls rest it judges the shot record
 /// and carries out the ruling (turn, ball in hand in its region, spots, reracks, options, winner)
 /// through the physics node and Core's placement API.
-/// Keys: Left/Right aim (A/D fine), W/Q power, Space shoots, 1-5 choose an offered option,
+/// Keys: Left/Right aim (A/D or Shift fine; held keys repeat, faster the longer they are held), W/Q power, Space shoots, 1-5 choose an offered option,
 /// O declares a push-out, C cycles the called pocket, B cycles the called ball, X aims at the call, Enter rematch.
 /// </summary>
 public sealed class MatchNode : Node
@@ -352,8 +352,8 @@ public sealed class MatchNode : Node
             case Key.Left or Key.Right or Key.A or Key.D:
                 Turn(key.Key switch
                 {
-                    Key.Left => AimStepDegrees,
-                    Key.Right => -AimStepDegrees,
+                    Key.Left => key.Shift ? FineAimStepDegrees : AimStepDegrees,
+                    Key.Right => key.Shift ? -FineAimStepDegrees : -AimStepDegrees,
                     Key.A => FineAimStepDegrees,
                     _ => -FineAimStepDegrees,
                 });

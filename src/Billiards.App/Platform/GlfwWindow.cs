@@ -101,14 +101,18 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
     /// <summary>Sets the title bar text.</summary>
     public void SetTitle(string title) => Glfw.SetWindowTitle(_window, title);
 
-    public void SetMouseCaptured(bool captured)
-    {
-        Glfw.SetInputMode(_window, Glfw.CursorMode, captured ? Glfw.CursorDisabled : Glfw.CursorNormal);
-        if (captured && Glfw.RawMouseMotionSupported())
-        {
-            Glfw.SetInputMode(_window, Glfw.RawMouseMotion, Glfw.True);
-        }
-    }
+    /// <summary>
+    /// Hides the cursor while stroking (or shows it again). The cursor is hidden, not disabled:
+    /// a disabled cursor reports motion relative to a point GLFW warps it back to, which only a
+    /// relative mouse gives; a tablet, a remote desktop or a virtual machine moves the pointer to
+    /// absolute positions, and the stroke (which reads the pointer's height) would see jumps or
+    /// nothing. While the button is held the window keeps the pointer's reports even outside it.
+    /// </summary>
+    public void SetMouseCaptured(bool captured) =>
+        Glfw.SetInputMode(_window, Glfw.CursorMode, captured ? Glfw.CursorHidden : Glfw.CursorNormal);
+
+    /// <summary>True while the cursor is hidden for a stroke.</summary>
+    public bool IsCursorHidden => Glfw.GetInputMode(_window, Glfw.CursorMode) == Glfw.CursorHidden;
 
     public void ToggleFullscreen()
     {
@@ -165,6 +169,7 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
         291 => Key.F2,
         292 => Key.F3,
         300 => Key.F11,
+        340 or 344 => Key.Shift,
         _ => Key.Unknown,
     };
 
@@ -188,6 +193,7 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
     private static void OnKey(nint window, int key, int scancode, int action, int mods)
     {
         var mapped = MapKey(key);
+        // The system's repeats (Glfw.Repeat) are left out: the game repeats held keys itself (KeyRepeat).
         if (action == Glfw.Press)
         {
             Dispatch(window, w => w.KeyDown?.Invoke(mapped));

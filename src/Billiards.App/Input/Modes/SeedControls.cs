@@ -32,6 +32,9 @@ public static class SeedControls
     /// </summary>
     public const double MoveMetresPerPixel = 0.01;
 
+    /// <summary>The share of the orbit (Listing 5) a mouse drag with Shift held turns: fine aim, an addition to the seed.</summary>
+    public const double FineOrbitFactor = 0.1;
+
     /// <summary>Cue elevation (deg) per key press or wheel notch. The seed's elevation ("grade") was visual only; here it feeds the strike.</summary>
     public const double ElevationStepDegrees = 1;
 
