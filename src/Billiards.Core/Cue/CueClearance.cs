@@ -47,16 +47,7 @@ public static class CueClearance
     public static double DistanceToRail(Vec3 ball, Vec3 aim, TableSpec table)
     {
         ArgumentNullException.ThrowIfNull(table);
-        double bx = -aim.X, by = -aim.Y, best = double.PositiveInfinity;
-        if (Math.Abs(bx) > 1e-12)
-        {
-            best = Math.Min(best, ((Math.Sign(bx) * table.HalfLength) - ball.X) / bx);
-        }
-        if (Math.Abs(by) > 1e-12)
-        {
-            best = Math.Min(best, ((Math.Sign(by) * table.HalfWidth) - ball.Y) / by);
-        }
-        return Math.Max(best, 0);
+        return table.DistanceToCushion(ball, -aim);
     }
 
     /// <summary>
