@@ -31,8 +31,9 @@ public static class PlayCommand
         var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball or straight-pool (default: the scene's rules)." };
         var players = new Option<string?>("--players") { Description = $"The two players, A,B: each a name or human (a person), or computer:LEVEL (1-5; also cpu:LEVEL); default {DefaultPlayers}." };
         var record = new Option<string?>("--record") { Description = $"Write the match's rulings, state and HUD ({MatchRecord.Format} JSON) when the game ends." };
-        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record };
-        command.SetAction(parse => Play(parse.GetValue(scene), PlatformWiring.Open, options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))
+        var cap = new Option<double?>("--fps-cap") { Description = $"The most frames a second (0: no cap); default the display's refresh rate, else {PlatformWiring.DefaultFrameCap}." };
+        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record, cap };
+        command.SetAction(parse => Play(parse.GetValue(scene), title => PlatformWiring.Open(title, FrameCap(parse.GetValue(cap))), options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))
         {
             Rules = parse.GetValue(rules),
             Players = parse.GetValue(players),
@@ -43,6 +44,12 @@ public static class PlayCommand
         root.Add(command);
         root.SetAction(_ => Play(null, PlatformWiring.Open, options: new PlayOptions(null, null) { StartMenu = true }, openAudio: OpenAudio));
     }
+
+    /// <summary>The <c>--fps-cap</c> value checked: null (the display's), 0 (none) or a rate up to <see cref="PlatformWiring.MaxFrameCap"/>.</summary>
+    public static double? FrameCap(double? value) =>
+        value is not { } v || (double.IsFinite(v) && v >= 0 && v <= PlatformWiring.MaxFrameCap)
+            ? value
+            : throw new CliException(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"--fps-cap {v}: expected 0 (no cap) to {PlatformWiring.MaxFrameCap} frames a second"));
 
     /// <summary>Loads the scene, opens the platform and runs the game until the window closes.</summary>
     /// <param name="scenePath">The scene, or null for <see cref="DefaultScene"/>.</param>

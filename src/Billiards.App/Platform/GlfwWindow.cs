@@ -72,14 +72,17 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
 
     /// <summary>
     /// Runs the loop until the window closes: polls events, calls <paramref name="frame"/> with
-    /// the seconds since the previous frame (0 on the first), swaps buffers.
+    /// the seconds since the previous frame (0 on the first), swaps buffers, and waits as
+    /// <see cref="FrameCap"/> says.
     /// </summary>
     public void Run(Action<double> frame)
     {
+        var pacer = new FramePacer(FrameCap);
         double last = Glfw.GetTime();
         bool first = true;
         while (!Glfw.WindowShouldClose(_window))
         {
+            double started = Glfw.GetTime();
             Glfw.PollEvents();
             if (_pending is { } pending)
             {
@@ -95,6 +98,33 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
             // frame's input is read, so input shows on the next frame. Without it a driver may
             // queue frames (or, without vsync, pile them up) between the input and the screen.
             Gl.Finish();
+            double ended = Glfw.GetTime();
+            LastWorkSeconds = ended - started;
+            double wait = pacer.WaitAfter(ended);
+            if (wait > 0)
+            {
+                Thread.Sleep(TimeSpan.FromSeconds(wait));
+            }
+        }
+    }
+
+    /// <summary>
+    /// The most frames a second <see cref="Run"/> draws (0: no cap). The swap waits for the
+    /// display's refresh where the driver can (vsync); this cap also holds where it cannot (a
+    /// software rasteriser, a virtual display), so that the game does not keep every core busy.
+    /// </summary>
+    public double FrameCap { get; set; }
+
+    /// <summary>How long the last frame's work took (s): input, the frame, the swap and the wait for the GPU, not the cap's wait.</summary>
+    public double LastWorkSeconds { get; private set; }
+
+    /// <summary>The primary monitor's refresh rate (Hz), or 0 when the display does not say.</summary>
+    public static int RefreshRate
+    {
+        get
+        {
+            nint monitor = Glfw.GetPrimaryMonitor();
+            return monitor == 0 ? 0 : Math.Max(0, Glfw.GetVideoMode(monitor).RefreshRate);
         }
     }
 

@@ -37,6 +37,23 @@ public class GlfwWindowTests
     }
 
     [Fact]
+    public void The_window_loop_keeps_to_its_cap()
+    {
+        TestDisplay.Ensure();
+        using var window = new GlfwWindow("cap", 160, 90) { FrameCap = 50 };
+        int frames = 0;
+        var clock = System.Diagnostics.Stopwatch.StartNew();
+        window.Run(_ =>
+        {
+            if (++frames >= 11)
+            {
+                window.Close();
+            }
+        });
+        // Ten periods of 20 ms between the first frame and the eleventh at least (a busy machine may take longer).
+        Assert.True(clock.Elapsed.TotalSeconds >= 0.2 - 0.002, $"{clock.Elapsed.TotalMilliseconds} ms");
+    }
+    [Fact]
     public void Stroking_hides_the_cursor_rather_than_disabling_it_so_absolute_pointers_keep_their_positions()
     {
         TestDisplay.Ensure();
