@@ -22,6 +22,7 @@ public sealed class HudNode : Node
     private MatchNode? _match;
     private ComputerPlayerNode? _computer;
     private AimLineNode? _aimLine;
+    private Audio.AudioNode? _audio;
 
     /// <summary>The frame-rate meter, fed every frame.</summary>
     public FrameRateMeter FrameRate { get; } = new();
@@ -116,6 +117,12 @@ public sealed class HudNode : Node
         if (_match is not null && _physics is not null)
         {
             MatchLines.Add(_lines, _match, _physics, _computer?.Status, _icons);
+        }
+        // The sound joins the tree after the game has started: looked for until found.
+        _audio ??= FindInTree<Audio.AudioNode>();
+        if (_audio?.StatusLine is { } sound)
+        {
+            _lines.Add(sound);
         }
         _lines.Add(string.Create(c, $"FPS: {FrameRate.Smoothed:0}"));
         if (_keys is { Loop.Paused: true })
