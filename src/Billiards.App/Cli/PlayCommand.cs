@@ -45,6 +45,29 @@ public static class PlayCommand
         root.SetAction(_ => Play(null, PlatformWiring.Open, options: new PlayOptions(null, null) { StartMenu = true }, openAudio: OpenAudio));
     }
 
+    /// <summary>
+    /// The window's title: the game and its players for a match (the scene's own name says only
+    /// what the scene was written for: "8-ball for two players" whatever the game chosen), else
+    /// the scene's name.
+    /// </summary>
+    public static string TitleFor(Scene scene, MatchSetup? match)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        if (match is { } m)
+        {
+            string game = m.Rules switch
+            {
+                GameRules.EightBall => "8-ball",
+                GameRules.NineBall => "9-ball",
+                GameRules.TenBall => "10-ball",
+                GameRules.StraightPool => "14.1 straight pool",
+                _ => m.Rules.ToName(),
+            };
+            return $"{PlatformWiring.WindowTitle}: {game}, {m.Players[0].Name} vs {m.Players[1].Name}";
+        }
+        return scene.Name is { } name ? $"{PlatformWiring.WindowTitle}: {name}" : PlatformWiring.WindowTitle;
+    }
+
     /// <summary>The <c>--fps-cap</c> value checked: null (the display's), 0 (none) or a rate up to <see cref="PlatformWiring.MaxFrameCap"/>.</summary>
     public static double? FrameCap(double? value) =>
         value is not { } v || (double.IsFinite(v) && v >= 0 && v <= PlatformWiring.MaxFrameCap)
@@ -72,7 +95,7 @@ public static class PlayCommand
         {
             throw new CliException($"--record {recordPath}: {path} has no match to record (it names no rules and no --rules was given, or it has no cue ball)");
         }
-        string title = scene.Name is { } name ? $"{PlatformWiring.WindowTitle}: {name}" : PlatformWiring.WindowTitle;
+        string title = TitleFor(scene, match);
         using var platform = OpenOrExplain(openPlatform, title);
         var gameClock = new ScriptClock(clock ?? new StopwatchClock());
         using var scripted = script is null ? null : new ScriptedInput(platform.Window, script, gameClock);
@@ -157,7 +180,9 @@ public static class PlayCommand
                     {
                         current.Dispose();
                     }
-                    current = create((chosen, new MatchSetup(next.Rules, next.Players)));
+                    var setup = new MatchSetup(next.Rules, next.Players);
+                    current = create((chosen, setup));
+                    platform.SetTitle?.Invoke(TitleFor(chosen, setup));
                     current.Tree.Root.AddChild(new AudioNode(audio));
                     Listen(current);
                 }

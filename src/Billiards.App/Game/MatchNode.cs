@@ -228,8 +228,7 @@ public sealed class MatchNode : Node
     public void SayHint(Billiards.Core.Ai.Decision hint)
     {
         ArgumentNullException.ThrowIfNull(hint);
-        string what = hint.Call is { IsSafety: false } c ? $"the {c.Ball} in the {c.Pocket.ToName()} pocket" : hint.Call is { IsSafety: true } ? "a safety" : $"{hint.Kind.ToString().ToLowerInvariant()} on the {hint.Target}";
-        Say(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"Hint: {what} at {hint.Shot.Speed:0.0} m/s (works {hint.ExpectedPot * 100:0} % of the time); Space shoots."));
+        Say(ComputerPlayerNode.HintLine(hint));
     }
 
     /// <summary>Calls a ball (a click on it): its easiest pocket until a pocket is called.</summary>

@@ -53,7 +53,10 @@ public static class PlatformWiring
             // On a software rasteriser a moving camera is drawn at reduced resolution (Renderer.DynamicResolution).
             var renderer = new Renderer(window.Gl) { DynamicResolution = window.IsSoftwareRenderer };
             var resources = new Resources(renderer, window);
-            return new GamePlatform(window, new WindowLoop(window), new FrameRenderer(renderer, window), resources, window.Gl.GetString(Gl.RendererName));
+            return new GamePlatform(window, new WindowLoop(window), new FrameRenderer(renderer, window), resources, window.Gl.GetString(Gl.RendererName))
+            {
+                SetTitle = window.SetTitle,
+            };
         }
         catch
         {

@@ -137,7 +137,7 @@ public sealed class HudNode : Node
     {
         InputMode.View => "view [V]",
         InputMode.Shot => "shot [S]",
-        InputMode.Spin => "effet [E]",
+        InputMode.Spin => "spin [E]",
         InputMode.Move => "move cue ball [M]",
         _ => mode.ToString(),
     };
