@@ -133,7 +133,7 @@ public sealed class TablePosition
 
     /// <summary>The physics the planner simulates with: the standard model's event integrator and <paramref name="physics"/>.</summary>
     public static PhysicsConfig PlannerPhysics(PhysicsParams physics) =>
-        new(ModelRegistry.Standard, Integrators.Event, PhysicsConfig.DefaultDt, physics);
+        new(ModelRegistry.Standard, ModelRegistry.Event, PhysicsConfig.DefaultDt, physics);
 
     private Scene Scene(TableSpec table, PhysicsConfig physics)
     {
