@@ -106,4 +106,13 @@ public class InteractionModelsSceneTests
         var b = SimulationRunner.Run(plain, new RunOptions()).Simulation.Balls.ToArray();
         Assert.True((a[1].Position - b[1].Position).Length > 1e-4, "the ball-ball model changed nothing");
     }
+
+    [Fact]
+    public void TheComputerPlansWithTheGamesModels()
+    {
+        var models = new InteractionModels(StrongeCompliant.Instance, FrictionalMathavan.Instance);
+        var table = Billiards.Core.Table.TableSpec.FromPreset("pool-9ft");
+        Assert.Same(models, new Billiards.Core.Ai.ShotPlanner(table, PhysicsParams.Default, models).PhysicsConfig.Models);
+        Assert.Same(InteractionModels.Default, new Billiards.Core.Ai.ShotPlanner(table, PhysicsParams.Default).PhysicsConfig.Models);
+    }
 }
