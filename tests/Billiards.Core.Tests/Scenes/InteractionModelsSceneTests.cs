@@ -115,4 +115,32 @@ public class InteractionModelsSceneTests
         Assert.Same(models, new Billiards.Core.Ai.ShotPlanner(table, PhysicsParams.Default, models).PhysicsConfig.Models);
         Assert.Same(InteractionModels.Default, new Billiards.Core.Ai.ShotPlanner(table, PhysicsParams.Default).PhysicsConfig.Models);
     }
+
+    [Theory]
+    [InlineData("models/bank-mathavan-2010.json")]
+    [InlineData("models/bank-stronge-compliant.json")]
+    [InlineData("models/cut-frictional-mathavan.json")]
+    [InlineData("models/eight-ball-break-stronge-compliant.json")]
+    public void AModelChangesWhatHappensAtAContactNeverWhen(string file)
+    {
+        // The event engine stays exact with every model: the fixed-step integrator at any step
+        // meets every contact at the reference solver's time and ends where it ends.
+        (double[] Times, double[] Final) Run(string integrator, double? dt)
+        {
+            var scene = SceneLoader.Load(AssetFolder.Scene(file), new SceneOverrides(null, integrator, dt));
+            var sim = SimulationFactory.Create(scene);
+            sim.Strike(scene.Shot!);
+            sim.AdvanceTo(600);
+            Assert.True(sim.IsAtRest);
+            return ([.. sim.Events.AsSpan().ToArray().Select(e => e.Time)], [.. sim.Balls.ToArray().SelectMany(b => new[] { b.Position.X, b.Position.Y })]);
+        }
+        var reference = Run("event", null);
+        foreach (double dt in new[] { 1.0 / 30, 1.0 / 250, 1.0 / 4000 })
+        {
+            var (times, final) = Run("exact", dt);
+            Assert.Equal(reference.Times.Length, times.Length);
+            Assert.All(times.Zip(reference.Times), t => Assert.Equal(t.Second, t.First, 1e-9));
+            Assert.All(final.Zip(reference.Final), x => Assert.Equal(x.Second, x.First, 1e-9));
+        }
+    }
 }

@@ -26,11 +26,12 @@ namespace Billiards.Core.Physics.Collisions.BallBall;
 /// <para>Step: <see cref="ImpulseIntegration"/> (explicit Euler in the normal impulse, the last
 /// step of each phase cut to end it exactly) with <see cref="CompressionSteps"/> equal steps of
 /// m v_n / (2 N) through compression (m v_n / 2 is the compression impulse of two free equal balls)
-/// and as many through restitution. Error left by the step, measured against 64 times finer steps
+/// and as many through restitution; below the slip that one step of full friction removes, friction
+/// is in proportion to the slip (no chatter; the result depends smoothly on the state). Error left by the step, measured against 64 times finer steps
 /// over speeds 0.5-8 m/s, cut angles 0-80 deg, draw, stun and follow with side of -1..1 speed / R
 /// (<c>BallBallModelTests.TheMathavanStepLeavesTheStatedError</c>): 9.6e-5 of the speed in
 /// velocity (bound <see cref="StepErrorBound"/>); it falls about as 1/N (4.8e-5 at N = 100). About
-/// 4 µs a collision on the reference machine. No state is kept and nothing is allocated.</para>
+/// 4-8 µs a collision on the reference machine. No state is kept and nothing is allocated.</para>
 /// </remarks>
 public sealed class FrictionalMathavan : IBallBallModel
 {
@@ -54,14 +55,15 @@ public sealed class FrictionalMathavan : IBallBallModel
     {
         ArgumentNullException.ThrowIfNull(p);
         ArgumentOutOfRangeException.ThrowIfLessThan(steps, 1);
-        var impact = new Impact((b.Position - a.Position).XY.Normalized(), p);
+        var n = (b.Position - a.Position).XY.Normalized();
         var state = new Pair(a.Velocity.XY, a.Spin, b.Velocity.XY, b.Spin);
-        double approach = impact.Approach(state);
+        double approach = Vec3.Dot(state.Va - state.Vb, n);
         if (approach <= 0)
         {
             return; // separating: no impact
         }
-        state = ImpulseIntegration.Run(state, impact, 0.5 * p.M * approach / steps, p.EB);
+        double step = 0.5 * p.M * approach / steps;
+        state = ImpulseIntegration.Run(state, new Impact(n, p, step), step, p.EB);
         a.Velocity = state.Va.XY;
         a.Spin = state.Wa;
         b.Velocity = state.Vb.XY;
@@ -71,7 +73,10 @@ public sealed class FrictionalMathavan : IBallBallModel
     // Both balls' velocities and spins (or their rates per unit impulse).
     private readonly record struct Pair(Vec3 Va, Vec3 Wa, Vec3 Vb, Vec3 Wb);
 
-    private readonly struct Impact(Vec3 n, PhysicsParams p) : IImpact<Pair>
+    // Below the slips of one step of full friction (the balls' relative slip has inverse mass 7/m,
+    // a table contact 7/2m), friction falls in proportion to the slip, so that a sticking contact
+    // settles instead of chattering and the result depends smoothly on the balls' state.
+    private readonly struct Impact(Vec3 n, PhysicsParams p, double step) : IImpact<Pair>
     {
         public double Approach(in Pair s) => Vec3.Dot(s.Va - s.Vb, n);
 
@@ -86,7 +91,9 @@ public sealed class FrictionalMathavan : IBallBallModel
             var u = s.Va - s.Vb + Vec3.Cross(s.Wa + s.Wb, n) * r;
             u -= n * Vec3.Dot(u, n);
             double slip = u.Length;
-            var fa = slip > 0 ? u * (-p.BallBallMu(slip) / slip) : Vec3.Zero; // friction on a
+            double mu = p.BallBallMu(slip);
+            double d = Math.Max(slip, 7 * mu * step / p.M);
+            var fa = d > 0 ? u * (-mu / d) : Vec3.Zero; // friction on a
 
             // The vertical part of the friction presses one ball into the cloth, whose reaction brings
             // table friction on that ball; it lifts the other, which then has no table contact.
@@ -108,7 +115,8 @@ public sealed class FrictionalMathavan : IBallBallModel
         {
             var slip = v + Vec3.Cross(w, new Vec3(0, 0, -p.R));
             double speed = slip.LengthXY;
-            return speed > 0 ? slip.XY * (-p.MuS * reaction / speed) : Vec3.Zero;
+            double d = Math.Max(speed, 3.5 * p.MuS * reaction * step / p.M);
+            return d > 0 ? slip.XY * (-p.MuS * reaction / d) : Vec3.Zero;
         }
     }
 }
