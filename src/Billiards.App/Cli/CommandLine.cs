@@ -42,6 +42,7 @@ public static class CommandLine
                 ReportCommand.Create(stdout, stderr),
                 SuggestCommand.Create(stdout),
                 SelfplayCommand.Create(stdout, stderr),
+                ReplayCommand.Create(stdout),
             };
             PlayCommand.AddTo(root);
             var parse = root.Parse(args);

@@ -30,7 +30,7 @@ public static class PlayCommand
         var stats = new Option<string?>("--stats") { Description = $"Write per-second frame rates, frame-time percentiles and input-to-frame delays ({FrameStats.Format} JSON) when the game ends." };
         var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball or straight-pool (default: the scene's rules)." };
         var players = new Option<string?>("--players") { Description = $"The two players, A,B: each a name or human (a person), or computer:LEVEL (1-5; also cpu:LEVEL); default {DefaultPlayers}." };
-        var record = new Option<string?>("--record") { Description = $"Write the match's rulings, state and HUD ({MatchRecord.Format} JSON) when the game ends." };
+        var record = new Option<string?>("--record") { Description = $"Write the game ({GameRecordFile.Format} JSON, which replay reads) when the window closes." };
         var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record };
         command.SetAction(parse => Play(parse.GetValue(scene), PlatformWiring.Open, options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))
         {
@@ -124,8 +124,7 @@ public static class PlayCommand
         if (recordPath is not null)
         {
             var matchNode = host.Tree.Root.GetInTree<MatchNode>();
-            var hud = host.Tree.Root.FindInTree<Hud.HudNode>();
-            OutputFiles.Write(recordPath, MatchRecord.ToJson(matchNode, hud?.Lines ?? []));
+            OutputFiles.Write(recordPath, GameRecordFile.ToUtf8(matchNode.Game!));
         }
         return 0;
     }
@@ -212,7 +211,7 @@ public static class PlayCommand
         /// <summary>The players (<c>--players A,B</c>), or null for two people.</summary>
         public string? Players { get; init; }
 
-        /// <summary>Where to write the <see cref="MatchRecord"/>, or null.</summary>
+        /// <summary>Where to write the game record (<see cref="GameRecordFile"/>), or null.</summary>
         public string? Record { get; init; }
 
         /// <summary>Open with the start menu (plain <c>play</c>: no scene, game, players, script, stats or record given).</summary>

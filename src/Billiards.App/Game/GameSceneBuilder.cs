@@ -25,7 +25,7 @@ public sealed record MatchSetup(Billiards.Core.Rules.GameRules Rules, IReadOnlyL
 /// <summary>
 /// Builds the node tree a scene asks for: a scene loads only what it declares. Always: table,
 /// physics, camera, control modes, system keys and HUD. Only with a cue ball: the cue (without it
-/// there is nothing to shoot, and only view mode works). Only with <c>rules</c>: the rules node.
+/// there is nothing to shoot, and only view mode works). Only with a match (the scene's rules, or a chosen game): the match, the computer player and the call picker.
 /// </summary>
 public static class GameSceneBuilder
 {
@@ -44,10 +44,6 @@ public static class GameSceneBuilder
         {
             root.AddChild(new CueNode());
             root.AddChild(new AimLineNode());
-        }
-        if (scene.Rules is { } rules)
-        {
-            root.AddChild(new RulesNode(rules));
         }
         var modes = root.AddChild(new InputModeNode());
         if (match is not null && scene.Balls.Any(b => b.Id == BallId.Cue))

@@ -51,10 +51,12 @@ public sealed record MatchPlayer(string Name, int? ComputerLevel = null)
 }
 
 /// <summary>
-/// The turn flow of a match on Core's referee. It never decides a rule: at every strike it hands
-/// the referee the state with the shooter's call, when the balls rest it judges the shot record
-/// and carries out the ruling (turn, ball in hand in its region, spots, reracks, options, winner)
-/// through the physics node and Core's placement API.
+/// A match in the window, driving Core's <see cref="Match"/>: it never decides a rule. At every
+/// strike it hands the match the shot with the shooter's call and placement, and the physics node
+/// runs the simulation the match made for it; when the balls rest the match judges the shot and
+/// applies the ruling (spots, reracks, ball in hand, the winner), and the node shows the table the
+/// match keeps and gives the cue ball in hand in its region. A game played here replays like any
+/// other (<see cref="Billiards.Core.Scenes.GameRecordFile"/>).
 /// Keys: Left/Right aim (A/D fine), W/Q power, Space shoots, 1-5 choose an offered option,
 /// O declares a push-out, C cycles the called pocket, B cycles the called ball, X aims at the call, Enter rematch.
 /// </summary>
@@ -70,15 +72,16 @@ public sealed class MatchNode : Node
     public const double PowerStep = 0.25, MinPower = 0.25, MaxPower = 8.0;
 
     private readonly GameRules _rules;
+    private readonly Ruleset _ruleset;
     private readonly GameState _opening;
     private readonly List<Ruling> _rulings = [];
     private readonly List<(GameState, ShotSpec)> _shots = [];
     private PhysicsNode? _physics;
     private CueNode? _cue;
     private CameraNode? _camera;
-    private IReferee? _referee;
     private TableGeometry? _geometry;
-    private GameState _atStrike;
+    private Match? _match;
+    private GameSetup? _firstGame;
     private BallId? _calledBall;
     private Call? _adoptedCall;
     private bool _hasAdoptedCall;
@@ -90,14 +93,20 @@ public sealed class MatchNode : Node
     {
         ArgumentNullException.ThrowIfNull(players);
         _rules = rules;
+        _ruleset = Ruleset.For(rules);
         Players = players;
         // A scene's game block keeps its players' names; a fresh game names the seats.
         _opening = opening is { } o && o.Rules == rules
             ? o
             : new GameState(rules) { Players = new PerPlayer<string>(players[0].Name, players[1].Name) };
         State = _opening;
-        _atStrike = State;
     }
+
+    /// <summary>The game now being played (Core's state machine; its record is the game record), or null before the node is ready.</summary>
+    public Match? Game => _match;
+
+    /// <summary>The game's ruleset.</summary>
+    public Ruleset Ruleset => _ruleset;
 
     /// <summary>The two players.</summary>
     public IReadOnlyList<MatchPlayer> Players { get; }
@@ -202,7 +211,7 @@ public sealed class MatchNode : Node
         _calledPocket = decision.Call is { IsSafety: false } c2 ? c2.Pocket : null;
         _adoptedCall = exactCall ? decision.Call : null;
         _hasAdoptedCall = exactCall;
-        if (decision.PushOut && _rules is GameRules.NineBall or GameRules.TenBall && State.Shot == 1)
+        if (decision.PushOut && _ruleset.MayPushOut(State))
         {
             State = State with { PushOut = true };
         }
@@ -269,8 +278,8 @@ public sealed class MatchNode : Node
         }
     }
 
-    /// <summary>True when the rules call this shot (8-ball, 10-ball and 14.1 after the break; never 9-ball), as Core's planner has it.</summary>
-    public bool NeedsCall => Billiards.Core.Ai.ShotPlanner.NeedsCall(State);
+    /// <summary>True when the rules call this shot (<see cref="Ruleset.NeedsCall"/>).</summary>
+    public bool NeedsCall => _ruleset.NeedsCall(State);
 
     /// <summary>True when the shooter may strike now: balls at rest, no option pending, the game on.</summary>
     public bool CanShoot => _physics is { IsRolling: false, HasCueBall: true } && PendingOptions.Count == 0 && !IsOver;
@@ -287,21 +296,45 @@ public sealed class MatchNode : Node
         _physics = GetInTree<PhysicsNode>();
         _cue = FindInTree<CueNode>();
         _camera = FindInTree<CameraNode>();
-        _referee = Referee.For(_rules, _physics.Table, _physics.BallRadius);
         _geometry = TableGeometry.Build(_physics.Table, _physics.BallRadius);
         _physics.HandOnly = true;
-        _physics.Struck += OnStruck;
+        _physics.StrikeThrough = OnStrike;
         _physics.CameToRest += _ => OnRest();
-        if (_physics.IsRolling)
+        _firstGame = FirstGame(_physics);
+        _match = new Match(_firstGame, _physics.CreateSimulation);
+        if (_physics.IsRolling && _physics.LastShot is { } opening)
         {
-            // The scene's own shot is already on its way: its game block (with its call) is what the referee judges.
-            _atStrike = State;
+            // The scene's own shot is already on its way: the match plays it from the scene's
+            // position with the game block's call.
+            var sim = _match.Strike(new GameShot(opening, State.Call, _match.BallInHand == BallInHand.None ? null : _match.Balls[BallId.Cue], State.PushOut));
+            _physics.ReplaceShot(sim);
         }
-        else if (State.Shot == 0 || State.BallInHand != BallInHand.None)
+        else
         {
-            _physics.GiveBallInHand(State.Shot == 0 && State.BallInHand == BallInHand.None ? PlacementRegion.Kitchen : Region(State.BallInHand));
+            _physics.Load(_match.Layout());
+            GiveHand(_match.BallInHand);
         }
         Say(State.Shot == 0 ? $"{State.ShooterName} to break." : $"{State.ShooterName} to shoot.");
+    }
+
+    // The scene's game: its table, physics, rack seed and game block; its balls when they are
+    // not the rack's (a position set up in the scene).
+    private GameSetup FirstGame(PhysicsNode physics)
+    {
+        var scene = physics.Scene;
+        var setup = new GameSetup(scene.Table, scene.Physics, scene.Rack?.Seed ?? 1, _opening with { Call = null, PushOut = false, Placement = null });
+        var sim = physics.Simulation;
+        var balls = new List<(BallId Id, Vec3 Position)>();
+        for (int i = 0; i < sim.Ids.Count; i++)
+        {
+            if (!sim.Balls[i].IsPocketed)
+            {
+                balls.Add((sim.Ids[i], sim.Balls[i].Position));
+            }
+        }
+        var rack = setup.Racked(0);
+        bool racked = balls.Count == rack.Count && rack.All(b => balls.Contains(b));
+        return racked ? setup : setup with { Position = balls };
     }
 
     /// <inheritdoc />
@@ -363,7 +396,7 @@ public sealed class MatchNode : Node
             case Key.Q:
                 Power = Math.Max(MinPower, Power - PowerStep);
                 return true;
-            case Key.O when CanShoot && _rules is GameRules.NineBall or GameRules.TenBall && State.Shot == 1:
+            case Key.O when CanShoot && _ruleset.MayPushOut(State):
                 State = State with { PushOut = !State.PushOut };
                 Say(State.PushOut ? $"{State.ShooterName} declares a push-out." : "Push-out withdrawn.");
                 return true;
@@ -389,19 +422,12 @@ public sealed class MatchNode : Node
         {
             throw new ArgumentException($"\"{option.ToName()}\" is not offered now", nameof(option));
         }
-        var outcome = ruling.Choose(option);
         PendingOptions = [];
-        State = outcome.Next;
-        if (outcome.Rerack)
-        {
-            RerackAll();
-            _physics!.GiveBallInHand(PlacementRegion.Kitchen);
-            Say($"Rerack: {State.ShooterName} breaks.");
-            return;
-        }
-        Spot(outcome.Spot);
-        GiveHand(State.BallInHand);
-        Say($"{option.ToName()}: {State.ShooterName} to shoot.");
+        _match!.Choose(option);
+        State = _match.State;
+        _physics!.Load(_match.Layout());
+        GiveHand(_match.BallInHand);
+        Say(State.Shot == 0 ? $"Rerack: {State.ShooterName} breaks." : $"{option.ToName()}: {State.ShooterName} to shoot.");
     }
 
     /// <summary>A new game after the last one ended: the balls reracked, the other player breaks.</summary>
@@ -435,35 +461,40 @@ public sealed class MatchNode : Node
         _calledBall = null;
         _calledPocket = null;
         State = new GameState(_rules) { Players = _opening.Players, Shooter = breaker, Target = _opening.Target };
-        RerackAll();
-        _physics!.GiveBallInHand(PlacementRegion.Kitchen);
+        // Game g racks with the scene's seed + g.
+        _match = new Match(_firstGame! with { Seed = _firstGame.Seed + _games, Start = State, Position = null }, _physics!.CreateSimulation);
+        _physics.Load(_match.Layout());
+        GiveHand(_match.BallInHand);
         Say($"{what}: {State.ShooterName} breaks.");
     }
 
-    private void OnStruck(ShotSpec shot)
+    // The physics node asks for the shot's simulation: the match makes it from the balls at rest,
+    // with the cue ball where the player placed it (ball in hand, the break from the kitchen).
+    private Simulation OnStrike(ShotSpec shot)
     {
-        // The breaker places the cue ball in the kitchen, as after a scratch (Core's GamePlayer.BallInHand).
-        bool inHand = State.Shot == 0 || State.BallInHand != BallInHand.None;
+        bool inHand = _match!.BallInHand != BallInHand.None;
         var call = _hasAdoptedCall ? _adoptedCall : NeedsCall ? CurrentCall : null;
-        _atStrike = State with { Call = call, Placement = inHand ? _physics!.CueBallPosition : null };
+        var sim = _match.Strike(new GameShot(shot, call, inHand ? _physics!.CueBallPosition : null, State.PushOut));
+        _shots.Add((_match.RunningShotState!, shot));
         _hasAdoptedCall = false;
         _adoptedCall = null;
-        _shots.Add((_atStrike, shot));
         _calledBall = null;
         _calledPocket = null;
+        return sim;
     }
 
     private void OnRest()
     {
-        if (_referee is null || _physics is null || IsOver)
+        if (_match is not { IsShotRunning: true } match || _physics is null || IsOver)
         {
             return;
         }
-        var record = ShotRecord.LastShot(_physics.Simulation, _physics.LastShot);
-        var ruling = _referee.Judge(_atStrike, record);
+        var played = match.Judge(_physics.Simulation);
+        var ruling = played.Ruling;
         _rulings.Add(ruling);
         // A game that ended shows how it stood at the end (groups, fouls, score), not the next game's blank state.
-        State = ruling.GameOver ? _atStrike with { Shot = _atStrike.Shot + 1, Call = null, Placement = null, PushOut = false, BallInHand = BallInHand.None } : ruling.Next;
+        State = ruling.GameOver ? played.Before with { Shot = played.Before.Shot + 1, Call = null, Placement = null, PushOut = false, BallInHand = BallInHand.None } : match.State;
+        _physics.Load(match.Layout());
         Say(ruling.Message);
         if (ruling.GameOver)
         {
@@ -476,17 +507,15 @@ public sealed class MatchNode : Node
             }
             _physics.EndBallInHand();
         }
-        else if (ruling.Options.Count > 0)
+        else if (match.PendingOptions.Count > 0)
         {
-            // The spots wait for the choice: a rerack makes them moot.
-            PendingOptions = ruling.Options;
-            GiveHand(ruling.BallInHand);
+            // The table waits as the shot left it until the incoming player chooses.
+            PendingOptions = match.PendingOptions;
+            _physics.EndBallInHand();
         }
         else
         {
-            Spot(ruling.Spot);
-            Rerack(ruling.Rerack);
-            GiveHand(ruling.BallInHand);
+            GiveHand(match.BallInHand);
         }
         Ruled?.Invoke(ruling);
     }
@@ -496,11 +525,6 @@ public sealed class MatchNode : Node
         if (hand == BallInHand.None)
         {
             _physics!.EndBallInHand();
-            if (!_physics.HasCueBall)
-            {
-                // A cue ball off the table always comes back; the ruling then says where it may go.
-                _physics.GiveBallInHand(PlacementRegion.Kitchen);
-            }
         }
         else
         {
@@ -509,52 +533,6 @@ public sealed class MatchNode : Node
     }
 
     private static PlacementRegion Region(BallInHand hand) => hand == BallInHand.Kitchen ? PlacementRegion.Kitchen : PlacementRegion.Table;
-
-    private void Spot(IReadOnlyList<BallId> balls)
-    {
-        if (balls.Count == 0)
-        {
-            return;
-        }
-        _physics!.Rearrange(sim =>
-        {
-            foreach (var ball in balls)
-            {
-                sim.SpotBall(ball);
-            }
-        });
-    }
-
-    private void Rerack(IReadOnlyList<BallId> balls)
-    {
-        if (balls.Count == 0)
-        {
-            return;
-        }
-        // 14.1: fourteen balls leave the apex empty (the fifteenth stays where it lies).
-        _physics!.Rearrange(sim => sim.Rerack(balls, RackGame.StraightPool, apexEmpty: balls.Count == 14));
-    }
-
-    private void RerackAll()
-    {
-        var shape = _rules switch
-        {
-            GameRules.NineBall => RackGame.NineBall,
-            GameRules.TenBall => RackGame.TenBall,
-            GameRules.StraightPool => RackGame.StraightPool,
-            _ => RackGame.EightBall,
-        };
-        _physics!.Rearrange(sim =>
-        {
-            int cue = sim.IndexOf(BallId.Cue);
-            if (cue >= 0)
-            {
-                // Out of the rack's way first; the player then places it in the kitchen.
-                sim.RemoveBall(BallId.Cue);
-            }
-            sim.Rerack(new RackSpec(shape, 1 + _games));
-        });
-    }
 
     private void Turn(double degrees)
     {

@@ -22,8 +22,8 @@ public sealed class PhysicsNode : Node
     public const double DropOutOfSightZ = -0.20;
 
     private readonly Scene _scene;
-    private readonly Simulation _simulation;
-    private readonly BallState[] _previous;
+    private Simulation _simulation;
+    private BallState[] _previous;
     private int _eventsSeen;
     private Vec3 _cueAtStrike;
 
@@ -34,8 +34,58 @@ public sealed class PhysicsNode : Node
     {
         ArgumentNullException.ThrowIfNull(createSimulation);
         _scene = scene;
+        CreateSimulation = createSimulation;
         _simulation = createSimulation(scene);
         _simulation.TrackOrientation = true; // the game draws the balls' numbers turning
+        _previous = _simulation.Balls.ToArray();
+    }
+
+    /// <summary>Makes a simulation of a scene: what the node was made with (a match makes its shots with it too).</summary>
+    public Func<Scene, Simulation> CreateSimulation { get; }
+
+    /// <summary>
+    /// When set (a match), a strike asks it for the shot's simulation, struck already, and runs
+    /// that one: the match makes every shot from the balls at rest, as a replay does.
+    /// </summary>
+    public Func<ShotSpec, Simulation>? StrikeThrough { get; set; }
+
+    /// <summary>
+    /// Shows and runs <paramref name="simulation"/> from now on (a match's table between shots);
+    /// refused while balls roll. Its logged events count as seen.
+    /// </summary>
+    public void Load(Simulation simulation)
+    {
+        ArgumentNullException.ThrowIfNull(simulation);
+        if (IsRolling)
+        {
+            throw new InvalidOperationException("cannot change the table while balls roll");
+        }
+        Swap(simulation);
+        _eventsSeen = simulation.Events.Count;
+    }
+
+    /// <summary>
+    /// Runs <paramref name="struck"/> instead of the shot just struck, before any step of it (a
+    /// match takes over a scene's opening shot). The strike's events were published already.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">When no shot is rolling, or it has stepped.</exception>
+    public void ReplaceShot(Simulation struck)
+    {
+        ArgumentNullException.ThrowIfNull(struck);
+        if (!IsRolling || _simulation.StepCount != _stepsAtStrike)
+        {
+            throw new InvalidOperationException("only a shot that has not moved yet can be replaced");
+        }
+        Swap(struck);
+        _eventsSeen = struck.Events.Count;
+    }
+
+    private long _stepsAtStrike;
+
+    private void Swap(Simulation simulation)
+    {
+        _simulation = simulation;
+        _simulation.TrackOrientation = true;
         _previous = _simulation.Balls.ToArray();
     }
 
@@ -50,6 +100,9 @@ public sealed class PhysicsNode : Node
 
     /// <summary>The running simulation.</summary>
     public Simulation Simulation => _simulation;
+
+    /// <summary>The scene the node was made from.</summary>
+    public Scene Scene => _scene;
 
     /// <summary>The table.</summary>
     public TableSpec Table => _scene.Table;
@@ -157,23 +210,15 @@ public sealed class PhysicsNode : Node
     /// </summary>
     public Vec3 ReturnSpot()
     {
-        double r = BallRadius;
-        var head = new Vec3(-Table.Length / 4, 0, r);
-        for (int ring = 0; ring < 200; ring++)
+        var others = new List<(BallId, Vec3)>();
+        for (int i = 0; i < _simulation.Ids.Count; i++)
         {
-            double radius = ring * r;
-            int count = ring == 0 ? 1 : 8 * ring;
-            for (int k = 0; k < count; k++)
+            if (!_simulation.Balls[i].IsPocketed)
             {
-                double a = 2 * Math.PI * k / count;
-                var p = head + new Vec3(radius * Math.Cos(a), radius * Math.Sin(a), 0);
-                if (IsFreeSpot(p))
-                {
-                    return p;
-                }
+                others.Add((_simulation.Ids[i], _simulation.Balls[i].Position));
             }
         }
-        return head;
+        return Placement.FreeSpotNear(Table, BallRadius, BallId.Cue, Initializer.HeadSpot(Table, BallRadius), others, BallInHand ? HandRegion : PlacementRegion.Table);
     }
 
     /// <summary>Puts every ball back where the scene had it (practice's restart); the scene's own shot is not played again.</summary>
@@ -199,11 +244,23 @@ public sealed class PhysicsNode : Node
         {
             throw new InvalidOperationException("there is no cue ball on the table");
         }
-        EndBallInHand();
         _cueAtStrike = CueBallPosition;
-        _simulation.Strike(shot);
+        if (StrikeThrough is { } strike)
+        {
+            // Asked before ball in hand ends: the match reads where the ball was placed.
+            var struck = strike(shot);
+            EndBallInHand();
+            Swap(struck);
+            _eventsSeen = 0;
+        }
+        else
+        {
+            EndBallInHand();
+            _simulation.Strike(shot);
+        }
         LastShot = shot;
         IsRolling = true;
+        _stepsAtStrike = _simulation.StepCount;
         PublishEvents();
         Struck?.Invoke(shot);
     }
@@ -235,9 +292,10 @@ public sealed class PhysicsNode : Node
             IsRolling = false;
             // Nothing moves any more: interpolation must not pull the picture back a step.
             _simulation.Balls.CopyTo(_previous);
-            if (CueIndex is int cue && _simulation.Balls[cue].IsPocketed)
+            if (!HandOnly && CueIndex is int cue && _simulation.Balls[cue].IsPocketed)
             {
-                // A scratch: the cue ball comes back in hand instead of leaving the game without one.
+                // Practice has no referee: a scratched cue ball comes back in hand instead of
+                // leaving the table without one. In a match only the referee decides.
                 BallInHand = true;
                 Place(ReturnSpot());
                 CueBallReturned?.Invoke(CueBallPosition);

@@ -19,7 +19,6 @@ public sealed class HudNode : Node
     private InputModeNode? _modes;
     private CueNode? _cue;
     private SystemKeysNode? _keys;
-    private RulesNode? _rules;
     private MatchNode? _match;
     private ComputerPlayerNode? _computer;
     private AimLineNode? _aimLine;
@@ -37,7 +36,6 @@ public sealed class HudNode : Node
         _modes = GetInTree<InputModeNode>();
         _keys = GetInTree<SystemKeysNode>();
         _cue = FindInTree<CueNode>();
-        _rules = FindInTree<RulesNode>();
         _physics.Struck += _ => _sinceShot = 0;
         _match = FindInTree<MatchNode>();
         _computer = FindInTree<ComputerPlayerNode>();
@@ -117,11 +115,6 @@ public sealed class HudNode : Node
         if (_match is not null && _physics is not null)
         {
             MatchLines.Add(_lines, _match, _physics, _computer?.Status, _icons);
-        }
-        else if (_rules is not null)
-        {
-            string potted = _rules.LastShotPotted.Count == 0 ? "none" : string.Join(", ", _rules.LastShotPotted);
-            _lines.Add($"Rules: {_rules.Rules} (not judged yet); potted last shot: {potted}");
         }
         _lines.Add(string.Create(c, $"FPS: {FrameRate.Smoothed:0}"));
         if (_keys is { Loop.Paused: true })

@@ -27,9 +27,9 @@ public static class MatchLines
         {
             string mark = p == state.Shooter && !match.IsOver ? "> " : "  ";
             var sb = new StringBuilder();
-            var (target, needed) = Target(state, p, onTable);
-            sb.Append(CultureInfo.InvariantCulture, $"{mark}{state.Players[p]}: {target}");
-            if (state.Rules == GameRules.StraightPool)
+            var target = match.Ruleset.Target(state, p, onTable);
+            sb.Append(CultureInfo.InvariantCulture, $"{mark}{state.Players[p]}: {target.Text}");
+            if (match.Ruleset.HasScore)
             {
                 sb.Append(CultureInfo.InvariantCulture, $"  score {state.Score[p]}/{state.Target}");
             }
@@ -38,9 +38,9 @@ public static class MatchLines
                 sb.Append(CultureInfo.InvariantCulture, $"  fouls in a row {state.FoulsInRow[p]}");
             }
             lines.Add(sb.ToString());
-            foreach (int n in needed)
+            foreach (var ball in target.Balls)
             {
-                icons?.Add(new Rendering.HudIcon(lines.Count - 1, n));
+                icons?.Add(new Rendering.HudIcon(lines.Count - 1, ball.Value));
             }
         }
         if (match.IsOver)
@@ -68,8 +68,8 @@ public static class MatchLines
                 lines.Add($"Ball in hand ({(physics.HandRegion == Core.Setup.PlacementRegion.Kitchen ? "kitchen" : "anywhere")}): M and drag to place");
             }
             string push = state.PushOut ? "  PUSH-OUT" : "";
-            string pushKey = state.Rules is GameRules.NineBall or GameRules.TenBall && state.Shot == 1 ? "  O: push-out" : "";
-            // Only a shot the rules call (8-ball, 10-ball and 14.1 after the break) shows a call.
+            string pushKey = match.Ruleset.MayPushOut(state) ? "  O: push-out" : "";
+            // Only a shot the rules call shows a call.
             string call = !match.NeedsCall ? "" : match.CurrentCall is { } c ? $"Call: {c.Ball} in {c.Pocket.ToName()} (B ball, C pocket)  " : "Call: none (B ball, C pocket)  ";
             lines.Add(string.Create(CultureInfo.InvariantCulture, $"{call}Power {match.Power:0.00} m/s (Q/W, Space shoots, G hint){push}{pushKey}"));
         }
@@ -83,38 +83,17 @@ public static class MatchLines
         }
     }
 
-    private static HashSet<int> OnTable(PhysicsNode physics)
+    private static List<BallId> OnTable(PhysicsNode physics)
     {
-        var set = new HashSet<int>();
+        var list = new List<BallId>();
         var sim = physics.Simulation;
         for (int i = 0; i < sim.Ids.Count; i++)
         {
-            if (sim.Ids[i] != BallId.Cue && !sim.Balls[i].IsPocketed)
+            if (!sim.Ids[i].IsCue && !sim.Balls[i].IsPocketed)
             {
-                set.Add(sim.Ids[i].Value);
+                list.Add(sim.Ids[i]);
             }
         }
-        return set;
-    }
-
-    // What the player still needs, from the referee's state (groups) and the balls on the table:
-    // the words for the line and the balls for its icons.
-    private static (string Text, IReadOnlyList<int> Balls) Target(GameState state, int player, HashSet<int> onTable)
-    {
-        switch (state.Rules)
-        {
-            case GameRules.EightBall:
-                if (state.Groups is not { } groups)
-                {
-                    return ("open table", []);
-                }
-                var group = groups[player];
-                var need = onTable.Where(n => group == BallGroup.Solids ? n is >= 1 and <= 7 : n is >= 9 and <= 15).Order().ToList();
-                return need.Count == 0 ? ($"{group.ToName()}, on the 8", [8]) : ($"{group.ToName()}: {string.Join(" ", need)}", need);
-            case GameRules.NineBall or GameRules.TenBall:
-                return onTable.Count == 0 ? ("-", []) : ($"on the {onTable.Min()}", [onTable.Min()]);
-            default:
-                return ($"{onTable.Count} balls on the table", []);
-        }
+        return list;
     }
 }

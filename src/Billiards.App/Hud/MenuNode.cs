@@ -210,7 +210,7 @@ public sealed class MenuNode : Node
         {
             case MenuPage.Start:
                 title = "New game: the game, the opponent (a person or the computer's level), Start";
-                foreach (var game in (GameRules[])[GameRules.EightBall, GameRules.NineBall, GameRules.TenBall, GameRules.StraightPool])
+                foreach (var game in Ruleset.All.Select(r => r.Game))
                 {
                     items.Add((Mark(game.ToName(), StartGame == game), () => StartGame = game));
                 }

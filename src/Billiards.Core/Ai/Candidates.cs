@@ -290,19 +290,7 @@ internal static class CandidateGenerator
         return new Candidate(kind, target, called, pocket, o, u, ghost, Speed(path.Length, d2, cos), prior);
     }
 
-    // 8-ball calls only the shooter's own balls (or any but the 8 while open); the others any ball.
-    private static bool MayCall(GameState state, BallId ball)
-    {
-        if (state.Rules != GameRules.EightBall)
-        {
-            return true;
-        }
-        if (ball.Value == 8)
-        {
-            return false;
-        }
-        return state.Groups is not { } groups || groups[state.Shooter].Contains(ball);
-    }
+    private static bool MayCall(GameState state, BallId ball) => Ruleset.For(state.Rules).MayCall(state, ball);
 
     private static bool OnRail(PlannerTable table, Vec3 aim, int rail) => rail switch
     {

@@ -164,12 +164,7 @@ public sealed class PlannerTable
     {
         ArgumentNullException.ThrowIfNull(position);
         ArgumentNullException.ThrowIfNull(state);
-        var balls = LegalTargets(state, position).ToList();
-        var eight = new BallId(8);
-        if (state.Rules == GameRules.EightBall && !balls.Contains(eight) && position.IndexOf(eight) >= 0)
-        {
-            balls.Add(eight);
-        }
+        var balls = Ruleset.For(state.Rules).StillToPot(state, position.Ids.Where(b => !b.IsCue));
         int problems = 0;
         foreach (var ball in balls)
         {
@@ -219,32 +214,12 @@ public sealed class PlannerTable
         return (best, second);
     }
 
-    /// <summary>
-    /// The balls the shooter of <paramref name="state"/> may hit first (rules.md): 8-ball's group, or
-    /// any but the 8 on an open table, or the 8 once the group is cleared; the lowest ball in 9-ball
-    /// and 10-ball; any ball in 14.1.
-    /// </summary>
+    /// <summary>The balls the shooter of <paramref name="state"/> may hit first (<see cref="Ruleset.LegalTargets"/>).</summary>
     public static IReadOnlyList<BallId> LegalTargets(GameState state, TablePosition position)
     {
         ArgumentNullException.ThrowIfNull(state);
         ArgumentNullException.ThrowIfNull(position);
-        var balls = position.Ids.Where(b => !b.IsCue).OrderBy(b => b.Value).ToList();
-        switch (state.Rules)
-        {
-            case GameRules.NineBall or GameRules.TenBall:
-                return balls.Count > 0 ? [balls[0]] : [];
-            case GameRules.StraightPool:
-                return balls;
-            default:
-                var eight = new BallId(8);
-                if (state.Groups is not { } groups)
-                {
-                    var open = balls.Where(b => b != eight).ToList();
-                    return open.Count > 0 ? open : balls;
-                }
-                var own = balls.Where(b => groups[state.Shooter].Contains(b)).ToList();
-                return own.Count > 0 ? own : balls.Where(b => b == eight).ToList();
-        }
+        return Ruleset.For(state.Rules).LegalTargets(state, position.Ids.Where(b => !b.IsCue));
     }
 
     /// <summary>True when a ball of <paramref name="position"/> (other than the cue ball and <paramref name="ignore"/>) lies within 2R of the segment.</summary>

@@ -19,7 +19,7 @@ namespace Billiards.Core.Ai;
 /// <param name="Option">The option the next player took, when the ruling offered one.</param>
 /// <param name="DecisionMs">Wall-clock time of the decision (ms).</param>
 /// <param name="Simulations">Simulations of the decision.</param>
-public sealed record PlayedShot(GameState Before, Vec3? Place, ShotSpec Planned, ShotSpec Executed, ShotKind Kind, Ruling Ruling, RefereeOption? Option, double DecisionMs, int Simulations)
+public sealed record SelfPlayShot(GameState Before, Vec3? Place, ShotSpec Planned, ShotSpec Executed, ShotKind Kind, Ruling Ruling, RefereeOption? Option, double DecisionMs, int Simulations)
 {
     /// <summary>True when the shot meant to pot a ball (not a break, safety or push-out).</summary>
     public bool AttemptedPot => ShotKinds.IsPot(Kind, Pocket);
@@ -41,16 +41,17 @@ public sealed record PlayedShot(GameState Before, Vec3? Place, ShotSpec Planned,
 /// <param name="Shots">Every shot in order.</param>
 /// <param name="Winner">The winner, or null when the game hit the shot limit.</param>
 /// <param name="Record">
-/// The game as the referee's game player played it: its setup (rack seed k + 1 for the k-th
-/// rerack) and shots are what <see cref="Scenes.GameRecordFile"/> writes and replays.
+/// The game as the match played it: its setup (rack seed k + 1 for the k-th rerack) and shots are
+/// what <see cref="Scenes.GameRecordFile"/> writes and replays.
 /// </param>
-public sealed record PlayedGame(GameRules Rules, PerPlayer<int> Levels, int Breaker, IReadOnlyList<PlayedShot> Shots, int? Winner, GamePlayer Record);
+public sealed record PlayedGame(GameRules Rules, PerPlayer<int> Levels, int Breaker, IReadOnlyList<SelfPlayShot> Shots, int? Winner, Match Record);
 
 /// <summary>
-/// Plays whole games computer against computer on the referee's <see cref="GamePlayer"/>: the
-/// planner decides, the player's error is applied to the struck shot, the game player simulates it
-/// with the planner's physics (the standard model's event integrator), judges it and applies the
-/// ruling (spots, reracks, 14.1's rerack of fourteen), with the option the incoming player chooses.
+/// Plays whole games computer against computer on a <see cref="Match"/>: the planner decides, the
+/// player's error is applied to the struck shot, the match simulates it once with the planner's
+/// physics (the standard model's event integrator), judges it and applies the ruling (spots,
+/// reracks, 14.1's rerack of fourteen); when the ruling offers options, the incoming player
+/// chooses from the table the shot left.
 /// </summary>
 public sealed class SelfPlay
 {
@@ -80,30 +81,29 @@ public sealed class SelfPlay
         var skills = new PerPlayer<SkillLevel>(SkillLevel.Of(levels.First), SkillLevel.Of(levels.Second));
         int rackSeed = (int)(PlannerRandom.Derive(seed, 7_000_000) & 0x3FFFFFFF);
         var setup = new GameSetup(table.Table, _planner.PhysicsConfig, rackSeed, new GameState(rules) { Shooter = breaker, Target = target });
-        var game = new GamePlayer(setup);
-        var referee = Referee.For(rules, table.Table, table.R);
-        var shots = new List<PlayedShot>();
-        int maxShots = rules == GameRules.StraightPool ? Math.Max(MaxShots, 10 * target) : MaxShots;
+        var game = new Match(setup);
+        var shots = new List<SelfPlayShot>();
+        int maxShots = game.Ruleset.MaxShots(setup.Start);
         for (int k = 0; k < maxShots && !game.IsOver; k++)
         {
             var state = game.State;
             var skill = skills[state.Shooter];
-            var balls = game.Balls.OrderBy(b => b.Key.Value).ToList();
-            var position = new TablePosition(balls.Select(b => (b.Key, b.Value)));
+            var position = new TablePosition(game.Balls.OrderBy(b => b.Key.Value).Select(b => (b.Key, b.Value)));
             var decision = _planner.Decide(state, position, skill, budget, PlannerRandom.Derive(seed, k, 1));
             var place = game.BallInHand == BallInHand.None ? null : decision.Place;
             var executed = skill.Execute(decision.Shot, new PlannerRandom(PlannerRandom.Derive(seed, k, 2)));
 
-            // The incoming player's option depends on the ruling, which the game player applies as it
-            // judges: the shot is judged once beforehand, on the same balls, physics and referee.
+            var sim = game.Strike(new GameShot(executed, decision.Call, place, decision.PushOut));
+            Match.RunToRest(sim);
+            var played = game.Judge(sim);
             RefereeOption? option = null;
-            var (preview, after) = Preview(setup, referee, state with { Call = decision.Call, PushOut = decision.PushOut }, balls, place, executed);
-            if (!preview.GameOver && preview.Options.Count > 0)
+            if (game.PendingOptions.Count > 0)
             {
-                option = _planner.ChooseOption(preview, after);
+                // The incoming player chooses from the table as the shot left it.
+                option = _planner.ChooseOption(played.Ruling, TablePosition.After(ShotRecord.LastShot(sim, executed)));
+                game.Choose(option.Value);
             }
-            var played = game.Play(new GameShot(executed, decision.Call, place, decision.PushOut, option));
-            shots.Add(new PlayedShot(played.Before, place, decision.Shot, executed, decision.Kind, played.Ruling, option, decision.Milliseconds, decision.Simulations)
+            shots.Add(new SelfPlayShot(played.Before, place, decision.Shot, executed, decision.Kind, played.Ruling, option, decision.Milliseconds, decision.Simulations)
             {
                 Pocket = decision.Pocket,
                 ExpectedPot = decision.ExpectedPot,
@@ -111,30 +111,5 @@ public sealed class SelfPlay
         }
         int? winner = game.IsOver ? game.Shots[^1].Ruling.Winner : null;
         return new PlayedGame(rules, levels, breaker, shots, winner, game);
-    }
-
-    // The shot as GamePlayer.Play runs it: the balls in id order, the cue ball placed or on the head spot.
-    private static (Ruling Ruling, TablePosition After) Preview(GameSetup setup, IReferee referee, GameState before, List<KeyValuePair<BallId, Vec3>> balls, Vec3? place, ShotSpec shot)
-    {
-        double r = setup.BallRadius;
-        var start = balls.ToDictionary(b => b.Key.Value, b => b.Value);
-        before = before with { Placement = null };
-        if (place is { } p)
-        {
-            start[0] = p with { Z = r };
-            before = before with { Placement = start[0] };
-        }
-        else if (!start.ContainsKey(0))
-        {
-            start[0] = Initializer.HeadSpot(setup.Table, r);
-            before = before with { Placement = start[0] };
-        }
-        var scene = new Scene("game", null, setup.Table, setup.Physics, null,
-            [.. start.OrderBy(b => b.Key).Select(b => new BallSetup(new BallId(b.Key), b.Value, Vec3.Zero, Vec3.Zero))], shot, setup.Rules.ToName());
-        var sim = SimulationFactory.Create(scene);
-        sim.Strike(shot);
-        sim.AdvanceTo(GamePlayer.MaxShotTime);
-        var record = ShotRecord.LastShot(sim, shot);
-        return (referee.Judge(before, record), TablePosition.After(record));
     }
 }

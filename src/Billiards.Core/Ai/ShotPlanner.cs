@@ -174,13 +174,6 @@ public sealed class ShotPlanner
         return 0.5 - 0.4 * opponent;
     }
 
-    /// <summary>True when the game asks for a call on this shot (8-ball, 10-ball and 14.1 after the break).</summary>
-    public static bool NeedsCall(GameState state)
-    {
-        ArgumentNullException.ThrowIfNull(state);
-        return state.Shot > 0 && state.Rules is GameRules.EightBall or GameRules.TenBall or GameRules.StraightPool;
-    }
-
     /// <summary>
     /// The cue's aim (deg) that sends the candidate's first ball along its direction with the given
     /// tip, corrected for throw (the object ball dragged towards the cue ball's path by ball-ball
@@ -653,7 +646,7 @@ public sealed class ShotPlanner
             {
                 safeties = CandidateGenerator.LastResort(_table, state, root.Position, cue);
             }
-            bool call = NeedsCall(state);
+            bool call = Ruleset.For(state.Rules).NeedsCall(state);
             var before = state with { Placement = root.Place, PushOut = false };
             foreach (var c in pots)
             {
@@ -666,7 +659,7 @@ public sealed class ShotPlanner
                 Vary(rootIndex, c, cue, withCall, Math.Min(level.Speeds, 3), Math.Min(level.Spins, 3), variations);
             }
             // 9-ball and 10-ball: the shot after the break may be a push-out (no contact needed).
-            if (state.Shot == 1 && level.LookAhead > 0 && state.Rules is GameRules.NineBall or GameRules.TenBall
+            if (level.LookAhead > 0 && Ruleset.For(state.Rules).MayPushOut(state)
                 && pots.All(c => c.Prior < 0.2))
             {
                 var push = state with { Placement = root.Place, PushOut = true, Call = null };

@@ -63,6 +63,13 @@ public abstract partial class Simulation
     /// </summary>
     public bool TrackOrientation { get; set; }
 
+    /// <summary>
+    /// True when a game's referee rules on this simulation's shots: a model with end-of-shot rules
+    /// of its own (the thesis model respots a scratched cue ball and resets the rack after the 8)
+    /// then leaves every ball where the shot left it. Models without such rules ignore it.
+    /// </summary>
+    public virtual bool RefereeRules { get; set; }
+
     /// <summary>The balls' state in SI units, index-aligned with <see cref="Ids"/>.</summary>
     public abstract ReadOnlySpan<BallState> Balls { get; }
 

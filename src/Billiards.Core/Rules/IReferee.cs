@@ -36,20 +36,9 @@ public static class Referee
     public static IReferee For(GameRules rules, TableSpec table, double ballRadius)
     {
         ArgumentNullException.ThrowIfNull(table);
-        return rules switch
-        {
-            GameRules.EightBall => new EightBallReferee(table, ballRadius),
-            GameRules.NineBall or GameRules.TenBall => new RotationReferee(rules, table, ballRadius),
-            GameRules.StraightPool => new StraightPoolReferee(table, ballRadius),
-            _ => throw new ArgumentOutOfRangeException(nameof(rules)),
-        };
+        return Ruleset.For(rules).Referee(table, ballRadius);
     }
 
-    /// <summary>The balls a game is played with, cue ball first: pool's whole set (8-ball, 14.1), 1-9 or 1-10.</summary>
-    public static IReadOnlyList<Balls.BallId> BallsOf(GameRules rules) => rules switch
-    {
-        GameRules.NineBall => [.. Balls.BallSet.Pool.Ids.Take(9 + 1)],
-        GameRules.TenBall => [.. Balls.BallSet.Pool.Ids.Take(10 + 1)],
-        _ => Balls.BallSet.Pool.Ids,
-    };
+    /// <summary>The balls a game is played with, cue ball first (<see cref="Ruleset.Balls"/>).</summary>
+    public static IReadOnlyList<Balls.BallId> BallsOf(GameRules rules) => Ruleset.For(rules).Balls;
 }

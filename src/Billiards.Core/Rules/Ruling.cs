@@ -42,24 +42,7 @@ public sealed record Ruling(
     /// The state and table work that follow when the next shooter takes <paramref name="option"/>.
     /// </summary>
     /// <exception cref="ArgumentException">When the ruling does not offer the option.</exception>
-    public OptionOutcome Choose(RefereeOption option)
-    {
-        if (!Options.Contains(option))
-        {
-            throw new ArgumentException($"the ruling offers no \"{option.ToName()}\" (it offers {string.Join(", ", Options.Select(o => o.ToName()))})", nameof(option));
-        }
-        return option switch
-        {
-            // A rerack of 8-ball is broken by the player who chose it; 14.1's by the offender, who is
-            // the player that is not choosing.
-            RefereeOption.Rerack when Next.Rules == GameRules.StraightPool =>
-                new OptionOutcome(Next with { Shooter = Next.Incoming, Shot = 0, BallInHand = BallInHand.None }, true, []),
-            RefereeOption.Rerack =>
-                new OptionOutcome(Next with { Shot = 0, BallInHand = BallInHand.None, Groups = null }, true, []),
-            RefereeOption.PassBack => new OptionOutcome(Next with { Shooter = Next.Incoming, BallInHand = BallInHand.None }, false, Spot),
-            _ => new OptionOutcome(Next, false, Spot),
-        };
-    }
+    public OptionOutcome Choose(RefereeOption option) => Ruleset.For(Next.Rules).Choose(this, option);
 }
 
 /// <summary>What follows an option of the incoming player.</summary>

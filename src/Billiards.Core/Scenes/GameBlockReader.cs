@@ -85,7 +85,7 @@ public static class GameBlockReader
         }
         if (f.TryGetValue("groups", out var groups) && groups.ValueKind != JsonValueKind.Null)
         {
-            if (rules != GameRules.EightBall)
+            if (!Ruleset.For(rules).HasGroups)
             {
                 throw Error($"{path}.groups", $"{rules.ToName()} has no groups (only eight-ball has; leave \"groups\" out or null)");
             }
@@ -109,7 +109,7 @@ public static class GameBlockReader
                 throw Error($"{path}.push_out", "expected true or false");
             }
             bool pushOut = push.GetBoolean();
-            if (pushOut && rules is not (GameRules.NineBall or GameRules.TenBall))
+            if (pushOut && !Ruleset.For(rules).HasPushOut)
             {
                 throw Error($"{path}.push_out", $"{rules.ToName()} has no push-out (only nine-ball and ten-ball have)");
             }

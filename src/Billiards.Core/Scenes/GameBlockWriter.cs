@@ -24,7 +24,7 @@ public static class GameBlockWriter
         w.WriteEndArray();
         w.WriteNumber("shooter", state.Shooter);
         w.WriteNumber("shot", state.Shot);
-        if (state.Rules == GameRules.EightBall)
+        if (Ruleset.For(state.Rules).HasGroups)
         {
             if (state.Groups is { } g)
             {

@@ -7,11 +7,25 @@ using Billiards.Core.Rules;
 
 namespace Billiards.Core.Scenes;
 
-/// <summary>A game record as read from a file: the setup, each shot's input and its recorded ruling.</summary>
-/// <param name="Setup">Table, physics, rack seed and the start state.</param>
+/// <summary>A game record as read from a file: the setup, each shot's input and what was recorded of it.</summary>
+/// <param name="Setup">Table, physics, rack seed, the start state and the first position when it is not the rack.</param>
 /// <param name="Shots">What the players did, shot by shot.</param>
 /// <param name="Rulings">Each shot's ruling as recorded (JSON, as <see cref="GameBlockWriter.RulingToUtf8"/> writes it).</param>
-public sealed record GameRecord(GameSetup Setup, IReadOnlyList<GameShot> Shots, IReadOnlyList<string> Rulings);
+/// <param name="Balls">Each shot's balls at rest as recorded (JSON, as the record writes them), or null when the record has none.</param>
+public sealed record GameRecord(GameSetup Setup, IReadOnlyList<GameShot> Shots, IReadOnlyList<string> Rulings, IReadOnlyList<string?> Balls);
+
+/// <summary>The first difference between a record and its replay.</summary>
+/// <param name="Shot">The shot's index in the record (0 the first).</param>
+/// <param name="Field">What differs: "ruling.NAME" (a field of the ruling), "balls" (the balls at rest), or "shot" (the replay refused the shot).</param>
+/// <param name="Recorded">The recorded value (JSON).</param>
+/// <param name="Replayed">The replayed value (JSON).</param>
+public sealed record ReplayDifference(int Shot, string Field, string Recorded, string Replayed);
+
+/// <summary>What replaying a record found.</summary>
+/// <param name="Shots">The record's shots.</param>
+/// <param name="Same">Shots replayed the same, up to the first difference.</param>
+/// <param name="FirstDifference">The first difference, or null when every shot is the same.</param>
+public sealed record ReplayReport(int Shots, int Same, ReplayDifference? FirstDifference);
 
 /// <summary>
 /// Writes and reads "billiards-game/1" (scene-format.md): the table, the physics, the rack (game
@@ -24,7 +38,7 @@ public static class GameRecordFile
     public const string Format = "billiards-game/1";
 
     /// <summary>The record of a played game as indented UTF-8 JSON.</summary>
-    public static byte[] ToUtf8(GamePlayer game)
+    public static byte[] ToUtf8(Match game)
     {
         ArgumentNullException.ThrowIfNull(game);
         using var stream = new MemoryStream();
@@ -36,7 +50,7 @@ public static class GameRecordFile
         return stream.ToArray();
     }
 
-    private static void Write(Utf8JsonWriter w, GamePlayer game)
+    private static void Write(Utf8JsonWriter w, Match game)
     {
         var setup = game.Setup;
         w.WriteStartObject();
@@ -54,6 +68,11 @@ public static class GameRecordFile
         w.WriteEndObject();
         w.WritePropertyName("game");
         GameBlockWriter.WriteGame(w, setup.Start);
+        if (setup.Position is { } position)
+        {
+            // A game from a scene's position rather than its rack.
+            WriteBalls(w, "balls", position);
+        }
         w.WriteStartArray("shots");
         foreach (var played in game.Shots)
         {
@@ -81,10 +100,33 @@ public static class GameRecordFile
             }
             w.WritePropertyName("ruling");
             GameBlockWriter.WriteRuling(w, played.Ruling);
+            WriteBalls(w, "balls", played.After);
             w.WriteEndObject();
         }
         w.WriteEndArray();
         w.WriteEndObject();
+    }
+
+    /// <summary>Balls at rest as records write them: [{"id", "position": [x, y]}] (m), as a scene's balls.</summary>
+    public static void WriteBalls(Utf8JsonWriter w, string name, IEnumerable<(Balls.BallId Id, Vec3 Position)> balls)
+    {
+        ArgumentNullException.ThrowIfNull(w);
+        ArgumentNullException.ThrowIfNull(balls);
+        w.WritePropertyName(name);
+        WriteBallsValue(w, balls);
+    }
+
+    private static void WriteBallsValue(Utf8JsonWriter w, IEnumerable<(Balls.BallId Id, Vec3 Position)> balls)
+    {
+        w.WriteStartArray();
+        foreach (var (id, p) in balls)
+        {
+            w.WriteStartObject();
+            w.WriteString("id", id.ToString());
+            WritePlace(w, "position", p);
+            w.WriteEndObject();
+        }
+        w.WriteEndArray();
     }
 
     /// <summary>A cue-ball placement as records write it: [x, y] (m), or null.</summary>
@@ -165,7 +207,15 @@ public static class GameRecordFile
         }
         using (doc)
         {
-            return Read(doc.RootElement, path);
+            try
+            {
+                return Read(doc.RootElement, path);
+            }
+            catch (Exception e) when (e is InvalidOperationException or FormatException or IndexOutOfRangeException)
+            {
+                // A value of the wrong kind where a number, string or array was expected.
+                throw new SceneException(path, "$.shots", $"malformed record: {e.Message}");
+            }
         }
     }
 
@@ -197,9 +247,14 @@ public static class GameRecordFile
             throw Error("$.rack.game", $"the rack \"{rackGame}\" does not match the game's rules \"{start.Rules.ToName()}\"");
         }
         var setup = new GameSetup(scene.Table, scene.Physics, seed, start);
+        if (root.TryGetProperty("balls", out var startBalls))
+        {
+            setup = setup with { Position = ReadBalls(startBalls, setup, file, "$.balls") };
+        }
 
         var shots = new List<GameShot>();
         var rulings = new List<string>();
+        var balls = new List<string?>();
         int i = 0;
         foreach (var s in Get(root, "shots", "$").EnumerateArray())
         {
@@ -225,8 +280,44 @@ public static class GameRecordFile
             }
             shots.Add(new GameShot(spec, before.Call, place, before.PushOut, choice));
             rulings.Add(System.Text.Encoding.UTF8.GetString(Reindent(Get(s, "ruling", at))));
+            if (s.TryGetProperty("balls", out var after))
+            {
+                ReadBalls(after, setup, file, at + ".balls");
+                balls.Add(after.GetRawText());
+            }
+            else
+            {
+                balls.Add(null);
+            }
         }
-        return new GameRecord(setup, shots, rulings);
+        return new GameRecord(setup, shots, rulings, balls);
+    }
+
+    private static List<(Balls.BallId Id, Vec3 Position)> ReadBalls(JsonElement e, GameSetup setup, string file, string at)
+    {
+        if (e.ValueKind != JsonValueKind.Array)
+        {
+            throw new SceneException(file, at, "expected an array of balls [{\"id\", \"position\": [x, y]}]");
+        }
+        var set = setup.Ruleset.BallSet;
+        var list = new List<(Balls.BallId, Vec3)>();
+        int i = 0;
+        foreach (var b in e.EnumerateArray())
+        {
+            string here = string.Create(CultureInfo.InvariantCulture, $"{at}[{i++}]");
+            if (b.ValueKind != JsonValueKind.Object || !b.TryGetProperty("id", out var id) || id.ValueKind != JsonValueKind.String
+                || !set.TryParse(id.GetString(), out var ball))
+            {
+                throw new SceneException(file, here + ".id", $"expected a ball id of {set.Name}'s set ({set.Describe()})");
+            }
+            if (!b.TryGetProperty("position", out var p) || p.ValueKind != JsonValueKind.Array || p.GetArrayLength() != 2
+                || p[0].ValueKind != JsonValueKind.Number || p[1].ValueKind != JsonValueKind.Number)
+            {
+                throw new SceneException(file, here + ".position", "expected [x, y] (m)");
+            }
+            list.Add((ball, new Vec3(p[0].GetDouble(), p[1].GetDouble(), setup.BallRadius)));
+        }
+        return list;
     }
 
     // The ruling as GameBlockWriter.RulingToUtf8 formats it, so that rulings compare as text.
@@ -244,19 +335,86 @@ public static class GameRecordFile
     /// Plays a record's shots again through the same physics and referee and returns the first
     /// shot whose ruling differs from the recorded one, or -1 when every ruling is reproduced.
     /// </summary>
-    public static int Replay(GameRecord record, out GamePlayer replayed)
+    public static int Replay(GameRecord record, out Match replayed)
+    {
+        var report = Verify(record, out replayed);
+        return report.FirstDifference?.Shot ?? -1;
+    }
+
+    /// <summary>
+    /// <c>replay --verify</c> (scene-format.md): plays a record's shots again through the same
+    /// physics and referee, and compares each shot's ruling, field by field, and its balls at rest
+    /// with the recorded ones, up to the first difference.
+    /// </summary>
+    public static ReplayReport Verify(GameRecord record, out Match replayed)
     {
         ArgumentNullException.ThrowIfNull(record);
-        replayed = new GamePlayer(record.Setup);
+        replayed = new Match(record.Setup);
         for (int k = 0; k < record.Shots.Count; k++)
         {
-            var played = replayed.Play(record.Shots[k]);
-            string ruling = System.Text.Encoding.UTF8.GetString(GameBlockWriter.RulingToUtf8(played.Ruling));
-            if (ruling != record.Rulings[k])
+            MatchShot played;
+            try
             {
-                return k;
+                played = replayed.Play(record.Shots[k]);
+            }
+            catch (InvalidOperationException e)
+            {
+                return new ReplayReport(record.Shots.Count, k, new ReplayDifference(k, "shot", "\"played\"", JsonString(e.Message)));
+            }
+            if (FirstDifference(record.Rulings[k], GameBlockWriter.RulingToUtf8(played.Ruling)) is { } field)
+            {
+                return new ReplayReport(record.Shots.Count, k, new ReplayDifference(k, "ruling." + field.Name, field.Recorded, field.Replayed));
+            }
+            if (record.Balls[k] is { } recordedBalls)
+            {
+                string replayedBalls = BallsJson(played.After);
+                if (Compact(recordedBalls) != replayedBalls)
+                {
+                    return new ReplayReport(record.Shots.Count, k, new ReplayDifference(k, "balls", Compact(recordedBalls), replayedBalls));
+                }
             }
         }
-        return -1;
+        return new ReplayReport(record.Shots.Count, record.Shots.Count, null);
     }
+
+    private static (string Name, string Recorded, string Replayed)? FirstDifference(string recorded, byte[] replayed)
+    {
+        using var a = JsonDocument.Parse(recorded);
+        using var b = JsonDocument.Parse(replayed);
+        var names = a.RootElement.EnumerateObject().Select(p => p.Name).Union(b.RootElement.EnumerateObject().Select(p => p.Name));
+        foreach (string name in names)
+        {
+            string x = a.RootElement.TryGetProperty(name, out var pa) ? Compact(pa.GetRawText()) : "null";
+            string y = b.RootElement.TryGetProperty(name, out var pb) ? Compact(pb.GetRawText()) : "null";
+            if (x != y)
+            {
+                return (name, x, y);
+            }
+        }
+        return null;
+    }
+
+    private static string BallsJson(IEnumerable<(Balls.BallId Id, Vec3 Position)> balls)
+    {
+        using var stream = new MemoryStream();
+        using (var w = new Utf8JsonWriter(stream))
+        {
+            WriteBallsValue(w, balls);
+        }
+        return System.Text.Encoding.UTF8.GetString(stream.ToArray());
+    }
+
+    // JSON without insignificant white space, numbers as written.
+    private static string Compact(string json)
+    {
+        using var doc = JsonDocument.Parse(json);
+        using var stream = new MemoryStream();
+        using (var w = new Utf8JsonWriter(stream))
+        {
+            doc.RootElement.WriteTo(w);
+        }
+        return System.Text.Encoding.UTF8.GetString(stream.ToArray());
+    }
+
+    private static string JsonString(string text) => JsonSerializer.Serialize(text);
 }

@@ -108,5 +108,36 @@ public static class Placement
         return null;
     }
 
+    /// <summary>
+    /// The free spot for ball <paramref name="id"/> nearest <paramref name="near"/> (m): the point
+    /// itself when <see cref="OnTable"/> in <paramref name="region"/> and <see cref="Overlap"/> with
+    /// every ball of <paramref name="others"/> allow it, else the first allowed point on rings R apart
+    /// around it (8k points on ring k, from angle 0 counter-clockwise); <paramref name="near"/> when
+    /// the table is full. The one search for a free place: the cue ball in hand and a returned ball.
+    /// </summary>
+    public static Vec3 FreeSpotNear(TableSpec table, double radius, BallId id, Vec3 near, IEnumerable<(BallId Id, Vec3 Position)> others, PlacementRegion region = PlacementRegion.Table)
+    {
+        ArgumentNullException.ThrowIfNull(others);
+        var balls = others.Where(b => b.Id != id).ToList();
+        bool Free(Vec3 p) => OnTable(table, radius, id, p, region) is null && balls.All(b => Overlap(radius, id, p, b.Id, b.Position) is null);
+        for (int ring = 0; ring < MaxRings; ring++)
+        {
+            int count = ring == 0 ? 1 : 8 * ring;
+            for (int k = 0; k < count; k++)
+            {
+                double a = 2 * Math.PI * k / count;
+                var p = near + new Vec3(ring * radius * Math.Cos(a), ring * radius * Math.Sin(a), 0);
+                if (Free(p))
+                {
+                    return p;
+                }
+            }
+        }
+        return near;
+    }
+
+    // Rings of the free-spot search: 200 R reaches every corner of the largest table.
+    private const int MaxRings = 200;
+
     private static string Text(FormattableString text) => text.ToString(CultureInfo.InvariantCulture);
 }

@@ -20,17 +20,14 @@ public class GameSceneTests
         Assert.NotNull(tree.Find<PhysicsNode>());
         Assert.NotNull(tree.Find<CameraNode>());
         Assert.NotNull(tree.Find<CueNode>());
-        Assert.Equal("eight-ball", tree.Find<RulesNode>()!.Rules);
         Assert.NotNull(tree.Find<InputModeNode>());
         Assert.NotNull(tree.Find<SystemKeysNode>());
         Assert.NotNull(tree.Find<HudNode>());
     }
 
     [Fact]
-    public void A_scene_without_rules_has_no_rules_node_and_without_a_cue_ball_no_cue()
+    public void A_scene_without_a_cue_ball_has_no_cue()
     {
-        using var noRules = new TestGame(TestScenes.TwoBalls());
-        Assert.Null(noRules.World.Tree.Find<RulesNode>());
         using var noCue = new TestGame(TestScenes.TwoBalls(withCue: false));
         Assert.Null(noCue.World.Tree.Find<CueNode>());
         Assert.NotNull(noCue.World.Tree.Find<CameraNode>());
@@ -63,7 +60,7 @@ public class GameSceneTests
     }
 
     [Fact]
-    public void The_rules_node_collects_the_pocketed_balls_of_a_shot_and_pocketed_balls_vanish()
+    public void Pocketed_balls_vanish()
     {
         using var game = new TestGame(TestScenes.TwoBalls(rules: "eight-ball", withShot: true));
         game.Frame();
@@ -72,9 +69,7 @@ public class GameSceneTests
         Assert.False(frame.Balls.Single(b => b.Id.Value == 1).Visible);
         Assert.True(frame.Balls.Single(b => b.Id.IsCue).Visible);
         game.RunUntilRest();
-        var rules = game.World.Tree.Find<RulesNode>()!;
-        Assert.Equal([new BallId(1)], rules.LastShotPotted);
-        Assert.Contains(game.Host.RunFrame().Hud!.Lines, l => l.Contains("potted last shot: 1", StringComparison.Ordinal));
+        Assert.False(game.Frame().Balls.Single(b => b.Id.Value == 1).Visible);
     }
 
     [Fact]

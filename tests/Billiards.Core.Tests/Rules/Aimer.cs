@@ -15,7 +15,7 @@ internal static class Aimer
 {
     private const double R = ShotBuilder.R;
 
-    public static GameShot Next(GamePlayer game, Func<BallId, bool> isTarget, bool callShots)
+    public static GameShot Next(Match game, Func<BallId, bool> isTarget, bool callShots)
     {
         var balls = game.Balls;
         var table = game.Setup.Table;
@@ -104,7 +104,7 @@ internal static class Aimer
     }
 
     /// <summary>A hard break at the apex ball from the head spot.</summary>
-    public static GameShot Break(GamePlayer game, Call? call)
+    public static GameShot Break(Match game, Call? call)
     {
         var head = Initializer(game.Setup.Table);
         var apex = Billiards.Core.Setup.Initializer.FootSpot(game.Setup.Table, R);
@@ -113,7 +113,7 @@ internal static class Aimer
     }
 
     /// <summary>A soft roll into the clearest direction: touches no ball (a no-contact foul, or a push-out).</summary>
-    public static GameShot Roll(GamePlayer game, bool pushOut = false, RefereeOption? choice = null)
+    public static GameShot Roll(Match game, bool pushOut = false, RefereeOption? choice = null)
     {
         var balls = game.Balls;
         var table = game.Setup.Table;

@@ -184,6 +184,13 @@ public sealed partial class PhysicsEngine
     public ShotEnd LastShotEnd { get; private set; }
 
     /// <summary>
+    /// When true (the default, the seed's behaviour) the end of a shot respots a pocketed cue ball
+    /// and resets the game after the 8; a game whose referee rules sets it false, so that every
+    /// ball stays where the shot left it and only the referee decides.
+    /// </summary>
+    public bool SeedEndOfShotRules { get; set; } = true;
+
+    /// <summary>
     /// The cue ball's displacement over the last shot (cm), from where it was struck to where it
     /// lies after the end-of-shot rules: the seed moves its camera by this (seed 4.3.1).
     /// </summary>
@@ -582,7 +589,11 @@ public sealed partial class PhysicsEngine
                 eight = i;
             }
         }
-        if (eight >= 0 && _balls[eight].IsPocketed)
+        if (!SeedEndOfShotRules)
+        {
+            LastShotEnd = ShotEnd.Rested;
+        }
+        else if (eight >= 0 && _balls[eight].IsPocketed)
         {
             Initializer.ResetGame(_balls, _startPositions, Queue, _random);
             LastShotEnd = ShotEnd.GameReset;

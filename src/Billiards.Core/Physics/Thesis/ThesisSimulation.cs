@@ -61,6 +61,13 @@ public sealed partial class ThesisSimulation : Simulation
     }
 
     /// <inheritdoc />
+    public override bool RefereeRules
+    {
+        get => !Engine.SeedEndOfShotRules;
+        set => Engine.SeedEndOfShotRules = !value;
+    }
+
+    /// <inheritdoc />
     public override TableModel TableModel => _model;
 
     /// <summary>The engine, in the seed's units, for the game and for tests.</summary>

@@ -57,6 +57,22 @@ public class ShotEndTests
     }
 
     [Fact]
+    public void Without_the_seed_s_end_of_shot_rules_a_pocketed_cue_ball_stays_in_its_pocket()
+    {
+        // The shot above, for a game whose referee decides: the engine leaves the ball where it dropped.
+        var start = new Vector3(110, Y, 51);
+        var cue = new Ball(0, start) { Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
+        var other = At(1, -50, 0);
+        var engine = Engine("thesis", cue, other);
+        engine.SeedEndOfShotRules = false;
+        RunToRest(engine);
+        Assert.Equal(ShotEnd.Rested, engine.LastShotEnd);
+        Assert.True(cue.IsPocketed);
+        Assert.Equal(5, cue.Pocket);
+        Assert.NotEqual(start, cue.Position);
+    }
+
+    [Fact]
     public void A_pocketed_cue_ball_goes_to_the_nearest_free_point_when_a_ball_lies_on_its_start()
     {
         // As above, but once the cue ball is on its way another ball is put on its start: the

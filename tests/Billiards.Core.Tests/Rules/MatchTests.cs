@@ -1,5 +1,6 @@
 using System.Text;
 using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
 using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
 
@@ -9,35 +10,16 @@ namespace Billiards.Core.Tests.Rules;
 /// Whole games played from shot lists through the physics and the referee, written as
 /// "billiards-game/1" records and replayed ruling for ruling.
 /// </summary>
-public class GamePlayerTests
+public class MatchTests
 {
     private static readonly PerPlayer<string> Players = new("Anna", "Ben");
 
-    private static bool IsTarget(GamePlayer game, BallId ball)
-    {
-        var state = game.State;
-        var onTable = game.Balls.Keys.Where(b => !b.IsCue).ToList();
-        switch (state.Rules)
-        {
-            case GameRules.EightBall:
-                if (state.Groups is not { } groups)
-                {
-                    return ball.Value != 8;
-                }
-                var own = groups[state.Shooter];
-                bool InOwn(BallId b) => own == BallGroup.Solids ? b.Value is >= 1 and <= 7 : b.IsStripe;
-                return onTable.Any(InOwn) ? InOwn(ball) : ball.Value == 8;
-            case GameRules.NineBall:
-            case GameRules.TenBall:
-                return ball == onTable.MinBy(b => b.Value);
-            default:
-                return true;
-        }
-    }
+    private static bool IsTarget(Match game, BallId ball) =>
+        game.Ruleset.LegalTargets(game.State, game.Balls.Keys.Where(b => !b.IsCue)).Contains(ball);
 
-    private static GamePlayer PlayOut(GameSetup setup, int maxShots = 200)
+    private static Match PlayOut(GameSetup setup, int maxShots = 200)
     {
-        var game = new GamePlayer(setup);
+        var game = new Match(setup);
         bool calls = setup.Rules is GameRules.EightBall or GameRules.TenBall or GameRules.StraightPool;
         while (!game.IsOver && game.Shots.Count < maxShots)
         {
@@ -50,7 +32,7 @@ public class GamePlayerTests
     }
 
     /// <summary>Every ruling's next state is the state the next shot was judged in (its call, push-out and placement aside).</summary>
-    private static void AssertChained(GamePlayer game)
+    private static void AssertChained(Match game)
     {
         for (int k = 1; k < game.Shots.Count; k++)
         {
@@ -63,7 +45,7 @@ public class GamePlayerTests
         }
     }
 
-    private static void AssertReplays(GamePlayer game)
+    private static void AssertReplays(Match game)
     {
         byte[] written = GameRecordFile.ToUtf8(game);
         var record = GameRecordFile.Parse(Encoding.UTF8.GetString(written), "game.json");
@@ -112,7 +94,7 @@ public class GamePlayerTests
     [Fact]
     public void ANineBallGameThroughAPushOutEndsInAThreeFoulLoss()
     {
-        var game = new GamePlayer(GameSetup.Of(GameRules.NineBall, 5, Players));
+        var game = new Match(GameSetup.Of(GameRules.NineBall, 5, Players));
         var opening = game.Play(Aimer.Break(game, null));
         Assert.True(opening.Ruling.Legal, opening.Ruling.Message);
         Assert.Equal(1, game.State.Shot);
@@ -127,7 +109,7 @@ public class GamePlayerTests
         Assert.Equal(pusher, game.State.Shooter); // passed back
 
         // Now both roll without contact in turn: the pusher's third foul in a row comes first.
-        var fouls = new List<PlayedShot>();
+        var fouls = new List<MatchShot>();
         while (!game.IsOver)
         {
             fouls.Add(game.Play(Aimer.Roll(game)));
@@ -147,7 +129,7 @@ public class GamePlayerTests
     [Fact]
     public void APlacementWithoutBallInHandIsRefused()
     {
-        var game = new GamePlayer(GameSetup.Of(GameRules.NineBall, 1, Players));
+        var game = new Match(GameSetup.Of(GameRules.NineBall, 1, Players));
         game.Play(Aimer.Break(game, null));
         if (game.State.BallInHand == BallInHand.None)
         {
@@ -158,6 +140,95 @@ public class GamePlayerTests
         {
             Assert.Contains(game.Shots[0].Ruling.Fouls, f => f is Foul.CueBallPocketed or Foul.BadBreak);
         }
+    }
+
+    [Fact]
+    public void ARulingWithOptionsWaitsForTheIncomingPlayerAndTheRecordKeepsTheChoice()
+    {
+        var game = new Match(GameSetup.Of(GameRules.NineBall, 5, Players));
+        game.Play(Aimer.Break(game, null));
+        int pusher = game.State.Shooter;
+
+        // Struck, run and judged step by step, as the window does: no option chosen yet.
+        var sim = game.Strike(Aimer.Roll(game, pushOut: true));
+        Assert.True(game.IsShotRunning);
+        Match.RunToRest(sim);
+        var push = game.Judge(sim);
+        Assert.Equal([RefereeOption.Shoot, RefereeOption.PassBack], game.PendingOptions);
+        Assert.Null(push.Input.Choice);
+        Assert.Equal(1 - pusher, game.State.Shooter);
+        Assert.Throws<InvalidOperationException>(() => game.Strike(Aimer.Roll(game)));
+        Assert.Throws<ArgumentException>(() => game.Choose(RefereeOption.Rerack));
+
+        game.Choose(RefereeOption.PassBack);
+        Assert.Empty(game.PendingOptions);
+        Assert.Equal(pusher, game.State.Shooter);
+        Assert.Equal(RefereeOption.PassBack, game.Shots[^1].Input.Choice);
+        AssertReplays(game);
+    }
+
+    [Fact]
+    public void AMatchFromASetPositionStartsThereAndItsRecordReplaysFromIt()
+    {
+        var start = GameSetup.Of(GameRules.NineBall, 3, Players);
+        double r = start.BallRadius;
+        var setup = start with
+        {
+            Position = [(BallId.Cue, new Vec3(-0.5, 0, r)), (new BallId(1), new Vec3(0.2, 0.1, r)), (new BallId(9), new Vec3(0.6, -0.2, r))],
+        };
+        var game = new Match(setup);
+        Assert.Equal(3, game.Balls.Count);
+        Assert.Equal(new Vec3(0.2, 0.1, r), game.Balls[new BallId(1)]);
+        game.Play(Aimer.Next(game, b => IsTarget(game, b), callShots: false));
+        game.Play(Aimer.Roll(game));
+        AssertReplays(game);
+        Assert.Contains("\"balls\"", Encoding.UTF8.GetString(GameRecordFile.ToUtf8(game)), StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void AReplayNamesTheFirstShotWhoseAimWasChangedByTwoDegrees()
+    {
+        var game = PlayOut(GameSetup.Of(GameRules.NineBall, 1, Players));
+        var record = GameRecordFile.Parse(Encoding.UTF8.GetString(GameRecordFile.ToUtf8(game)), "game.json");
+        Assert.True(record.Shots.Count > 4);
+        const int changed = 3;
+        var shots = record.Shots.ToList();
+        shots[changed] = shots[changed] with { Shot = shots[changed].Shot with { AimDeg = shots[changed].Shot.AimDeg + 2 } };
+        var report = GameRecordFile.Verify(record with { Shots = shots }, out _);
+        Assert.Equal(record.Shots.Count, report.Shots);
+        Assert.Equal(changed, report.Same);
+        Assert.Equal(changed, report.FirstDifference!.Shot);
+        Assert.NotEqual(report.FirstDifference.Recorded, report.FirstDifference.Replayed);
+        Assert.Null(GameRecordFile.Verify(record, out _).FirstDifference);
+    }
+
+    [Fact]
+    public void AReplayComparesTheBallsAtRestNotOnlyTheRuling()
+    {
+        var game = PlayOut(GameSetup.Of(GameRules.EightBall, 3, Players));
+        string text = Encoding.UTF8.GetString(GameRecordFile.ToUtf8(game));
+        // Shot 1's balls at rest, moved by a tenth of a millimetre: the ruling alone would not tell.
+        using var doc = System.Text.Json.JsonDocument.Parse(text);
+        var ball = doc.RootElement.GetProperty("shots")[1].GetProperty("balls")[0].GetProperty("position");
+        string x = ball[0].GetRawText();
+        var invariant = System.Globalization.CultureInfo.InvariantCulture;
+        string bumped = (double.Parse(x, invariant) + 1e-4).ToString("R", invariant);
+        int xAt = text.IndexOf(x, IndexOfNth(text, "\"balls\"", 2), StringComparison.Ordinal);
+        string changed = string.Concat(text.AsSpan(0, xAt), bumped, text.AsSpan(xAt + x.Length));
+        var report = GameRecordFile.Verify(GameRecordFile.Parse(changed, "game.json"), out _);
+        Assert.Equal(1, report.FirstDifference!.Shot);
+        Assert.Equal("balls", report.FirstDifference.Field);
+    }
+
+    // The n-th (1-based) occurrence of a string.
+    private static int IndexOfNth(string text, string value, int n)
+    {
+        int at = -1;
+        for (int k = 0; k < n; k++)
+        {
+            at = text.IndexOf(value, at + 1, StringComparison.Ordinal);
+        }
+        return at;
     }
 }
 

@@ -1,0 +1,178 @@
+using System.CommandLine;
+using System.Globalization;
+using System.Text;
+using System.Text.Json;
+using Billiards.App.Game;
+using Billiards.App.Platform;
+using Billiards.Core.Balls;
+using Billiards.Core.Physics;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Cli;
+
+/// <summary>
+/// <c>replay GAME.json --verify</c>: re-simulates every shot of a game record (billiards-game/1)
+/// and compares each ruling and the balls at rest with the recorded ones (scene-format.md); a
+/// file of several records, one per line, is verified record by record. <c>replay GAME.json
+/// [--shot K] [--speed X]</c>: plays the record back in the window.
+/// </summary>
+public static class ReplayCommand
+{
+    /// <summary>Exit code when a replayed shot differs from its record.</summary>
+    public const int Differs = 1;
+
+    /// <summary>Builds the verb.</summary>
+    /// <param name="stdout">Where the reports go.</param>
+    /// <param name="openPlatform">Opens the window for playback.</param>
+    public static Command Create(TextWriter stdout, Func<string, GamePlatform>? openPlatform = null)
+    {
+        var file = new Argument<string>("game") { Description = $"The game record ({GameRecordFile.Format} JSON, or JSON lines of several)." };
+        var verify = new Option<bool>("--verify") { Description = "Re-simulate every shot headless and compare with the record; prints the comparison." };
+        var shot = new Option<int?>("--shot") { Description = "Playback: the first shot to show (0 the break; earlier shots are played at once)." };
+        var speed = new Option<double?>("--speed") { Description = "Playback: how fast time runs (1 real time, default 1)." };
+        var command = new Command("replay", "Verify a recorded game, or play it back in the window.") { file, verify, shot, speed };
+        command.SetAction(parse =>
+        {
+            string path = parse.GetValue(file)!;
+            var records = Load(path);
+            if (parse.GetValue(verify))
+            {
+                if (parse.GetValue(shot) is not null || parse.GetValue(speed) is not null)
+                {
+                    throw new CliException("--verify replays every shot headless: --shot and --speed are for playback");
+                }
+                return Verify(records, stdout);
+            }
+            if (records.Count != 1)
+            {
+                throw new CliException($"{path}: holds {records.Count} records; playback shows one (verify them with --verify)");
+            }
+            int first = parse.GetValue(shot) ?? 0;
+            if (first < 0 || first >= records[0].Shots.Count)
+            {
+                throw new CliException($"--shot {first}: the record has shots 0 to {records[0].Shots.Count - 1}");
+            }
+            double timeScale = parse.GetValue(speed) ?? 1;
+            if (!double.IsFinite(timeScale) || timeScale <= 0 || timeScale > 100)
+            {
+                throw new CliException($"--speed {timeScale.ToString(CultureInfo.InvariantCulture)}: expected a number above 0, at most 100");
+            }
+            PlayCommand.RequireDisplay();
+            return Play(records[0], path, first, timeScale, openPlatform ?? PlatformWiring.Open);
+        });
+        return command;
+    }
+
+    /// <summary>Reads one record, or several on lines of their own.</summary>
+    /// <exception cref="CliException">When the file cannot be read.</exception>
+    /// <exception cref="SceneException">When a record is malformed.</exception>
+    public static IReadOnlyList<GameRecord> Load(string path)
+    {
+        string text;
+        try
+        {
+            text = File.ReadAllText(path);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException($"{path}: cannot read the game record: {e.Message}");
+        }
+        var lines = text.Split('\n').Select(l => l.Trim()).Where(l => l.Length > 0).ToList();
+        bool oneObject = lines.Count <= 1 || !lines.All(l => l.StartsWith('{') && l.EndsWith('}') && IsJson(l));
+        if (oneObject)
+        {
+            return [GameRecordFile.Parse(text, path)];
+        }
+        return [.. lines.Select((l, i) => GameRecordFile.Parse(l, string.Create(CultureInfo.InvariantCulture, $"{path} line {i + 1}")))];
+    }
+
+    private static bool IsJson(string line)
+    {
+        try
+        {
+            using var doc = JsonDocument.Parse(line);
+            return true;
+        }
+        catch (JsonException)
+        {
+            return false;
+        }
+    }
+
+    /// <summary>Verifies every record and prints one comparison per record; 0 when all replay the same, else <see cref="Differs"/>.</summary>
+    public static int Verify(IReadOnlyList<GameRecord> records, TextWriter stdout)
+    {
+        ArgumentNullException.ThrowIfNull(records);
+        ArgumentNullException.ThrowIfNull(stdout);
+        int code = 0;
+        foreach (var record in records)
+        {
+            var report = GameRecordFile.Verify(record, out _);
+            stdout.WriteLine(Encoding.UTF8.GetString(ToJson(report)));
+            if (report.FirstDifference is not null)
+            {
+                code = Differs;
+            }
+        }
+        return code;
+    }
+
+    /// <summary>The comparison as scene-format.md prints it.</summary>
+    public static byte[] ToJson(ReplayReport report)
+    {
+        ArgumentNullException.ThrowIfNull(report);
+        using var stream = new MemoryStream();
+        using (var w = new Utf8JsonWriter(stream))
+        {
+            w.WriteStartObject();
+            w.WriteNumber("shots", report.Shots);
+            w.WriteNumber("same", report.Same);
+            if (report.FirstDifference is { } d)
+            {
+                w.WriteStartObject("first_difference");
+                w.WriteNumber("shot", d.Shot);
+                w.WriteString("field", d.Field);
+                w.WritePropertyName("recorded");
+                w.WriteRawValue(d.Recorded);
+                w.WritePropertyName("replayed");
+                w.WriteRawValue(d.Replayed);
+                w.WriteEndObject();
+            }
+            else
+            {
+                w.WriteNull("first_difference");
+            }
+            w.WriteEndObject();
+        }
+        return stream.ToArray();
+    }
+
+    /// <summary>Plays a record back in a window from shot <paramref name="first"/>; the window closes a moment after the last shot.</summary>
+    public static int Play(GameRecord record, string path, int first, double timeScale, Func<string, GamePlatform> openPlatform, IClock? clock = null)
+    {
+        ArgumentNullException.ThrowIfNull(record);
+        ArgumentNullException.ThrowIfNull(openPlatform);
+        var setup = record.Setup;
+        var balls = (setup.Position ?? setup.Racked(0)).Select(b => new BallSetup(b.Id, b.Position, Core.Mathematics.Vec3.Zero, Core.Mathematics.Vec3.Zero)).ToList();
+        // No rules in the scene: the replay, not a match, drives the game.
+        var scene = new Scene(path, "replay", setup.Table, setup.Physics, null, balls, null, null);
+        using var platform = openPlatform($"{PlatformWiring.WindowTitle}: replay of {Path.GetFileName(path)}");
+        using var host = new GameHost(scene, SimulationFactory.Create, platform.Window, clock ?? new StopwatchClock()) { TimeScale = timeScale };
+        var replay = host.Tree.Root.AddChild(new ReplayNode(record, first));
+        double? closeAt = null;
+        host.FrameStarting += now =>
+        {
+            if (replay.Finished)
+            {
+                closeAt ??= now + (2 / timeScale);
+                if (now >= closeAt)
+                {
+                    platform.Window.Close();
+                }
+            }
+        };
+        host.Run(platform.Loop, platform.Renderer);
+        return 0;
+    }
+}

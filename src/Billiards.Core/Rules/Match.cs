@@ -1,0 +1,353 @@
+using Billiards.Core.Balls;
+using Billiards.Core.Cue;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Physics;
+using Billiards.Core.Scenes;
+using Billiards.Core.Setup;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Rules;
+
+/// <summary>How a game is set up: rules, table, physics, the rack's seed and the state at the start.</summary>
+/// <param name="Table">The table.</param>
+/// <param name="Physics">The physics every shot runs with.</param>
+/// <param name="Seed">Seed of the first rack's jitter; rack k (a rerack) uses Seed + k.</param>
+/// <param name="Start">The game state before the first shot (its rules, players and target).</param>
+public sealed record GameSetup(TableSpec Table, PhysicsConfig Physics, int Seed, GameState Start)
+{
+    /// <summary>The game's rules.</summary>
+    public GameRules Rules => Start.Rules;
+
+    /// <summary>The game's ruleset.</summary>
+    public Ruleset Ruleset => Ruleset.For(Start.Rules);
+
+    /// <summary>The ball radius of the physics (m).</summary>
+    public double BallRadius => Physics.Model.BallRadius(Physics.Params);
+
+    /// <summary>
+    /// The balls of the first shot when the game does not start from its rack (a scene's
+    /// position), cue ball included, in the ball set's order; null for the rack with the cue ball
+    /// on the head spot.
+    /// </summary>
+    public IReadOnlyList<(BallId Id, Vec3 Position)>? Position { get; init; }
+
+    /// <summary>A game of <paramref name="rules"/> on a 9 ft table with the default physics.</summary>
+    public static GameSetup Of(GameRules rules, int seed, PerPlayer<string>? players = null, int target = GameState.DefaultTarget) =>
+        new(TableSpec.FromPreset("pool-9ft"), PhysicsConfig.Default, seed,
+            new GameState(rules) { Players = players ?? GameState.DefaultPlayers, Target = target });
+
+    /// <summary>The rack of <paramref name="rack"/> (0 the first) with the cue ball on the head spot.</summary>
+    public IReadOnlyList<(BallId Id, Vec3 Position)> Racked(int rack) =>
+        [(BallId.Cue, Initializer.HeadSpot(Table, BallRadius)), .. Ruleset.Rack(Table, BallRadius, Seed + rack)];
+}
+
+/// <summary>What a player does on one shot.</summary>
+/// <param name="Shot">The cue strike.</param>
+/// <param name="Call">The call (ball and pocket, or a safety), where the rules need one.</param>
+/// <param name="Place">Where to put the cue ball (m) with ball in hand, or null to leave it (a pocketed cue ball goes to the head spot).</param>
+/// <param name="PushOut">9-ball and 10-ball: the shot is a declared push-out.</param>
+/// <param name="Choice">
+/// The option the next shooter takes when the ruling offers some; null leaves the choice to
+/// <see cref="Match.Choose"/> (<see cref="Match.Play"/> then takes the first).
+/// </param>
+public sealed record GameShot(ShotSpec Shot, Call? Call = null, Vec3? Place = null, bool PushOut = false, RefereeOption? Choice = null);
+
+/// <summary>One shot of a match, as the game record keeps it.</summary>
+/// <param name="Before">The game state the referee judged (with the call, the push-out and the placement).</param>
+/// <param name="Input">What the player did (with the option the next shooter took).</param>
+/// <param name="Ruling">The referee's ruling.</param>
+/// <param name="After">The balls at rest after the shot, before the ruling's spots and reracks (m, z = R), in the ball set's order.</param>
+public sealed record MatchShot(GameState Before, GameShot Input, Ruling Ruling, IReadOnlyList<(BallId Id, Vec3 Position)> After);
+
+/// <summary>
+/// The one state machine of a game, driven alike by the window, self-play and replays: it keeps
+/// the balls at rest and the state between shots; it makes each shot's simulation
+/// (<see cref="Strike"/>), judges the finished shot with the ruleset's referee (<see cref="Judge"/>)
+/// and applies the ruling: spots, reracks, ball in hand, and the incoming player's option
+/// (<see cref="Choose"/>). Only the referee decides a scratch.
+/// </summary>
+/// <remarks>
+/// Each shot runs in a fresh simulation made from the balls at rest, so a shot depends only on the
+/// position it starts from, and a recorded game replays bit for bit however its shots were
+/// stepped (a window steps one fixed step per tick, a replay runs to rest at once: the same steps).
+/// Balls out of play are left out of the shot's simulation.
+/// </remarks>
+public sealed class Match
+{
+    private readonly Func<Scene, Simulation> _createSimulation;
+    private readonly List<MatchShot> _shots = [];
+    private Dictionary<BallId, Vec3> _balls = [];
+    private int _racks;
+    private (GameState Before, GameShot Input)? _struck;
+    private Simulation? _judged;
+
+    /// <summary>Simulated time after which a shot is judged even if balls still move (s).</summary>
+    public const double MaxShotTime = 600;
+
+    /// <summary>Sets up the first position (the setup's, else its rack with the cue ball on the head spot).</summary>
+    /// <param name="setup">The game.</param>
+    /// <param name="createSimulation">Makes a shot's simulation; <see cref="SimulationFactory.Create"/> by default.</param>
+    public Match(GameSetup setup, Func<Scene, Simulation>? createSimulation = null)
+    {
+        ArgumentNullException.ThrowIfNull(setup);
+        Setup = setup;
+        Ruleset = setup.Ruleset;
+        Referee = Ruleset.Referee(setup.Table, setup.BallRadius);
+        _createSimulation = createSimulation ?? SimulationFactory.Create;
+        State = setup.Start;
+        _balls = (setup.Position ?? setup.Racked(0)).ToDictionary(b => b.Id, b => b.Position);
+    }
+
+    /// <summary>The setup.</summary>
+    public GameSetup Setup { get; }
+
+    /// <summary>The game's ruleset.</summary>
+    public Ruleset Ruleset { get; }
+
+    /// <summary>The game's referee.</summary>
+    public IReferee Referee { get; }
+
+    /// <summary>The game state before the next shot (while an option is pending: the state its first option gives).</summary>
+    public GameState State { get; private set; }
+
+    /// <summary>True once a ruling ended the game.</summary>
+    public bool IsOver => _shots.Count > 0 && _shots[^1].Ruling.GameOver;
+
+    /// <summary>The shots played so far.</summary>
+    public IReadOnlyList<MatchShot> Shots => _shots;
+
+    /// <summary>The last ruling, or null before the first shot is judged.</summary>
+    public Ruling? LastRuling => _shots.Count > 0 ? _shots[^1].Ruling : null;
+
+    /// <summary>The options the incoming player must choose from before the next shot (empty when none).</summary>
+    public IReadOnlyList<RefereeOption> PendingOptions => _judged is null ? [] : LastRuling!.Options;
+
+    /// <summary>True from <see cref="Strike"/> until <see cref="Judge"/>.</summary>
+    public bool IsShotRunning => _struck is not null;
+
+    /// <summary>The state the referee will judge the running shot by (with its call, push-out and placement), or null.</summary>
+    public GameState? RunningShotState => _struck?.Before;
+
+    /// <summary>Where the next shooter may place the cue ball (the break places behind the head string).</summary>
+    public BallInHand BallInHand => State.Shot == 0 ? BallInHand.Kitchen : State.BallInHand;
+
+    /// <summary>The balls on the table now, at rest (the cue ball is absent while in hand after a scratch).</summary>
+    public IReadOnlyDictionary<BallId, Vec3> Balls => _balls;
+
+    /// <summary>
+    /// The table as it stands between shots, as a simulation at rest, for a window to show and to
+    /// place the cue ball in: the balls on the table, and a cue ball in hand where it would go back
+    /// (the free spot nearest the head spot in its region; the head spot itself without ball in hand).
+    /// </summary>
+    public Simulation Layout()
+    {
+        var balls = new Dictionary<BallId, Vec3>(_balls);
+        if (!balls.ContainsKey(BallId.Cue))
+        {
+            var region = BallInHand == BallInHand.Kitchen ? PlacementRegion.Kitchen : PlacementRegion.Table;
+            var head = Initializer.HeadSpot(Setup.Table, Setup.BallRadius);
+            balls[BallId.Cue] = BallInHand == BallInHand.None ? head
+                : Placement.FreeSpotNear(Setup.Table, Setup.BallRadius, BallId.Cue, head, balls.Select(b => (b.Key, b.Value)), region);
+        }
+        var sim = _createSimulation(SceneOf(balls, null));
+        sim.RefereeRules = true;
+        return sim;
+    }
+
+    /// <summary>Plays one shot headless (strike, run to rest, judge) and applies its ruling; an offered option defaults to the first.</summary>
+    /// <exception cref="InvalidOperationException">After the game is over, or when placing the cue ball without ball in hand.</exception>
+    public MatchShot Play(GameShot input)
+    {
+        var sim = Strike(input);
+        RunToRest(sim);
+        Judge(sim);
+        if (PendingOptions.Count > 0)
+        {
+            Choose(PendingOptions[0]);
+        }
+        // After a choice the last shot carries it.
+        return _shots[^1];
+    }
+
+    /// <summary>Plays a whole game from its shots.</summary>
+    public static Match PlayAll(GameSetup setup, IEnumerable<GameShot> shots)
+    {
+        ArgumentNullException.ThrowIfNull(shots);
+        var match = new Match(setup);
+        foreach (var shot in shots)
+        {
+            match.Play(shot);
+        }
+        return match;
+    }
+
+    /// <summary>
+    /// Starts a shot: places the cue ball (with ball in hand, else a missing one on the head spot),
+    /// makes the shot's simulation from the balls at rest and strikes. The caller runs it to rest
+    /// (<see cref="RunToRest"/>, or a window's fixed steps) and hands it to <see cref="Judge"/>.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">After the game is over, with an option pending or a shot running, or when placing the cue ball without ball in hand.</exception>
+    public Simulation Strike(GameShot input)
+    {
+        ArgumentNullException.ThrowIfNull(input);
+        if (IsOver)
+        {
+            throw new InvalidOperationException("the game is over");
+        }
+        if (_struck is not null || _judged is not null)
+        {
+            throw new InvalidOperationException(_struck is not null ? "a shot is still running" : "an option must be chosen before the next shot");
+        }
+        double r = Setup.BallRadius;
+        var before = State with { Call = input.Call, PushOut = input.PushOut, Placement = null };
+        if (input.Place is { } place)
+        {
+            if (BallInHand == BallInHand.None)
+            {
+                throw new InvalidOperationException($"shot {State.Shot}: the cue ball can only be placed with ball in hand");
+            }
+            var p = place with { Z = r };
+            _balls[BallId.Cue] = p;
+            before = before with { Placement = p };
+        }
+        else if (!_balls.ContainsKey(BallId.Cue))
+        {
+            _balls[BallId.Cue] = Initializer.HeadSpot(Setup.Table, r);
+            before = before with { Placement = _balls[BallId.Cue] };
+        }
+        // No wall-clock bound: a shot must end the same way on every machine.
+        var sim = _createSimulation(SceneOf(_balls, input.Shot));
+        sim.RefereeRules = true;
+        sim.Strike(input.Shot);
+        _struck = (before, input);
+        return sim;
+    }
+
+    /// <summary>Runs a struck shot until every ball rests (or <see cref="MaxShotTime"/>).</summary>
+    public static void RunToRest(Simulation simulation)
+    {
+        ArgumentNullException.ThrowIfNull(simulation);
+        simulation.AdvanceTo(MaxShotTime);
+    }
+
+    /// <summary>
+    /// Judges the shot <see cref="Strike"/> started, now at rest in <paramref name="simulation"/>,
+    /// and applies the ruling. When the ruling offers options and the shot's input chose none,
+    /// the table waits as the shot left it until <see cref="Choose"/>.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">When no shot was struck.</exception>
+    public MatchShot Judge(Simulation simulation)
+    {
+        ArgumentNullException.ThrowIfNull(simulation);
+        if (_struck is not { } struck)
+        {
+            throw new InvalidOperationException("no shot was struck");
+        }
+        _struck = null;
+        var record = ShotRecord.LastShot(simulation, struck.Input.Shot);
+        var ruling = Referee.Judge(struck.Before, record);
+        _balls = AtRest(simulation);
+        var played = new MatchShot(struck.Before, struck.Input, ruling, [.. Ordered(_balls)]);
+        _shots.Add(played);
+        if (ruling.GameOver)
+        {
+            Apply(ruling, new OptionOutcome(ruling.Next, false, []), simulation);
+        }
+        else if (ruling.Options.Count == 0)
+        {
+            Apply(ruling, new OptionOutcome(ruling.Next, false, ruling.Spot), simulation);
+        }
+        else if (struck.Input.Choice is { } choice)
+        {
+            Apply(ruling, Ruleset.Choose(ruling, choice), simulation);
+        }
+        else
+        {
+            _judged = simulation;
+            State = ruling.Next;
+        }
+        return played;
+    }
+
+    /// <summary>Carries out the incoming player's choice among the last ruling's options; the record keeps it.</summary>
+    /// <exception cref="ArgumentException">When the option is not offered now.</exception>
+    public void Choose(RefereeOption option)
+    {
+        if (_judged is not { } sim || !PendingOptions.Contains(option))
+        {
+            throw new ArgumentException($"\"{option.ToName()}\" is not offered now", nameof(option));
+        }
+        _judged = null;
+        var last = _shots[^1];
+        _shots[^1] = last with { Input = last.Input with { Choice = option } };
+        Apply(last.Ruling, Ruleset.Choose(last.Ruling, option), sim);
+    }
+
+    private void Apply(Ruling ruling, OptionOutcome outcome, Simulation sim)
+    {
+        if (!outcome.Rerack && outcome.Spot.Count > 0)
+        {
+            foreach (var ball in outcome.Spot)
+            {
+                sim.SpotBall(ball);
+            }
+            _balls = AtRest(sim);
+        }
+        State = outcome.Next;
+        if (ruling.GameOver)
+        {
+            return;
+        }
+        if (outcome.Rerack)
+        {
+            _racks++;
+            _balls = Setup.Racked(_racks).ToDictionary(b => b.Id, b => b.Position);
+            return;
+        }
+        if (ruling.Rerack.Count > 0)
+        {
+            _racks++;
+            if (Ruleset.RerackDuringPlay(_balls, ruling.Rerack, Setup.Table, Setup.BallRadius, Setup.Seed + _racks) is { } hand)
+            {
+                State = State with { BallInHand = hand };
+            }
+        }
+    }
+
+    // The balls in play at rest; a ball the shot pocketed is off the table whatever the model did after.
+    private Dictionary<BallId, Vec3> AtRest(Simulation sim)
+    {
+        var balls = new Dictionary<BallId, Vec3>();
+        var after = sim.Balls;
+        for (int i = 0; i < after.Length; i++)
+        {
+            if (!after[i].IsPocketed)
+            {
+                balls[sim.Ids[i]] = after[i].Position with { Z = Setup.BallRadius };
+            }
+        }
+        return balls;
+    }
+
+    private IEnumerable<(BallId Id, Vec3 Position)> Ordered(IReadOnlyDictionary<BallId, Vec3> balls)
+    {
+        var set = Ruleset.BallSet.Ids;
+        return balls.OrderBy(b => IndexIn(set, b.Key)).Select(b => (b.Key, b.Value));
+    }
+
+    private static int IndexIn(IReadOnlyList<BallId> set, BallId id)
+    {
+        for (int i = 0; i < set.Count; i++)
+        {
+            if (set[i] == id)
+            {
+                return i;
+            }
+        }
+        return int.MaxValue;
+    }
+
+    private Scene SceneOf(IReadOnlyDictionary<BallId, Vec3> balls, ShotSpec? shot) =>
+        new("game", null, Setup.Table, Setup.Physics, null,
+            [.. Ordered(balls).Select(b => new BallSetup(b.Id, b.Position, Vec3.Zero, Vec3.Zero))], shot, Ruleset.Name);
+}

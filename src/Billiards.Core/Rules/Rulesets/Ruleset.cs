@@ -1,0 +1,136 @@
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Setup;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Rules;
+
+/// <summary>What the HUD shows as a player's target: a few words and the balls to draw as icons.</summary>
+/// <param name="Text">The words, e.g. "solids: 1 3 6" or "on the 4".</param>
+/// <param name="Balls">The balls the player still needs, in number order.</param>
+public sealed record HudTarget(string Text, IReadOnlyList<BallId> Balls);
+
+/// <summary>
+/// Everything one game knows, as one object (conventions.md: "a game is a ruleset object"): its
+/// balls and rack, its referee, the next shot's constraints (legal targets, whether the shot is
+/// called, push-out), what each option of the incoming player leads to, and what the HUD shows.
+/// The match, the computer player, the scene reader and the HUD ask the ruleset instead of asking
+/// which game is played; <see cref="For"/> is the one place that maps a game to its ruleset.
+/// </summary>
+public abstract class Ruleset
+{
+    private static readonly Ruleset[] Rulesets = [new EightBallRuleset(), new NineBallRuleset(), new TenBallRuleset(), new StraightPoolRuleset()];
+
+    /// <summary>Every ruleset, in <see cref="GameRules"/> order.</summary>
+    public static IReadOnlyList<Ruleset> All => Rulesets;
+
+    /// <summary>The ruleset of <paramref name="game"/>.</summary>
+    public static Ruleset For(GameRules game) => (int)game >= 0 && (int)game < Rulesets.Length
+        ? Rulesets[(int)game]
+        : throw new ArgumentOutOfRangeException(nameof(game), game, "no such game");
+
+    /// <summary>The game.</summary>
+    public abstract GameRules Game { get; }
+
+    /// <summary>The game's name in files, e.g. "eight-ball".</summary>
+    public string Name => Game.ToName();
+
+    /// <summary>The ball set the game is played with.</summary>
+    public virtual BallSet BallSet => BallSet.Pool;
+
+    /// <summary>The balls of a game, cue ball first (a subset of <see cref="BallSet"/>).</summary>
+    public abstract IReadOnlyList<BallId> Balls { get; }
+
+    /// <summary>The shape of the game's rack.</summary>
+    protected abstract RackGame RackShape { get; }
+
+    /// <summary>The object balls racked for a break with the rack's jitter from <paramref name="seed"/> (m, z = R).</summary>
+    public IReadOnlyList<(BallId Id, Vec3 Position)> Rack(TableSpec table, double ballRadius, int seed) =>
+        Initializer.Rack(new RackSpec(RackShape, seed), table, ballRadius);
+
+    /// <summary>The rack's shape as the scene loader and the physics name it.</summary>
+    public RackGame RackGame => RackShape;
+
+    /// <summary>The referee of the game on <paramref name="table"/> with balls of radius <paramref name="ballRadius"/> (m).</summary>
+    public abstract IReferee Referee(TableSpec table, double ballRadius);
+
+    /// <summary>True when the shooter must call the shot (ball and pocket, or a safety) before it.</summary>
+    public virtual bool NeedsCall(GameState state)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        return state.Shot > 0;
+    }
+
+    /// <summary>True when the game has a push-out (9-ball and 10-ball).</summary>
+    public virtual bool HasPushOut => false;
+
+    /// <summary>True when the shooter of <paramref name="state"/> may declare a push-out (the shot after the break).</summary>
+    public bool MayPushOut(GameState state)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        return HasPushOut && state.Shot == 1;
+    }
+
+    /// <summary>True when players own groups of balls (8-ball's solids and stripes).</summary>
+    public virtual bool HasGroups => false;
+
+    /// <summary>True when the game keeps a score with a target (14.1).</summary>
+    public virtual bool HasScore => false;
+
+    /// <summary>
+    /// The balls the shooter of <paramref name="state"/> may hit first, from the object balls on
+    /// the table (rules.md), in number order.
+    /// </summary>
+    public abstract IReadOnlyList<BallId> LegalTargets(GameState state, IEnumerable<BallId> objectBalls);
+
+    /// <summary>
+    /// The balls the shooter must still pot to win from <paramref name="objectBalls"/>: the legal
+    /// targets, and the game ball where it is not yet a target (8-ball's 8).
+    /// </summary>
+    public virtual IReadOnlyList<BallId> StillToPot(GameState state, IEnumerable<BallId> objectBalls) => LegalTargets(state, objectBalls);
+
+    /// <summary>True when the shooter may call <paramref name="ball"/> for a pot.</summary>
+    public virtual bool MayCall(GameState state, BallId ball) => true;
+
+    /// <summary>Shots after which a game between computers is abandoned without a winner.</summary>
+    public virtual int MaxShots(GameState start) => 400;
+
+    /// <summary>
+    /// The state and table work that follow when the ruling's next shooter takes
+    /// <paramref name="option"/>.
+    /// </summary>
+    /// <exception cref="ArgumentException">When the ruling does not offer the option.</exception>
+    public OptionOutcome Choose(Ruling ruling, RefereeOption option)
+    {
+        ArgumentNullException.ThrowIfNull(ruling);
+        if (!ruling.Options.Contains(option))
+        {
+            throw new ArgumentException($"the ruling offers no \"{option.ToName()}\" (it offers {string.Join(", ", ruling.Options.Select(o => o.ToName()))})", nameof(option));
+        }
+        var next = ruling.Next;
+        return option switch
+        {
+            RefereeOption.Rerack => new OptionOutcome(Rerack(next), true, []),
+            RefereeOption.PassBack => new OptionOutcome(next with { Shooter = next.Incoming, BallInHand = BallInHand.None }, false, ruling.Spot),
+            _ => new OptionOutcome(next, false, ruling.Spot),
+        };
+    }
+
+    /// <summary>The state before the break of a rerack the ruling's next shooter chose: by default the chooser breaks.</summary>
+    protected virtual GameState Rerack(GameState next) => next with { Shot = 0, BallInHand = BallInHand.None, Groups = null };
+
+    /// <summary>
+    /// Racks <paramref name="balls"/> again during a game (14.1's rerack of fourteen) on the balls
+    /// at rest; returns the ball in hand the rerack gives (a cue ball in the rack's way is taken
+    /// up), or null when it gives none.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">For a game without reracks during play.</exception>
+    public virtual BallInHand? RerackDuringPlay(IDictionary<BallId, Vec3> table, IReadOnlyList<BallId> balls, TableSpec tableSpec, double ballRadius, int seed) =>
+        throw new InvalidOperationException($"{Name} has no rerack during play");
+
+    /// <summary>What the HUD shows as <paramref name="player"/>'s target with <paramref name="objectBalls"/> on the table.</summary>
+    public abstract HudTarget Target(GameState state, int player, IReadOnlyCollection<BallId> objectBalls);
+
+    /// <summary>Orders balls by number.</summary>
+    protected static List<BallId> Ordered(IEnumerable<BallId> balls) => [.. balls.OrderBy(b => b.Value)];
+}

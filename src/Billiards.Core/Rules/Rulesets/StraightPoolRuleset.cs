@@ -1,0 +1,75 @@
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Setup;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Rules;
+
+/// <summary>14.1 continuous (rules.md): any ball, every shot after the break called, reracks of fourteen.</summary>
+public sealed class StraightPoolRuleset : Ruleset
+{
+    /// <inheritdoc />
+    public override GameRules Game => GameRules.StraightPool;
+
+    /// <inheritdoc />
+    public override IReadOnlyList<BallId> Balls => BallSet.Ids;
+
+    /// <inheritdoc />
+    protected override RackGame RackShape => RackGame.StraightPool;
+
+    /// <inheritdoc />
+    public override bool HasScore => true;
+
+    /// <inheritdoc />
+    public override IReferee Referee(TableSpec table, double ballRadius) => new StraightPoolReferee(table, ballRadius);
+
+    /// <summary>Any object ball.</summary>
+    public override IReadOnlyList<BallId> LegalTargets(GameState state, IEnumerable<BallId> objectBalls) => Ordered(objectBalls);
+
+    /// <summary>Ten shots per point of the target, at least 400.</summary>
+    public override int MaxShots(GameState start)
+    {
+        ArgumentNullException.ThrowIfNull(start);
+        return Math.Max(base.MaxShots(start), 10 * start.Target);
+    }
+
+    /// <summary>A rerack after a foul is broken by the offender: the player who is not choosing.</summary>
+    protected override GameState Rerack(GameState next) => next with { Shooter = next.Incoming, Shot = 0, BallInHand = BallInHand.None };
+
+    /// <summary>
+    /// Racks the pocketed balls with the apex empty. The WPA's placement rules, simplified (ours): a
+    /// fifteenth ball in the rack's way goes to the head spot (the centre spot if the cue ball is
+    /// there); a cue ball in the way is taken up, and the shooter has ball in hand behind the head string.
+    /// </summary>
+    public override BallInHand? RerackDuringPlay(IDictionary<BallId, Vec3> table, IReadOnlyList<BallId> balls, TableSpec tableSpec, double ballRadius, int seed)
+    {
+        ArgumentNullException.ThrowIfNull(table);
+        double r = ballRadius;
+        var rack = Initializer.Rerack(balls, tableSpec, r, seed);
+        bool InTheWay(Vec3 p) => rack.Any(b => (b.Position - p).Length < 2 * r) || (Initializer.FootSpot(tableSpec, r) - p).Length < 2 * r;
+        BallInHand? hand = null;
+        if (table.TryGetValue(BallId.Cue, out var cue) && InTheWay(cue))
+        {
+            table.Remove(BallId.Cue);
+            hand = BallInHand.Kitchen;
+        }
+        foreach (var (id, _) in table.Where(b => !b.Key.IsCue && InTheWay(b.Value)).OrderBy(b => b.Key.Value).ToList())
+        {
+            var head = Initializer.HeadSpot(tableSpec, r);
+            bool headTaken = table.TryGetValue(BallId.Cue, out var c) && (c - head).Length < 2 * r;
+            table[id] = headTaken ? new Vec3(0, 0, r) : head;
+        }
+        foreach (var (id, p) in rack)
+        {
+            table[id] = p;
+        }
+        return hand;
+    }
+
+    /// <inheritdoc />
+    public override HudTarget Target(GameState state, int player, IReadOnlyCollection<BallId> objectBalls)
+    {
+        ArgumentNullException.ThrowIfNull(objectBalls);
+        return new HudTarget($"{objectBalls.Count} balls on the table", []);
+    }
+}

@@ -1,0 +1,91 @@
+using Billiards.Core.Balls;
+using Billiards.Core.Rules;
+
+namespace Billiards.Core.Tests.Rules;
+
+/// <summary>Each game's ruleset answers the next shot's questions as rules.md has them.</summary>
+public class RulesetTests
+{
+    private static readonly BallId[] Some = [new(2), new(3), new(8), new(9), new(12)];
+
+    [Fact]
+    public void EveryGameHasItsRulesetInGameOrder()
+    {
+        Assert.Equal(Enum.GetValues<GameRules>(), Ruleset.All.Select(r => r.Game));
+        Assert.All(Ruleset.All, r => Assert.Same(r, Ruleset.For(r.Game)));
+        Assert.Equal(16, Ruleset.For(GameRules.EightBall).Balls.Count);
+        Assert.Equal(10, Ruleset.For(GameRules.NineBall).Balls.Count);
+        Assert.Equal(11, Ruleset.For(GameRules.TenBall).Balls.Count);
+        Assert.All(Ruleset.All, r => Assert.Equal(BallId.Cue, r.Balls[0]));
+    }
+
+    [Theory]
+    [InlineData(GameRules.EightBall, true)]
+    [InlineData(GameRules.NineBall, false)]
+    [InlineData(GameRules.TenBall, true)]
+    [InlineData(GameRules.StraightPool, true)]
+    public void CalledGamesCallEveryShotAfterTheBreak(GameRules game, bool called)
+    {
+        var rules = Ruleset.For(game);
+        Assert.False(rules.NeedsCall(new GameState(game)));
+        Assert.Equal(called, rules.NeedsCall(new GameState(game) { Shot = 4 }));
+    }
+
+    [Theory]
+    [InlineData(GameRules.EightBall, false)]
+    [InlineData(GameRules.NineBall, true)]
+    [InlineData(GameRules.TenBall, true)]
+    [InlineData(GameRules.StraightPool, false)]
+    public void APushOutIsOnlyTheRotationGamesShotAfterTheBreak(GameRules game, bool pushOut)
+    {
+        var rules = Ruleset.For(game);
+        Assert.Equal(pushOut, rules.MayPushOut(new GameState(game) { Shot = 1 }));
+        Assert.False(rules.MayPushOut(new GameState(game) { Shot = 2 }));
+    }
+
+    [Fact]
+    public void LegalTargetsFollowEachGame()
+    {
+        Assert.Equal([new BallId(2)], Ruleset.For(GameRules.NineBall).LegalTargets(new GameState(GameRules.NineBall), Some));
+        Assert.Equal(Some, Ruleset.For(GameRules.StraightPool).LegalTargets(new GameState(GameRules.StraightPool), Some.Reverse()));
+        var eight = Ruleset.For(GameRules.EightBall);
+        Assert.Equal([new BallId(2), new BallId(3), new BallId(9), new BallId(12)], eight.LegalTargets(new GameState(GameRules.EightBall), Some));
+        var stripes = new GameState(GameRules.EightBall) { Groups = new(BallGroup.Stripes, BallGroup.Solids) };
+        Assert.Equal([new BallId(9), new BallId(12)], eight.LegalTargets(stripes, Some));
+        Assert.Equal([new BallId(9), new BallId(12), new BallId(8)], eight.StillToPot(stripes, Some));
+        Assert.Equal([new BallId(8)], eight.LegalTargets(stripes, [new BallId(2), new BallId(8)]));
+        Assert.False(eight.MayCall(stripes, new BallId(2)));
+        Assert.False(eight.MayCall(stripes, new BallId(8)));
+        Assert.True(eight.MayCall(stripes, new BallId(9)));
+    }
+
+    [Fact]
+    public void ARerackIsBrokenByTheChooserInEightBallAndByTheOffenderInStraightPool()
+    {
+        foreach (var (game, breaker) in new[] { (GameRules.EightBall, 1), (GameRules.StraightPool, 0) })
+        {
+            var next = new GameState(game) { Shooter = 1, Shot = 1, BallInHand = BallInHand.Table };
+            var ruling = new Ruling(false, [Foul.BadBreak], [], false, BallInHand.Table, [], [RefereeOption.Accept, RefereeOption.Rerack], false, null, "", next);
+            var outcome = Ruleset.For(game).Choose(ruling, RefereeOption.Rerack);
+            Assert.True(outcome.Rerack);
+            Assert.Equal(breaker, outcome.Next.Shooter);
+            Assert.Equal(0, outcome.Next.Shot);
+            Assert.Equal(BallInHand.None, outcome.Next.BallInHand);
+            Assert.False(Ruleset.For(game).Choose(ruling, RefereeOption.Accept).Rerack);
+            Assert.Throws<ArgumentException>(() => Ruleset.For(game).Choose(ruling, RefereeOption.PassBack));
+        }
+    }
+
+    [Fact]
+    public void TheHudShowsWhatEachPlayerStillNeeds()
+    {
+        var stripes = new GameState(GameRules.EightBall) { Groups = new(BallGroup.Stripes, BallGroup.Solids) };
+        var eight = Ruleset.For(GameRules.EightBall);
+        Assert.Equal("stripes: 9 12", eight.Target(stripes, 0, Some).Text);
+        Assert.Equal([new BallId(2), new BallId(3)], eight.Target(stripes, 1, Some).Balls);
+        Assert.Equal("solids, on the 8", eight.Target(stripes, 1, [new BallId(8), new BallId(9)]).Text);
+        Assert.Equal("open table", eight.Target(new GameState(GameRules.EightBall), 0, Some).Text);
+        Assert.Equal("on the 2", Ruleset.For(GameRules.NineBall).Target(new GameState(GameRules.NineBall), 0, Some).Text);
+        Assert.Equal("5 balls on the table", Ruleset.For(GameRules.StraightPool).Target(new GameState(GameRules.StraightPool), 0, Some).Text);
+    }
+}
