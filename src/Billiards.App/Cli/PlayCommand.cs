@@ -273,17 +273,11 @@ public static class PlayCommand
     public const string DefaultPlayers = "human,computer:3";
 
     /// <summary>The shipped scene for a game: <c>assets/scenes/RULES.json</c>.</summary>
-    public static string FindRulesScene(GameRules rules)
-    {
-        string file = $"{rules.ToName()}.json";
-        string local = Path.Combine("assets", "scenes", file);
-        return File.Exists(local) ? local : AssetFolder.Scene(file);
-    }
+    public static string FindRulesScene(GameRules rules) => AssetFolder.File($"scenes/{rules.ToName()}.json");
 
     /// <summary>
-    /// The default scene: relative to the working directory, else in the shipped assets
-    /// (<see cref="AssetFolder"/>), so the game starts from the repository and from a build folder.
+    /// The default scene, in the shipped assets beside the executable (<see cref="AssetFolder"/>),
+    /// whatever the working folder.
     /// </summary>
-    public static string FindDefaultScene() =>
-        File.Exists(DefaultScene) ? DefaultScene : AssetFolder.Scene(Path.GetFileName(DefaultScene));
+    public static string FindDefaultScene() => AssetFolder.File(Path.GetRelativePath("assets", DefaultScene));
 }

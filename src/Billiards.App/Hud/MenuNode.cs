@@ -26,7 +26,7 @@ public enum MenuPage
 /// The pause menu (Escape: resume, restart, quit; quit asks before it quits) and the buttons of
 /// the incoming player's options. Buttons are laid out here in pixels and hit-tested against the
 /// same rectangles the HUD draws; each also has its key (Escape, R, Q, Y, N; 1-5 for the options).
-/// While a menu is open the game is paused and takes no other input.
+/// While a menu is open the game is paused and takes no other input but the help (H or F1).
 /// </summary>
 public sealed class MenuNode : Node
 {
@@ -118,6 +118,10 @@ public sealed class MenuNode : Node
 
     private bool OnKey(Key key)
     {
+        if (key is Key.H or Key.F1)
+        {
+            return false; // the help (SystemKeysNode) opens over every page, as the HUD offers
+        }
         switch (Page)
         {
             case MenuPage.None when key == Key.Escape:

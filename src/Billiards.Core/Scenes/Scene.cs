@@ -62,7 +62,10 @@ public sealed record Scene(
     ShotSpec? Shot,
     string? Rules)
 {
-    /// <summary>The state of a game before the scene's shot (the "game" block), or null.</summary>
+    /// <summary>
+    /// The state of a game before the scene's shot (the "game" block), or null. A scene with a
+    /// game block and no shot is a position: <c>suggest</c> plays it, <c>simulate</c> refuses it.
+    /// </summary>
     public Rules.GameState? Game { get; init; }
 
     /// <summary>The ball radius the scene's model uses (m).</summary>

@@ -136,11 +136,8 @@ public static class SceneLoader
             }
             string? rules = fields.TryGetValue("rules", out var ru) ? OneOf(ru, "$.rules", [.. Rules.RuleNames.GameNames]) : null;
 
+            // A game block without a shot is a position to play (suggest); a run refuses it (SimulationRunner).
             var game = fields.TryGetValue("game", out var gm) ? GameBlockReader.Read(gm, file) : null;
-            if (game is not null && shot is null)
-            {
-                throw Error("$.game", "a game block judges the scene's shot, and the scene has none");
-            }
             return new Scene(file, name, table, physics, rack, list.Select(x => x.Ball).ToList(), shot, rules) { Game = game };
         }
 
