@@ -240,8 +240,12 @@ public sealed class InputModeNode : Node
             return;
         }
         var old = _physics.CueBallPosition;
-        // Along the cue's aim, the camera's azimuth: exact whatever the eye's height (a scripted drag places the ball bit for bit).
-        var moved = _cue is null
+        // From above, the ball follows the pointer on the screen (the table's length across it, +y
+        // up); behind the ball, along the cue's aim, the camera's azimuth: exact whatever the eye's
+        // height (a scripted drag places the ball bit for bit).
+        var moved = _camera.Overhead
+            ? CueBallMover.ClampToBed(old + (new Billiards.Core.Mathematics.Vec3(dx, -dy, 0) * _camera.OverheadMetresPerPixel), _physics.Table, _physics.BallRadius)
+            : _cue is null
             ? CueBallMover.Move(old, _camera.Camera.Eye, dx, dy, _physics.Table, _physics.BallRadius)
             : CueBallMover.MoveAlong(old, _cue.AimDirection, dx, dy, _physics.Table, _physics.BallRadius);
         if (_physics.TryPlaceCueBall(moved))
