@@ -175,4 +175,37 @@ public class CallPickerTests
         window.Up();
         Assert.Equal(new Call(new BallId(1), PocketId.FootRight), match.CurrentCall);
     }
+
+    [Fact]
+    public void A_click_on_the_dark_hole_of_a_pocket_calls_it_not_only_a_click_in_its_mouth()
+    {
+        var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
+        var scene = TestScenes.TwoBalls(rules: "eight-ball") with { Game = new GameState(GameRules.EightBall) { Shot = 3, Players = new PerPlayer<string>("Anna", "Ben") } };
+        var window = new FakeWindow { FramebufferSize = (1280, 720) };
+        using var host = new GameHost(scene, TestScenes.Create, window, new ManualClock(), new MatchSetup(GameRules.EightBall, players));
+        var match = host.Tree.Root.GetInTree<MatchNode>();
+        host.RunFrame();
+        window.Press(Billiards.App.Camera.CameraNode.OverheadKey);
+        var frame = host.RunFrame();
+        var vp = RenderMath.ViewProjection(frame);
+        var r = (float)host.World.Physics.BallRadius;
+        var capture = Billiards.Core.Table.TableGeometry.Build(scene.Table, r).Pockets.ToArray()
+            .Single(p => PocketIds.FromIndex(p.Pocket) == PocketId.FootRight).Centre;
+        // The hole as the table model cuts it: the middle of its floor's rim points round that pocket.
+        var floor = TableModelGenerator.Generate(scene.Table).Single(m => m.Material.Name == "pocket_floor").Positions
+            .Where(p => Math.Abs(p.X - capture.X) < 0.15 && Math.Abs(p.Y - capture.Y) < 0.15).ToList();
+        var hole = new Vector3((floor.Min(p => p.X) + floor.Max(p => p.X)) / 2, (floor.Min(p => p.Y) + floor.Max(p => p.Y)) / 2, 0);
+        var holePixel = RenderMath.ToPixel(vp, hole, 1280, 720)!.Value;
+        var capturePixel = RenderMath.ToPixel(vp, capture.ToVector3() with { Z = 0 }, 1280, 720)!.Value;
+        var captureEdge = RenderMath.ToPixel(vp, capture.ToVector3() with { Z = 0 } + new Vector3(r, 0, 0), 1280, 720)!.Value;
+        // The hole's middle lies beyond what a click round the capture circle alone reaches.
+        Assert.True(Vector2.Distance(holePixel, capturePixel) > MathF.Max(1.5f * Vector2.Distance(capturePixel, captureEdge), 12),
+            $"the hole's middle is {Vector2.Distance(holePixel, capturePixel)} px from the capture circle's");
+
+        match.CallBall(new BallId(1));
+        window.MoveTo(holePixel.X, holePixel.Y);
+        window.Down();
+        window.Up();
+        Assert.Equal(new Call(new BallId(1), PocketId.FootRight), match.CurrentCall);
+    }
 }
