@@ -246,7 +246,7 @@ public sealed class MatchNode : Node
     {
         if (CanShoot)
         {
-            _calledBall ??= Aim?.Ball;
+            _calledBall ??= DefaultBall(Aim);
             _calledPocket = pocket;
         }
     }
@@ -261,15 +261,16 @@ public sealed class MatchNode : Node
     }
 
     /// <summary>
-    /// The call the shooter makes now: the chosen ball (else the aimed one) and the chosen pocket
-    /// (else that ball's easiest pocket).
+    /// The call the shooter makes now: the chosen ball (else the aimed one when it is a legal
+    /// target, else the legal target nearest the cue ball) and the chosen pocket (else that
+    /// ball's easiest pocket). The ruleset says which balls are legal: never the opponent's group.
     /// </summary>
     public Call? CurrentCall
     {
         get
         {
             var aim = Aim;
-            var ball = _calledBall ?? aim?.Ball;
+            var ball = _calledBall ?? DefaultBall(aim);
             if (ball is not { } b || PocketFor(b, aim) is not { } pocket || pocket == PocketId.None)
             {
                 return null;
@@ -557,7 +558,7 @@ public sealed class MatchNode : Node
         var sim = _physics.Simulation;
         var cue = _physics.CueBallPosition with { Z = 0 };
         var aim = Aim;
-        var ball = _calledBall ?? aim?.Ball ?? Nearest(cue);
+        var ball = _calledBall ?? DefaultBall(aim);
         if (ball is not { } b || PocketFor(b, aim) is not { } pocket)
         {
             return;
@@ -608,14 +609,39 @@ public sealed class MatchNode : Node
         return AimPreview.EasiestPocket(target, (target - cue).Normalized(), _geometry.Pockets);
     }
 
-    private BallId? Nearest(Vec3 from)
+    // The aimed ball when the shooter may hit it first, else the nearest ball that they may.
+    private BallId? DefaultBall(AimPreview? aim)
+    {
+        if (_physics is null)
+        {
+            return null;
+        }
+        var legal = _ruleset.LegalTargets(State, ObjectBallsOnTable());
+        return aim?.Ball is { } aimed && legal.Contains(aimed) ? aimed : Nearest(_physics.CueBallPosition with { Z = 0 }, legal);
+    }
+
+    private List<BallId> ObjectBallsOnTable()
+    {
+        var sim = _physics!.Simulation;
+        var onTable = new List<BallId>();
+        for (int i = 0; i < sim.Ids.Count; i++)
+        {
+            if (sim.Ids[i] != BallId.Cue && !sim.Balls[i].IsPocketed)
+            {
+                onTable.Add(sim.Ids[i]);
+            }
+        }
+        return onTable;
+    }
+
+    private BallId? Nearest(Vec3 from, IReadOnlyList<BallId>? among = null)
     {
         var sim = _physics!.Simulation;
         BallId? best = null;
         double bestDistance = double.PositiveInfinity;
         for (int i = 0; i < sim.Ids.Count; i++)
         {
-            if (sim.Ids[i] == BallId.Cue || sim.Balls[i].IsPocketed)
+            if (sim.Ids[i] == BallId.Cue || sim.Balls[i].IsPocketed || (among is not null && !among.Contains(sim.Ids[i])))
             {
                 continue;
             }
@@ -634,7 +660,7 @@ public sealed class MatchNode : Node
         var current = CurrentCall?.Pocket ?? _calledPocket ?? PocketId.None;
         int next = ((int)current + 1) % PocketIds.All.Count;
         _calledPocket = PocketIds.FromIndex(next);
-        _calledBall ??= Aim?.Ball;
+        _calledBall ??= DefaultBall(Aim);
     }
 
     private void CycleBall()
@@ -643,20 +669,12 @@ public sealed class MatchNode : Node
         {
             return;
         }
-        var sim = _physics.Simulation;
-        var onTable = new List<BallId>();
-        for (int i = 0; i < sim.Ids.Count; i++)
-        {
-            if (sim.Ids[i] != BallId.Cue && !sim.Balls[i].IsPocketed)
-            {
-                onTable.Add(sim.Ids[i]);
-            }
-        }
+        var onTable = ObjectBallsOnTable();
         if (onTable.Count == 0)
         {
             return;
         }
-        var current = _calledBall ?? Aim?.Ball;
+        var current = _calledBall ?? DefaultBall(Aim);
         int k = current is { } c ? onTable.IndexOf(c) : -1;
         _calledBall = onTable[(k + 1) % onTable.Count];
     }

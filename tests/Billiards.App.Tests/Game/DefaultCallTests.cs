@@ -1,0 +1,51 @@
+using Billiards.App.Game;
+using Billiards.Core.Balls;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Tests.Game;
+
+public class DefaultCallTests
+{
+    // Anna has the solids; the 14 lies straight ahead of the cue ball and nearest it, the 3 and 5 farther off.
+    private const string Json = """
+        { "format": "billiards-scene/1", "table": { "preset": "pool-9ft" }, "physics": { "dt": 0.00390625 },
+          "balls": [ { "id": "cue", "position": [-0.635, 0.0] }, { "id": "14", "position": [-0.3, 0.0] },
+                     { "id": "3", "position": [0.4, 0.35] }, { "id": "5", "position": [0.6, -0.3] }, { "id": "8", "position": [0.9, 0.0] } ] }
+        """;
+
+    private static (TestGame Game, MatchNode Match) Start(int shooter, PerPlayer<BallGroup> groups)
+    {
+        var scene = SceneLoader.Parse(Json, "t.json") with
+        {
+            Game = new GameState(GameRules.EightBall) { Shot = 5, Shooter = shooter, Groups = groups, Players = new PerPlayer<string>("Anna", "Ben") },
+        };
+        var game = new TestGame(scene, new MatchSetup(GameRules.EightBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+        var match = game.World.Tree.Root.GetInTree<MatchNode>();
+        game.Frame();
+        return (game, match);
+    }
+
+    [Fact]
+    public void On_solids_the_default_call_is_a_solid_even_when_the_cue_aims_at_a_stripe()
+    {
+        var (game, match) = Start(0, new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes));
+        using var _ = game;
+        match.AimAt(0); // straight at the 14
+        Assert.Equal(new BallId(14), match.Aim!.Ball);
+        Assert.True(match.NeedsCall);
+        var call = match.CurrentCall!;
+        Assert.True(call.Ball.Value is >= 1 and <= 7, $"the default call is the {call.Ball}");
+        // The nearest legal ball is the 3.
+        Assert.Equal(new BallId(3), call.Ball);
+    }
+
+    [Fact]
+    public void On_stripes_the_aimed_stripe_is_the_default_call()
+    {
+        var (game, match) = Start(0, new PerPlayer<BallGroup>(BallGroup.Stripes, BallGroup.Solids));
+        using var _ = game;
+        match.AimAt(0);
+        Assert.Equal(new BallId(14), match.CurrentCall!.Ball);
+    }
+}
