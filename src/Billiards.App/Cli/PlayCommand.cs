@@ -32,12 +32,14 @@ public static class PlayCommand
         var players = new Option<string?>("--players") { Description = $"The two players, A,B: each a name or human (a person), or computer:LEVEL (1-5; also cpu:LEVEL); default {DefaultPlayers}." };
         var record = new Option<string?>("--record") { Description = $"Write the game ({GameRecordFile.Format} JSON, which replay reads) when the window closes." };
         var cap = new Option<double?>("--fps-cap") { Description = $"The most frames a second (0: no cap); default the display's refresh rate, else {PlatformWiring.DefaultFrameCap}." };
-        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record, cap };
+        var fast = new Option<bool>("--fast-computer") { Description = $"The computer turns to its aim and strikes in {ComputerPlayerNode.FastShare:0%} of the time (default: {ComputerPlayerNode.StrokeSeconds:0.0} s from its aim to its stroke)." };
+        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record, cap, fast };
         command.SetAction(parse => Play(parse.GetValue(scene), title => PlatformWiring.Open(title, FrameCap(parse.GetValue(cap))), options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))
         {
             Rules = parse.GetValue(rules),
             Players = parse.GetValue(players),
             Record = parse.GetValue(record),
+            FastComputer = parse.GetValue(fast),
             StartMenu = parse.GetValue(scene) is null && parse.GetValue(rules) is null && parse.GetValue(players) is null
                 && parse.GetValue(script) is null && parse.GetValue(stats) is null && parse.GetValue(record) is null,
         }, openAudio: OpenAudio));
@@ -110,6 +112,8 @@ public static class PlayCommand
         using var audio = openAudio?.Invoke() ?? new SilentAudio();
         using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, match);
         host.Tree.Root.AddChild(new AudioNode(audio));
+        bool fastComputer = options?.FastComputer == true;
+        Pace(host, fastComputer);
         if (scripted is not null)
         {
             host.TimeScale = script!.Speed;
@@ -148,7 +152,7 @@ public static class PlayCommand
         if (startMenu)
         {
             host.World.Menu.StartSettings = host.World.Menu.PlayedSettings = settings;
-            RunWithStartMenu(host, platform, scene2 => new GameHost(scene2.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, scene2.Match), audio, settingsPath);
+            RunWithStartMenu(host, platform, scene2 => Pace(new GameHost(scene2.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, scene2.Match), fastComputer), audio, settingsPath);
         }
         else
         {
@@ -166,6 +170,15 @@ public static class PlayCommand
             OutputFiles.Write(recordPath, GameRecordFile.ToUtf8(matchNode.Game!));
         }
         return 0;
+    }
+
+    private static GameHost Pace(GameHost host, bool fast)
+    {
+        if (host.Tree.Root.FindInTree<ComputerPlayerNode>() is { } computer)
+        {
+            computer.Fast = fast;
+        }
+        return host;
     }
 
     // The start menu shows over the default game; a different choice replaces the game (a new host
@@ -256,6 +269,9 @@ public static class PlayCommand
 
         /// <summary>Where to write the game record (<see cref="GameRecordFile"/>), or null.</summary>
         public string? Record { get; init; }
+
+        /// <summary>The computer plays fast (<c>--fast-computer</c>).</summary>
+        public bool FastComputer { get; init; }
 
         /// <summary>Open with the start menu (plain <c>play</c>: no scene, game, players, script, stats or record given).</summary>
         public bool StartMenu { get; init; }

@@ -10,8 +10,9 @@ namespace Billiards.App.Game;
 /// <summary>
 /// The computer at the table, and the hint for a person, both from Core's <see cref="ShotPlanner"/>.
 /// A decision is searched on a background task (the frames go on: the search leaves one core to
-/// the game), then the cue turns to the planned aim for <see cref="AimSeconds"/> before the strike,
-/// so the player sees what the computer does. A ruling's options are chosen the same way. The
+/// the game), then the cue turns to the planned aim for <see cref="AimSeconds"/> and holds it
+/// until <see cref="StrokeSeconds"/> have passed, the view behind its cue, before the strike: the
+/// player sees what the computer plays. <see cref="Fast"/> (<c>play --fast-computer</c>) shortens both. A ruling's options are chosen the same way. The
 /// computer's own error comes from <see cref="SkillLevel.Execute"/>; every seed derives from the
 /// match's seed, the game and the shot, so the same game gets the same decisions.
 /// <see cref="HintKey"/> asks the planner (at <see cref="HintLevel"/>) for a person's shot and
@@ -21,6 +22,17 @@ public sealed class ComputerPlayerNode : Node
 {
     /// <summary>How long the cue takes to turn to the computer's aim (s).</summary>
     public const double AimSeconds = 0.8;
+
+    /// <summary>How long from the start of the computer's turn to its aim to its stroke (s): the turn, then the aim held.</summary>
+    public const double StrokeSeconds = 1.5;
+
+    /// <summary>The share of <see cref="AimSeconds"/> and <see cref="StrokeSeconds"/> a fast computer takes.</summary>
+    public const double FastShare = 0.25;
+
+    /// <summary>True for a fast computer: it turns and strikes in a quarter of the time.</summary>
+    public bool Fast { get; set; }
+
+    private double Share => Fast ? FastShare : 1;
 
     /// <summary>The key that asks for a hint.</summary>
     public const Key HintKey = Key.G;
@@ -169,7 +181,7 @@ public sealed class ComputerPlayerNode : Node
         if (_decision is { } d)
         {
             _aimTime += dt;
-            double f = Math.Min(1, _aimTime / AimSeconds);
+            double f = Math.Min(1, _aimTime / (AimSeconds * Share));
             if (f < 1)
             {
                 double smooth = f * f * (3 - (2 * f));
@@ -177,6 +189,11 @@ public sealed class ComputerPlayerNode : Node
                 return;
             }
             _match.AimAt(d.Shot.AimDeg);
+            if (_aimTime < StrokeSeconds * Share)
+            {
+                // The aim held a moment: the player sees the shot before it is struck.
+                return;
+            }
             var struck = SkillLevel.Of(_decisionLevel).Execute(d.Shot, new PlannerRandom(_match.ShotSeed(2)));
             _decision = null;
             Status = null;

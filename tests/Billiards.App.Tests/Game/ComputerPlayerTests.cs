@@ -60,6 +60,28 @@ public class ComputerPlayerTests
         public void Dispose() => Host.Dispose();
     }
 
+    // Game-clock seconds from the computer's aim (its decision taken) to its stroke.
+    private static double AimToStroke(bool fast)
+    {
+        using var game = new Game(new MatchPlayer("Computer L1", 1), new MatchPlayer("Computer L2", 2));
+        game.Computer.Fast = fast;
+        game.RunUntil(() => game.Computer.Status?.EndsWith("aims.", StringComparison.Ordinal) == true, "the computer never aimed");
+        double aimed = game.Clock.Now;
+        game.RunUntil(() => game.Match.Shots.Count >= 1, "the computer never struck");
+        return game.Clock.Now - aimed;
+    }
+
+    [Fact]
+    public void The_computer_holds_its_aim_about_one_and_a_half_seconds_before_the_stroke_and_a_quarter_of_that_when_fast()
+    {
+        const double Frame = 1.0 / 30;
+        double normal = AimToStroke(fast: false);
+        Assert.InRange(normal, ComputerPlayerNode.StrokeSeconds - Frame, ComputerPlayerNode.StrokeSeconds + (2 * Frame));
+        double fast = AimToStroke(fast: true);
+        double share = ComputerPlayerNode.StrokeSeconds * ComputerPlayerNode.FastShare;
+        Assert.InRange(fast, share - Frame, share + (2 * Frame));
+    }
+
     private static List<(GameState Before, Billiards.Core.Cue.ShotSpec Shot)> ComputerTurnAfterASoftBreak()
     {
         using var game = new Game(new MatchPlayer("Anna"), new MatchPlayer("Computer L1", 1));
