@@ -115,6 +115,46 @@ public sealed class AimLineNode : Node
         return shapes;
     }
 
+    private static readonly Vector4 CallColour = new(0.3f, 0.9f, 1f, 0.9f);
+
+    /// <summary>
+    /// The call marked on the table for <paramref name="frame"/>'s camera (pixels): a ring round
+    /// the called ball and one round the called pocket's mouth; none when the shot is not called,
+    /// the balls roll, or there is no call. Shown whether or not the aim line is.
+    /// </summary>
+    public IReadOnlyList<AidShape> CallShapes(RenderFrame frame)
+    {
+        ArgumentNullException.ThrowIfNull(frame);
+        if (_match is not { NeedsCall: true, CurrentCall: { } call } || _cue is not { IsVisible: true } || _physics is not { } physics)
+        {
+            return [];
+        }
+        var sim = physics.Simulation;
+        var vp = RenderMath.ViewProjection(frame);
+        var right = Vector3.Normalize(Vector3.Cross(frame.Target - frame.Eye, Vector3.UnitZ));
+        var shapes = new List<AidShape>(2);
+        void Ring(Vector3 centre, float radius)
+        {
+            if (RenderMath.ToPixel(vp, centre, frame.Width, frame.Height) is { } c && RenderMath.ToPixel(vp, centre + (right * radius), frame.Width, frame.Height) is { } edge)
+            {
+                shapes.Add(new AidShape(c, c, MathF.Max(4, Vector2.Distance(c, edge)), CallColour));
+            }
+        }
+        float r = (float)physics.BallRadius;
+        if (sim.IndexOf(call.Ball) is >= 0 and var i && !sim.Balls[i].IsPocketed)
+        {
+            Ring((sim.Balls[i].Position with { Z = 0 }).ToVector3() + new Vector3(0, 0, r), 1.35f * r);
+        }
+        foreach (var pocket in _pockets)
+        {
+            if (pocket.Pocket == (int)call.Pocket)
+            {
+                Ring((pocket.Centre with { Z = 0 }).ToVector3(), (float)pocket.Radius + r);
+            }
+        }
+        return shapes;
+    }
+
     private static AidShape? Segment(Matrix4x4 vp, RenderFrame frame, Vector3 a, Vector3 b, Vector4 colour) =>
         RenderMath.ToPixel(vp, a, frame.Width, frame.Height) is { } pa && RenderMath.ToPixel(vp, b, frame.Width, frame.Height) is { } pb
             ? new AidShape(pa, pb, 0, colour)

@@ -62,9 +62,6 @@ public sealed record MatchPlayer(string Name, int? ComputerLevel = null)
 /// </summary>
 public sealed class MatchNode : Node
 {
-    /// <summary>How long a ruling's message stays on screen (s).</summary>
-    public const double MessageSeconds = 5;
-
     /// <summary>Coarse and fine keyboard aim steps (degrees).</summary>
     public const double AimStepDegrees = 1.0, FineAimStepDegrees = 0.1;
 
@@ -126,11 +123,8 @@ public sealed class MatchNode : Node
     /// <summary>The options the incoming player must choose from now (empty when none).</summary>
     public IReadOnlyList<RefereeOption> PendingOptions { get; private set; } = [];
 
-    /// <summary>The message shown now, or null.</summary>
+    /// <summary>The message shown now (a ruling, a hint, a new game), kept until the next shot; or null.</summary>
     public string? Message { get; private set; }
-
-    /// <summary>Seconds the message stays on screen.</summary>
-    public double MessageTimeLeft { get; private set; }
 
     /// <summary>True once the referee ended the game.</summary>
     public bool IsOver { get; private set; }
@@ -349,14 +343,6 @@ public sealed class MatchNode : Node
                 Rematch();
             }
         }
-        if (MessageTimeLeft > 0)
-        {
-            MessageTimeLeft -= dt;
-            if (MessageTimeLeft <= 0)
-            {
-                Message = null;
-            }
-        }
     }
 
     /// <inheritdoc />
@@ -479,6 +465,7 @@ public sealed class MatchNode : Node
         _shots.Add((_match.RunningShotState!, shot));
         _hasAdoptedCall = false;
         _adoptedCall = null;
+        Message = null;
         _calledBall = null;
         _calledPocket = null;
         return sim;
@@ -674,14 +661,10 @@ public sealed class MatchNode : Node
         {
             return;
         }
-        var current = _calledBall ?? DefaultBall(Aim);
+        var current = _calledBall ?? Aim?.Ball;
         int k = current is { } c ? onTable.IndexOf(c) : -1;
         _calledBall = onTable[(k + 1) % onTable.Count];
     }
 
-    private void Say(string message)
-    {
-        Message = message;
-        MessageTimeLeft = MessageSeconds;
-    }
+    private void Say(string message) => Message = message;
 }

@@ -5,7 +5,7 @@ using Billiards.App.Platform;
 namespace Billiards.App.Game;
 
 /// <summary>
-/// Keys that are not about playing: pause (P), single step (N), help (H or F1), debug collision
+/// Keys that are not about playing: pause (P), single step (N), help (H or F1), developer lines (F2), debug collision
 /// geometry (F3) and fullscreen (F11); Escape opens the menu (<see cref="Hud.MenuNode"/>). Window actions are signals the host connects
 /// to the window; pause and step go to the fixed-step loop.
 /// </summary>
@@ -16,6 +16,12 @@ public sealed class SystemKeysNode(FixedStepLoop loop) : Node
 
     /// <summary>True while the help overlay is open.</summary>
     public bool ShowHelp { get; private set; }
+
+    /// <summary>The key that shows or hides the developer lines (mode, raw numbers, frame rate).</summary>
+    public const Key DeveloperKey = Key.F2;
+
+    /// <summary>True while the developer lines are shown beside the scoreboard.</summary>
+    public bool ShowDeveloper { get; private set; }
 
     /// <summary>True while the collision geometry is drawn.</summary>
     public bool ShowCollisionGeometry { get; private set; }
@@ -42,6 +48,9 @@ public sealed class SystemKeysNode(FixedStepLoop loop) : Node
                 return true;
             case Key.H or Key.F1:
                 ShowHelp = !ShowHelp;
+                return true;
+            case DeveloperKey:
+                ShowDeveloper = !ShowDeveloper;
                 return true;
             case Key.F3:
                 ShowCollisionGeometry = !ShowCollisionGeometry;

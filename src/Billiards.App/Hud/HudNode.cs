@@ -8,8 +8,10 @@ using Billiards.App.Rendering;
 namespace Billiards.App.Hud;
 
 /// <summary>
-/// The HUD: mode, last shot's speed, spin point (on the diagram), elevation, frame rate
-/// (Formel 4), pause state and the help overlay. It only reads other nodes.
+/// The HUD: in a match the scoreboard (<see cref="ScoreboardBuilder"/>), the cue's gauges, the
+/// called ball and pocket marked on the table and the result panel at game over; the developer
+/// lines (mode, last shot's speed, spin, elevation, frame rate (Formel 4), pause state) behind
+/// F2, and always outside a match; the help overlay. It only reads other nodes.
 /// </summary>
 public sealed class HudNode : Node
 {
@@ -62,7 +64,22 @@ public sealed class HudNode : Node
     protected override void Draw(FrameBuilder frame)
     {
         BuildLines();
-        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, HelpText.Lines, Meter(), _aimLine?.Shapes(frame.Frame), _icons.ToArray());
+        var aids = new List<AidShape>(_aimLine?.Shapes(frame.Frame) ?? []);
+        if (_aimLine?.CallShapes(frame.Frame) is { } call)
+        {
+            aids.AddRange(call);
+        }
+        bool paused = _keys is { Loop.Paused: true };
+        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, HelpText.Lines, Meter(), aids, _icons.ToArray())
+        {
+            Board = _match is not null && _physics is not null ? ScoreboardBuilder.Of(_match, _physics, _computer?.Status, paused, _audio?.StatusLine) : null,
+            Developer = _keys?.ShowDeveloper ?? false,
+            // Not at game over; the person's power not on the computer's turn.
+            Gauges = _cue is { IsVisible: true } cue && _match is not { IsOver: true }
+                ? new CueGauges(cue.Tip.Fractions, (float)cue.EffectiveElevationDegrees, _match is null or { IsComputerActing: true } ? null : (float)(_match.Power / MatchNode.MaxPower))
+                : null,
+            Result = _match is null ? null : ScoreboardBuilder.Result(_match),
+        };
     }
 
     /// <summary>
@@ -99,7 +116,7 @@ public sealed class HudNode : Node
             string locked = _modes.IsLocked ? " (balls rolling: view only)" : "";
             _lines.Add($"Mode: {ModeName(_modes.Mode)}{locked}");
         }
-        if (_physics is { BallInHand: true })
+        if (_physics is { BallInHand: true } && _match is not { IsComputerActing: true })
         {
             _lines.Add("Ball in hand: drag it (move mode, M), then S to shoot");
         }

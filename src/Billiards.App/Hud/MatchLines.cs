@@ -73,17 +73,19 @@ public static class MatchLines
             string call = !match.NeedsCall ? "" : match.CurrentCall is { } c ? $"Call: {c.Ball} in {c.Pocket.ToName()} (B ball, C pocket)  " : "Call: none (B ball, C pocket)  ";
             lines.Add(string.Create(CultureInfo.InvariantCulture, $"{call}Power {match.Power:0.00} m/s (Q/W, Space shoots, G hint){push}{pushKey}"));
         }
-        if (match.LastRuling is { } last)
+        // This game's: a rematch starts without the last game's ruling.
+        if (match.Game?.LastRuling is { } last)
         {
             lines.Add($"Last ruling: {last.Message}");
         }
-        if (match.Message is { } message && match.MessageTimeLeft > 0 && message != match.LastRuling?.Message)
+        if (match.Message is { } message && message != match.Game?.LastRuling?.Message)
         {
             lines.Add(message);
         }
     }
 
-    private static List<BallId> OnTable(PhysicsNode physics)
+    /// <summary>The object balls on the table (not pocketed).</summary>
+    internal static List<BallId> OnTable(PhysicsNode physics)
     {
         var list = new List<BallId>();
         var sim = physics.Simulation;

@@ -23,13 +23,16 @@ public enum MenuPage
 }
 
 /// <summary>
-/// The pause menu (Escape: resume, restart, quit; quit asks before it quits) and the buttons of
-/// the incoming player's options. Buttons are laid out here in pixels and hit-tested against the
+/// The pause menu (Escape: resume, restart, quit; quit asks before it quits), the buttons of
+/// the incoming player's options, and at game over Rematch (Enter) and Menu (M) under the result panel. Buttons are laid out here in pixels and hit-tested against the
 /// same rectangles the HUD draws; each also has its key (Escape, R, Q, Y, N; 1-5 for the options).
 /// While a menu is open the game is paused and takes no other input but the help (H or F1).
 /// </summary>
 public sealed class MenuNode : Node
 {
+    /// <summary>The key that opens the start menu from the result panel.</summary>
+    public const Key MenuKey = Key.M;
+
     private readonly List<(HudButton Button, Action Act)> _buttons = [];
     private SystemKeysNode? _keys;
     private MatchNode? _match;
@@ -126,6 +129,9 @@ public sealed class MenuNode : Node
         {
             case MenuPage.None when key == Key.Escape:
                 Open();
+                return true;
+            case MenuPage.None when key == MenuKey && _match is { IsOver: true, RematchIn: null }:
+                ShowStart();
                 return true;
             case MenuPage.None:
                 return false;
@@ -248,6 +254,14 @@ public sealed class MenuNode : Node
                 y = height / 2f;
                 break;
             default:
+                if (_match is { IsOver: true, RematchIn: null } over)
+                {
+                    // Under the result panel (HudRenderer draws it above 0.64 of the height).
+                    items.Add(("Rematch [Enter]", over.Rematch));
+                    items.Add(($"Menu [{MenuKey}]", ShowStart));
+                    y = height * 0.66f;
+                    break;
+                }
                 if (_match is not { PendingOptions.Count: > 0, IsComputerActing: false } match)
                 {
                     return null;

@@ -117,21 +117,31 @@ internal sealed class HudRenderer : IDisposable
             }
         }
 
-        if (hud.Lines.Count > 0)
+        float top = 0;
+        if (hud.Board is { } board)
+        {
+            top = Board(board, width, scale, textColor);
+        }
+        if (hud.Result is { } result)
+        {
+            Result(result, width, height, scale, textColor);
+        }
+        // The developer lines: the whole HUD outside a match, behind F2 beside the scoreboard.
+        if (hud.Lines.Count > 0 && (hud.Board is null || hud.Developer))
         {
             float icon = lineHeight;
             float widest = 0;
             for (int i = 0; i < hud.Lines.Count; i++)
             {
-                int icons = hud.Icons?.Count(c => c.Line == i) ?? 0;
+                int icons = hud.Board is null ? hud.Icons?.Count(c => c.Line == i) ?? 0 : 0;
                 widest = MathF.Max(widest, (hud.Lines[i].Length * HudFont.Advance * scale) + (icons > 0 ? (icons + 0.5f) * icon : 0));
             }
-            Rect(margin, margin, widest + (2 * margin), (hud.Lines.Count * lineHeight) + (2 * margin) - (2 * scale), panel);
+            Rect(margin, top + margin, widest + (2 * margin), (hud.Lines.Count * lineHeight) + (2 * margin) - (2 * scale), panel);
             for (int i = 0; i < hud.Lines.Count; i++)
             {
-                Text(hud.Lines[i], 2 * margin, 2 * margin + (i * lineHeight), scale, textColor);
+                Text(hud.Lines[i], 2 * margin, top + (2 * margin) + (i * lineHeight), scale, textColor);
             }
-            if (hud.Icons is { } iconList)
+            if (hud.Icons is { } iconList && hud.Board is null)
             {
                 var next = new Dictionary<int, int>();
                 foreach (var ic in iconList)
@@ -143,7 +153,7 @@ internal sealed class HudRenderer : IDisposable
                     int k = next.GetValueOrDefault(ic.Line);
                     next[ic.Line] = k + 1;
                     float x = (2 * margin) + (hud.Lines[ic.Line].Length * HudFont.Advance * scale) + ((k + 1) * icon);
-                    BallIcon(new Vector2(x, 2 * margin + (ic.Line * lineHeight) + (lineHeight / 2f) - scale), icon * 0.47f, ic.Number, scale);
+                    BallIcon(new Vector2(x, top + (2 * margin) + (ic.Line * lineHeight) + (lineHeight / 2f) - scale), icon * 0.47f, ic.Number, scale);
                 }
             }
         }
@@ -167,17 +177,10 @@ internal sealed class HudRenderer : IDisposable
             }
         }
 
-        // The cue-ball diagram with the tip's contact point.
-        float r = 34 * scale;
-        var centre = new Vector2(width - margin - r - (4 * scale), height - margin - r - (4 * scale));
-        Disc(centre, r + (3 * scale), new Vector4(0, 0, 0, 0.45f), 2);
-        Disc(centre, r, new Vector4(0.93f, 0.93f, 0.88f, 1), 2);
-        Rect(centre.X - r, centre.Y - (0.5f * scale), 2 * r, scale, new Vector4(0.6f, 0.6f, 0.6f, 0.8f));
-        Rect(centre.X - (0.5f * scale), centre.Y - r, scale, 2 * r, new Vector4(0.6f, 0.6f, 0.6f, 0.8f));
-        var spin = new Vector2(Math.Clamp(hud.SpinPoint.X, -1, 1), Math.Clamp(hud.SpinPoint.Y, -1, 1));
-        var point = centre + new Vector2(spin.X * r, -spin.Y * r);
-        Disc(point, 5 * scale, new Vector4(0.85f, 0.1f, 0.1f, 1), 2);
-        Disc(point, 6.5f * scale, new Vector4(0.2f, 0, 0, 1), 3);
+        if (hud.Gauges is { } gauges)
+        {
+            Gauges(gauges, width, height, scale);
+        }
 
         if (hud.Power is { } power)
         {
@@ -224,6 +227,165 @@ internal sealed class HudRenderer : IDisposable
             }
             _out = _vertices;
             _helpLayer.Draw(_help, Floats, width, height, _submitHelp);
+        }
+    }
+
+    private static readonly Vector4 Gold = new(0.95f, 0.78f, 0.3f, 1);
+    private static readonly Vector4 Dim = new(0.75f, 0.78f, 0.72f, 1);
+
+    /// <summary>Player cards' width in HUD units (pixels at scale 1).</summary>
+    public const int CardUnits = 150;
+
+    /// <summary>
+    /// The scoreboard along the top edge: a card for each player at the sides (name, the balls still
+    /// needed as big icons, target and fouls or score), and between them the game's line, who acts
+    /// and how, the message wrapped to fit, and the earlier rulings. Returns the band's height (px).
+    /// </summary>
+    private float Board(Hud.Scoreboard board, int width, int scale, Vector4 text)
+    {
+        float u = scale, pad = 4 * u, line = HudFont.LineHeight * scale, advance = HudFont.Advance * scale;
+        float card = MathF.Min(CardUnits * u, width * 0.28f);
+        float centreX = card + (2 * pad), centreW = width - (2 * centreX);
+        int columns = Math.Max(12, (int)((centreW - (2 * pad)) / advance));
+        var rows = new List<(string Text, Vector4 Colour)>();
+        string title = board.Title;
+        rows.Add((title, text));
+        foreach (string l in Wrap([board.Status], columns).Take(2))
+        {
+            rows.Add((l, Gold));
+        }
+        if (board.Message is { } message)
+        {
+            foreach (string l in Wrap([message], columns).Take(3))
+            {
+                rows.Add((l, text));
+            }
+        }
+        foreach (string l in board.Log)
+        {
+            rows.Add((Cut(l, columns), Dim));
+        }
+        // The corner's keys at the title's end when they fit beside it, else on a line of their own.
+        bool cornerBeside = (title.Length + board.Corner.Length + 2) * advance <= centreW - (2 * pad);
+        if (!cornerBeside)
+        {
+            rows.Add((Cut(board.Corner, columns), Dim));
+        }
+        float icon = 16 * u;
+        float cardH = pad + line + (2 * u) + icon + (2 * u) + line + pad;
+        float bandH = MathF.Max(cardH, (2 * pad) + (rows.Count * line));
+        Rect(0, 0, width, bandH, new Vector4(0, 0, 0, 0.55f));
+        for (int i = 0; i < rows.Count; i++)
+        {
+            Text(rows[i].Text, centreX + pad, pad + (i * line), scale, rows[i].Colour);
+        }
+        if (cornerBeside)
+        {
+            Text(board.Corner, centreX + centreW - pad - (board.Corner.Length * advance), pad, scale, Dim);
+        }
+        int cardColumns = Math.Max(6, (int)((card - (3 * pad)) / advance));
+        for (int p = 0; p < board.Players.Count && p < 2; p++)
+        {
+            var player = board.Players[p];
+            float x = p == 0 ? pad : width - pad - card;
+            if (player.AtTable)
+            {
+                Rect(x, pad, 2 * u, cardH - (2 * pad), Gold);
+            }
+            float tx = x + pad;
+            Text(Cut(player.Name, cardColumns), tx, pad, scale, player.AtTable ? Gold : text);
+            int fit = Math.Max(1, (int)((card - (2 * pad)) / icon));
+            int shown = player.Balls.Count > fit ? fit - 1 : player.Balls.Count;
+            float iy = pad + line + (2 * u) + (icon / 2);
+            for (int k = 0; k < shown; k++)
+            {
+                BallIcon(new Vector2(tx + (icon / 2) + (k * icon), iy), icon * 0.45f, player.Balls[k], scale);
+            }
+            if (shown < player.Balls.Count)
+            {
+                Text($"+{player.Balls.Count - shown}", tx + (shown * icon), iy - (line / 2), scale, text);
+            }
+            string info = player.Detail.Length > 0 ? $"{player.Target}  {player.Detail}" : player.Target;
+            Text(Cut(info, cardColumns), tx, pad + line + (4 * u) + icon, scale, Dim);
+        }
+        return bandH;
+    }
+
+    private static string Cut(string text, int columns) => text.Length <= columns ? text : string.Concat(text.AsSpan(0, Math.Max(0, columns - 3)), "...");
+
+    /// <summary>
+    /// The cue's settings in the bottom right corner as diagrams: the power as a bar, the
+    /// elevation as the cue's angle over a quarter circle, the tip's point on the cue ball.
+    /// </summary>
+    private void Gauges(Hud.CueGauges gauges, int width, int height, int scale)
+    {
+        float u = scale, pad = 4 * u;
+        float r = 22 * u, column = (2 * r) + (6 * u);
+        float x0 = width - pad - column, cx = x0 + (column / 2);
+        float fan = 2 * r;
+        float power = gauges.Power is null ? 0 : 9 * u;
+        float h = (2 * r) + (6 * u) + fan + (4 * u) + power + (2 * u);
+        float y0 = height - pad - h;
+        Rect(x0, y0, column, h, new Vector4(0, 0, 0, 0.45f));
+        float y = y0 + (3 * u);
+        if (gauges.Power is float share)
+        {
+            float barW = column - (8 * u);
+            Rect(x0 + (4 * u), y, barW, 5 * u, new Vector4(0.25f, 0.25f, 0.25f, 0.9f));
+            Rect(x0 + (4 * u), y, barW * Math.Clamp(share, 0, 1), 5 * u, new Vector4(0.95f, 0.55f + (0.4f * (1 - share)), 0.1f, 0.95f));
+            y += power;
+        }
+        // Elevation: a quarter circle from level to upright, the cue drawn at its angle.
+        var pivot = new Vector2(x0 + (5 * u), y + fan);
+        float arm = fan - (2 * u);
+        Line(pivot, pivot + new Vector2(arm, 0), u, Dim);
+        for (int k = 0; k < 9; k++)
+        {
+            float a0 = k * MathF.PI / 18, a1 = (k + 1) * MathF.PI / 18;
+            Line(pivot + (arm * new Vector2(MathF.Cos(a0), -MathF.Sin(a0))), pivot + (arm * new Vector2(MathF.Cos(a1), -MathF.Sin(a1))), u, new Vector4(0.6f, 0.6f, 0.6f, 0.8f));
+        }
+        float e = Math.Clamp(gauges.ElevationDegrees, 0, 90) * MathF.PI / 180;
+        Line(pivot, pivot + (arm * new Vector2(MathF.Cos(e), -MathF.Sin(e))), 3 * u, Gold);
+        Disc(pivot, 3 * u, new Vector4(0.93f, 0.93f, 0.88f, 1), 2);
+        y += fan + (4 * u);
+        // The cue ball with the tip's contact point.
+        var centre = new Vector2(cx, y + r);
+        Disc(centre, r, new Vector4(0.93f, 0.93f, 0.88f, 1), 2);
+        Rect(centre.X - r, centre.Y - (0.5f * u), 2 * r, u, new Vector4(0.6f, 0.6f, 0.6f, 0.8f));
+        Rect(centre.X - (0.5f * u), centre.Y - r, u, 2 * r, new Vector4(0.6f, 0.6f, 0.6f, 0.8f));
+        var spin = new Vector2(Math.Clamp(gauges.Spin.X, -1, 1), Math.Clamp(gauges.Spin.Y, -1, 1));
+        var point = centre + new Vector2(spin.X * r, -spin.Y * r);
+        Disc(point, 4 * u, new Vector4(0.85f, 0.1f, 0.1f, 1), 2);
+        Disc(point, 5 * u, new Vector4(0.2f, 0, 0, 1), 3);
+    }
+
+    /// <summary>
+    /// The result panel: who won, then each player's shots, pots, fouls, best run and games won in
+    /// two columns; opaque, above the Rematch and Menu buttons (laid out at 0.66 of the height).
+    /// </summary>
+    private void Result(Hud.ResultPanel result, int width, int height, int scale, Vector4 text)
+    {
+        float u = scale, pad = 8 * u, line = HudFont.LineHeight * scale * 1.25f, advance = HudFont.Advance * scale;
+        var rows = result.Rows;
+        float w = MathF.Min(width - (8 * u), MathF.Max(240 * u, (result.Title.Length * advance) + (2 * pad)));
+        float h = (2 * pad) + ((rows.Count + 2.5f) * line);
+        float x = (width - w) / 2, y = MathF.Max(0, (height * 0.64f) - h);
+        Rect(x, y, w, h, new Vector4(0.02f, 0.05f, 0.03f, 1));
+        Rect(x, y, w, 2 * u, Gold);
+        float tw = result.Title.Length * advance;
+        Text(result.Title, x + ((w - tw) / 2), y + pad, scale, Gold);
+        float c1 = x + (w * 0.62f), c2 = x + (w * 0.84f);
+        float ry = y + pad + (1.5f * line);
+        int nameColumns = Math.Max(4, (int)(w * 0.2f / advance));
+        void Centred(string s, float cx, float yy, Vector4 colour) => Text(s, cx - (s.Length * advance / 2), yy, scale, colour);
+        Centred(Cut(result.Names.First, nameColumns), c1, ry, text);
+        Centred(Cut(result.Names.Second, nameColumns), c2, ry, text);
+        for (int i = 0; i < rows.Count; i++)
+        {
+            float yy = ry + ((i + 1) * line);
+            Text(rows[i].Label, x + pad, yy, scale, Dim);
+            Centred(rows[i].First, c1, yy, text);
+            Centred(rows[i].Second, c2, yy, text);
         }
     }
 

@@ -75,7 +75,20 @@ public readonly record struct CueVisual(bool Visible, Vector3 BallCentre, Vector
 /// <param name="Buttons">Clickable buttons (menus, the incoming player's options), or null.</param>
 /// <param name="Title">A title over the buttons (a menu's question), or null.</param>
 public sealed record HudInfo(IReadOnlyList<string> Lines, Vector2 SpinPoint, bool ShowHelp, IReadOnlyList<string> HelpLines, PowerMeter? Power = null, IReadOnlyList<AidShape>? Aids = null,
-    IReadOnlyList<HudIcon>? Icons = null, IReadOnlyList<HudButton>? Buttons = null, string? Title = null);
+    IReadOnlyList<HudIcon>? Icons = null, IReadOnlyList<HudButton>? Buttons = null, string? Title = null)
+{
+    /// <summary>The match's scoreboard along the top edge, or null outside a match (then the lines are the HUD).</summary>
+    public Hud.Scoreboard? Board { get; init; }
+
+    /// <summary>True when the developer lines (<see cref="Lines"/>: mode, raw numbers, frame rate) are shown beside the scoreboard (F2).</summary>
+    public bool Developer { get; init; }
+
+    /// <summary>The cue's settings as small diagrams (spin point, elevation, power), or null while balls roll.</summary>
+    public Hud.CueGauges? Gauges { get; init; }
+
+    /// <summary>The result panel at the end of a game, or null.</summary>
+    public Hud.ResultPanel? Result { get; init; }
+}
 
 /// <summary>A ball icon after a HUD line: a small disc in the ball's colour with its number.</summary>
 /// <param name="Line">Index of the line it follows.</param>

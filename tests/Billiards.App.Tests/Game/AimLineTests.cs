@@ -141,10 +141,11 @@ public class CallPickerTests
         host.RunFrame();
         for (int i = 0; i < 20; i++)
         {
-            window.Press(Key.Right); // aim 20 deg off the 1: nothing on the line, no call
+            window.Press(Key.Right); // aim 20 deg off the 1: nothing on the line
         }
         var frame = host.RunFrame();
-        Assert.Null(match.CurrentCall);
+        // With nothing aimed at, the call defaults to the nearest legal ball: the 1, the only one.
+        Assert.Equal(new BallId(1), match.CurrentCall!.Ball);
         var vp = RenderMath.ViewProjection(frame);
         var r = (float)host.World.Physics.BallRadius;
         var ball = RenderMath.ToPixel(vp, new Vector3(0.635f, 0, r), 1280, 720)!.Value;

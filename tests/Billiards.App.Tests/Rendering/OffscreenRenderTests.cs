@@ -89,7 +89,10 @@ public class OffscreenRenderTests(GlFixture gl, ITestOutputHelper output)
     {
         var frame = KnownFrame();
         byte[] plain = gl.Renderer.Render(frame);
-        frame.Hud = new HudInfo(["Mode: SHOT", "Speed 2.50 m/s"], new Vector2(0.5f, 0.5f), true, ["v  view", "s  shot", "e  effet"]);
+        frame.Hud = new HudInfo(["Mode: SHOT", "Speed 2.50 m/s"], new Vector2(0.5f, 0.5f), true, ["v  view", "s  shot", "e  effet"])
+        {
+            Gauges = new Billiards.App.Hud.CueGauges(new Vector2(0.5f, 0.5f), 5, 0.4f),
+        };
         frame.ShowCollisionGeometry = true;
         var a = new Vector3(-0.3f, -0.4f, 0.001f);
         frame.CollisionTriangles = [new DebugTriangle(a, a + new Vector3(0.4f, 0, 0), a + new Vector3(0, 0.3f, 0), Vector3.UnitZ)];

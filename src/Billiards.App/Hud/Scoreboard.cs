@@ -1,0 +1,213 @@
+using System.Globalization;
+using Billiards.App.Game;
+using Billiards.Core.Balls;
+using Billiards.Core.Rules;
+using Billiards.Core.Table;
+
+namespace Billiards.App.Hud;
+
+/// <summary>One player on the scoreboard.</summary>
+/// <param name="Name">The name, with "(computer)" for the computer.</param>
+/// <param name="AtTable">True for the shooter (the game on).</param>
+/// <param name="Target">A few words on what the player needs ("solids", "on the 4", "open table").</param>
+/// <param name="Balls">The balls the player still needs, drawn as big icons (numbers).</param>
+/// <param name="Detail">The score (14.1) and the fouls in a row where a third foul matters, or empty.</param>
+public sealed record PlayerCard(string Name, bool AtTable, string Target, IReadOnlyList<int> Balls, string Detail);
+
+/// <summary>The match's scoreboard along the top edge.</summary>
+/// <param name="Title">The game, the shot and the games won.</param>
+/// <param name="Corner">Short keys and states at the title's far end: help, developer lines, sound.</param>
+/// <param name="Players">The two players.</param>
+/// <param name="Status">Who acts now and how: the player's keys on their turn, the computer's state on its own.</param>
+/// <param name="Message">The last message (a ruling, a hint, a new game), kept until the next shot; wrapped to fit.</param>
+/// <param name="Log">The game's earlier rulings, newest first (a short log).</param>
+public sealed record Scoreboard(string Title, string Corner, IReadOnlyList<PlayerCard> Players, string Status, string? Message, IReadOnlyList<string> Log);
+
+/// <summary>The cue's settings drawn as diagrams: the tip on the cue ball, the cue's elevation, the power.</summary>
+/// <param name="Spin">The tip's offset [side, height] as fractions of R.</param>
+/// <param name="ElevationDegrees">The cue's elevation as struck (deg), raised over a rail or a ball.</param>
+/// <param name="Power">The keyboard power as a share of the strongest, 0..1, or null without one (free play strikes with the mouse).</param>
+public sealed record CueGauges(System.Numerics.Vector2 Spin, float ElevationDegrees, float? Power);
+
+/// <summary>A player's game in numbers, for the result panel.</summary>
+/// <param name="Shots">Shots struck.</param>
+/// <param name="Pots">Object balls pocketed on legal shots.</param>
+/// <param name="Fouls">Fouls committed.</param>
+/// <param name="BestRun">The most balls pocketed in one visit to the table.</param>
+public readonly record struct PlayerStats(int Shots, int Pots, int Fouls, int BestRun)
+{
+    /// <summary>Each player's numbers from a game's shots.</summary>
+    public static PerPlayer<PlayerStats> Of(IReadOnlyList<MatchShot> shots)
+    {
+        ArgumentNullException.ThrowIfNull(shots);
+        var stats = new PlayerStats[2];
+        int run = 0;
+        int? visitor = null;
+        foreach (var shot in shots)
+        {
+            int p = shot.Before.Shooter;
+            if (visitor != p)
+            {
+                visitor = p;
+                run = 0;
+            }
+            int pots = shot.Ruling.Legal ? shot.Ruling.Pocketed.Count : 0;
+            run += pots;
+            var s = stats[p];
+            stats[p] = new PlayerStats(s.Shots + 1, s.Pots + pots, s.Fouls + (shot.Ruling.Legal ? 0 : 1), Math.Max(s.BestRun, run));
+            if (!shot.Ruling.Continue)
+            {
+                visitor = null;
+            }
+        }
+        return new PerPlayer<PlayerStats>(stats[0], stats[1]);
+    }
+}
+
+/// <summary>The result panel at game over: who won, and each player's game in numbers.</summary>
+/// <param name="Title">"Anna wins" (or how the game ended without a winner).</param>
+/// <param name="Names">The players' names.</param>
+/// <param name="Stats">Their numbers.</param>
+/// <param name="Games">The games each has won in the match.</param>
+public sealed record ResultPanel(string Title, PerPlayer<string> Names, PerPlayer<PlayerStats> Stats, PerPlayer<int> Games)
+{
+    /// <summary>The panel's rows: a label and each player's figure.</summary>
+    public IReadOnlyList<(string Label, string First, string Second)> Rows =>
+    [
+        ("Shots", Text(Stats.First.Shots), Text(Stats.Second.Shots)),
+        ("Pots", Text(Stats.First.Pots), Text(Stats.Second.Pots)),
+        ("Fouls", Text(Stats.First.Fouls), Text(Stats.Second.Fouls)),
+        ("Best run", Text(Stats.First.BestRun), Text(Stats.Second.BestRun)),
+        ("Games won", Text(Games.First), Text(Games.Second)),
+    ];
+
+    private static string Text(int n) => n.ToString(CultureInfo.InvariantCulture);
+}
+
+/// <summary>Builds the scoreboard and the result panel from the match; it only reads.</summary>
+public static class ScoreboardBuilder
+{
+    /// <summary>The earlier rulings the log shows at most.</summary>
+    public const int LogLength = 2;
+
+    /// <summary>The scoreboard of <paramref name="match"/> now.</summary>
+    /// <param name="match">The match.</param>
+    /// <param name="physics">The table (its balls).</param>
+    /// <param name="computerStatus">What the computer (or the hint's search) does now, or null.</param>
+    /// <param name="paused">True while the game is paused.</param>
+    /// <param name="sound">The sound's state line, or null.</param>
+    public static Scoreboard Of(MatchNode match, PhysicsNode physics, string? computerStatus, bool paused, string? sound)
+    {
+        ArgumentNullException.ThrowIfNull(match);
+        ArgumentNullException.ThrowIfNull(physics);
+        var state = match.State;
+        var onTable = MatchLines.OnTable(physics);
+        var shots = match.Game?.Shots ?? [];
+        var fouls = FoulsInRow(match, shots);
+        var cards = new PlayerCard[2];
+        for (int p = 0; p < 2; p++)
+        {
+            var target = match.Ruleset.Target(state, p, onTable);
+            var detail = new List<string>();
+            if (match.Ruleset.HasScore)
+            {
+                detail.Add(string.Create(CultureInfo.InvariantCulture, $"score {state.Score[p]} of {state.Target}"));
+            }
+            // 8-ball has no three-foul rule: its fouls in a row mean nothing to the player.
+            if (!match.Ruleset.HasGroups && fouls[p] > 0)
+            {
+                detail.Add(string.Create(CultureInfo.InvariantCulture, $"fouls in a row {fouls[p]}"));
+            }
+            string name = match.Players[p].IsHuman ? state.Players[p] : $"{state.Players[p]} (computer)";
+            cards[p] = new PlayerCard(name, p == state.Shooter && !match.IsOver, target.Text, [.. target.Balls.Select(b => b.Value)], string.Join("  ", detail));
+        }
+        string title = $"{GameName(state.Rules)}  shot {state.Shot}  games {match.GamesWon.First}-{match.GamesWon.Second}{(paused ? "  PAUSED (P)" : "")}";
+        string corner = sound is null ? "H help  F2 details" : $"H help  F2 details  {SoundWord(sound)}";
+        var rulings = shots.Select(s => s.Ruling.Message).Reverse().Where(m => m != match.Message).Take(LogLength).ToList();
+        return new Scoreboard(title, corner, cards, Status(match, physics, computerStatus), match.Message, rulings);
+    }
+
+    /// <summary>The result panel, or null while the game is on.</summary>
+    public static ResultPanel? Result(MatchNode match)
+    {
+        ArgumentNullException.ThrowIfNull(match);
+        if (!match.IsOver || match.Game is not { } game)
+        {
+            return null;
+        }
+        var names = match.State.Players;
+        string title = match.Winner is int w ? $"{names[w]} wins the {GameName(match.Rules)} game" : $"The {GameName(match.Rules)} game ends without a winner";
+        return new ResultPanel(title, names, PlayerStats.Of(game.Shots), match.GamesWon);
+    }
+
+    /// <summary>The game's short name.</summary>
+    public static string GameName(GameRules rules) => rules switch
+    {
+        GameRules.EightBall => "8-ball",
+        GameRules.NineBall => "9-ball",
+        GameRules.TenBall => "10-ball",
+        GameRules.StraightPool => "14.1",
+        _ => rules.ToName(),
+    };
+
+    // Fouls in a row as they stand after the last shot: a game that ended on a third foul shows
+    // three, not the two its state had before that shot.
+    private static PerPlayer<int> FoulsInRow(MatchNode match, IReadOnlyList<MatchShot> shots)
+    {
+        var fouls = match.State.FoulsInRow;
+        if (match.IsOver && shots.Count > 0 && shots[^1] is { Ruling.Legal: false } last)
+        {
+            int p = last.Before.Shooter;
+            fouls = fouls.With(p, last.Before.FoulsInRow[p] + 1);
+        }
+        return fouls;
+    }
+
+    private static string Status(MatchNode match, PhysicsNode physics, string? computerStatus)
+    {
+        var state = match.State;
+        if (match.IsOver)
+        {
+            return match.RematchIn is double left ? $"Next game in {Math.Max(1, (int)Math.Ceiling(left))} s" : "Game over: Enter or click Rematch; M: menu";
+        }
+        if (computerStatus is not null)
+        {
+            return computerStatus;
+        }
+        if (match.IsComputerActing)
+        {
+            return physics.IsRolling ? $"{state.ShooterName} (computer) shoots." : $"{state.ShooterName} (computer) is at the table.";
+        }
+        if (physics.IsRolling)
+        {
+            return "Balls rolling: the view only.";
+        }
+        if (match.PendingOptions.Count > 0)
+        {
+            var options = match.PendingOptions.Select((o, i) => $"[{i + 1}] {o.ToName()}");
+            return $"{state.ShooterName} chooses: {string.Join("  ", options)}";
+        }
+        var parts = new List<string>();
+        if (match.NeedsCall)
+        {
+            parts.Add(match.CurrentCall is { } c ? $"Call: {c.Ball} in {c.Pocket.ToName()} (B, C)" : "Call: none (B, C)");
+        }
+        if (physics.BallInHand)
+        {
+            parts.Add($"ball in hand ({(physics.HandRegion == Core.Setup.PlacementRegion.Kitchen ? "kitchen" : "anywhere")}): M, drag");
+        }
+        if (state.PushOut)
+        {
+            parts.Add("PUSH-OUT");
+        }
+        else if (match.Ruleset.MayPushOut(state))
+        {
+            parts.Add("O push-out");
+        }
+        parts.Add("Space shoots, G hint");
+        return $"{state.ShooterName}: {string.Join(";  ", parts)}";
+    }
+
+    // "Sound: off (no audio device)" and the like, shorter for the corner.
+    private static string SoundWord(string sound) => sound.Replace("Sound: ", "sound ", StringComparison.Ordinal).Replace("audio device", "device", StringComparison.Ordinal);
+}

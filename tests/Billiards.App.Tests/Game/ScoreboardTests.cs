@@ -1,0 +1,97 @@
+using Billiards.App.Game;
+using Billiards.App.Hud;
+using Billiards.App.Platform;
+using Billiards.Core.Balls;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Tests.Game;
+
+public class ScoreboardTests
+{
+    private const string Json = """
+        { "format": "billiards-scene/1", "table": { "preset": "pool-9ft" }, "physics": { "dt": 0.00390625 },
+          "balls": [ { "id": "cue", "position": [-0.635, 0.0] }, { "id": "8", "position": [-0.5, 0.1] },
+                     { "id": "2", "position": [-0.2, -0.3] }, { "id": "11", "position": [0.635, 0.3] } ] }
+        """;
+
+    private static TestGame Start(GameState state)
+    {
+        var scene = SceneLoader.Parse(Json, "t.json") with { Game = state };
+        return new TestGame(scene, new MatchSetup(state.Rules, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+    }
+
+    // Anna strikes; the fake table pockets the 8 during the shot: an early 8, Anna loses.
+    private static void LoseOnTheEight(TestGame game)
+    {
+        game.Frame();
+        game.Window.Press(Key.Space);
+        game.Frame();
+        game.Simulation.Pocket(new BallId(8));
+        game.RunUntilRest();
+        game.Frame();
+    }
+
+    [Fact]
+    public void The_result_panel_counts_each_players_game_and_Rematch_clears_the_last_games_rulings()
+    {
+        using var game = Start(new GameState(GameRules.EightBall) { Shot = 1, Players = new PerPlayer<string>("Anna", "Ben") });
+        var match = game.World.Tree.Root.GetInTree<MatchNode>();
+        LoseOnTheEight(game);
+        Assert.True(match.IsOver);
+        var hud = game.Frame().Hud!;
+        var result = hud.Result!;
+        Assert.Equal("Ben wins the 8-ball game", result.Title);
+        Assert.Equal(1, result.Stats.First.Shots);
+        Assert.Equal(0, result.Stats.Second.Shots);
+        Assert.Equal(1, result.Games.Second);
+        Assert.Contains(hud.Buttons!, b => b.Label == "Rematch [Enter]");
+        Assert.Contains(hud.Buttons!, b => b.Label == $"Menu [{MenuNode.MenuKey}]");
+        string lastRuling = match.Game!.LastRuling!.Message;
+        Assert.Equal(lastRuling, hud.Board!.Message);
+
+        // A click on Rematch starts the next game: no result, no ruling of the last game on the board.
+        var centre = game.World.Menu.CentreOf("Rematch")!.Value;
+        game.Window.MoveTo(centre.X, centre.Y);
+        game.Window.Down();
+        game.Window.Up();
+        hud = game.Frame().Hud!;
+        Assert.False(match.IsOver);
+        Assert.Null(hud.Result);
+        Assert.Empty(hud.Board!.Log);
+        Assert.NotEqual(lastRuling, hud.Board.Message);
+        Assert.DoesNotContain(hud.Lines, l => l.Contains(lastRuling, StringComparison.Ordinal));
+    }
+
+    [Fact]
+    public void Eight_ball_shows_no_fouls_in_a_row_and_nine_ball_shows_three_after_the_third()
+    {
+        using (var eight = Start(new GameState(GameRules.EightBall) { Shot = 3, FoulsInRow = new PerPlayer<int>(2, 0), Players = new PerPlayer<string>("Anna", "Ben") }))
+        {
+            var board = eight.Frame().Hud!.Board!;
+            Assert.DoesNotContain("fouls", board.Players[0].Detail, StringComparison.Ordinal);
+        }
+        // Nine-ball, Anna on two fouls: a miss is her third, and the game is lost on it.
+        const string Nine = """
+            { "format": "billiards-scene/1", "table": { "preset": "pool-9ft" }, "physics": { "dt": 0.00390625 },
+              "balls": [ { "id": "cue", "position": [-0.635, 0.0] }, { "id": "1", "position": [0.5, 0.3] }, { "id": "9", "position": [0.8, -0.3] } ] }
+            """;
+        var scene = SceneLoader.Parse(Nine, "n.json") with
+        {
+            Game = new GameState(GameRules.NineBall) { Shot = 5, FoulsInRow = new PerPlayer<int>(2, 0), Players = new PerPlayer<string>("Anna", "Ben") },
+        };
+        using var nine = new TestGame(scene, new MatchSetup(GameRules.NineBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+        var match = nine.World.Tree.Root.GetInTree<MatchNode>();
+        Assert.Contains("fouls in a row 2", nine.Frame().Hud!.Board!.Players[0].Detail, StringComparison.Ordinal);
+        match.AimAt(180); // away from every ball: no first contact, a foul
+        for (int i = 0; i < 10; i++)
+        {
+            nine.Window.Press(Key.Q);
+        }
+        nine.Window.Press(Key.Space);
+        nine.RunUntilRest();
+        nine.Frame();
+        Assert.True(match.IsOver);
+        Assert.Contains("fouls in a row 3", nine.Frame().Hud!.Board!.Players[0].Detail, StringComparison.Ordinal);
+    }
+}
