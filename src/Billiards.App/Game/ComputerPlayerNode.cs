@@ -158,7 +158,7 @@ public sealed class ComputerPlayerNode : Node
             var budget = Budget(BudgetMs);
             _decisionLevel = level;
             _thinking = BackgroundWork.Run(() => planner.Decide(state, position, SkillLevel.Of(level), budget, seed));
-            Status = $"{_match.Shooter.Name} is thinking...";
+            Status = $"{_match.State.ShooterName} is thinking...";
             return;
         }
         if (_thinking is { IsCompleted: true } done)
@@ -176,7 +176,7 @@ public sealed class ComputerPlayerNode : Node
             _aimFrom = _match.AimDegrees;
             _match.Adopt(_decision, exactCall: true);
             _aimTime = 0;
-            Status = $"{_match.Shooter.Name} aims.";
+            Status = $"{_match.State.ShooterName} aims.";
         }
         if (_decision is { } d)
         {
@@ -209,7 +209,7 @@ public sealed class ComputerPlayerNode : Node
             var position = TablePosition.Of(_physics!.Simulation);
             var planner = _planner!;
             _choosing = BackgroundWork.Run(() => planner.ChooseOption(ruling, position));
-            Status = $"{_match.Shooter.Name} chooses...";
+            Status = $"{_match.State.ShooterName} chooses...";
             return;
         }
         if (_choosing.IsCompleted)

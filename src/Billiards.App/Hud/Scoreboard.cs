@@ -118,11 +118,11 @@ public static class ScoreboardBuilder
             {
                 detail.Add(string.Create(CultureInfo.InvariantCulture, $"fouls in a row {fouls[p]}"));
             }
-            string name = match.Players[p].IsHuman ? state.Players[p] : $"{state.Players[p]} (computer)";
+            string name = match.Players[p].IsHuman || state.Players[p].StartsWith("Computer", StringComparison.Ordinal) ? state.Players[p] : $"{state.Players[p]} (computer)";
             cards[p] = new PlayerCard(name, p == state.Shooter && !match.IsOver, target.Text, [.. target.Balls.Select(b => b.Value)], string.Join("  ", detail));
         }
         string title = $"{GameName(state.Rules)}  shot {state.Shot}  games {match.GamesWon.First}-{match.GamesWon.Second}{(paused ? "  PAUSED (P)" : "")}";
-        string corner = sound is null ? "H help  F2 details" : $"H help  F2 details  {SoundWord(sound)}";
+        string corner = sound is null ? "H help" : $"H help  {SoundWord(sound)}";
         var rulings = shots.Select(s => s.Ruling.Message).Reverse().Where(m => m != match.Message).Take(LogLength).ToList();
         return new Scoreboard(title, corner, cards, Status(match, physics, computerStatus), match.Message, rulings);
     }
@@ -205,9 +205,11 @@ public static class ScoreboardBuilder
             parts.Add("O push-out");
         }
         parts.Add("Space shoots, G hint");
-        return $"{state.ShooterName}: {string.Join(";  ", parts)}";
+        // The shooter's card is marked: the line need not name them.
+        return string.Join(";  ", parts);
     }
 
     // "Sound: off (no audio device)" and the like, shorter for the corner.
-    private static string SoundWord(string sound) => sound.Replace("Sound: ", "sound ", StringComparison.Ordinal).Replace("audio device", "device", StringComparison.Ordinal);
+    private static string SoundWord(string sound) => sound.Replace("Sound: off (no audio device)", "no sound", StringComparison.Ordinal)
+        .Replace("Sound: ", "sound ", StringComparison.Ordinal).Replace("audio device", "device", StringComparison.Ordinal);
 }

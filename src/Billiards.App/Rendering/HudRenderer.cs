@@ -247,30 +247,29 @@ internal sealed class HudRenderer : IDisposable
         float card = MathF.Min(CardUnits * u, width * 0.28f);
         float centreX = card + (2 * pad), centreW = width - (2 * centreX);
         int columns = Math.Max(12, (int)((centreW - (2 * pad)) / advance));
+        // At most five lines, so that the band stays clear of the far rail from behind the cue: the
+        // game's line, who acts (one line), the message (wrapped, three lines at most), then the log to fill.
+        const int MaxRows = 5;
         var rows = new List<(string Text, Vector4 Colour)>();
         string title = board.Title;
         rows.Add((title, text));
-        foreach (string l in Wrap([board.Status], columns).Take(2))
-        {
-            rows.Add((l, Gold));
-        }
+        rows.Add((Cut(board.Status, columns), Gold));
         if (board.Message is { } message)
         {
-            foreach (string l in Wrap([message], columns).Take(3))
+            var wrapped = Wrap([message], columns);
+            for (int i = 0; i < wrapped.Count && rows.Count < MaxRows; i++)
             {
-                rows.Add((l, text));
+                rows.Add((rows.Count == MaxRows - 1 && i < wrapped.Count - 1 ? Cut(wrapped[i] + " " + wrapped[i + 1], columns) : wrapped[i], text));
             }
         }
         foreach (string l in board.Log)
         {
-            rows.Add((Cut(l, columns), Dim));
+            if (rows.Count < MaxRows)
+            {
+                rows.Add((Cut(l, columns), Dim));
+            }
         }
-        // The corner's keys at the title's end when they fit beside it, else on a line of their own.
         bool cornerBeside = (title.Length + board.Corner.Length + 2) * advance <= centreW - (2 * pad);
-        if (!cornerBeside)
-        {
-            rows.Add((Cut(board.Corner, columns), Dim));
-        }
         float icon = 16 * u;
         float cardH = pad + line + (2 * u) + icon + (2 * u) + line + pad;
         float bandH = MathF.Max(cardH, (2 * pad) + (rows.Count * line));
@@ -367,16 +366,16 @@ internal sealed class HudRenderer : IDisposable
     {
         float u = scale, pad = 8 * u, line = HudFont.LineHeight * scale * 1.25f, advance = HudFont.Advance * scale;
         var rows = result.Rows;
-        float w = MathF.Min(width - (8 * u), MathF.Max(240 * u, (result.Title.Length * advance) + (2 * pad)));
+        float w = MathF.Min(width - (8 * u), MathF.Max(280 * u, (result.Title.Length * advance) + (2 * pad)));
         float h = (2 * pad) + ((rows.Count + 2.5f) * line);
         float x = (width - w) / 2, y = MathF.Max(0, (height * 0.64f) - h);
         Rect(x, y, w, h, new Vector4(0.02f, 0.05f, 0.03f, 1));
         Rect(x, y, w, 2 * u, Gold);
         float tw = result.Title.Length * advance;
         Text(result.Title, x + ((w - tw) / 2), y + pad, scale, Gold);
-        float c1 = x + (w * 0.62f), c2 = x + (w * 0.84f);
+        float c1 = x + (w * 0.56f), c2 = x + (w * 0.82f);
         float ry = y + pad + (1.5f * line);
-        int nameColumns = Math.Max(4, (int)(w * 0.2f / advance));
+        int nameColumns = Math.Max(4, (int)(w * 0.25f / advance));
         void Centred(string s, float cx, float yy, Vector4 colour) => Text(s, cx - (s.Length * advance / 2), yy, scale, colour);
         Centred(Cut(result.Names.First, nameColumns), c1, ry, text);
         Centred(Cut(result.Names.Second, nameColumns), c2, ry, text);

@@ -85,6 +85,46 @@ public class OffscreenRenderTests(GlFixture gl, ITestOutputHelper output)
     }
 
     [Fact]
+    public void The_scoreboard_stays_in_a_band_along_the_top_edge_and_the_developer_lines_wait_for_their_key()
+    {
+        var frame = KnownFrame();
+        byte[] plain = gl.Renderer.Render(frame);
+        var cards = new[]
+        {
+            new Billiards.App.Hud.PlayerCard("Anna", true, "solids: 1 2 3 4 5 6 7", [1, 2, 3, 4, 5, 6, 7], ""),
+            new Billiards.App.Hud.PlayerCard("Ben (computer)", false, "stripes: 9 10 11 12 13 14 15", [9, 10, 11, 12, 13, 14, 15], "fouls in a row 2"),
+        };
+        string longRuling = "Foul by Anna: the cue ball was pocketed and the cue ball first touched the 11, not a legal target. Warning: Anna has two fouls in a row.";
+        var board = new Billiards.App.Hud.Scoreboard("8-ball  shot 12  games 0-1", "H help", cards, "Call: 3 in foot-left (B, C);  Space shoots, G hint", longRuling, ["Ben shoots again.", "Anna is at the table."]);
+        frame.Hud = new HudInfo(["Mode: view [V]", "FPS: 60"], Vector2.Zero, false, []) { Board = board };
+        byte[] drawn = gl.Renderer.Render(frame);
+        (int Top, int Below) Changed(byte[] a, byte[] b)
+        {
+            int top = 0, below = 0;
+            for (int y = 0; y < Height; y++)
+            {
+                for (int x = 0; x < Width; x++)
+                {
+                    int i = ((y * Width) + x) * 4;
+                    if (Math.Abs(a[i] - b[i]) + Math.Abs(a[i + 1] - b[i + 1]) + Math.Abs(a[i + 2] - b[i + 2]) > 30)
+                    {
+                        _ = y < Height / 4 ? top++ : below++;
+                    }
+                }
+            }
+            return (top, below);
+        }
+        var (inBand, outside) = Changed(plain, drawn);
+        Assert.True(inBand > 2000, $"the scoreboard changed {inBand} pixels in the top quarter");
+        Assert.Equal(0, outside);
+
+        // F2: the developer lines, under the band.
+        frame.Hud = frame.Hud with { Developer = true };
+        var (top, below) = Changed(drawn, gl.Renderer.Render(frame));
+        Assert.True(top + below > 100, $"the developer lines changed {top + below} pixels");
+    }
+
+    [Fact]
     public void Render_DrawsTheHudAndTheCollisionDebugLines()
     {
         var frame = KnownFrame();
