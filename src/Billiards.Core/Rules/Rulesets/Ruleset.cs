@@ -54,11 +54,14 @@ public abstract class Ruleset
     /// <summary>The referee of the game on <paramref name="table"/> with balls of radius <paramref name="ballRadius"/> (m).</summary>
     public abstract IReferee Referee(TableSpec table, double ballRadius);
 
+    /// <summary>True when the game calls its shots (every shot but the break).</summary>
+    public virtual bool CallsShots => true;
+
     /// <summary>True when the shooter must call the shot (ball and pocket, or a safety) before it.</summary>
-    public virtual bool NeedsCall(GameState state)
+    public bool NeedsCall(GameState state)
     {
         ArgumentNullException.ThrowIfNull(state);
-        return state.Shot > 0;
+        return CallsShots && state.Shot > 0;
     }
 
     /// <summary>True when the game has a push-out (9-ball and 10-ball).</summary>
