@@ -168,6 +168,21 @@ public class MatchTests
     }
 
     [Fact]
+    public void AnEightBallGameWithThreeFoulsInARowReplays()
+    {
+        // 8-ball has no three-foul rule: the count goes on, and its record still reads.
+        var game = new Match(GameSetup.Of(GameRules.EightBall, 3, Players));
+        game.Play(Aimer.Break(game, null));
+        for (int k = 0; k < 6 && !game.IsOver; k++)
+        {
+            game.Play(Aimer.Roll(game) with { Call = Call.Safety });
+        }
+        Assert.False(game.IsOver);
+        Assert.True(Math.Max(game.State.FoulsInRow[0], game.State.FoulsInRow[1]) >= 3);
+        AssertReplays(game);
+    }
+
+    [Fact]
     public void AMatchFromASetPositionStartsThereAndItsRecordReplaysFromIt()
     {
         var start = GameSetup.Of(GameRules.NineBall, 3, Players);

@@ -77,6 +77,13 @@ public abstract class Ruleset
     /// <summary>True when players own groups of balls (8-ball's solids and stripes).</summary>
     public virtual bool HasGroups => false;
 
+    /// <summary>
+    /// True when three fouls in a row have a consequence (a loss in 9-ball and 10-ball, a penalty
+    /// in 14.1), which ends the count: a player then has at most two fouls in a row before a shot.
+    /// Without it (8-ball) the count only grows.
+    /// </summary>
+    public virtual bool HasThreeFouls => true;
+
     /// <summary>True when the game keeps a score with a target (14.1).</summary>
     public virtual bool HasScore => false;
 
