@@ -306,7 +306,7 @@ public sealed class MatchNode : Node
         {
             // The scene's own shot is already on its way: the match plays it from the scene's
             // position with the game block's call.
-            var sim = _match.Strike(new GameShot(opening, State.Call, _match.BallInHand == BallInHand.None ? null : _match.Balls[BallId.Cue], State.PushOut));
+            var sim = _match.Strike(new GameShot(opening, State.Call, _match.BallInHand == BallInHand.None ? null : _match.Balls[_ruleset.CueBall(State)], State.PushOut));
             _physics.ReplaceShot(sim);
         }
         else

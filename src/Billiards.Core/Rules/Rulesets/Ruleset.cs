@@ -38,6 +38,9 @@ public abstract class Ruleset
     /// <summary>The ball set the game is played with.</summary>
     public virtual BallSet BallSet => BallSet.Pool;
 
+    /// <summary>The cue ball the shooter of <paramref name="state"/> strikes (pool: the one cue ball; carom's players each have their own).</summary>
+    public virtual BallId CueBall(GameState state) => BallSet.CueBalls[0];
+
     /// <summary>The balls of a game, cue ball first (a subset of <see cref="BallSet"/>).</summary>
     public abstract IReadOnlyList<BallId> Balls { get; }
 
