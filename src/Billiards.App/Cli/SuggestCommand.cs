@@ -13,7 +13,8 @@ namespace Billiards.App.Cli;
 /// <c>{"shot": {...}, "place": [x, y] or null, "call": {...}, "expected": {"pot": p, "ruling": ...}, "simulations": n, "ms": t}</c>.
 /// </summary>
 /// <remarks>
-/// The game state is the scene's "game" block. Without one it comes from the scene's "rules"
+/// The game state is the scene's "game" block: a scene with one and no shot is a position, and a
+/// shot in it is ignored (scene-format.md). Without one it comes from the scene's "rules"
 /// (8-ball when it has none): a scene with a rack is a break, one without is a position after the
 /// break with an open table. The decision is seeded, so the same scene gives the same suggestion.
 /// </remarks>
@@ -51,7 +52,7 @@ public static class SuggestCommand
             {
                 throw new SceneException(loaded.Path, "$.balls", "no object ball to play");
             }
-            var planner = new ShotPlanner(loaded.Table, loaded.Physics.Params);
+            var planner = new ShotPlanner(loaded.Table, loaded.Physics.Params, loaded.Physics.Models);
             var decision = planner.Decide(state, position, SkillLevel.Of(levelValue), new PlannerBudget(budgetValue), 1);
             stdout.WriteLine(Encoding.UTF8.GetString(ToUtf8(decision)));
             return 0;

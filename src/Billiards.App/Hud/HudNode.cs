@@ -46,7 +46,7 @@ public sealed class HudNode : Node
     public const double ShotShownSeconds = 2;
 
     /// <summary>The fastest stroke (m/s): Formel 31's cap.</summary>
-    public const double MaxStrokeSpeed = Billiards.Core.Cue.Queue.MaxStrokeSpeed / SeedControls.CentimetresPerMetre;
+    public const double MaxStrokeSpeed = Billiards.Core.Cue.ThesisCue.MaxStrokeSpeed / SeedControls.CentimetresPerMetre;
 
     private double _sinceShot = double.PositiveInfinity;
 

@@ -4,6 +4,7 @@ using Billiards.App.Input;
 using Billiards.App.Nodes;
 using Billiards.App.Platform;
 using Billiards.App.Rendering;
+using Billiards.Core.Physics;
 using Billiards.Core.Rules;
 
 namespace Billiards.App.Hud;
@@ -25,7 +26,7 @@ public enum MenuPage
 /// The pause menu (Escape: resume, restart, quit; quit asks before it quits) and the buttons of
 /// the incoming player's options. Buttons are laid out here in pixels and hit-tested against the
 /// same rectangles the HUD draws; each also has its key (Escape, R, Q, Y, N; 1-5 for the options).
-/// While a menu is open the game is paused and takes no other input.
+/// While a menu is open the game is paused and takes no other input but the help (H or F1).
 /// </summary>
 public sealed class MenuNode : Node
 {
@@ -54,6 +55,12 @@ public sealed class MenuNode : Node
     /// <summary>The start menu's opponent: a computer level, or null for a person.</summary>
     public int? StartOpponent { get; private set; } = 3;
 
+    /// <summary>The start menu's physics (cushion model and cloth); the game behind the menu was made with <see cref="PlayedSettings"/>.</summary>
+    public GameSettings StartSettings { get; set; } = GameSettings.Default;
+
+    /// <summary>The physics of the game behind the menu.</summary>
+    public GameSettings PlayedSettings { get; set; } = GameSettings.Default;
+
     /// <summary>Opens the start menu (the game paused behind it).</summary>
     public void ShowStart()
     {
@@ -69,7 +76,7 @@ public sealed class MenuNode : Node
     private void Begin()
     {
         Resume();
-        if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman)
+        if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings == PlayedSettings)
         {
             return; // the game behind the menu is the one chosen
         }
@@ -111,6 +118,10 @@ public sealed class MenuNode : Node
 
     private bool OnKey(Key key)
     {
+        if (key is Key.H or Key.F1)
+        {
+            return false; // the help (SystemKeysNode) opens over every page, as the HUD offers
+        }
         switch (Page)
         {
             case MenuPage.None when key == Key.Escape:
@@ -205,7 +216,7 @@ public sealed class MenuNode : Node
         switch (Page)
         {
             case MenuPage.Start:
-                title = "New game: the game, the opponent (a person or the computer's level), Start";
+                title = "New game: the game, the opponent (a person or the computer's level), the physics (cushion, cloth), Start";
                 foreach (var game in Ruleset.All.Select(r => r.Game))
                 {
                     items.Add((Mark(game.ToName(), StartGame == game), () => StartGame = game));
@@ -217,6 +228,8 @@ public sealed class MenuNode : Node
                     opponents.Add((Mark($"level {l}", StartOpponent == l), () => StartOpponent = l));
                 }
                 rows.Add(opponents);
+                rows.Add([.. ModelRegistry.BallCushionModels.Select(m => (Mark($"Physics: {m.Name}", StartSettings.Cushion == m), (Action)(() => StartSettings = StartSettings with { Cushion = m })))]);
+                rows.Add([.. Cloth.All.Select(c => (Mark($"{c.Name} cloth", StartSettings.Cloth == c), (Action)(() => StartSettings = StartSettings with { Cloth = c })))]);
                 rows.Add([("Start [Enter]", Begin)]);
                 // Below the HUD panel, whose lines reach about 0.4 of the height at the start.
                 y = height * 0.5f;

@@ -2,7 +2,10 @@ using System.Runtime.InteropServices;
 
 namespace Billiards.App.Native;
 
-/// <summary>Loads a system library by the first of its platform names that resolves.</summary>
+/// <summary>
+/// Loads a native library by the first of its platform names that resolves: beside the executable
+/// first (where a published folder may carry it, e.g. glfw3.dll on Windows), then the system's.
+/// </summary>
 internal static class NativeLoader
 {
     /// <summary>The library's handle, or a <see cref="DllNotFoundException"/> naming every candidate tried.</summary>
@@ -10,7 +13,8 @@ internal static class NativeLoader
     {
         foreach (string name in candidates)
         {
-            if (NativeLibrary.TryLoad(name, out nint handle))
+            string beside = Path.Combine(AppContext.BaseDirectory, name);
+            if ((File.Exists(beside) && NativeLibrary.TryLoad(beside, out nint handle)) || NativeLibrary.TryLoad(name, out handle))
             {
                 return handle;
             }

@@ -1,8 +1,10 @@
+using Billiards.Core.Scenes;
 using SkiaSharp;
 
 namespace Billiards.App.Rendering;
 
 /// <summary>The TrueType fonts in assets/fonts, each read once for the process.</summary>
+/// <remarks>A font that is missing or unreadable is an <see cref="AssetException"/> naming it.</remarks>
 internal static class FontFile
 {
     private static readonly Dictionary<string, SKTypeface> s_open = [];
@@ -14,7 +16,11 @@ internal static class FontFile
         {
             if (!s_open.TryGetValue(path, out var typeface))
             {
-                typeface = SKTypeface.FromFile(path) ?? throw new InvalidOperationException($"{path}: not a font file that can be read");
+                if (!File.Exists(path))
+                {
+                    throw AssetException.Missing(path);
+                }
+                typeface = SKTypeface.FromFile(path) ?? throw AssetException.Unreadable(path, "not a TrueType font that SkiaSharp can read");
                 s_open[path] = typeface;
             }
             return typeface;

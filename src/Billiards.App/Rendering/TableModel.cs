@@ -1,5 +1,6 @@
 using System.Numerics;
 using Billiards.App.Native;
+using Billiards.Core.Scenes;
 
 namespace Billiards.App.Rendering;
 
@@ -39,7 +40,17 @@ internal sealed class TableModel : IDisposable
     public static TableModel Load(Gl gl, string path)
     {
         var parts = new List<ModelPart>();
-        var imported = Assimp.Import(path);
+        List<Assimp.ImportedMesh> imported;
+        try
+        {
+            imported = Assimp.Import(path);
+        }
+        catch (InvalidDataException e) when (AssetFolder.Holds(path))
+        {
+            // A shipped model is the installation's problem; a user's --model stays bad input.
+            string why = e.Message.StartsWith(path + ": ", StringComparison.Ordinal) ? e.Message[(path.Length + 2)..] : e.Message;
+            throw AssetException.Unreadable(path, why.TrimEnd('.'));
+        }
         var refined = MeshRefinement.Refine([.. imported.Select(m => new RefinedMesh(m.Positions, m.Normals, m.Indices))], MaxEdgeAt);
         for (int i = 0; i < imported.Count; i++)
         {

@@ -63,8 +63,13 @@ public static class SimulationRunner
 
     /// <summary>Runs the scene with the options.</summary>
     /// <exception cref="ArgumentOutOfRangeException">When <see cref="RunOptions.Until"/> is not in [0, <see cref="RunOptions.MaxUntil"/>].</exception>
+    /// <exception cref="SceneException">When the scene has a game block but no shot for it to judge (a position for <c>suggest</c>).</exception>
     public static RunOutcome Run(Scene scene, RunOptions options)
     {
+        if (scene.Game is not null && scene.Shot is null)
+        {
+            throw new SceneException(scene.Path, "$.game", "a game block judges the scene's shot, and the scene has none (suggest plays such a position)");
+        }
         if (options.Until is { } u && !(u >= 0 && u <= RunOptions.MaxUntil))
         {
             throw new ArgumentOutOfRangeException(nameof(options), u, $"until must lie in [0, {RunOptions.MaxUntil}] s");

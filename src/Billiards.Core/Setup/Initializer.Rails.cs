@@ -103,7 +103,7 @@ public static partial class Initializer
     /// <param name="queue">The cue, reset.</param>
     /// <param name="random">Source of the new orientations.</param>
     /// <returns>The cue ball's start position (cm), or the origin if there is no cue ball.</returns>
-    public static Vector3 ResetGame(IReadOnlyList<Ball> balls, ReadOnlySpan<Vector3> startPositions, Queue queue, Random random)
+    public static Vector3 ResetGame(IReadOnlyList<Ball> balls, ReadOnlySpan<Vector3> startPositions, ThesisCue queue, Random random)
     {
         var cueStart = Vector3.Zero;
         for (int i = 0; i < balls.Count; i++)

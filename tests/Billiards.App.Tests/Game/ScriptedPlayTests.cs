@@ -41,8 +41,10 @@ public class ScriptedPlayTests
             for (int i = 0; i < seconds.Count; i++)
             {
                 Assert.Equal(i, seconds[i].GetProperty("second").GetInt32());
+                // The window drew in every whole second of the script (a second without a frame
+                // is a frozen game); how many frames is the machine's and not asserted.
                 int fps = seconds[i].GetProperty("fps").GetInt32();
-                Assert.True(fps >= 0);
+                Assert.True(fps > 0, $"second {i}: no frame");
                 frames += fps;
                 var ms = seconds[i].GetProperty("frame_ms");
                 double p50 = ms.GetProperty("p50").GetDouble(), p95 = ms.GetProperty("p95").GetDouble();
@@ -56,13 +58,20 @@ public class ScriptedPlayTests
             // Every scripted event reached the screen, on the frame after it happened.
             var inputs = root.GetProperty("inputs").EnumerateArray().ToList();
             Assert.Equal(parsed.Events.Count, inputs.Count);
+            int total = root.GetProperty("frames").GetInt32();
             for (int i = 0; i < inputs.Count; i++)
             {
+                // Raised in script order, each in a frame that was followed by the one showing it.
+                int frame = inputs[i].GetProperty("frame").GetInt32();
+                Assert.InRange(frame, i == 0 ? 0 : inputs[i - 1].GetProperty("frame").GetInt32(), total - 2);
                 Assert.Equal(parsed.Events[i].Describe(), inputs[i].GetProperty("event").GetString());
                 Assert.Equal(1, inputs[i].GetProperty("delay_frames").GetInt32());
                 Assert.True(inputs[i].GetProperty("delay_ms").GetDouble() > 0);
             }
+            // The script implies at least a frame for each distinct frame its events were raised in, and one to show the last.
+            Assert.True(total > inputs.Select(x => x.GetProperty("frame").GetInt32()).Distinct().Count());
             var summary = root.GetProperty("summary");
+            Assert.Equal(seconds.Min(x => x.GetProperty("fps").GetInt32()), summary.GetProperty("min_fps").GetInt32());
             Assert.Equal(parsed.Events.Count, summary.GetProperty("inputs").GetInt32());
             Assert.True(summary.GetProperty("input_delay_median_frames").GetDouble() <= 2);
         }

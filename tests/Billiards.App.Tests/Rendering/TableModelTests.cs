@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using Billiards.App.Native;
 using Billiards.App.Rendering;
 using Billiards.Core.Table;
@@ -21,7 +22,9 @@ public class TableModelTests
         var spec = TableSpec.FromPreset(preset);
         if (Environment.GetEnvironmentVariable("BILLIARDS_WRITE_MODELS") == "1")
         {
-            Directory.CreateDirectory(TableModels.ModelsDirectory);
+            // Into the repository's assets/models (the build copies them beside the executable), then here.
+            string committed = Path.GetFullPath(Path.Combine(SourceFolder(), "..", "..", "..", "assets", "models"));
+            TableModels.Export(spec, committed, preset);
             TableModels.Export(spec, TableModels.ModelsDirectory, preset);
         }
         var (obj, mtl) = TableModels.Text(spec, preset);
@@ -31,6 +34,8 @@ public class TableModelTests
         Assert.True(SameModel(mtl, File.ReadAllText(Path.ChangeExtension(objPath, ".mtl"))), $"{preset}.mtl differs from the generator");
         Assert.Equal(objPath, TableModels.PathFor(spec));
     }
+
+    private static string SourceFolder([CallerFilePath] string file = "") => Path.GetDirectoryName(file)!;
 
     /// <summary>Same tokens, numbers equal to the last written digit or so (libm's sines may differ by an ulp between machines).</summary>
     private static bool SameModel(string expected, string actual)

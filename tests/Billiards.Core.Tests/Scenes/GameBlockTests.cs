@@ -82,11 +82,14 @@ public class GameBlockTests
     }
 
     [Fact]
-    public void AGameBlockWithoutAShotIsRefused()
+    public void AGameBlockWithoutAShotIsAPositionThatARunRefuses()
     {
-        var e = Assert.Throws<SceneException>(() => SceneLoader.Parse(
-            """{ "format": "billiards-scene/1", "balls": [ { "id": "cue", "position": [0, 0] } ], "game": { "rules": "nine-ball" } }""", "g.json"));
-        Assert.Equal("$.game", e.JsonPath);
+        var position = SceneLoader.Parse(
+            """{ "format": "billiards-scene/1", "balls": [ { "id": "cue", "position": [0, 0] } ], "game": { "rules": "nine-ball", "shot": 4 } }""", "g.json");
+        Assert.Null(position.Shot);
+        Assert.Equal((GameRules.NineBall, 4), (position.Game!.Rules, position.Game.Shot));
+        var e = Assert.Throws<SceneException>(() => SimulationRunner.Run(position, new RunOptions()));
+        Assert.Equal(("g.json", "$.game"), (e.File, e.JsonPath));
     }
 
     public static TheoryData<string> RuleScenes => new(Directory.GetFiles(AssetFolder.Scene("rules"), "*.json").Select(Path.GetFileName)!);

@@ -2,7 +2,7 @@ namespace Billiards.App.Input.Modes;
 
 /// <summary>
 /// The constants of the seed's cue controls (seed 4.4.3-4.4.5) in one place, with their units;
-/// Formel 31's belong to the thesis cue, <see cref="Billiards.Core.Cue.Queue"/>.
+/// Formel 31's belong to the thesis cue, <see cref="Billiards.Core.Cue.ThesisCue"/>.
 /// The seed works in centimetres and milliseconds (GLUT_ELAPSED_TIME); the game converts to
 /// Core's metres only where it hands a value to Core. The camera's constants (Listings 5 and 6)
 /// live in <see cref="Camera.OrbitCamera"/>.

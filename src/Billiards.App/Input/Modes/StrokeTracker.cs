@@ -134,8 +134,8 @@ public sealed class StrokeTracker
     /// <summary>
     /// Formel 31, s = d / t * 250, capped at 800; d in pixels, t in ms, s the cue's speed at impact in cm/s
     /// (the shot's speed for every model, once in m/s). The thesis
-    /// model's cue owns the formula (<see cref="Queue.StrokeSpeed"/>); the game only measures d and t.
+    /// model's cue owns the formula (<see cref="ThesisCue.StrokeSpeed"/>); the game only measures d and t.
     /// </summary>
     public static double Formel31(double distancePixels, double milliseconds) =>
-        Queue.StrokeSpeed((float)distancePixels, (float)milliseconds);
+        ThesisCue.StrokeSpeed((float)distancePixels, (float)milliseconds);
 }

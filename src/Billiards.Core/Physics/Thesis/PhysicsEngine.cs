@@ -30,7 +30,7 @@ public enum ShotEnd : byte
 /// (ball-ball) or by the ball's centre crossing a triangle placed a radius in front of a cushion
 /// (ball-rail), and resolved by swapping velocity components (ball-ball, times 0.95) or by
 /// turning the velocity by a constructed rebound angle (ball-rail, times 0.9). The cue's tip
-/// offset (e_x, e_y, kept on the <see cref="Queue"/>) bends the cue ball's first rebounds and
+/// offset (e_x, e_y, kept on the <see cref="ThesisCue"/>, the thesis's <c>Queue</c>) bends the cue ball's first rebounds and
 /// adds follow or draw at its ball contacts, and decays at each. Faithful means the same rules,
 /// constants and order, in single precision like the seed: every step runs, ball after ball in
 /// index order, the six steps of seed 4.3 on the state the earlier balls have already changed
@@ -118,13 +118,13 @@ public sealed partial class PhysicsEngine
     /// <param name="queue">The cue, whose e_x and e_y are the cue ball's effet.</param>
     /// <param name="dt">Fixed step (s); the seed's is 1/250.</param>
     /// <param name="random">Source of orientations when the game is reset.</param>
-    public PhysicsEngine(Ball[] balls, CollisionGeometry[] rails, ThesisTable table, Queue queue, double dt, Random random)
+    public PhysicsEngine(Ball[] balls, CollisionGeometry[] rails, ThesisTable table, ThesisCue queue, double dt, Random random)
         : this(balls, rails, new RailCull(rails), table, queue, dt, random)
     {
     }
 
     // The rails, their cull and the table are immutable: simulations of one table share them.
-    internal PhysicsEngine(Ball[] balls, CollisionGeometry[] rails, RailCull cull, ThesisTable table, Queue queue, double dt, Random random)
+    internal PhysicsEngine(Ball[] balls, CollisionGeometry[] rails, RailCull cull, ThesisTable table, ThesisCue queue, double dt, Random random)
     {
         ArgumentOutOfRangeException.ThrowIfNegativeOrZero(dt);
         _balls = balls;
@@ -160,7 +160,7 @@ public sealed partial class PhysicsEngine
     public ThesisTable Table { get; }
 
     /// <summary>The cue, holding the cue ball's effet.</summary>
-    public Queue Queue { get; }
+    public ThesisCue Queue { get; }
 
     /// <summary>Fixed step (s).</summary>
     public double Dt { get; }
@@ -486,7 +486,7 @@ public sealed partial class PhysicsEngine
     /// (Formel 23) tests v x (0,1,0) instead; the listing wins. With e_x = 0 this is the mirror
     /// reflection of Formel 21, times 0.9.
     /// </remarks>
-    public static Vector3 Rebound(Vector3 velocity, Vector3 normal, bool isBouncing, Queue? cueEffet)
+    public static Vector3 Rebound(Vector3 velocity, Vector3 normal, bool isBouncing, ThesisCue? cueEffet)
     {
         float speed = velocity.Length();
         float cosine = Vector3.Dot(-velocity, normal) / (speed * normal.Length());

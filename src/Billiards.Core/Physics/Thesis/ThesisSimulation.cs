@@ -39,7 +39,7 @@ public sealed partial class ThesisSimulation : Simulation
 
     /// <summary>The scene's balls on a shared table model (the scene's table and physics are the model's).</summary>
     internal ThesisSimulation(ThesisTableModel model, Scene scene)
-        : base(ThesisModel.ModelName, Integrators.Fixed, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
+        : base(ThesisModel.ModelName, scene.Physics.Integrator, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
     {
         _model = model;
         var balls = new Ball[scene.Balls.Count];
@@ -51,7 +51,7 @@ public sealed partial class ThesisSimulation : Simulation
             balls[i] = new Ball(setup.Id.Value, SeedFrame.FromSi(setup.Position)) { Velocity = SeedFrame.FromSi(setup.Velocity) };
             balls[i].RandomizeOrientation(random);
         }
-        Queue = new Queue();
+        Queue = new ThesisCue();
         Engine = new PhysicsEngine(balls, model.RailArray, model.Cull, model.SeedTable, Queue, scene.Physics.Dt, random)
         {
             Events = Events,
@@ -74,7 +74,7 @@ public sealed partial class ThesisSimulation : Simulation
     public PhysicsEngine Engine { get; }
 
     /// <summary>The cue: its tip offset is the cue ball's effet.</summary>
-    public Queue Queue { get; }
+    public ThesisCue Queue { get; }
 
     /// <inheritdoc />
     public override ReadOnlySpan<BallState> Balls
@@ -136,7 +136,7 @@ public sealed partial class ThesisSimulation : Simulation
     protected override void ApplyStrike(int cue, ShotSpec shot)
     {
         double aim = shot.AimDeg * Math.PI / 180;
-        double cueSpeed = Math.Min(shot.Speed * SeedFrame.CentimetresPerMetre, Queue.MaxStrokeSpeed);
+        double cueSpeed = Math.Min(shot.Speed * SeedFrame.CentimetresPerMetre, ThesisCue.MaxStrokeSpeed);
         float speed = (float)(cueSpeed * CueToBallSpeed);
         var direction = SeedFrame.FromSi(new Vec3(Math.Cos(aim), Math.Sin(aim), 0));
         Queue.EX = (float)shot.TipSide * Radius;

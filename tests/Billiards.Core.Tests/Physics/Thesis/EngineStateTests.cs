@@ -23,7 +23,7 @@ public class EngineStateTests
             new Ball(8, new Vector3(110, Y, 51)) { Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) },
         };
         var table = TableSpec.FromPreset("thesis");
-        var engine = new PhysicsEngine(balls, Initializer.InitRails(table), ThesisTable.From(table), new Queue(), 1.0 / 250, random)
+        var engine = new PhysicsEngine(balls, Initializer.InitRails(table), ThesisTable.From(table), new ThesisCue(), 1.0 / 250, random)
         {
             Events = new EventLog(),
         };

@@ -29,7 +29,7 @@ public class RailCollisionTests
     [Fact]
     public void Side_effet_widens_the_angle_coming_from_one_side()
     {
-        var queue = new Queue { EX = 1, EY = 1 };
+        var queue = new ThesisCue { EX = 1, EY = 1 };
         // c = v x n has c.y = -sin 30 < 0: alpha += e_x 0.3 f, f = 200 / 4 = 50: 30 + 15 = 45 deg.
         var v = PhysicsEngine.Rebound(200 * Dir(30, 1), FootNormal, true, queue);
         AssertVector(180 * new Vector3(-MathF.Sqrt(0.5f), 0, MathF.Sqrt(0.5f)), v);
@@ -40,7 +40,7 @@ public class RailCollisionTests
     [Fact]
     public void Side_effet_narrows_the_angle_coming_from_the_other_side()
     {
-        var queue = new Queue { EX = 1 };
+        var queue = new ThesisCue { EX = 1 };
         // v = 200 (cos 30, 0, -sin 30): c.y = +sin 30 > 0: alpha -= 15 -> 15 deg, h = n x y = (0, 0, -1).
         var v = PhysicsEngine.Rebound(200 * Dir(30, -1), FootNormal, true, queue);
         AssertVector(180 * new Vector3(-MathF.Cos(MathF.PI / 12), 0, -MathF.Sin(MathF.PI / 12)), v);
@@ -49,7 +49,7 @@ public class RailCollisionTests
     [Fact]
     public void The_rebound_angle_is_capped_at_89_degrees()
     {
-        var queue = new Queue { EX = 2.86f };
+        var queue = new ThesisCue { EX = 2.86f };
         // |v| = 400: f = 100; alpha = 80 + 2.86 * 0.3 * 100 = 165.8 -> 89; dir = (-cos 89, 0, sin 89), * 360.
         var v = PhysicsEngine.Rebound(400 * Dir(80, 1), FootNormal, true, queue);
         float a = 89 * MathF.PI / 180;
@@ -61,7 +61,7 @@ public class RailCollisionTests
     {
         // The listing caps alpha from above only: 30 + (-2.86) * 0.3 * 100 = -55.8 deg,
         // tan(-55.8 deg) < 0 flips h: the ball comes off on the other side of the normal.
-        var queue = new Queue { EX = -2.86f };
+        var queue = new ThesisCue { EX = -2.86f };
         var v = PhysicsEngine.Rebound(400 * Dir(30, 1), FootNormal, true, queue);
         float a = -55.8f * MathF.PI / 180;
         AssertVector(360 * new Vector3(-MathF.Cos(a), 0, MathF.Sin(a)), v);

@@ -20,7 +20,7 @@ internal static class ThesisKit
     public static PhysicsEngine Engine(string preset, double dt, params Ball[] balls)
     {
         var table = TableSpec.FromPreset(preset);
-        return new PhysicsEngine(balls, Initializer.InitRails(table), ThesisTable.From(table), new Queue(), dt, new Random(1))
+        return new PhysicsEngine(balls, Initializer.InitRails(table), ThesisTable.From(table), new ThesisCue(), dt, new Random(1))
         {
             Events = new EventLog(),
         };

@@ -78,13 +78,24 @@ public class ThesisSimulationTests
             }
         }
         var events = sim.Events.AsSpan().ToArray();
-        Assert.Contains(events, e => e.Kind == EventKind.BallBall && e.A.IsCue);
+        // The log tells the break as it happened: the cue strike at t = 0 first, then time order;
+        // the cue ball meets the rack before anything else is hit; each ball at rest in a pocket
+        // dropped into that pocket exactly once, and no other ball dropped.
+        Assert.Equal((0.0, EventKind.CueStrike), (events[0].Time, events[0].Kind));
+        Assert.Single(events, e => e.Kind == EventKind.CueStrike);
+        Assert.All(events.Zip(events.Skip(1)), p => Assert.True(p.First.Time <= p.Second.Time, $"{p.Second.Kind} at {p.Second.Time} s after {p.First.Time} s"));
+        var first = events.First(e => e.Kind is EventKind.BallBall or EventKind.BallCushion);
+        Assert.True(first.Kind == EventKind.BallBall && first.A.IsCue, $"the first contact is {first.Kind} of {first.A}");
         Assert.Contains(events, e => e.Kind == EventKind.BallCushion);
         Assert.All(events, e => Assert.True(e.Speed >= 0 && double.IsFinite(e.Speed)));
         foreach (var e in events.Where(e => e.Kind == EventKind.BallCushion))
         {
             Assert.NotEmpty(sim.FeatureName(e.Kind, e.Feature));
         }
+        var drops = events.Where(e => e.Kind == EventKind.BallPocket).Select(e => (e.A.Value, e.Feature)).Order().ToArray();
+        var pocketed = Enumerable.Range(0, sim.Balls.Length).Where(i => sim.Balls[i].IsPocketed).Select(i => (sim.Ids[i].Value, sim.Balls[i].Pocket)).Order().ToArray();
+        Assert.NotEmpty(drops); // this break pockets a ball
+        Assert.Equal(pocketed, drops);
     }
 
     [Theory]

@@ -3,7 +3,7 @@ using Billiards.Core.Cue;
 namespace Billiards.Core.Tests.Thesis;
 
 /// <summary>Formel 31 (stroke speed) and the reset of the cue.</summary>
-public class QueueTests
+public class ThesisCueTests
 {
     [Theory]
     [InlineData(100f, 50f, 500f)]   // 100 px / 50 ms * 250 = 500 cm/s
@@ -13,13 +13,13 @@ public class QueueTests
     [InlineData(0f, 10f, 0f)]       // no forward travel: no strike speed
     public void Stroke_speed_is_distance_over_time_times_250_capped_at_800(float pixels, float ms, float expected)
     {
-        Assert.Equal(expected, Queue.StrokeSpeed(pixels, ms), 1e-4f);
+        Assert.Equal(expected, ThesisCue.StrokeSpeed(pixels, ms), 1e-4f);
     }
 
     [Fact]
     public void Reset_centres_the_tip_and_levels_the_cue()
     {
-        var queue = new Queue { EX = 1, EY = 2, Grade = 10 };
+        var queue = new ThesisCue { EX = 1, EY = 2, Grade = 10 };
         queue.Reset();
         Assert.Equal(0, queue.EX);
         Assert.Equal(0, queue.EY);

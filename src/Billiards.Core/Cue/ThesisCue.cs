@@ -1,11 +1,13 @@
 namespace Billiards.Core.Cue;
 
 /// <summary>
-/// The cue of the thesis model (seed 4.1.5, 4.4.3, 4.4.4), in the seed's units. It holds the
-/// tip displacement from the cue ball's centre (<see cref="EX"/> sideways, <see cref="EY"/> up: the effet, which the
+/// The cue of the thesis model, the thesis's <c>Queue</c> (German for the cue; seed 4.1.5, 4.4.3,
+/// 4.4.4), named so that it does not shadow <see cref="Queue{T}"/>; the thesis engine's property
+/// keeps the thesis's name (<see cref="Physics.Thesis.PhysicsEngine.Queue"/>). In the seed's
+/// units. It holds the tip displacement from the cue ball's centre (<see cref="EX"/> sideways, <see cref="EY"/> up: the effet, which the
 /// physics engine reads and decays after each collision), and the elevation (drawing only).
 /// </summary>
-public sealed class Queue
+public sealed class ThesisCue
 {
     /// <summary>The ball radius (cm): the tip displacement is kept within it so the tip stays on the ball.</summary>
     public const float BallRadius = Physics.Thesis.PhysicsEngine.BallRadius;

@@ -1,0 +1,44 @@
+using Billiards.App.Hud;
+using Billiards.App.Platform;
+
+namespace Billiards.App.Tests.Game;
+
+/// <summary>The HUD offers "H or F1: help" under every menu, and the keys open it there.</summary>
+public class MenuHelpTests
+{
+    [Theory]
+    [InlineData(Key.H)]
+    [InlineData(Key.F1)]
+    public void The_help_keys_open_and_close_the_help_over_the_start_menu(Key help)
+    {
+        using var game = new TestGame();
+        game.World.Menu.ShowStart();
+        var hud = game.Frame().Hud!;
+        Assert.Contains("H or F1: help", hud.Lines);
+        Assert.False(hud.ShowHelp);
+
+        game.Window.Press(help);
+        hud = game.Frame().Hud!;
+        Assert.True(hud.ShowHelp);
+        // The start menu stays, with its buttons, and took nothing else from the key.
+        Assert.Equal(MenuPage.Start, game.World.Menu.Page);
+        Assert.Contains(hud.Buttons!, b => b.Label.StartsWith("Start", StringComparison.Ordinal));
+
+        game.Window.Press(help);
+        Assert.False(game.Frame().Hud!.ShowHelp);
+        Assert.Equal(MenuPage.Start, game.World.Menu.Page);
+    }
+
+    [Fact]
+    public void The_help_opens_over_the_pause_menu_too_and_other_keys_stay_with_the_menu()
+    {
+        using var game = new TestGame();
+        game.Window.Press(Key.Escape);
+        game.Window.Press(Key.H);
+        Assert.True(game.Frame().Hud!.ShowHelp);
+        Assert.Equal(MenuPage.Pause, game.World.Menu.Page);
+        game.Window.Press(Key.P);
+        Assert.True(game.World.Loop.Paused);
+        Assert.Equal(MenuPage.Pause, game.World.Menu.Page);
+    }
+}
