@@ -218,6 +218,25 @@ public class MatchTests
     }
 
     [Fact]
+    public void AShotTheReplayCannotPlayIsTheFirstDifference()
+    {
+        var game = PlayOut(GameSetup.Of(GameRules.NineBall, 1, Players));
+        Assert.True(game.IsOver);
+        var record = GameRecordFile.Parse(Encoding.UTF8.GetString(GameRecordFile.ToUtf8(game)), "game.json");
+        // One shot more than the game had: the replayed game is over by then.
+        var longer = record with
+        {
+            Shots = [.. record.Shots, record.Shots[^1]],
+            Rulings = [.. record.Rulings, record.Rulings[^1]],
+            Balls = [.. record.Balls, record.Balls[^1]],
+        };
+        var report = GameRecordFile.Verify(longer, out _);
+        Assert.Equal(record.Shots.Count, report.Same);
+        Assert.Equal(record.Shots.Count, report.FirstDifference!.Shot);
+        Assert.Equal("shot", report.FirstDifference.Field);
+    }
+
+    [Fact]
     public void AReplayComparesTheBallsAtRestNotOnlyTheRuling()
     {
         var game = PlayOut(GameSetup.Of(GameRules.EightBall, 3, Players));
