@@ -198,6 +198,40 @@ public static class Placement
         return near;
     }
 
+    /// <summary>
+    /// The free point on the long axis (y = 0) nearest <paramref name="startX"/> (m) in
+    /// <paramref name="direction"/> (+1 towards the foot rail, -1 towards the head rail) where a ball
+    /// of radius <paramref name="radius"/> (m) touches none of <paramref name="others"/>: each ball
+    /// in the way pushes the point to just past it, until none is (the spotting rule of rules.md).
+    /// The caller checks the result against the cushion.
+    /// </summary>
+    public static double FreeOnLongAxis(double radius, IReadOnlyList<Vec3> others, double startX, int direction)
+    {
+        ArgumentNullException.ThrowIfNull(others);
+        double x = startX;
+        bool moved = true;
+        while (moved)
+        {
+            moved = false;
+            foreach (var other in others)
+            {
+                double dy = other.Y;
+                double reach = 4 * radius * radius - dy * dy;
+                if (reach <= 0)
+                {
+                    continue;
+                }
+                double half = Math.Sqrt(reach);
+                if (Math.Abs(x - other.X) < half - Tolerance)
+                {
+                    x = other.X + direction * half;
+                    moved = true;
+                }
+            }
+        }
+        return x;
+    }
+
     // Rings of the free-spot search: 200 R reaches every corner of the largest table.
     private const int MaxRings = 200;
 
