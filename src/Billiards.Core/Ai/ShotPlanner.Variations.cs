@@ -71,7 +71,7 @@ public sealed partial class ShotPlanner
                 foreach (double speed in speeds)
                 {
                     var d = aimPoint - root.Cue;
-                    var shot = new ShotSpec(speed, Math.Atan2(d.Y, d.X) * 180 / Math.PI, 0, -0.2, Elevation(c, root.Cue, 0));
+                    var shot = new ShotSpec(speed, Math.Atan2(d.Y, d.X) * 180 / Math.PI, 0, -0.2, 0);
                     variations.Add(new Variation(rootIndex, c, shot, before));
                 }
             }
@@ -87,16 +87,9 @@ public sealed partial class ShotPlanner
                 foreach (double f in factors)
                 {
                     double speed = Math.Min(MaxNormalSpeed, c.BaseSpeed * f);
-                    variations.Add(new Variation(rootIndex, c, new ShotSpec(speed, aim, sideTip, height, Elevation(c, cue, elevation)), before));
+                    variations.Add(new Variation(rootIndex, c, new ShotSpec(speed, aim, sideTip, height, elevation), before));
                 }
             }
         }
-
-        /// <summary>
-        /// The one place a candidate shot's cue elevation (deg) is decided: the spin's
-        /// <paramref name="wanted"/> elevation for the candidate played from <paramref name="cue"/>
-        /// (where the cue's clearance over the rails and balls will raise it).
-        /// </summary>
-        private static double Elevation(Candidate candidate, Vec3 cue, double wanted) => wanted;
     }
 }

@@ -45,8 +45,8 @@ namespace Billiards.Core.Ai;
 /// made is played, and called where the game calls, as a safety: it was chosen for what it leaves.</item>
 /// </list>
 /// Its jobs live in files of their own: the search's rounds (<c>ShotPlanner.Search.cs</c>), the
-/// cue-ball placements (<c>.Placements.cs</c>), the variations of each candidate and the one place a
-/// shot's elevation is decided (<c>.Variations.cs</c>), aim correction (<c>.Aim.cs</c>) and the
+/// cue-ball placements (<c>.Placements.cs</c>), the variations of each candidate (<c>.Variations.cs</c>;
+/// the search then raises each shot's cue as far as its clearance needs), aim correction (<c>.Aim.cs</c>) and the
 /// score with its named weights (<c>.Scoring.cs</c>).
 /// Determinism: every simulation draws its error from its own stream, derived from the seed and
 /// the variation's and sample's indices, and results are reduced in index order, so the threads
