@@ -33,7 +33,7 @@ public static class MatchLines
             {
                 sb.Append(CultureInfo.InvariantCulture, $"  score {state.Score[p]}/{state.Target}");
             }
-            if (state.FoulsInRow[p] > 0)
+            if (match.Ruleset.HasThreeFouls && state.FoulsInRow[p] > 0)
             {
                 sb.Append(CultureInfo.InvariantCulture, $"  fouls in a row {state.FoulsInRow[p]}");
             }

@@ -113,8 +113,8 @@ public static class ScoreboardBuilder
             {
                 detail.Add(string.Create(CultureInfo.InvariantCulture, $"score {state.Score[p]} of {state.Target}"));
             }
-            // 8-ball has no three-foul rule: its fouls in a row mean nothing to the player.
-            if (!match.Ruleset.HasGroups && fouls[p] > 0)
+            // Only where a third foul in a row costs something (not 8-ball).
+            if (match.Ruleset.HasThreeFouls && fouls[p] > 0)
             {
                 detail.Add(string.Create(CultureInfo.InvariantCulture, $"fouls in a row {fouls[p]}"));
             }
