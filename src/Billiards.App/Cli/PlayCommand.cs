@@ -149,10 +149,13 @@ public static class PlayCommand
         {
             scripted.Raised += (e, _) => stats.InputRaised(e, e.Time + scripted.Waited);
         }
-        if (startMenu)
+        // A game from the command line opens the start menu only from its result panel (Menu), and
+        // a choice made there replaces it as it does from plain play; a scripted, measured or
+        // recorded run keeps its one game.
+        if (startMenu || (script is null && statsPath is null && recordPath is null && match is not null))
         {
             host.World.Menu.StartSettings = host.World.Menu.PlayedSettings = settings;
-            RunWithStartMenu(host, platform, scene2 => Pace(new GameHost(scene2.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, scene2.Match), fastComputer), audio, settingsPath);
+            RunWithStartMenu(host, platform, scene2 => Pace(new GameHost(scene2.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, scene2.Match), fastComputer), audio, settingsPath, startMenu);
         }
         else
         {
@@ -183,13 +186,16 @@ public static class PlayCommand
 
     // The start menu shows over the default game; a different choice replaces the game (a new host
     // on the same window) between two frames.
-    private static void RunWithStartMenu(GameHost first, GamePlatform platform, Func<(Scene Scene, MatchSetup Match), GameHost> create, IAudioOutput audio, string settingsPath)
+    private static void RunWithStartMenu(GameHost first, GamePlatform platform, Func<(Scene Scene, MatchSetup Match), GameHost> create, IAudioOutput audio, string settingsPath, bool showAtStart)
     {
         var current = first;
         (GameRules Rules, MatchPlayer[] Players, GameSettings Settings)? pending = null;
         void Listen(GameHost h) => h.World.Menu.StartRequested += (rules, players) => pending = (rules, players, h.World.Menu.StartSettings);
         Listen(first);
-        first.World.Menu.ShowStart();
+        if (showAtStart)
+        {
+            first.World.Menu.ShowStart();
+        }
         try
         {
             platform.Loop.Run(() =>

@@ -202,7 +202,8 @@ public sealed class MenuNode : Node
         string? title = Layout();
         if (frame.Frame.Hud is { } hud && _buttons.Count > 0)
         {
-            frame.Frame.Hud = hud with { Buttons = Buttons, Title = title };
+            // An open menu hides the result panel it covers.
+            frame.Frame.Hud = hud with { Buttons = Buttons, Title = title, Result = Page == MenuPage.None ? hud.Result : null };
         }
     }
 

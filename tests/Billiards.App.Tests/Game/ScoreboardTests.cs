@@ -50,6 +50,14 @@ public class ScoreboardTests
         string lastRuling = match.Game!.LastRuling!.Message;
         Assert.Equal(lastRuling, hud.Board!.Message);
 
+        // M opens the start menu over the game, without the result panel; Escape keeps the game and brings it back.
+        game.Window.Press(MenuNode.MenuKey);
+        Assert.Equal(MenuPage.Start, game.World.Menu.Page);
+        Assert.Null(game.Frame().Hud!.Result);
+        game.Window.Press(Key.Escape);
+        Assert.Equal(MenuPage.None, game.World.Menu.Page);
+        Assert.NotNull(game.Frame().Hud!.Result);
+
         // A click on Rematch starts the next game: no result, no ruling of the last game on the board.
         var centre = game.World.Menu.CentreOf("Rematch")!.Value;
         game.Window.MoveTo(centre.X, centre.Y);
