@@ -189,6 +189,7 @@ public static class GameRecordFile
         w.WriteNumber("M", p.CueMass);
         w.WriteNumber("m_e", p.CueEndMass);
         w.WriteNumber("omega_ratio", p.OmegaRatio);
+        w.WriteNumber("e_t", p.ET);
         w.WriteEndObject();
         if (physics.Model.TakesInteractionModels)
         {

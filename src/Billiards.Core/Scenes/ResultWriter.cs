@@ -90,6 +90,16 @@ public static class ResultWriter
                     w.WriteString("pocket", sim.FeatureName(e.Kind, e.Feature));
                     w.WriteNumber("speed", e.Speed);
                     break;
+                case EventKind.BallAirborne or EventKind.BallTable or EventKind.BallOffTable:
+                    w.WriteString("type", e.Kind switch
+                    {
+                        EventKind.BallAirborne => "ball-airborne",
+                        EventKind.BallTable => "ball-table",
+                        _ => "ball-off-table",
+                    });
+                    WriteIds(w, e.A);
+                    w.WriteNumber("speed", e.Speed);
+                    break;
             }
             w.WriteEndObject();
         }
@@ -108,6 +118,7 @@ public static class ResultWriter
                     w.WriteStartArray(sim.Ids[i].ToString());
                     w.WriteNumberValue(s.Positions[i].X);
                     w.WriteNumberValue(s.Positions[i].Y);
+                    w.WriteNumberValue(s.Positions[i].Z);
                     w.WriteEndArray();
                 }
                 w.WriteEndObject();

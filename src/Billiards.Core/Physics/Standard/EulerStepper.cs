@@ -1,6 +1,7 @@
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics.Collisions;
+using Billiards.Core.Physics.Collisions.BallTable;
 using Billiards.Core.Table;
 
 namespace Billiards.Core.Physics.Standard;
@@ -89,6 +90,11 @@ public sealed class EulerStepper
             if (BallMotion.IsActive(_balls[i].State))
             {
                 Integrate(ref _balls[i], dt);
+                if (_balls[i].State == MotionState.Airborne && _balls[i].Position.Z <= _k.R)
+                {
+                    // Found by overlap, like every contact here: the step that went below the bed.
+                    Land(i, timeAfter);
+                }
                 translating |= BallMotion.Translates(_balls[i].State);
             }
         }
@@ -99,12 +105,22 @@ public sealed class EulerStepper
         }
     }
 
+    private void Land(int i, double time) => FrictionalLanding.LandLogged(ref _balls[i], _k, _log, _ids[i], time);
+
     private void Integrate(ref BallState b, double dt)
     {
         double r = _k.R;
         var spin0 = b.Spin;
         switch (b.State)
         {
+            case MotionState.Airborne:
+                b.Position += b.Velocity * dt;
+                b.Velocity = new Vec3(b.Velocity.X, b.Velocity.Y, b.Velocity.Z - _k.G * dt);
+                if (TrackOrientation)
+                {
+                    BallMotion.Rotate(ref b.Orientation, b.Spin * dt);
+                }
+                return;
             case MotionState.Sliding:
                 {
                     var u = BallMotion.Slip(b, r);
@@ -156,18 +172,19 @@ public sealed class EulerStepper
         for (int i = 0; i < balls.Length; i++)
         {
             ref var a = ref balls[i];
-            if (a.State == MotionState.Pocketed)
+            if (BallMotion.IsOut(a.State))
             {
                 continue;
             }
             for (int j = i + 1; j < balls.Length; j++)
             {
                 ref var b = ref balls[j];
-                if (b.State == MotionState.Pocketed || !(BallMotion.Translates(a.State) || BallMotion.Translates(b.State)))
+                if (BallMotion.IsOut(b.State) || !(BallMotion.Translates(a.State) || BallMotion.Translates(b.State)))
                 {
                     continue;
                 }
-                var d = (b.Position - a.Position).XY;
+                // In space: a ball in the air passes over the balls below it (on the bed, z is equal).
+                var d = b.Position - a.Position;
                 if (d.LengthSquared >= 4 * r * r)
                 {
                     continue;

@@ -213,7 +213,7 @@ internal sealed class Predictor
         ref readonly var b = ref _balls[i];
         _refreshTime[i] = double.PositiveInfinity;
         _windowEnd[i] = Math.Min(_transitionTime[i], _railTime[i]);
-        if (b.State == MotionState.Pocketed)
+        if (BallMotion.IsOut(b.State))
         {
             _grid.Unregister(i);
             return;
@@ -249,7 +249,7 @@ internal sealed class Predictor
     {
         ref readonly var a = ref _balls[i];
         ref readonly var b = ref _balls[j];
-        if (a.State == MotionState.Pocketed || b.State == MotionState.Pocketed
+        if (BallMotion.IsOut(a.State) || BallMotion.IsOut(b.State)
             || !(BallMotion.Translates(a.State) || BallMotion.Translates(b.State)))
         {
             return false;
@@ -323,7 +323,7 @@ internal sealed class Predictor
             return double.PositiveInfinity;
         }
         Coefficients c = default;
-        CircleGap(d, dv, da, 2 * r, ref c);
+        SphereGap(d, dv, da, 2 * r, ref c);
         double t = Polynomial.FirstEntry(ref c, 4, horizon, 4 * r * OverlapTolerance);
         return time + t;
     }
@@ -366,6 +366,21 @@ internal sealed class Predictor
         c[2] = Vec3.Dot(dv, dv) + 2 * Vec3.Dot(h, dd);
         c[1] = 2 * Vec3.Dot(dv, dd);
         c[0] = Vec3.Dot(dd, dd) - reach * reach;
+    }
+
+    // |d + v t + a t^2 / 2|^2 - reach^2 in space, for two balls: a ball in the air moves on a
+    // parabola, so the gap of two balls is still a quartic. On the bed every z term is exactly 0
+    // (both centres at z = R, no vertical velocity or acceleration), so bed pairs get the same
+    // coefficients, bit for bit, as in the plane. The bed-plane culls (ClearOf, HullClear, the
+    // boxes) stay valid: a horizontal distance never exceeds the distance in space.
+    private static void SphereGap(Vec3 d, Vec3 v, Vec3 a, double reach, ref Coefficients c)
+    {
+        var h = a * 0.5;
+        c[4] = Vec3.Dot(h, h);
+        c[3] = 2 * Vec3.Dot(h, v);
+        c[2] = Vec3.Dot(v, v) + 2 * Vec3.Dot(h, d);
+        c[1] = 2 * Vec3.Dot(v, d);
+        c[0] = Vec3.Dot(d, d) - reach * reach;
     }
 
     // Exact bounding box of r0 + v t + a t^2 / 2 on [0, T]: each coordinate is extreme at an end
