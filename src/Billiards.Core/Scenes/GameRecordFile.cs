@@ -60,6 +60,7 @@ public static class GameRecordFile
         w.WriteNumber("length", setup.Table.Length);
         w.WriteNumber("width", setup.Table.Width);
         w.WriteNumber("cushion_height", setup.Table.CushionHeight);
+        w.WriteNumber("rail_height", setup.Table.RailHeight);
         w.WriteEndObject();
         WritePhysics(w, setup.Physics);
         w.WriteStartObject("rack");

@@ -151,7 +151,7 @@ public static class SceneLoader
 
         private TableSpec ReadTable(JsonElement e)
         {
-            var f = Object(e, "$.table", "preset", "length", "width", "cushion_height");
+            var f = Object(e, "$.table", "preset", "length", "width", "cushion_height", "rail_height");
             if (!f.TryGetValue("preset", out var preset))
             {
                 throw Error("$.table", "missing \"preset\"");
@@ -168,6 +168,20 @@ public static class SceneLoader
             if (f.TryGetValue("cushion_height", out var h))
             {
                 table = table with { CushionHeight = Number(h, "$.table.cushion_height", 0.0, 0.1) };
+            }
+            if (f.TryGetValue("rail_height", out var rh))
+            {
+                table = table with { RailHeight = Number(rh, "$.table.rail_height", 0.0, 0.5) };
+            }
+            else
+            {
+                // A higher cushion than the preset's raises the rails' top with it.
+                table = table with { RailHeight = Math.Max(table.RailHeight, table.CushionHeight) };
+            }
+            if (table.RailHeight < table.CushionHeight)
+            {
+                throw Error("$.table.rail_height", string.Create(CultureInfo.InvariantCulture,
+                    $"the top of the rails ({table.RailHeight} m) is below the cushion's contact height ({table.CushionHeight} m)"));
             }
             return table;
         }

@@ -70,7 +70,7 @@ public static class Placement
     /// <summary>What is wrong with ball <paramref name="id"/> at <paramref name="position"/> next to ball <paramref name="other"/> at <paramref name="otherPosition"/> (m); null when they do not overlap.</summary>
     public static string? Overlap(double radius, BallId id, Vec3 position, BallId other, Vec3 otherPosition)
     {
-        double d = (position - otherPosition).XY.Length;
+        double d = (position - otherPosition).Length;
         return d < 2 * radius - Tolerance
             ? Text($"ball \"{id}\" overlaps ball \"{other}\" (centres {d:0.######} m apart, less than 2R = {2 * radius:0.######} m)")
             : null;

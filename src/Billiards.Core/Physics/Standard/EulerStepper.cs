@@ -214,6 +214,18 @@ public sealed class EulerStepper
             {
                 continue;
             }
+            if (b.State == MotionState.Airborne && b.Position.Z - r >= _geometry.Spec.RailHeight)
+            {
+                // Above the rails: no cushion, jaw or hole reaches it; past the noses' line it is gone.
+                if (Math.Abs(b.Position.X) > _geometry.Spec.HalfLength || Math.Abs(b.Position.Y) > _geometry.Spec.HalfWidth)
+                {
+                    _log.Add(new SimEvent(time, EventKind.BallOffTable, _ids[i], _ids[i], -1, b.Velocity.Length));
+                    b.Velocity = Vec3.Zero;
+                    b.Spin = Vec3.Zero;
+                    b.State = MotionState.OffTable;
+                }
+                continue;
+            }
             // A swept contact (the ball stopped on a face or nose) replaces the overlap tests; the
             // pocket test below still runs, since a bounce in a mouth can leave it over the hole.
             if (!SweepBoundary(ref b, i, time))
@@ -262,7 +274,7 @@ public sealed class EulerStepper
                     break;
                 }
             }
-            if (b.State != MotionState.Pocketed && !TableBounds.Contains(_geometry.Spec, b.Position, r))
+            if (b.State is not (MotionState.Pocketed or MotionState.Airborne) && !TableBounds.Contains(_geometry.Spec, b.Position, r))
             {
                 LeftTheTable(ref b, i, time);
             }

@@ -101,6 +101,9 @@ internal sealed class Resolver
             case RailKind.Pocket:
                 Pocket(i, _geometry.Pockets[index].Pocket, time);
                 break;
+            case RailKind.OffTable:
+                LeaveTable(i, time);
+                break;
         }
     }
 
@@ -142,6 +145,17 @@ internal sealed class Resolver
         {
             _log.Add(new SimEvent(time, EventKind.BallAirborne, _ids[i], _ids[i], -1, ball.Velocity.Z));
         }
+    }
+
+    // Over the rails in the air: the ball is out of play where it crossed the cushions' line.
+    private void LeaveTable(int i, double time)
+    {
+        ref var ball = ref _balls[i];
+        double speed = ball.Velocity.Length;
+        ball.Velocity = Vec3.Zero;
+        ball.Spin = Vec3.Zero;
+        ball.State = MotionState.OffTable;
+        _log.Add(new SimEvent(time, EventKind.BallOffTable, _ids[i], _ids[i], -1, speed));
     }
 
     private void Pocket(int i, int pocket, double time)
