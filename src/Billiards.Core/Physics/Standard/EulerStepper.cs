@@ -214,17 +214,21 @@ public sealed class EulerStepper
             {
                 continue;
             }
-            if (b.State == MotionState.Airborne && b.Position.Z - r >= _geometry.Spec.RailHeight)
+            bool high = b.State == MotionState.Airborne && b.Position.Z - r >= _geometry.Spec.RailHeight;
+            bool beyond = Math.Abs(b.Position.X) > _geometry.Spec.HalfLength || Math.Abs(b.Position.Y) > _geometry.Spec.HalfWidth;
+            // Past the noses' line in the air it is gone: above the rails, or come down on one
+            // (anywhere but over a pocket's mouth).
+            if (b.State == MotionState.Airborne && beyond && (high || !TableBounds.Contains(_geometry.Spec, b.Position, r)))
             {
-                // Above the rails: no cushion, jaw or hole reaches it; past the noses' line it is gone.
-                if (Math.Abs(b.Position.X) > _geometry.Spec.HalfLength || Math.Abs(b.Position.Y) > _geometry.Spec.HalfWidth)
-                {
-                    _log.Add(new SimEvent(time, EventKind.BallOffTable, _ids[i], _ids[i], -1, b.Velocity.Length));
-                    b.Velocity = Vec3.Zero;
-                    b.Spin = Vec3.Zero;
-                    b.State = MotionState.OffTable;
-                }
+                _log.Add(new SimEvent(time, EventKind.BallOffTable, _ids[i], _ids[i], -1, b.Velocity.Length));
+                b.Velocity = Vec3.Zero;
+                b.Spin = Vec3.Zero;
+                b.State = MotionState.OffTable;
                 continue;
+            }
+            if (high)
+            {
+                continue; // above the rails: no cushion, jaw or hole reaches it
             }
             // A swept contact (the ball stopped on a face or nose) replaces the overlap tests; the
             // pocket test below still runs, since a bounce in a mouth can leave it over the hole.

@@ -207,7 +207,7 @@ internal sealed class Predictor
         if (airborne)
         {
             double t = OffTableTime(b);
-            if (t < best && t <= horizon && Clears(b, t))
+            if (t < best && t <= horizon && (Clears(b, t) || !OverAMouth(b, t)))
             {
                 best = t;
                 _railKind[i] = RailKind.OffTable;
@@ -222,6 +222,16 @@ internal sealed class Predictor
     // passes over the cushions and jaws there, and over the pockets' holes.
     private bool Clears(in BallState b, double t) =>
         b.Position.Z + b.Velocity.Z * t - 0.5 * _k.G * t * t - _r >= _railHeight;
+
+    // True when a ball in the air crosses the noses' line t seconds on into a pocket's mouth (a
+    // millimetre on it is still over the table's bounds), where a low ball goes on to the hole. A
+    // low ball crossing elsewhere passed over the cushion's face high and came down on the rail.
+    private bool OverAMouth(in BallState b, double t)
+    {
+        var p = b.Position + b.Velocity * t;
+        var step = b.Velocity.XY.Normalized() * 1e-3;
+        return TableBounds.Contains(_geometry.Spec, p + step, _r);
+    }
 
     // When a ball in the air, moving in a straight line over the bed, first has its centre on the
     // rectangle of the cushion noses (a root of a linear polynomial per side), or +infinity when it
