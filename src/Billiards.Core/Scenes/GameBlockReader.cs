@@ -122,13 +122,13 @@ public static class GameBlockReader
         if (f.TryGetValue("fouls_in_row", out var fouls))
         {
             var pair = Pair(fouls, $"{path}.fouls_in_row");
-            // Only the games with a three-foul rule end the count at a third foul; 8-ball's runs on.
-            int most = rules == GameRules.EightBall ? int.MaxValue : 2;
-            if (pair.First < 0 || pair.Second < 0 || pair.First > most || pair.Second > most)
+            if (pair.First < 0 || pair.Second < 0)
             {
-                throw Error($"{path}.fouls_in_row", most == 2
-                    ? "each count must be 0, 1 or 2 (a third foul ends the count)"
-                    : "each count must be a whole number of fouls, 0 or more");
+                throw Error($"{path}.fouls_in_row", "each count must be 0 or more");
+            }
+            if (Ruleset.For(rules).HasThreeFouls && (pair.First > 2 || pair.Second > 2))
+            {
+                throw Error($"{path}.fouls_in_row", "each count must be 0, 1 or 2 (a third foul ends the count)");
             }
             state = state with { FoulsInRow = pair };
         }

@@ -39,6 +39,9 @@ public sealed record TableSpec(
     /// </summary>
     public const double DefaultRailHeight = 1.75 * 0.0254;
 
+    /// <summary>The table's pockets, in index order: the six of a pool or snooker table, none for a pocketless one.</summary>
+    public IReadOnlyList<PocketId> Pockets => HasPockets ? PocketIds.All : [];
+
     /// <summary>Default cushion contact height: 0.64 of the ball diameter (physics-standard-model.md).</summary>
     public const double DefaultCushionHeight = 0.64 * 2 * 0.028575;
 
