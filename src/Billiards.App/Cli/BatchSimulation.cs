@@ -15,11 +15,8 @@ namespace Billiards.App.Cli;
 /// <remarks>
 /// A line that is not a usable scene (or whose run fails) gives an error record in its place,
 /// <c>{"line": N, "error": "IN.jsonl:N: $.path: problem"}</c>, and the other lines still run; the
-/// exit code is then <see cref="SomeFailed"/>. The scenes run in chunks: every thread takes the
-/// chunk's next scene as it finishes one, and a chunk is written (in order) before the next is
-/// read, so that memory stays bounded by a chunk however long the input. Each scene's run is
-/// independent of the others and of the thread that runs it: the results are the same at any
-/// thread count.
+/// exit code is then <see cref="SomeFailed"/>. Each scene's run is independent of the others and
+/// of the thread that runs it: the results are the same at any thread count.
 /// </remarks>
 public sealed class BatchSimulation(SceneOverrides overrides, RunOptions options, int threads, TextWriter progress)
 {
@@ -30,7 +27,6 @@ public sealed class BatchSimulation(SceneOverrides overrides, RunOptions options
     public const int MaxThreads = 1024;
 
     private static readonly TimeSpan ProgressInterval = TimeSpan.FromSeconds(2);
-    private readonly Lock _progressLock = new();
 
     /// <summary>Scenes run (lines read).</summary>
     public int Lines { get; private set; }
@@ -50,52 +46,118 @@ public sealed class BatchSimulation(SceneOverrides overrides, RunOptions options
     {
         ArgumentNullException.ThrowIfNull(input);
         ArgumentNullException.ThrowIfNull(output);
-        int chunkSize = Math.Max(256, threads * 64);
-        var texts = new List<string>(chunkSize);
+        // Scenes take from a tenth of a millisecond to seconds: each worker takes the next line as
+        // soon as it is free (no barrier where fast workers wait for a slow scene), and the results
+        // are written in the input's order by this thread. A worker may run at most Window lines
+        // ahead of the writer, which bounds the memory held by results waiting for their turn.
+        int window = Math.Max(256, threads * 64);
+        using var slots = new SemaphoreSlim(window);
+        using var stop = new CancellationTokenSource();
+        // Monitor, not Lock: the writer waits on it for the next result.
+        var gate = new object();
+        var reading = new Lock();
+        var pending = new Dictionary<int, (byte[] Bytes, bool Ok)>();
+        int read = 0, running = threads;
+        Exception? failure = null;
         var clock = Stopwatch.StartNew();
-        var lastReport = TimeSpan.Zero;
-        int done = 0;
-        while (true)
+
+        void Work()
         {
-            texts.Clear();
-            string? line;
-            while (texts.Count < chunkSize && (line = input.ReadLine()) is not null)
+            try
             {
-                texts.Add(line);
-            }
-            if (texts.Count == 0)
-            {
-                break;
-            }
-            int first = Lines + 1;
-            var results = new byte[texts.Count][];
-            int failed = 0;
-            Parallel.For(0, texts.Count, new ParallelOptions { MaxDegreeOfParallelism = threads }, i =>
-            {
-                results[i] = RunLine(texts[i], source, first + i, out bool ok);
-                if (!ok)
+                while (true)
                 {
-                    Interlocked.Increment(ref failed);
-                }
-                int n = Interlocked.Increment(ref done);
-                if (clock.Elapsed - lastReport >= ProgressInterval)
-                {
-                    lock (_progressLock)
+                    slots.Wait(stop.Token);
+                    string? line;
+                    int index;
+                    lock (reading)
                     {
-                        if (clock.Elapsed - lastReport >= ProgressInterval)
+                        line = input.ReadLine();
+                        index = read;
+                        if (line is not null)
                         {
-                            lastReport = clock.Elapsed;
-                            progress.WriteLine(string.Create(CultureInfo.InvariantCulture, $"simulate --batch: {n}/{total} scenes, {clock.Elapsed.TotalSeconds:F0} s"));
+                            read++;
                         }
                     }
+                    if (line is null)
+                    {
+                        return;
+                    }
+                    var bytes = RunLine(line, source, index + 1, out bool ok);
+                    lock (gate)
+                    {
+                        pending[index] = (bytes, ok);
+                        Monitor.PulseAll(gate);
+                    }
                 }
-            });
-            foreach (var bytes in results)
-            {
-                output.Write(bytes);
             }
-            Lines += texts.Count;
-            Failed += failed;
+            catch (OperationCanceledException)
+            {
+                // The writer failed; its exception is the one reported.
+            }
+            catch (Exception e)
+            {
+                lock (gate)
+                {
+                    failure ??= e;
+                }
+                stop.Cancel();
+            }
+            finally
+            {
+                lock (gate)
+                {
+                    running--;
+                    Monitor.PulseAll(gate);
+                }
+            }
+        }
+
+        var workers = new Thread[threads];
+        for (int t = 0; t < threads; t++)
+        {
+            workers[t] = new Thread(Work) { IsBackground = true, Name = $"batch-{t}" };
+            workers[t].Start();
+        }
+        var lastReport = TimeSpan.Zero;
+        try
+        {
+            for (int next = 0; ; next++)
+            {
+                (byte[] Bytes, bool Ok) result;
+                lock (gate)
+                {
+                    while (!pending.ContainsKey(next) && failure is null && !(running == 0 && next >= read))
+                    {
+                        Monitor.Wait(gate);
+                    }
+                    if (failure is not null)
+                    {
+                        throw failure;
+                    }
+                    if (!pending.Remove(next, out result))
+                    {
+                        break;
+                    }
+                }
+                output.Write(result.Bytes);
+                slots.Release();
+                Lines++;
+                Failed += result.Ok ? 0 : 1;
+                if (clock.Elapsed - lastReport >= ProgressInterval)
+                {
+                    lastReport = clock.Elapsed;
+                    progress.WriteLine(string.Create(CultureInfo.InvariantCulture, $"simulate --batch: {Lines}/{total} scenes, {Failed} failed, {clock.Elapsed.TotalSeconds:F0} s"));
+                }
+            }
+        }
+        finally
+        {
+            stop.Cancel();
+            foreach (var worker in workers)
+            {
+                worker.Join();
+            }
         }
         double seconds = clock.Elapsed.TotalSeconds;
         progress.WriteLine(string.Create(CultureInfo.InvariantCulture,

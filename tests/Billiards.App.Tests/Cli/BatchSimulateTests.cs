@@ -146,4 +146,27 @@ public sealed partial class BatchSimulateTests : IDisposable
         Assert.False(File.Exists(output));
         Assert.Single(Directory.GetFiles(_dir));
     }
+
+    private sealed class FailingStream : MemoryStream
+    {
+        public override void Write(ReadOnlySpan<byte> buffer) => throw new IOException("disk full");
+    }
+
+    private sealed class FailingReader(string first) : TextReader
+    {
+        private int _calls;
+
+        public override string? ReadLine() => Interlocked.Increment(ref _calls) == 1 ? first : throw new IOException("read error");
+    }
+
+    [Fact]
+    public void AFailureToWriteOrReadStopsEveryWorkerAndPassesTheErrorOn()
+    {
+        string scenes = RandomScenes.Lines(3, 600);
+        var run = new BatchSimulation(new(), new(), 2, TextWriter.Null);
+        var written = Assert.Throws<IOException>(() => run.Run(new StringReader(scenes), "in.jsonl", 600, new FailingStream()));
+        Assert.Equal("disk full", written.Message);
+        var read = Assert.Throws<IOException>(() => new BatchSimulation(new(), new(), 2, TextWriter.Null).Run(new FailingReader(scenes.Split('\n')[0]), "in.jsonl", 2, new MemoryStream()));
+        Assert.Equal("read error", read.Message);
+    }
 }
