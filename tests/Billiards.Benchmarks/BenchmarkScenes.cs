@@ -41,7 +41,8 @@ public static class BenchmarkScenes
             }
             balls.Add(new BallSetup(new BallId(i), position, velocity, spin));
         }
-        var physics = PhysicsConfig.Default with { Model = ModelRegistry.Get(model), Integrator = integrator };
+        var physicsModel = ModelRegistry.Get(model);
+        var physics = PhysicsConfig.Default with { Model = physicsModel, Integrator = ModelRegistry.FindIntegrator(physicsModel, integrator)! };
         return new Scene("benchmark", $"{total} balls, {moving} moving", table, physics, null, balls, null, null);
     }
 }

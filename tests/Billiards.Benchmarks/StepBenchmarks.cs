@@ -31,7 +31,7 @@ public class StepBenchmarks
         // A name is the thesis model or one of the default model's integrators.
         var thesis = ModelRegistry.Find(Model);
         string model = thesis?.Name ?? ModelRegistry.Default.Name;
-        string integrator = thesis?.Integrators[0] ?? Model;
+        string integrator = thesis?.Integrators[0].Name ?? Model;
         _moving = SimulationFactory.Create(BenchmarkScenes.Grid(16, MovingBalls, model, integrator));
         _idle = SimulationFactory.Create(BenchmarkScenes.Grid(16, 0, model, integrator));
     }

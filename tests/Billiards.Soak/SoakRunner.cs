@@ -21,7 +21,7 @@ public sealed record SoakOptions(string Model, string Integrator, double Dt, lon
             string v = args[i + 1];
             o = args[i] switch
             {
-                "--model" => ModelRegistry.Find(v) is { } m ? o with { Model = v, Integrator = m.Integrators[0] } : null!,
+                "--model" => ModelRegistry.Find(v) is { } m ? o with { Model = v, Integrator = m.Integrators[0].Name } : null!,
                 "--integrator" => o with { Integrator = v },
                 "--dt" => o with { Dt = double.Parse(v, CultureInfo.InvariantCulture) },
                 "--shots" => o with { Shots = long.Parse(v, CultureInfo.InvariantCulture) },
@@ -35,7 +35,7 @@ public sealed record SoakOptions(string Model, string Integrator, double Dt, lon
                 return null;
             }
         }
-        if (args.Length % 2 != 0 || ModelRegistry.Find(o.Model) is not { } model || !model.Integrators.Contains(o.Integrator))
+        if (args.Length % 2 != 0 || ModelRegistry.Find(o.Model) is not { } model || ModelRegistry.FindIntegrator(model, o.Integrator) is null)
         {
             return null;
         }
@@ -121,7 +121,7 @@ public sealed class SoakRunner(SoakOptions options)
         // The default model is soaked on every pool table, another model on its own table.
         var model = ModelRegistry.Get(options.Model);
         var table = TableSpec.FromPreset(model == ModelRegistry.Default ? Presets[random.Next(Presets.Length)] : model.DefaultTablePreset);
-        var physics = PhysicsConfig.Default with { Model = model, Integrator = options.Integrator, Dt = options.Dt };
+        var physics = PhysicsConfig.Default with { Model = model, Integrator = ModelRegistry.FindIntegrator(model, options.Integrator)!, Dt = options.Dt };
         double r = model.BallRadius(physics.Params);
         var balls = new List<BallSetup>();
         RackSpec? rack = null;

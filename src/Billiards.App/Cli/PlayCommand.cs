@@ -57,6 +57,14 @@ public static class PlayCommand
         var gameRules = ParseRules(options?.Rules);
         string path = scenePath ?? (gameRules is { } chosen ? FindRulesScene(chosen) : FindDefaultScene());
         var scene = SceneLoader.Load(path);
+        // The start menu's physics choice, remembered between runs, makes the games it starts.
+        bool startMenu = options?.StartMenu == true && options.Script is null && options.Stats is null && options.Record is null;
+        string settingsPath = options?.SettingsPath ?? GameSettings.DefaultPath();
+        var settings = startMenu ? GameSettings.Load(settingsPath, Console.Error) : GameSettings.Default;
+        if (startMenu)
+        {
+            scene = settings.Apply(scene);
+        }
         var script = options?.Script is { } scriptPath ? InputScript.Load(scriptPath) : null;
         string? statsPath = options?.Stats is { } s ? OutputFiles.Check("--stats", s, ".json") : null;
         string? recordPath = options?.Record is { } r ? OutputFiles.Check("--record", r, ".json") : null;
@@ -107,9 +115,10 @@ public static class PlayCommand
         {
             scripted.Raised += (e, _) => stats.InputRaised(e, e.Time + scripted.Waited);
         }
-        if (options?.StartMenu == true && script is null && statsPath is null && recordPath is null)
+        if (startMenu)
         {
-            RunWithStartMenu(host, platform, scene2 => new GameHost(scene2.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, scene2.Match), audio);
+            host.World.Menu.StartSettings = host.World.Menu.PlayedSettings = settings;
+            RunWithStartMenu(host, platform, scene2 => new GameHost(scene2.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, scene2.Match), audio, settingsPath);
         }
         else
         {
@@ -131,11 +140,11 @@ public static class PlayCommand
 
     // The start menu shows over the default game; a different choice replaces the game (a new host
     // on the same window) between two frames.
-    private static void RunWithStartMenu(GameHost first, GamePlatform platform, Func<(Scene Scene, MatchSetup Match), GameHost> create, IAudioOutput audio)
+    private static void RunWithStartMenu(GameHost first, GamePlatform platform, Func<(Scene Scene, MatchSetup Match), GameHost> create, IAudioOutput audio, string settingsPath)
     {
         var current = first;
-        (GameRules Rules, MatchPlayer[] Players)? pending = null;
-        void Listen(GameHost h) => h.World.Menu.StartRequested += (rules, players) => pending = (rules, players);
+        (GameRules Rules, MatchPlayer[] Players, GameSettings Settings)? pending = null;
+        void Listen(GameHost h) => h.World.Menu.StartRequested += (rules, players) => pending = (rules, players, h.World.Menu.StartSettings);
         Listen(first);
         first.World.Menu.ShowStart();
         try
@@ -145,13 +154,15 @@ public static class PlayCommand
                 if (pending is { } next)
                 {
                     pending = null;
-                    var chosen = SceneLoader.Load(FindRulesScene(next.Rules));
+                    next.Settings.Save(settingsPath, Console.Error);
+                    var chosen = next.Settings.Apply(SceneLoader.Load(FindRulesScene(next.Rules)));
                     if (current != first)
                     {
                         current.Dispose();
                     }
                     current = create((chosen, new MatchSetup(next.Rules, next.Players)));
                     current.Tree.Root.AddChild(new AudioNode(audio));
+                    current.World.Menu.StartSettings = current.World.Menu.PlayedSettings = next.Settings;
                     Listen(current);
                 }
                 platform.Renderer.Draw(current.RunFrame());
@@ -216,6 +227,9 @@ public static class PlayCommand
 
         /// <summary>Open with the start menu (plain <c>play</c>: no scene, game, players, script, stats or record given).</summary>
         public bool StartMenu { get; init; }
+
+        /// <summary>The start menu's settings file, or null for the user's (<see cref="GameSettings.DefaultPath"/>).</summary>
+        public string? SettingsPath { get; init; }
     }
 
     private static GameRules? ParseRules(string? name)

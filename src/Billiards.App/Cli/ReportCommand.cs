@@ -5,11 +5,14 @@ using Billiards.App.Reports;
 
 namespace Billiards.App.Cli;
 
-/// <summary><c>report accuracy [--out DIR]</c>: the error-against-run-time report (CSV, SVG plot, Markdown summary).</summary>
+/// <summary>
+/// <c>report accuracy [--out DIR]</c>: the error-against-run-time report (CSV, SVG plot, Markdown
+/// summary) with its cushion page; <c>report cushions [--out DIR]</c>: the cushion page alone.
+/// </summary>
 public static class ReportCommand
 {
     /// <summary>The files the report writes into its folder.</summary>
-    public static IReadOnlyList<string> FileNames { get; } = ["accuracy.csv", "accuracy.svg", "accuracy.md"];
+    public static IReadOnlyList<string> FileNames { get; } = ["accuracy.csv", "accuracy.svg", "accuracy.md", .. CushionReport.FileNames];
 
     /// <summary>Builds the verb.</summary>
     public static Command Create(TextWriter stdout, TextWriter stderr)
@@ -45,12 +48,25 @@ public static class ReportCommand
                 Encoding.UTF8.GetBytes(AccuracyReport.ToCsv(rows)),
                 Encoding.UTF8.GetBytes(AccuracyReport.ToSvg(rows)),
                 Encoding.UTF8.GetBytes(summary),
+                .. CushionReport.Files().Select(f => f.Bytes),
             ];
             Directory.CreateDirectory(dir);
             OutputFiles.WriteAll([.. FileNames.Select((name, i) => (Path.Combine(dir, name), contents[i]))]);
             stdout.Write(summary);
             return 0;
         });
-        return new Command("report", "Reports about the physics.") { accuracy };
+
+        var cushionOutput = new Option<string>("--out") { Description = "Folder for cushions.md and its plots.", DefaultValueFactory = _ => "out/accuracy" };
+        var cushions = new Command("cushions", "Draw the cushion models' rebounds side by side (the accuracy report's cushion page).") { cushionOutput };
+        cushions.SetAction(parse =>
+        {
+            string dir = OutputFiles.CheckFolder("--out", parse.GetValue(cushionOutput)!, [.. CushionReport.FileNames]);
+            var files = CushionReport.Files();
+            Directory.CreateDirectory(dir);
+            OutputFiles.WriteAll([.. files.Select(f => (Path.Combine(dir, f.Name), f.Bytes))]);
+            stdout.WriteLine(string.Join(" ", files.Select(f => Path.Combine(dir, f.Name))));
+            return 0;
+        });
+        return new Command("report", "Reports about the physics.") { accuracy, cushions };
     }
 }

@@ -52,7 +52,7 @@ public static class SuggestCommand
             {
                 throw new SceneException(loaded.Path, "$.balls", "no object ball to play");
             }
-            var planner = new ShotPlanner(loaded.Table, loaded.Physics.Params);
+            var planner = new ShotPlanner(loaded.Table, loaded.Physics.Params, loaded.Physics.Models);
             var decision = planner.Decide(state, position, SkillLevel.Of(levelValue), new PlannerBudget(budgetValue), 1);
             stdout.WriteLine(Encoding.UTF8.GetString(ToUtf8(decision)));
             return 0;

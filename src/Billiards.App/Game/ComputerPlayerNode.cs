@@ -60,7 +60,7 @@ public sealed class ComputerPlayerNode : Node
         _match = GetInTree<MatchNode>();
         _physics = GetInTree<PhysicsNode>();
         _keys = FindInTree<SystemKeysNode>();
-        _planner = new ShotPlanner(_physics.Table, _physics.Params);
+        _planner = new ShotPlanner(_physics.Table, _physics.Params, _physics.Models);
     }
 
     /// <inheritdoc />

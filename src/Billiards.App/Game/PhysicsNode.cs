@@ -110,6 +110,9 @@ public sealed class PhysicsNode : Node
     /// <summary>The scene's physics parameters (the computer player plans with them).</summary>
     public PhysicsParams Params => _scene.Physics.Params;
 
+    /// <summary>The collision models of the scene's physics (the computer plans with them).</summary>
+    public Core.Physics.Collisions.InteractionModels Models => _scene.Physics.Models;
+
     /// <summary>Ball radius of the scene's model (m).</summary>
     public double BallRadius => _simulation.BallRadius;
 

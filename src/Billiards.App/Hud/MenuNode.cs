@@ -4,6 +4,7 @@ using Billiards.App.Input;
 using Billiards.App.Nodes;
 using Billiards.App.Platform;
 using Billiards.App.Rendering;
+using Billiards.Core.Physics;
 using Billiards.Core.Rules;
 
 namespace Billiards.App.Hud;
@@ -54,6 +55,12 @@ public sealed class MenuNode : Node
     /// <summary>The start menu's opponent: a computer level, or null for a person.</summary>
     public int? StartOpponent { get; private set; } = 3;
 
+    /// <summary>The start menu's physics (cushion model and cloth); the game behind the menu was made with <see cref="PlayedSettings"/>.</summary>
+    public GameSettings StartSettings { get; set; } = GameSettings.Default;
+
+    /// <summary>The physics of the game behind the menu.</summary>
+    public GameSettings PlayedSettings { get; set; } = GameSettings.Default;
+
     /// <summary>Opens the start menu (the game paused behind it).</summary>
     public void ShowStart()
     {
@@ -69,7 +76,7 @@ public sealed class MenuNode : Node
     private void Begin()
     {
         Resume();
-        if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman)
+        if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings == PlayedSettings)
         {
             return; // the game behind the menu is the one chosen
         }
@@ -209,7 +216,7 @@ public sealed class MenuNode : Node
         switch (Page)
         {
             case MenuPage.Start:
-                title = "New game: the game, the opponent (a person or the computer's level), Start";
+                title = "New game: the game, the opponent (a person or the computer's level), the physics (cushion, cloth), Start";
                 foreach (var game in Ruleset.All.Select(r => r.Game))
                 {
                     items.Add((Mark(game.ToName(), StartGame == game), () => StartGame = game));
@@ -221,6 +228,8 @@ public sealed class MenuNode : Node
                     opponents.Add((Mark($"level {l}", StartOpponent == l), () => StartOpponent = l));
                 }
                 rows.Add(opponents);
+                rows.Add([.. ModelRegistry.BallCushionModels.Select(m => (Mark($"Physics: {m.Name}", StartSettings.Cushion == m), (Action)(() => StartSettings = StartSettings with { Cushion = m })))]);
+                rows.Add([.. Cloth.All.Select(c => (Mark($"{c.Name} cloth", StartSettings.Cloth == c), (Action)(() => StartSettings = StartSettings with { Cloth = c })))]);
                 rows.Add([("Start [Enter]", Begin)]);
                 // Below the HUD panel, whose lines reach about 0.4 of the height at the start.
                 y = height * 0.5f;

@@ -8,19 +8,28 @@ namespace Billiards.App.Reports;
 
 /// <summary>One measured configuration: a scene run by one model and integrator at one step.</summary>
 /// <param name="Scene">Scene file name.</param>
-/// <param name="Model">The model's name (<see cref="ModelRegistry"/>).</param>
-/// <param name="Integrator">"exact", "euler", "event" or "fixed".</param>
+/// <param name="Model">The model (<see cref="ModelRegistry"/>).</param>
+/// <param name="Integrator">One of the model's integrators.</param>
 /// <param name="Dt">Fixed step (s); the event solver's row carries the scene's dt but does not use it.</param>
 /// <param name="MaxError">Largest final-position distance of any ball from the event solver's (m).</param>
 /// <param name="MedianMicroseconds">Median wall time of one shot, strike to rest (µs).</param>
-public sealed record AccuracyRow(string Scene, string Model, string Integrator, double Dt, double MaxError, double MedianMicroseconds)
+public sealed record AccuracyRow(string Scene, PhysicsModel Model, IIntegrator Integrator, double Dt, double MaxError, double MedianMicroseconds)
 {
     /// <summary>The series this row belongs to in the plot: "exact", "euler", "event" or "thesis".</summary>
     public string Series => SeriesOf(Model, Integrator);
 
     /// <summary>A model's integrator is its series; a model with one integrator is a series of its own (the thesis model's error is model error).</summary>
-    public static string SeriesOf(string model, string integrator) =>
-        ModelRegistry.Get(model).Integrators.Count > 1 ? integrator : model;
+    public static string SeriesOf(PhysicsModel model, IIntegrator integrator)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        ArgumentNullException.ThrowIfNull(integrator);
+        return IsModelSeries(model) ? model.Name : integrator.Name;
+    }
+
+    /// <summary>Where the series stands in tables and plots: exact contacts, approximations, models of their own, the reference last.</summary>
+    public int Rank => Integrator.IsReference ? 3 : IsModelSeries(Model) ? 2 : Integrator.Order > 0 ? 1 : 0;
+
+    private static bool IsModelSeries(PhysicsModel model) => model.Integrators.Count == 1;
 }
 
 /// <summary>
@@ -50,13 +59,13 @@ public static class AccuracyReport
         foreach (string path in scenePaths)
         {
             string name = Path.GetFileNameWithoutExtension(path);
-            var reference = SceneLoader.Load(path, new SceneOverrides(ModelRegistry.Standard.Name, Integrators.Event));
+            var reference = SceneLoader.Load(path, new SceneOverrides(ModelRegistry.Standard.Name, ModelRegistry.Event.Name));
             var (truth, eventMicros) = TimeShot(reference, minRepeats, minTotalMilliseconds);
-            rows.Add(new AccuracyRow(name, ModelRegistry.Standard.Name, Integrators.Event, reference.Physics.Dt, 0, eventMicros));
-            Report(progress, ++done, total, name, "event", null, 0, eventMicros);
+            rows.Add(new AccuracyRow(name, ModelRegistry.Standard, ModelRegistry.Event, reference.Physics.Dt, 0, eventMicros));
+            Report(progress, ++done, total, name, ModelRegistry.Event.Name, null, 0, eventMicros);
             foreach (var (model, integrator, dt) in configs)
             {
-                var scene = SceneLoader.Load(path, new SceneOverrides(model, integrator, dt));
+                var scene = SceneLoader.Load(path, new SceneOverrides(model.Name, integrator.Name, dt));
                 var (final, micros) = TimeShot(scene, minRepeats, minTotalMilliseconds);
                 double error = MaxDistance(final, truth);
                 rows.Add(new AccuracyRow(name, model, integrator, dt, error, micros));
@@ -80,22 +89,24 @@ public static class AccuracyReport
             {
                 throw new SceneException(path, "$", "the accuracy report measures a shot, and the scene has no \"shot\"");
             }
-            SceneLoader.Load(path, new SceneOverrides(ModelRegistry.Standard.Name, Integrators.Event));
+            SceneLoader.Load(path, new SceneOverrides(ModelRegistry.Standard.Name, ModelRegistry.Event.Name));
             foreach (var (model, integrator, dt) in Configurations())
             {
-                SceneLoader.Load(path, new SceneOverrides(model, integrator, dt));
+                SceneLoader.Load(path, new SceneOverrides(model.Name, integrator.Name, dt));
             }
         }
     }
 
-    private static List<(string Model, string Integrator, double Dt)> Configurations()
+    // Every model's every integrator at every step, but the reference, which is run once per scene.
+    private static List<(PhysicsModel Model, IIntegrator Integrator, double Dt)> Configurations()
     {
-        var configs = new List<(string Model, string Integrator, double Dt)>();
+        var configs = new List<(PhysicsModel Model, IIntegrator Integrator, double Dt)>();
         foreach (double dt in Steps)
         {
-            configs.Add((ModelRegistry.Standard.Name, Integrators.Exact, dt));
-            configs.Add((ModelRegistry.Standard.Name, Integrators.Euler, dt));
-            configs.Add((ModelRegistry.Thesis.Name, ModelRegistry.Thesis.Integrators[0], dt));
+            foreach (var model in ModelRegistry.All)
+            {
+                configs.AddRange(model.Integrators.Where(i => !i.IsReference).Select(i => (model, i, dt)));
+            }
         }
         return configs;
     }
@@ -184,7 +195,7 @@ public static class AccuracyReport
     public static Dictionary<string, List<SeriesPoint>> Series(IEnumerable<AccuracyRow> rows) =>
         rows.GroupBy(r => r.Series).ToDictionary(
             g => g.Key,
-            g => g.GroupBy(r => r.Series == Integrators.Event ? 0 : r.Dt)
+            g => g.GroupBy(r => r.Integrator.IsReference ? 0 : r.Dt)
                   .Select(s => new SeriesPoint(s.Key, s.Max(r => r.MaxError), Median([.. s.Select(r => r.MaxError)]), s.Average(r => r.MedianMicroseconds)))
                   .OrderByDescending(s => s.Dt).ToList());
 
@@ -194,7 +205,7 @@ public static class AccuracyReport
         var sb = new StringBuilder("scene,model,integrator,dt_s,steps_per_s,max_error_m,median_us\n");
         foreach (var r in rows)
         {
-            sb.Append(CultureInfo.InvariantCulture, $"{r.Scene},{r.Model},{r.Integrator},{r.Dt:R},{Math.Round(1 / r.Dt)},{r.MaxError:R},{r.MedianMicroseconds:0.###}\n");
+            sb.Append(CultureInfo.InvariantCulture, $"{r.Scene},{r.Model.Name},{r.Integrator.Name},{r.Dt:R},{Math.Round(1 / r.Dt)},{r.MaxError:R},{r.MedianMicroseconds:0.###}\n");
         }
         return sb.ToString();
     }
@@ -207,46 +218,57 @@ public static class AccuracyReport
         var inv = CultureInfo.InvariantCulture;
         sb.Append(inv, $"# Accuracy report: error against run time\n\n");
         sb.Append(inv, $"{sceneCount} scenes of `assets/scenes/accuracy`, each run from the strike to rest. Error: the largest final-position distance of any ball from the event-based reference solver (m), per scene; the table gives the worst and the median scene, the plot the median (a typical shot: the worst is a near-chaotic combination). Time: the median wall time of one shot after warm-up (µs), averaged over the suite. Made by `billiards report accuracy`.\n\n");
+        sb.Append("The cushion models side by side (rebound angle and speed against the incoming angle): [cushions.md](cushions.md).\n\n");
         sb.Append("| series | dt (s) | worst error (m) | median error (m) | mean time per shot (µs) |\n|---|---|---|---|---|\n");
-        foreach (var name in new[] { Integrators.Exact, Integrators.Euler, ModelRegistry.Thesis.Name, Integrators.Event }.Where(series.ContainsKey))
+        var reference = Pick(rows, r => r.Integrator.IsReference);
+        foreach (var name in Ordered(rows))
         {
             foreach (var p in series[name])
             {
-                string dt = name == "event" ? "events" : $"1/{Math.Round(1 / p.Dt)}";
+                string dt = name == reference ? "events" : $"1/{Math.Round(1 / p.Dt)}";
                 sb.Append(inv, $"| {name} | {dt} | {p.MaxError:0.00e+00} | {p.MedianError:0.00e+00} | {p.MeanMicroseconds:0.0} |\n");
             }
         }
-        if (series.TryGetValue("euler", out var euler))
+        if (Pick(rows, r => r.Integrator.Order > 0) is { } approximate)
         {
+            var euler = series[approximate];
             double all = ObservedOrder(euler.Select(p => (p.Dt, p.MaxError)));
-            var perScene = rows.Where(r => r.Series == Integrators.Euler).GroupBy(r => r.Scene)
+            var perScene = rows.Where(r => r.Series == approximate).GroupBy(r => r.Scene)
                 .Select(g => (Scene: g.Key, All: ObservedOrder(g.Select(r => (r.Dt, r.MaxError))),
                               Fine: ObservedOrder(g.Where(r => r.Dt <= 1.0 / 250 + 1e-15).Select(r => (r.Dt, r.MaxError)))))
                 .OrderBy(x => x.Scene, StringComparer.Ordinal).ToList();
             double medianAll = Median(perScene.Select(x => x.All).Where(double.IsFinite).ToList());
             double medianFine = Median(perScene.Select(x => x.Fine).Where(double.IsFinite).ToList());
-            sb.Append(inv, $"\n**Observed order of `euler`:** {medianAll:0.00} (median over the scenes of the least-squares slope of log error against log dt; {medianFine:0.00} over dt <= 1/250); 1 is first order. Fitted to the suite's worst error instead: {all:0.00}.\n\n");
-            sb.Append("| scene | order of `euler`, every dt | order, dt <= 1/250 |\n|---|---|---|\n");
+            sb.Append(inv, $"\n**Observed order of `{approximate}`:** {medianAll:0.00} (median over the scenes of the least-squares slope of log error against log dt; {medianFine:0.00} over dt <= 1/250); 1 is first order. Fitted to the suite's worst error instead: {all:0.00}.\n\n");
+            sb.Append(inv, $"| scene | order of `{approximate}`, every dt | order, dt <= 1/250 |\n|---|---|---|\n");
             foreach (var (scene, o, fine) in perScene)
             {
                 sb.Append(inv, $"| {scene} | {o:0.00} | {fine:0.00} |\n");
             }
         }
-        if (series.TryGetValue("exact", out var exact))
+        string? exactName = Pick(rows, r => r.Rank == 0 && r.Integrator.ExactContacts);
+        if (exactName is not null && reference is not null)
         {
-            sb.Append(inv, $"\n**`exact` against `event`:** the largest difference at any step is {exact.Max(p => p.MaxError):0.00e+00} m.\n");
-        }
-        if (series.TryGetValue("event", out var ev) && exact is not null)
-        {
+            var exact = series[exactName];
+            sb.Append(inv, $"\n**`{exactName}` against `{reference}`:** the largest difference at any step is {exact.Max(p => p.MaxError):0.00e+00} m.\n");
+            var ev = series[reference];
             var at250 = exact.MinBy(p => Math.Abs(p.Dt - 1.0 / 250))!;
-            sb.Append(inv, $"\n**Cost of `event`:** {ev[0].MeanMicroseconds:0.0} µs per shot, {ev[0].MeanMicroseconds / at250.MeanMicroseconds:0.00} times `exact` at dt = 1/250 ({at250.MeanMicroseconds:0.0} µs).\n");
+            sb.Append(inv, $"\n**Cost of `{reference}`:** {ev[0].MeanMicroseconds:0.0} µs per shot, {ev[0].MeanMicroseconds / at250.MeanMicroseconds:0.00} times `{exactName}` at dt = 1/250 ({at250.MeanMicroseconds:0.0} µs).\n");
         }
-        if (series.TryGetValue(ModelRegistry.Thesis.Name, out var thesis))
+        foreach (var model in Ordered(rows).Where(n => rows.First(r => r.Series == n).Rank == 2))
         {
-            sb.Append(inv, $"\n**`thesis`** is the seed's model, not an integrator of the standard one: its error ({thesis.Min(p => p.MaxError):0.00} to {thesis.Max(p => p.MaxError):0.00} m) is model error and does not vanish as dt shrinks.\n");
+            var points = series[model];
+            sb.Append(inv, $"\n**`{model}`** is a model of its own, not an integrator of the standard one: its error ({points.Min(p => p.MaxError):0.00} to {points.Max(p => p.MaxError):0.00} m) is model error and does not vanish as dt shrinks.\n");
         }
         return sb.ToString();
     }
+
+    // The series in the order of the table and the plot (by rank, then name).
+    private static List<string> Ordered(IEnumerable<AccuracyRow> rows) =>
+        [.. rows.GroupBy(r => r.Series).OrderBy(g => g.First().Rank).ThenBy(g => g.Key, StringComparer.Ordinal).Select(g => g.Key)];
+
+    // The first series whose rows fit, or null.
+    private static string? Pick(IEnumerable<AccuracyRow> rows, Func<AccuracyRow, bool> fits) => rows.FirstOrDefault(fits)?.Series;
 
     /// <summary>A log-log work-precision diagram (error against run time), one line per series, as SVG.</summary>
     public static string ToSvg(IReadOnlyList<AccuracyRow> rows)
@@ -278,15 +300,16 @@ public static class AccuracyReport
         sb.Append(inv, $"<text transform=\"translate(22 {(T + H - B) / 2}) rotate(-90)\" text-anchor=\"middle\">median final-position error vs event (m, log)</text>\n");
         string[] colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd"];
         int k = 0;
-        foreach (var name in new[] { Integrators.Exact, Integrators.Euler, ModelRegistry.Thesis.Name, Integrators.Event }.Where(series.ContainsKey))
+        var reference = Pick(rows, r => r.Integrator.IsReference);
+        foreach (var name in Ordered(rows))
         {
-            string c = colours[k];
+            string c = colours[k % colours.Length];
             var s = series[name];
             string poly = string.Join(" ", s.Select(p => string.Create(inv, $"{X(p.MeanMicroseconds):0.#},{Y(p.MedianError):0.#}")));
             sb.Append(inv, $"<polyline points=\"{poly}\" fill=\"none\" stroke=\"{c}\" stroke-width=\"2\"/>\n");
             foreach (var p in s)
             {
-                string label = name == "event" ? "event" : $"1/{Math.Round(1 / p.Dt)}";
+                string label = name == reference ? name : $"1/{Math.Round(1 / p.Dt)}";
                 sb.Append(inv, $"<circle cx=\"{X(p.MeanMicroseconds):0.#}\" cy=\"{Y(p.MedianError):0.#}\" r=\"4.5\" fill=\"{c}\"><title>{name} {label}: median {p.MedianError:0.00e+00} m, worst {p.MaxError:0.00e+00} m, {p.MeanMicroseconds:0.0} µs</title></circle>\n");
             }
             double ly = T + 20 + 22 * k;

@@ -63,11 +63,14 @@ public sealed class ShotPlanner
         [(0, 0, 0), (0, 0.4, 0), (0, -0.45, 0), (0.3, 0.1, 0), (-0.3, 0.1, 0), (0, -0.5, 8),
          (0, 0.2, 0), (0, -0.25, 0), (0.3, -0.3, 0), (-0.3, -0.3, 0)];
 
-    /// <summary>A planner for games on <paramref name="table"/> with balls of <paramref name="physics"/> (simulated with the standard model).</summary>
-    public ShotPlanner(TableSpec table, PhysicsParams physics)
+    /// <summary>
+    /// A planner for games on <paramref name="table"/> with balls of <paramref name="physics"/>,
+    /// simulated with the standard model and the game's collision models (the defaults when null).
+    /// </summary>
+    public ShotPlanner(TableSpec table, PhysicsParams physics, Physics.Collisions.InteractionModels? models = null)
     {
         Table = new PlannerTable(table, physics);
-        PhysicsConfig = TablePosition.PlannerPhysics(physics);
+        PhysicsConfig = TablePosition.PlannerPhysics(physics, models);
         Model = new StandardTableModel(table, PhysicsConfig);
     }
 

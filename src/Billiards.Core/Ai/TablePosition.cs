@@ -131,9 +131,9 @@ public sealed class TablePosition
         return model.CreateSimulation(Scene(model.Table, model.Physics));
     }
 
-    /// <summary>The physics the planner simulates with: the standard model's event integrator and <paramref name="physics"/>.</summary>
-    public static PhysicsConfig PlannerPhysics(PhysicsParams physics) =>
-        new(ModelRegistry.Standard, Integrators.Event, PhysicsConfig.DefaultDt, physics);
+    /// <summary>The physics the planner simulates with: the standard model's event integrator, <paramref name="physics"/> and the collision models (the defaults when null).</summary>
+    public static PhysicsConfig PlannerPhysics(PhysicsParams physics, Physics.Collisions.InteractionModels? models = null) =>
+        new(ModelRegistry.Standard, ModelRegistry.Event, PhysicsConfig.DefaultDt, physics) { Models = models ?? Physics.Collisions.InteractionModels.Default };
 
     private Scene Scene(TableSpec table, PhysicsConfig physics)
     {

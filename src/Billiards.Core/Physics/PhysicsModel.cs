@@ -21,8 +21,11 @@ public abstract class PhysicsModel
     /// <summary>The model's name in scene and result files.</summary>
     public abstract string Name { get; }
 
-    /// <summary>The integrators the model accepts, by the names scenes use; the first is its default.</summary>
-    public abstract IReadOnlyList<string> Integrators { get; }
+    /// <summary>The integrators the model accepts; the first is its default.</summary>
+    public abstract IReadOnlyList<IIntegrator> Integrators { get; }
+
+    /// <summary>True when the model takes a resolver per interaction (<see cref="PhysicsConfig.Models"/>).</summary>
+    public virtual bool TakesInteractionModels => false;
 
     /// <summary>The table preset of a scene that names none.</summary>
     public abstract string DefaultTablePreset { get; }

@@ -26,6 +26,10 @@ public enum BallBallFriction
 /// <param name="G">Gravity (m/s^2). Symbol "g".</param>
 /// <param name="CueMass">Cue mass M (kg). Symbol "M".</param>
 /// <param name="CueEndMass">Cue end mass m_e for squirt (kg). Symbol "m_e".</param>
+/// <param name="OmegaRatio">
+/// Stronge's compliant cushion: the ratio omega_t / omega_n of the contact's tangential and normal
+/// frequencies, in the open interval (1, 2); pooltool's default 1.8. Symbol "omega_ratio".
+/// </param>
 public sealed record PhysicsParams(
     double M = PhysicsParams.DefaultMass,
     double R = PhysicsParams.DefaultRadius,
@@ -39,7 +43,8 @@ public sealed record PhysicsParams(
     double FC = 0.2,
     double G = 9.81,
     double CueMass = 0.567,
-    double CueEndMass = PhysicsParams.DefaultMass / 30)
+    double CueEndMass = PhysicsParams.DefaultMass / 30,
+    double OmegaRatio = 1.8)
 {
     /// <summary>Default ball mass (kg).</summary>
     public const double DefaultMass = 0.170097;
@@ -52,7 +57,7 @@ public sealed record PhysicsParams(
 
     /// <summary>The symbol names a scene may override, in the order of the doc's table.</summary>
     public static IReadOnlyList<string> Symbols { get; } =
-        ["m", "R", "mu_s", "mu_r", "mu_sp", "mu_b", "e_b", "e_c", "f_c", "g", "M", "m_e"];
+        ["m", "R", "mu_s", "mu_r", "mu_sp", "mu_b", "e_b", "e_c", "f_c", "g", "M", "m_e", "omega_ratio"];
 
     /// <summary>Moment of inertia of a solid ball, 2/5 m R^2 (kg m^2).</summary>
     public double Inertia => 0.4 * M * R * R;

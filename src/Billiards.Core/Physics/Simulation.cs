@@ -14,11 +14,11 @@ public abstract partial class Simulation
 {
     /// <summary>Creates the common part of a simulation.</summary>
     /// <param name="model">The model's name as results write it (<see cref="PhysicsModel.Name"/>).</param>
-    /// <param name="integrator">The integrator's name as results write it.</param>
+    /// <param name="integrator">The integrator (one of the model's <see cref="PhysicsModel.Integrators"/>).</param>
     /// <param name="dt">Fixed step (s).</param>
     /// <param name="table">The table.</param>
     /// <param name="ids">Ids of the balls, in the order of <see cref="Balls"/>.</param>
-    protected Simulation(string model, string integrator, double dt, TableSpec table, IReadOnlyList<BallId> ids)
+    protected Simulation(string model, IIntegrator integrator, double dt, TableSpec table, IReadOnlyList<BallId> ids)
     {
         Model = model;
         Integrator = integrator;
@@ -30,8 +30,11 @@ public abstract partial class Simulation
     /// <summary>The model's name as results write it (<see cref="PhysicsModel.Name"/>).</summary>
     public string Model { get; }
 
-    /// <summary>The integrator: "fixed" (thesis), "exact", "euler" or "event".</summary>
-    public string Integrator { get; }
+    /// <summary>The integrator (one of the model's <see cref="PhysicsModel.Integrators"/>).</summary>
+    public IIntegrator Integrator { get; }
+
+    /// <summary>The resolver of each interaction, for the models that take them (the standard model), else null.</summary>
+    public virtual Collisions.InteractionModels? Models => null;
 
     /// <summary>The fixed step (s).</summary>
     public double Dt { get; }

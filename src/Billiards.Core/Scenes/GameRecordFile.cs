@@ -164,7 +164,7 @@ public static class GameRecordFile
     {
         w.WriteStartObject("physics");
         w.WriteString("model", physics.Model.Name);
-        w.WriteString("integrator", physics.Integrator);
+        w.WriteString("integrator", physics.Integrator.Name);
         w.WriteNumber("dt", physics.Dt);
         // Every model's record carries the parameters: a model that keeps its own constants ignores them.
         var p = physics.Params;
@@ -188,7 +188,12 @@ public static class GameRecordFile
         w.WriteNumber("g", p.G);
         w.WriteNumber("M", p.CueMass);
         w.WriteNumber("m_e", p.CueEndMass);
+        w.WriteNumber("omega_ratio", p.OmegaRatio);
         w.WriteEndObject();
+        if (physics.Model.TakesInteractionModels)
+        {
+            ResultWriter.WriteModels(w, physics.Models);
+        }
         w.WriteEndObject();
     }
 

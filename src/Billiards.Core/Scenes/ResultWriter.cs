@@ -2,6 +2,7 @@ using System.Text.Json;
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
+using Billiards.Core.Physics.Collisions;
 
 namespace Billiards.Core.Scenes;
 
@@ -33,8 +34,12 @@ public static class ResultWriter
         w.WriteStartObject();
         w.WriteString("format", Format);
         w.WriteString("model", sim.Model);
-        w.WriteString("integrator", sim.Integrator);
+        w.WriteString("integrator", sim.Integrator.Name);
         w.WriteNumber("dt", sim.Dt);
+        if (sim.Models is { } models)
+        {
+            WriteModels(w, models);
+        }
         w.WriteNumber("t_end", sim.Time);
 
         w.WriteStartArray("balls");
@@ -128,6 +133,17 @@ public static class ResultWriter
             w.WritePropertyName("ruling");
             GameBlockWriter.WriteRuling(w, ruling);
         }
+        w.WriteEndObject();
+    }
+
+    /// <summary>The <c>"models"</c> object of scenes, results and game records: the resolver of each interaction by name.</summary>
+    public static void WriteModels(Utf8JsonWriter w, InteractionModels models)
+    {
+        ArgumentNullException.ThrowIfNull(w);
+        ArgumentNullException.ThrowIfNull(models);
+        w.WriteStartObject("models");
+        w.WriteString("ball_cushion", models.BallCushion.Name);
+        w.WriteString("ball_ball", models.BallBall.Name);
         w.WriteEndObject();
     }
 

@@ -2,6 +2,7 @@ using Billiards.Core.Balls;
 using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
+using Billiards.Core.Physics.Collisions;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
 
@@ -12,8 +13,11 @@ namespace Billiards.Core.Scenes;
 /// <param name="Integrator">One of the model's <see cref="PhysicsModel.Integrators"/>.</param>
 /// <param name="Dt">Fixed step (s); default 1/250.</param>
 /// <param name="Params">Parameters of the standard model (the thesis model keeps its own constants).</param>
-public sealed record PhysicsConfig(PhysicsModel Model, string Integrator, double Dt, PhysicsParams Params)
+public sealed record PhysicsConfig(PhysicsModel Model, IIntegrator Integrator, double Dt, PhysicsParams Params)
 {
+    /// <summary>The resolver of each interaction (<c>physics.models</c>; the standard model's only).</summary>
+    public InteractionModels Models { get; init; } = InteractionModels.Default;
+
     /// <summary>The default step, 1/250 s (the seed's rate).</summary>
     public const double DefaultDt = 1.0 / 250.0;
 
@@ -21,7 +25,10 @@ public sealed record PhysicsConfig(PhysicsModel Model, string Integrator, double
     public static PhysicsConfig Default { get; } = new(ModelRegistry.Default, ModelRegistry.Default.Integrators[0], DefaultDt, PhysicsParams.Default);
 }
 
-/// <summary>Names of the integrators (which model takes which: <see cref="PhysicsModel.Integrators"/>).</summary>
+/// <summary>
+/// The names scenes give the integrators. The integrators themselves are types, which a model lists
+/// (<see cref="PhysicsModel.Integrators"/>) and <see cref="ModelRegistry"/> finds by name.
+/// </summary>
 public static class Integrators
 {
     /// <summary>Closed-form motion with exact collision times inside fixed steps.</summary>

@@ -4,6 +4,7 @@ using Billiards.Core.Balls;
 using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
+using Billiards.Core.Physics.Collisions;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
 
@@ -173,7 +174,7 @@ public static class SceneLoader
 
         private PhysicsConfig ReadPhysics(JsonElement e, SceneOverrides overrides)
         {
-            var f = Object(e, "$.physics", "model", "integrator", "dt", "params");
+            var f = Object(e, "$.physics", "model", "integrator", "dt", "params", "models");
             var config = PhysicsConfig.Default;
             if (f.TryGetValue("model", out var m))
             {
@@ -183,7 +184,8 @@ public static class SceneLoader
             if (f.TryGetValue("integrator", out var i))
             {
                 var model = ModelRegistry.Find(overrides.Model) ?? config.Model;
-                config = config with { Integrator = OneOf(i, "$.physics.integrator", [.. model.Integrators]) };
+                string name = OneOf(i, "$.physics.integrator", [.. ModelRegistry.IntegratorNames(model)]);
+                config = config with { Integrator = ModelRegistry.FindIntegrator(model, name)! };
             }
             if (f.TryGetValue("dt", out var dt))
             {
@@ -193,7 +195,31 @@ public static class SceneLoader
             {
                 config = config with { Params = ReadParams(p) };
             }
-            return ApplyOverrides(config, overrides, "$.physics");
+            config = ApplyOverrides(config, overrides, "$.physics");
+            if (f.TryGetValue("models", out var ms))
+            {
+                if (!config.Model.TakesInteractionModels)
+                {
+                    throw Error("$.physics.models", $"model \"{config.Model}\" keeps its own collisions (\"models\" is for the standard model)");
+                }
+                config = config with { Models = ReadModels(ms) };
+            }
+            return config;
+        }
+
+        private InteractionModels ReadModels(JsonElement e)
+        {
+            var f = Object(e, "$.physics.models", "ball_cushion", "ball_ball");
+            var models = InteractionModels.Default;
+            if (f.TryGetValue("ball_cushion", out var c))
+            {
+                models = models with { BallCushion = ModelRegistry.FindBallCushion(OneOf(c, "$.physics.models.ball_cushion", [.. ModelRegistry.BallCushionNames]))! };
+            }
+            if (f.TryGetValue("ball_ball", out var b))
+            {
+                models = models with { BallBall = ModelRegistry.FindBallBall(OneOf(b, "$.physics.models.ball_ball", [.. ModelRegistry.BallBallNames]))! };
+            }
+            return models;
         }
 
         private PhysicsConfig ApplyOverrides(PhysicsConfig config, SceneOverrides o, string path)
@@ -201,7 +227,7 @@ public static class SceneLoader
             if (o.Model is not null)
             {
                 var model = ModelRegistry.Find(o.Model)
-                    ?? throw new SceneException("--model", "$", $"unknown model \"{o.Model}\" (expected one of {Quote(ModelRegistry.Names)})");
+                    ?? throw new SceneException("--model", "$", $"unknown model \"{o.Model}\" (expected one of {ModelRegistry.Quote(ModelRegistry.Names)})");
                 config = config with { Model = model };
                 if (!model.Integrators.Contains(config.Integrator))
                 {
@@ -210,11 +236,9 @@ public static class SceneLoader
             }
             if (o.Integrator is not null)
             {
-                if (!config.Model.Integrators.Contains(o.Integrator))
-                {
-                    throw new SceneException("--integrator", "$", $"integrator \"{o.Integrator}\" is not available for model \"{config.Model}\" (expected one of {Quote(config.Model.Integrators)})");
-                }
-                config = config with { Integrator = o.Integrator };
+                var integrator = ModelRegistry.FindIntegrator(config.Model, o.Integrator)
+                    ?? throw new SceneException("--integrator", "$", $"integrator \"{o.Integrator}\" is not available for model \"{config.Model}\" (expected one of {ModelRegistry.Quote(ModelRegistry.IntegratorNames(config.Model))})");
+                config = config with { Integrator = integrator };
             }
             if (o.Dt is { } dt)
             {
@@ -253,6 +277,17 @@ public static class SceneLoader
                 MuSp = Get("mu_sp", 0, 1, 4.0 / 9.0 * p.R),
                 CueEndMass = Get("m_e", 1e-4, 10, p.M / 30),
             };
+            if (f.TryGetValue("omega_ratio", out var omega))
+            {
+                // Stronge's tangential and normal frequencies: the open interval (1, 2), where the
+                // compliant contact sticks at most once (StrongeCompliant).
+                double ratio = Number(omega, "$.physics.params.omega_ratio", 1, 2);
+                if (ratio <= 1 || ratio >= 2)
+                {
+                    throw Error("$.physics.params.omega_ratio", string.Create(CultureInfo.InvariantCulture, $"{ratio} is out of range (1, 2): both ends excluded"));
+                }
+                p = p with { OmegaRatio = ratio };
+            }
             if (f.TryGetValue("mu_b", out var mb))
             {
                 if (mb.ValueKind == JsonValueKind.String)

@@ -20,7 +20,7 @@ internal sealed class FakeSimulation : Simulation
     private readonly BallState[] _initial;
 
     public FakeSimulation(Scene scene)
-        : base("fake", "fixed", scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
+        : base("fake", scene.Physics.Integrator, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
     {
         _initial = scene.Balls.Select(b => new BallState
         {

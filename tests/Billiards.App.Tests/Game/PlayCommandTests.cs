@@ -99,7 +99,8 @@ public class StartMenuTests
         var window = new FakeWindow { FramebufferSize = (1280, 720) };
         var renderer = new RecordingRenderer();
         var loop = new ClickingLoop(clock, window, renderer, ["nine-ball", "person", "Start"]);
-        int code = PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), TestScenes.Create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true });
+        using var settings = new TempSettings();
+        int code = PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), TestScenes.Create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true, SettingsPath = settings.Path });
         Assert.Equal(0, code);
         var first = renderer.Frames[0].Hud!;
         Assert.Contains(first.Buttons!, b => b.Label == "> eight-ball <");
@@ -109,5 +110,52 @@ public class StartMenuTests
         Assert.Null(last.Buttons);
         Assert.Contains(last.Lines, l => l.StartsWith("nine-ball", StringComparison.Ordinal));
         Assert.Contains(last.Lines, l => l.Contains("Player 2: on the 1", StringComparison.Ordinal));
+    }
+
+    [Fact]
+    public void The_physics_choice_makes_the_game_and_is_remembered_after_a_restart()
+    {
+        using var settings = new TempSettings();
+        var scenes = new List<Billiards.Core.Scenes.Scene>();
+        Billiards.Core.Physics.Simulation Create(Billiards.Core.Scenes.Scene scene)
+        {
+            scenes.Add(scene);
+            return TestScenes.Create(scene);
+        }
+        List<Billiards.App.Rendering.HudInfo> Run(params string[] clicks)
+        {
+            var clock = new ManualClock();
+            var window = new FakeWindow { FramebufferSize = (1280, 720) };
+            var renderer = new RecordingRenderer();
+            var loop = new ClickingLoop(clock, window, renderer, clicks);
+            Assert.Equal(0, PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), Create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true, SettingsPath = settings.Path }));
+            return [.. renderer.Frames.Select(f => f.Hud!)];
+        }
+
+        var firstRun = Run("Physics: stronge-compliant", "fast cloth", "Start");
+        Assert.Contains(firstRun[0].Buttons!, b => b.Label == "> Physics: han-2005 <");
+        Assert.Contains(firstRun[0].Buttons!, b => b.Label == "> standard cloth <");
+        // The same game and opponent with other physics is a new game, made with them.
+        var played = scenes[^1].Physics;
+        Assert.Equal("stronge-compliant", played.Models.BallCushion.Name);
+        Assert.Equal((0.15, 0.005), (played.Params.MuS, played.Params.MuR));
+        Assert.Contains("stronge-compliant", File.ReadAllText(settings.Path), StringComparison.Ordinal);
+
+        // The next run starts with them, marked in the menu, and its first game is made with them.
+        scenes.Clear();
+        var secondRun = Run();
+        Assert.Contains(secondRun[0].Buttons!, b => b.Label == "> Physics: stronge-compliant <");
+        Assert.Contains(secondRun[0].Buttons!, b => b.Label == "> fast cloth <");
+        Assert.Equal("stronge-compliant", scenes[0].Physics.Models.BallCushion.Name);
+    }
+
+    // A settings file of the test's own, never the user's.
+    private sealed class TempSettings : IDisposable
+    {
+        private readonly string _dir = Directory.CreateTempSubdirectory("billiards-settings-").FullName;
+
+        public string Path => System.IO.Path.Combine(_dir, "billiards", "settings.json");
+
+        public void Dispose() => Directory.Delete(_dir, recursive: true);
     }
 }

@@ -1,3 +1,4 @@
+using Billiards.Core.Physics;
 using System.Xml.Linq;
 using Billiards.App.Reports;
 
@@ -33,15 +34,15 @@ public class AccuracyReportTests
 
     private static List<AccuracyRow> Rows() =>
     [
-        new("a", "standard", "event", 0.004, 0, 100),
-        new("b", "standard", "event", 0.004, 0, 300),
-        new("a", "standard", "exact", 1.0 / 30, 1e-15, 10),
-        new("b", "standard", "exact", 1.0 / 30, 2e-15, 30),
-        new("a", "standard", "euler", 1.0 / 30, 0.1, 5),
-        new("b", "standard", "euler", 1.0 / 30, 0.3, 7),
-        new("a", "standard", "euler", 1.0 / 60, 0.05, 9),
-        new("b", "standard", "euler", 1.0 / 60, 0.15, 11),
-        new("a", "thesis", "fixed", 1.0 / 30, 0.4, 2),
+        new("a", ModelRegistry.Standard, ModelRegistry.Event, 0.004, 0, 100),
+        new("b", ModelRegistry.Standard, ModelRegistry.Event, 0.004, 0, 300),
+        new("a", ModelRegistry.Standard, ModelRegistry.Exact, 1.0 / 30, 1e-15, 10),
+        new("b", ModelRegistry.Standard, ModelRegistry.Exact, 1.0 / 30, 2e-15, 30),
+        new("a", ModelRegistry.Standard, ModelRegistry.Euler, 1.0 / 30, 0.1, 5),
+        new("b", ModelRegistry.Standard, ModelRegistry.Euler, 1.0 / 30, 0.3, 7),
+        new("a", ModelRegistry.Standard, ModelRegistry.Euler, 1.0 / 60, 0.05, 9),
+        new("b", ModelRegistry.Standard, ModelRegistry.Euler, 1.0 / 60, 0.15, 11),
+        new("a", ModelRegistry.Thesis, ModelRegistry.Thesis.Integrators[0], 1.0 / 30, 0.4, 2),
     ];
 
     [Fact]

@@ -19,7 +19,7 @@ public class SceneLoaderTests
     {
         var scene = Parse($$"""{ {{Head}}, "balls": [ { "id": "cue", "position": [0, 0] } ] }""");
         Assert.Equal("standard", scene.Physics.Model.Name);
-        Assert.Equal("exact", scene.Physics.Integrator);
+        Assert.Equal("exact", scene.Physics.Integrator.Name);
         Assert.Equal(1.0 / 250, scene.Physics.Dt);
         Assert.Equal(PhysicsParams.Default, scene.Physics.Params);
         Assert.Equal("pool-9ft", scene.Table.Preset);
@@ -71,7 +71,7 @@ public class SceneLoaderTests
     public void TheThesisModelDefaultsToTheThesisTableAndItsFixedStep()
     {
         var scene = Parse($$"""{ {{Head}}, "physics": { "model": "thesis" }, "balls": [ { "id": "cue", "position": [0, 0] } ] }""");
-        Assert.Equal(("thesis", "fixed", "thesis"), (scene.Physics.Model.Name, scene.Physics.Integrator, scene.Table.Preset));
+        Assert.Equal(("thesis", "fixed", "thesis"), (scene.Physics.Model.Name, scene.Physics.Integrator.Name, scene.Table.Preset));
         Assert.Equal(0.0286, scene.Balls[0].Position.Z);
     }
 
@@ -80,8 +80,8 @@ public class SceneLoaderTests
     {
         var json = $$"""{ {{Head}} }""";
         var scene = Parse(json, new SceneOverrides(Integrator: "event", Dt: 0.01));
-        Assert.Equal(("event", 0.01), (scene.Physics.Integrator, scene.Physics.Dt));
-        Assert.Equal("fixed", Parse(json, new SceneOverrides(Model: "thesis")).Physics.Integrator);
+        Assert.Equal(("event", 0.01), (scene.Physics.Integrator.Name, scene.Physics.Dt));
+        Assert.Equal("fixed", Parse(json, new SceneOverrides(Model: "thesis")).Physics.Integrator.Name);
         Assert.StartsWith("--integrator: $: integrator \"exact\" is not available for model \"thesis\"",
             Refused(json, new SceneOverrides(Model: "thesis", Integrator: "exact")).Message);
         Assert.Contains("unknown model \"snooker\"", Refused(json, new SceneOverrides(Model: "snooker")).Message);

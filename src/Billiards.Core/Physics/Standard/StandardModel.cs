@@ -14,7 +14,10 @@ public sealed class StandardModel : PhysicsModel
     public override string Name => ModelName;
 
     /// <inheritdoc />
-    public override IReadOnlyList<string> Integrators { get; } = [Scenes.Integrators.Exact, Scenes.Integrators.Euler, Scenes.Integrators.Event];
+    public override IReadOnlyList<IIntegrator> Integrators { get; } = [new ExactIntegrator(), new EulerIntegrator(), new EventIntegrator()];
+
+    /// <summary>The cushion and ball-ball resolvers of <see cref="ModelRegistry"/>.</summary>
+    public override bool TakesInteractionModels => true;
 
     /// <inheritdoc />
     public override string DefaultTablePreset => "pool-9ft";

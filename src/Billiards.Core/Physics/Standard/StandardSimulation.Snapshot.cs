@@ -12,7 +12,7 @@ public sealed partial class StandardSimulation
     {
         var s = (Snapshot)snapshot;
         _balls.CopyTo(s.Balls, 0);
-        s.Engine?.CopyStateFrom(_engine!);
+        _stepper.CaptureInto(s.Engine);
     }
 
     /// <inheritdoc />
@@ -20,21 +20,18 @@ public sealed partial class StandardSimulation
     {
         var s = (Snapshot)snapshot;
         s.Balls.CopyTo(_balls, 0);
-        _engine?.CopyStateFrom(s.Engine!);
+        _stepper.RestoreFrom(s.Engine);
     }
 
-    // The balls, and for the exact and event integrators an engine that only holds state (it is
-    // never stepped): the Euler stepper keeps nothing but the balls.
+    // The balls, and what the integrator keeps beyond them (for the exact and event integrators an
+    // engine that only holds state and is never stepped; nothing for Euler).
     private sealed class Snapshot : SimulationSnapshot
     {
         public Snapshot(StandardSimulation simulation)
             : base(simulation)
         {
             Balls = (BallState[])simulation._balls.Clone();
-            if (simulation._engine is not null)
-            {
-                Engine = new EventEngine(Balls, simulation.Ids, simulation._model, new EventLog());
-            }
+            Engine = simulation._stepper.NewStateHolder(Balls, simulation.Ids, simulation._model);
         }
 
         public BallState[] Balls { get; }

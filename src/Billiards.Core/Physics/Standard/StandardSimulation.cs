@@ -8,31 +8,21 @@ using Billiards.Core.Table;
 namespace Billiards.Core.Physics.Standard;
 
 /// <summary>
-/// The standard (physically based) model, physics-standard-model.md, with one of three
-/// integrators: "exact" (fixed steps of <see cref="Simulation.Dt"/>, each advanced by the event
-/// engine, so motion and contact times are exact inside the step), "event" (the reference solver:
-/// each step jumps to the next event) and "euler" (naive explicit stepping with overlap detection).
-/// "exact" and "event" share one <see cref="EventEngine"/>; "euler" shares the collision models
-/// and the table geometry.
+/// The standard (physically based) model, physics-standard-model.md, with one of its integrators
+/// (<see cref="StandardModel.Integrators"/>): each is a type that starts its own stepper over the
+/// balls, so the simulation never asks which integrator it runs. The collision models are the
+/// scene's <see cref="PhysicsConfig.Models"/>.
 /// </summary>
 public sealed partial class StandardSimulation : Simulation
 {
     private readonly StandardTableModel _model;
     private readonly BallState[] _balls;
     private readonly BallState[] _initial;
-    private readonly EventEngine? _engine;
-    private readonly EulerStepper? _euler;
-    private readonly bool _eventIntegrator;
+    private readonly IStepper _stepper;
 
     /// <summary>Creates the simulation of a scene at t = 0, before its shot.</summary>
     public StandardSimulation(Scene scene)
-        : this(scene, FrictionalInelastic.Instance, Han2005.Instance)
-    {
-    }
-
-    /// <summary>Creates the simulation of a scene with the given collision models.</summary>
-    public StandardSimulation(Scene scene, IBallBallModel ballBall, IBallCushionModel ballCushion)
-        : this(new StandardTableModel(scene.Table, scene.Physics, ballBall, ballCushion), scene)
+        : this(new StandardTableModel(scene.Table, scene.Physics), scene)
     {
     }
 
@@ -55,19 +45,16 @@ public sealed partial class StandardSimulation : Simulation
             };
         }
         _initial = (BallState[])_balls.Clone();
-        _eventIntegrator = Integrator == Integrators.Event;
-        if (Integrator == Integrators.Euler)
-        {
-            _euler = new EulerStepper(_balls, Ids, Parameters, Geometry, model.BallBall, model.BallCushion, Events);
-        }
-        else
-        {
-            _engine = new EventEngine(_balls, Ids, model, Events);
-        }
+        var integrator = scene.Physics.Integrator as StandardIntegrator
+            ?? throw new ArgumentException($"integrator \"{scene.Physics.Integrator.Name}\" is not one of the standard model's", nameof(scene));
+        _stepper = integrator.Start(_balls, Ids, model, Events);
     }
 
     /// <inheritdoc />
     public override TableModel TableModel => _model;
+
+    /// <inheritdoc />
+    public override InteractionModels Models => _model.Physics.Models;
 
     /// <summary>The model parameters.</summary>
     public PhysicsParams Parameters => _model.Parameters;
@@ -79,54 +66,23 @@ public sealed partial class StandardSimulation : Simulation
     public override ReadOnlySpan<BallState> Balls => _balls;
 
     /// <inheritdoc />
-    public override bool IsAtRest => _engine?.IsAtRest ?? _euler!.IsAtRest;
+    public override bool IsAtRest => _stepper.IsAtRest;
 
     /// <summary>
     /// One step. "exact": advance by <see cref="Simulation.Dt"/>, resolving every contact inside
     /// the step at its exact time. "event": advance to the next event. "euler": one Euler step.
+    /// A table at rest only moves the clock (of the fixed-step integrators).
     /// </summary>
     public override void Step()
     {
-        if (_engine is { } engine)
-        {
-            if (engine.IsAtRest)
-            {
-                // A table waiting for the player: only the clock moves ("event" has nothing to
-                // step to, "exact" stays on its fixed grid).
-                if (!_eventIntegrator)
-                {
-                    Time += Dt;
-                    engine.IdleTo(Time);
-                }
-                StepCount++;
-                return;
-            }
-            engine.TrackOrientation = TrackOrientation;
-            if (_eventIntegrator)
-            {
-                engine.StepToNextEvent();
-                Time = engine.Time;
-            }
-            else
-            {
-                // Steps stay on the fixed grid even when everything rests inside one.
-                double end = Time + Dt;
-                engine.AdvanceTo(end, stopAtRest: false);
-                Time = end;
-            }
-            EventCapHits = engine.EventCapHits;
-        }
-        else
-        {
-            Time += Dt;
-            if (!_euler!.IsAtRest)
-            {
-                _euler.TrackOrientation = TrackOrientation;
-                _euler.Step(Dt, Time);
-            }
-        }
+        bool resting = _stepper.IsAtRest;
+        Time = _stepper.Step(Time, Dt, TrackOrientation);
+        EventCapHits = _stepper.EventCapHits;
         StepCount++;
-        StateChecker.Check(this, Parameters.R, checkOverlap: _euler is null);
+        if (!resting)
+        {
+            StateChecker.Check(this, Parameters.R, checkOverlap: _stepper.KeepsBallsApart);
+        }
     }
 
     /// <summary>
@@ -136,15 +92,14 @@ public sealed partial class StandardSimulation : Simulation
     /// </summary>
     public override void AdvanceTo(double time)
     {
-        if (_engine is { } engine && _eventIntegrator)
+        double now = Time;
+        long steps = StepCount;
+        if (_stepper.TryAdvanceTo(time, TrackOrientation, ref now, ref steps))
         {
-            engine.TrackOrientation = TrackOrientation;
-            long before = engine.EventCount;
-            engine.AdvanceTo(Math.Max(time, Time), stopAtRest: true);
-            Time = engine.Time;
-            StepCount += engine.EventCount - before;
-            EventCapHits = engine.EventCapHits;
-            StateChecker.Check(this, Parameters.R, checkOverlap: true);
+            Time = now;
+            StepCount = steps;
+            EventCapHits = _stepper.EventCapHits;
+            StateChecker.Check(this, Parameters.R, checkOverlap: _stepper.KeepsBallsApart);
             return;
         }
         base.AdvanceTo(time);
@@ -154,8 +109,7 @@ public sealed partial class StandardSimulation : Simulation
     public override void Reset()
     {
         _initial.CopyTo(_balls, 0);
-        _engine?.Restart();
-        _euler?.Restart();
+        _stepper.Restart();
         Events.Clear();
         Time = 0;
         StepCount = 0;
@@ -168,8 +122,7 @@ public sealed partial class StandardSimulation : Simulation
         var outcome = CueStrike.Strike(shot, Parameters);
         _balls[cue].Velocity = outcome.Velocity;
         _balls[cue].Spin = outcome.Spin;
-        _engine?.BallChanged(cue);
-        _euler?.BallChanged(cue);
+        _stepper.BallChanged(cue);
     }
 
     /// <inheritdoc />
@@ -184,8 +137,7 @@ public sealed partial class StandardSimulation : Simulation
         ball.Spin = Mathematics.Vec3.Zero;
         ball.State = MotionState.Stationary;
         ball.Pocket = -1;
-        _engine?.BallChanged(index);
-        _euler?.BallChanged(index);
+        _stepper.BallChanged(index);
     }
 
     /// <inheritdoc />
@@ -196,8 +148,7 @@ public sealed partial class StandardSimulation : Simulation
         ball.Spin = Mathematics.Vec3.Zero;
         ball.State = MotionState.Pocketed;
         ball.Pocket = -1;
-        _engine?.BallChanged(index);
-        _euler?.BallChanged(index);
+        _stepper.BallChanged(index);
     }
 
     /// <inheritdoc />

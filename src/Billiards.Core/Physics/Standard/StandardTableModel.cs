@@ -11,22 +11,17 @@ namespace Billiards.Core.Physics.Standard;
 /// </summary>
 public sealed class StandardTableModel : TableModel
 {
-    /// <summary>The model of a table and physics configuration, with the given collision models.</summary>
-    public StandardTableModel(TableSpec table, PhysicsConfig physics, IBallBallModel ballBall, IBallCushionModel ballCushion)
+    /// <summary>The model of a table and physics configuration, with its collision models (<see cref="PhysicsConfig.Models"/>).</summary>
+    public StandardTableModel(TableSpec table, PhysicsConfig physics)
         : base(table, physics)
     {
+        ArgumentNullException.ThrowIfNull(physics);
         Parameters = physics.Params;
         Constants = new MotionConstants(Parameters);
         Geometry = TableGeometry.Build(table, Parameters.R);
-        BallBall = ballBall;
-        BallCushion = ballCushion;
+        BallBall = physics.Models.BallBall;
+        BallCushion = physics.Models.BallCushion;
         Features = new FeatureBoxes(Geometry, Parameters.R);
-    }
-
-    /// <summary>The model of a table and physics configuration with the default collision models.</summary>
-    public StandardTableModel(TableSpec table, PhysicsConfig physics)
-        : this(table, physics, FrictionalInelastic.Instance, Han2005.Instance)
-    {
     }
 
     /// <summary>The model parameters.</summary>

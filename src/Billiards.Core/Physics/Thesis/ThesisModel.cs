@@ -14,7 +14,7 @@ public sealed class ThesisModel : PhysicsModel
     public override string Name => ModelName;
 
     /// <inheritdoc />
-    public override IReadOnlyList<string> Integrators { get; } = [Scenes.Integrators.Fixed];
+    public override IReadOnlyList<IIntegrator> Integrators { get; } = [new FixedIntegrator()];
 
     /// <summary>The seed's table.</summary>
     public override string DefaultTablePreset => "thesis";
@@ -32,4 +32,23 @@ public sealed class ThesisModel : PhysicsModel
     public override IReadOnlyList<CollisionFace> CollisionFaces(TableSpec table, PhysicsParams parameters) =>
         [.. Initializer.InitRails(table).Select(t => new CollisionFace(
             SeedFrame.ToSi(t.P1), SeedFrame.ToSi(t.P2), SeedFrame.ToSi(t.P3), SeedFrame.ToSi(t.Normal).Normalized()))];
+}
+
+/// <summary>"fixed": the thesis model's own fixed step with overlap detection (its only integrator).</summary>
+internal sealed class FixedIntegrator : IIntegrator
+{
+    /// <inheritdoc />
+    public string Name => Scenes.Integrators.Fixed;
+
+    /// <inheritdoc />
+    public bool IsReference => false;
+
+    /// <inheritdoc />
+    public bool ExactContacts => false;
+
+    /// <summary>0: the thesis model's error is model error, which does not vanish with the step.</summary>
+    public int Order => 0;
+
+    /// <inheritdoc />
+    public override string ToString() => Name;
 }

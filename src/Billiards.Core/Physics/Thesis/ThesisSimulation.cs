@@ -39,7 +39,7 @@ public sealed partial class ThesisSimulation : Simulation
 
     /// <summary>The scene's balls on a shared table model (the scene's table and physics are the model's).</summary>
     internal ThesisSimulation(ThesisTableModel model, Scene scene)
-        : base(ThesisModel.ModelName, Integrators.Fixed, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
+        : base(ThesisModel.ModelName, scene.Physics.Integrator, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
     {
         _model = model;
         var balls = new Ball[scene.Balls.Count];

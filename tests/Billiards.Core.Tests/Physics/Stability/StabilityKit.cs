@@ -62,7 +62,7 @@ internal static class StabilityKit
     /// <summary>A scene of explicit balls on <paramref name="table"/> (pocketless by default), no rack, no rules.</summary>
     public static Scene Scene(string integrator, double dt, IEnumerable<BallSetup> balls, TableSpec? table = null, PhysicsParams? parameters = null) =>
         new("stability.json", "stability", table ?? Pocketless,
-            PhysicsConfig.Default with { Integrator = integrator, Dt = dt, Params = parameters ?? PhysicsParams.Default },
+            PhysicsConfig.Default with { Integrator = ModelRegistry.FindIntegrator(ModelRegistry.Standard, integrator)!, Dt = dt, Params = parameters ?? PhysicsParams.Default },
             null, [.. balls.OrderBy(b => b.Id.Value)], null, null);
 
     public static Simulation Create(string integrator, double dt, IEnumerable<BallSetup> balls, TableSpec? table = null, PhysicsParams? parameters = null) =>
@@ -206,7 +206,7 @@ internal static class StabilityKit
     /// </summary>
     public static void Advance(Simulation sim)
     {
-        if (sim.Integrator == Integrators.Event)
+        if (sim.Integrator.IsReference)
         {
             sim.AdvanceTo(sim.Time + sim.Dt);
         }

@@ -84,7 +84,7 @@ public class TableBoundGuaranteeTests
         foreach (double radius in new[] { smallest, PhysicsParams.DefaultRadius })
         {
             var parameters = PhysicsParams.Default with { R = radius, MuSp = 4.0 / 9.0 * radius };
-            var physics = PhysicsConfig.Default with { Integrator = integrator, Params = parameters };
+            var physics = PhysicsConfig.Default with { Integrator = ModelRegistry.FindIntegrator(ModelRegistry.Standard, integrator)!, Params = parameters };
             for (int aim = -180; aim < 180; aim += 5)
             {
                 foreach (var start in new[] { new Vec3(0.3, 0.1, radius), new Vec3(-1.0, 0.55, radius), new Vec3(1.1, -0.3, radius) })
@@ -117,7 +117,7 @@ public class TableBoundGuaranteeTests
         var outward = new Vec3(-1, 1, 0).Normalized();
         var start = pocket.Centre + outward * (3 * r) + new Vec3(0, 0, r);
         Assert.False(TableBounds.Contains(table, start + outward * (2 * dt), r)); // where the step ends
-        var physics = PhysicsConfig.Default with { Integrator = "euler", Dt = dt };
+        var physics = PhysicsConfig.Default with { Integrator = ModelRegistry.Euler, Dt = dt };
         var rolling = outward * 2.0;
         var scene = new Scene("jaws", null, table, physics, null,
             [new BallSetup(BallId.Cue, start, rolling, Vec3.Cross(Vec3.UnitZ, rolling) / r)], null, null);

@@ -1,7 +1,8 @@
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
-using Billiards.Core.Physics.Collisions;
+using Billiards.Core.Physics.Collisions.BallBall;
+using Billiards.Core.Physics.Collisions.BallCushion;
 using static Billiards.Core.Tests.Standard.StandardTestKit;
 
 namespace Billiards.Core.Tests.Standard;

@@ -1,7 +1,7 @@
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 
-namespace Billiards.Core.Physics.Collisions;
+namespace Billiards.Core.Physics.Collisions.BallBall;
 
 /// <summary>
 /// Frictional, inelastic collision of two equal balls: restitution e_b along the line of centres,

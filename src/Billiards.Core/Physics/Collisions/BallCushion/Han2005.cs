@@ -1,7 +1,7 @@
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 
-namespace Billiards.Core.Physics.Collisions;
+namespace Billiards.Core.Physics.Collisions.BallCushion;
 
 /// <summary>
 /// Han's ball-cushion impact: the cushion touches the ball above its centre, at angle

@@ -1,0 +1,96 @@
+using System.Text.Json;
+using Billiards.Core.Physics;
+using Billiards.Core.Physics.Collisions;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Game;
+
+/// <summary>
+/// The player's physics choice of the start menu, kept between runs in <c>settings.json</c> under
+/// the user's configuration folder ($XDG_CONFIG_HOME/billiards, else ~/.config/billiards; the
+/// platform's application data folder elsewhere): the cushion model and the cloth.
+/// </summary>
+/// <param name="Cushion">A cushion model of <see cref="ModelRegistry.BallCushionModels"/>.</param>
+/// <param name="Cloth">A cloth of <see cref="Core.Physics.Cloth.All"/>.</param>
+public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth)
+{
+    /// <summary>The model's defaults.</summary>
+    public static GameSettings Default { get; } = new(InteractionModels.Default.BallCushion, Cloth.Standard);
+
+    /// <summary>The settings file of this user.</summary>
+    public static string DefaultPath(Func<string, string?>? environment = null)
+    {
+        environment ??= Environment.GetEnvironmentVariable;
+        string? config = environment("XDG_CONFIG_HOME");
+        if (string.IsNullOrEmpty(config))
+        {
+            string home = environment("HOME") is { Length: > 0 } h ? h : Environment.GetFolderPath(Environment.SpecialFolder.UserProfile);
+            config = OperatingSystem.IsWindows() ? Environment.GetFolderPath(Environment.SpecialFolder.ApplicationData) : Path.Combine(home, ".config");
+        }
+        return Path.Combine(config, "billiards", "settings.json");
+    }
+
+    /// <summary>The scene with this physics, for a model that takes it (the standard model); other scenes as they are.</summary>
+    public Scene Apply(Scene scene)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        var physics = scene.Physics;
+        if (!physics.Model.TakesInteractionModels)
+        {
+            return scene;
+        }
+        return scene with { Physics = physics with { Models = physics.Models with { BallCushion = Cushion }, Params = Cloth.On(physics.Params) } };
+    }
+
+    /// <summary>
+    /// The settings in <paramref name="path"/>; the defaults when there is no file, and for a file
+    /// that cannot be read or names what this version does not know (one line on
+    /// <paramref name="warnings"/>: a broken settings file never stops the game).
+    /// </summary>
+    public static GameSettings Load(string path, TextWriter? warnings = null)
+    {
+        if (!File.Exists(path))
+        {
+            return Default;
+        }
+        try
+        {
+            using var doc = JsonDocument.Parse(File.ReadAllText(path));
+            var root = doc.RootElement;
+            string? cushion = root.TryGetProperty("ball_cushion", out var c) && c.ValueKind == JsonValueKind.String ? c.GetString() : null;
+            string? cloth = root.TryGetProperty("cloth", out var k) && k.ValueKind == JsonValueKind.String ? k.GetString() : null;
+            if (ModelRegistry.FindBallCushion(cushion) is { } model && Cloth.Find(cloth) is { } found)
+            {
+                return new GameSettings(model, found);
+            }
+            warnings?.WriteLine($"billiards: {path}: unknown cushion model or cloth; using the defaults");
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or JsonException or InvalidOperationException)
+        {
+            warnings?.WriteLine($"billiards: {path}: cannot read the settings ({e.Message}); using the defaults");
+        }
+        return Default;
+    }
+
+    /// <summary>Writes the settings to <paramref name="path"/> (creating its folder); a failure is one line on <paramref name="warnings"/>.</summary>
+    public void Save(string path, TextWriter? warnings = null)
+    {
+        try
+        {
+            Directory.CreateDirectory(Path.GetDirectoryName(Path.GetFullPath(path))!);
+            using var stream = new MemoryStream();
+            using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
+            {
+                w.WriteStartObject();
+                w.WriteString("ball_cushion", Cushion.Name);
+                w.WriteString("cloth", Cloth.Name);
+                w.WriteEndObject();
+            }
+            File.WriteAllBytes(path, stream.ToArray());
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            warnings?.WriteLine($"billiards: {path}: cannot save the settings ({e.Message})");
+        }
+    }
+}
