@@ -7,12 +7,14 @@ namespace Billiards.Tools;
 /// <summary>
 /// Seeded random scenes (billiards-scene/1, one per line) for batch runs and their tests: a mix of
 /// racked breaks and scattered balls on the three pool tables, the standard model's exact and
-/// event integrators and the thesis model, random cue strikes, and some scenes with a game block
+/// event integrators (some with other cushion and ball-ball models) and the thesis model, random cue strikes, and some scenes with a game block
 /// (a break to judge). Scene k of a seed depends only on the seed and k.
 /// </summary>
 internal static class RandomScenes
 {
     private static readonly string[] Tables = ["pool-9ft", "pool-8ft", "pool-7ft"];
+    private static readonly string[] CushionModels = ["han-2005", "mathavan-2010", "stronge-compliant"];
+    private static readonly string[] BallModels = ["frictional-inelastic", "frictional-mathavan"];
 
     /// <summary>Scene <paramref name="k"/> of <paramref name="seed"/> as one UTF-8 line with its line break.</summary>
     public static byte[] Line(ulong seed, int k)
@@ -59,6 +61,13 @@ internal static class RandomScenes
         {
             w.WriteString("model", "standard");
             w.WriteString("integrator", kind < 0.3 ? "event" : "exact");
+            if (rng.NextDouble() < 0.3)
+            {
+                w.WriteStartObject("models");
+                w.WriteString("ball_cushion", CushionModels[(int)(rng.NextDouble() * CushionModels.Length)]);
+                w.WriteString("ball_ball", BallModels[(int)(rng.NextDouble() * BallModels.Length)]);
+                w.WriteEndObject();
+            }
         }
         w.WriteEndObject();
         if (racked)
