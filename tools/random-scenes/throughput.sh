@@ -18,11 +18,14 @@ best() { sort -g | tail -1; }
 for ((r = 0; r < rounds; r++)); do
   for t in 1 "$cores"; do
     "$billiards" simulate --batch "$work/in.jsonl" --out "$work/out.jsonl" --threads "$t" 2>&1 \
-      | tail -1 | sed -E 's/.* ([0-9]+) scenes\/s.*/\1/' >> "$work/rate-$t"
+      | tail -1 > "$work/last"
+    sed -E 's/.* ([0-9]+) scenes\/s.*/\1/' "$work/last" >> "$work/rate-$t"
+    sed -E 's/.*\(([0-9.]+) s of processor time\).*/\1/' "$work/last" >> "$work/cpu-$t"
   done
 done
 one=$(best < "$work/rate-1"); all=$(best < "$work/rate-$cores")
 echo "simulate --batch, $count scenes: 1 thread $one shots/s, $cores threads $all shots/s (best of $rounds; rounds: $(paste -sd' ' "$work/rate-1") / $(paste -sd' ' "$work/rate-$cores")), ratio $(awk -v a="$all" -v b="$one" 'BEGIN { printf "%.2f", a / b }')"
+echo "processor seconds of each round: 1 thread $(paste -sd' ' "$work/cpu-1"), $cores threads $(paste -sd' ' "$work/cpu-$cores")"
 start=$(date +%s.%N)
 "$billiards" selfplay --rules eight-ball --games 40 --levels 3,3 --seed 9 > /dev/null 2>&1
 one=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.1f", 40 * 60 / (e - s) }')
