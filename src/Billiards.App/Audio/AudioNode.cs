@@ -10,7 +10,9 @@ namespace Billiards.App.Audio;
 /// <summary>
 /// The game's sound: voices every event the <see cref="PhysicsNode"/> signals (the same
 /// <see cref="EventVoicing"/> as render-audio), gives every ball's rolling speed after each physics
-/// step, and follows the camera as the listener. Keys: <c>+</c> / <c>-</c> volume, <c>U</c> mute.
+/// step, and follows the camera as the listener. Keys: <c>+</c> / <c>-</c> volume, <c>U</c> mute;
+/// the HUD shows each change for a moment (<see cref="StatusLine"/>), and all the time that the
+/// game is silent when there is no audio device.
 /// </summary>
 /// <remarks>
 /// It may join a tree that has already started: on <see cref="Node.Ready"/> it voices the events
@@ -25,8 +27,12 @@ public sealed class AudioNode(IAudioOutput output) : Node
     /// <summary>How far back (s) a node joining a running game voices events already logged.</summary>
     public const double CatchUp = 0.05;
 
+    /// <summary>How long the HUD shows a volume or mute change (s).</summary>
+    public const double FeedbackSeconds = 2;
+
     private PhysicsNode? _physics;
     private CameraNode? _camera;
+    private double _feedbackLeft;
     private EventVoicing? _voicing;
     private Simulation? _simulation;
 
@@ -80,8 +86,31 @@ public sealed class AudioNode(IAudioOutput output) : Node
         }
     }
 
+    /// <summary>
+    /// The sound's line on the HUD, or null: the volume or mute just set (for
+    /// <see cref="FeedbackSeconds"/>), and always that there is no sound when there is no device.
+    /// </summary>
+    public string? StatusLine
+    {
+        get
+        {
+            string device = Output.IsSilent ? "no audio device" : "";
+            if (_feedbackLeft <= 0)
+            {
+                return Output.IsSilent ? "Sound: off (no audio device)" : null;
+            }
+            string volume = string.Create(System.Globalization.CultureInfo.InvariantCulture, $"volume {Output.Volume * 100:0} %");
+            string state = Output.Muted ? $"Sound: muted (U), {volume}" : $"Sound: {volume} (+/-)";
+            return device.Length > 0 ? $"{state}, {device}" : state;
+        }
+    }
+
     /// <inheritdoc />
-    protected override void Process(double dt) => UpdateListener();
+    protected override void Process(double dt)
+    {
+        UpdateListener();
+        _feedbackLeft -= dt;
+    }
 
     private void UpdateListener()
     {
@@ -103,12 +132,15 @@ public sealed class AudioNode(IAudioOutput output) : Node
             case Key.Plus:
                 Output.Volume = MathF.Round(Math.Min(1, Output.Volume + VolumeStep), 2);
                 Output.Muted = false;
+                _feedbackLeft = FeedbackSeconds;
                 return true;
             case Key.Minus:
                 Output.Volume = MathF.Round(Math.Max(0, Output.Volume - VolumeStep), 2);
+                _feedbackLeft = FeedbackSeconds;
                 return true;
             case Key.U:
                 Output.Muted = !Output.Muted;
+                _feedbackLeft = FeedbackSeconds;
                 return true;
             default:
                 return false;

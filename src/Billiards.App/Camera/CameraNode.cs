@@ -5,6 +5,7 @@ using Billiards.App.Input.Modes;
 using Billiards.App.Nodes;
 using Billiards.App.Platform;
 using Billiards.App.Rendering;
+using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Table;
 
@@ -154,6 +155,12 @@ public sealed class CameraNode : Node
         return lo;
     }
 
+    /// <summary>
+    /// Metres of bed per pixel in the overhead view last drawn (the seed's 1 cm before one is
+    /// drawn): a drag of the cue ball in that view moves it with the pointer, along the screen.
+    /// </summary>
+    public double OverheadMetresPerPixel { get; private set; } = SeedControls.MoveMetresPerPixel;
+
     /// <inheritdoc />
     protected override void Draw(FrameBuilder frame)
     {
@@ -161,6 +168,8 @@ public sealed class CameraNode : Node
         if (Overhead && _physics is not null)
         {
             (frame.Frame.Eye, frame.Frame.Target) = OverheadView(_physics.Table, frame.Frame.Width, frame.Frame.Height, FovYDegrees);
+            double tan = Math.Tan(FovYDegrees * Math.PI / 360);
+            OverheadMetresPerPixel = 2 * (frame.Frame.Eye.Z - _physics.BallRadius) * tan / Math.Max(1, frame.Frame.Height);
             return;
         }
         frame.Frame.Eye = Camera.Eye.ToVector3();

@@ -31,8 +31,9 @@ public static class PlayCommand
         var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball or straight-pool (default: the scene's rules)." };
         var players = new Option<string?>("--players") { Description = $"The two players, A,B: each a name or human (a person), or computer:LEVEL (1-5; also cpu:LEVEL); default {DefaultPlayers}." };
         var record = new Option<string?>("--record") { Description = $"Write the game ({GameRecordFile.Format} JSON, which replay reads) when the window closes." };
-        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record };
-        command.SetAction(parse => Play(parse.GetValue(scene), PlatformWiring.Open, options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))
+        var cap = new Option<double?>("--fps-cap") { Description = $"The most frames a second (0: no cap); default the display's refresh rate, else {PlatformWiring.DefaultFrameCap}." };
+        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record, cap };
+        command.SetAction(parse => Play(parse.GetValue(scene), title => PlatformWiring.Open(title, FrameCap(parse.GetValue(cap))), options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))
         {
             Rules = parse.GetValue(rules),
             Players = parse.GetValue(players),
@@ -43,6 +44,35 @@ public static class PlayCommand
         root.Add(command);
         root.SetAction(_ => Play(null, PlatformWiring.Open, options: new PlayOptions(null, null) { StartMenu = true }, openAudio: OpenAudio));
     }
+
+    /// <summary>
+    /// The window's title: the game and its players for a match (the scene's own name says only
+    /// what the scene was written for: "8-ball for two players" whatever the game chosen), else
+    /// the scene's name.
+    /// </summary>
+    public static string TitleFor(Scene scene, MatchSetup? match)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        if (match is { } m)
+        {
+            string game = m.Rules switch
+            {
+                GameRules.EightBall => "8-ball",
+                GameRules.NineBall => "9-ball",
+                GameRules.TenBall => "10-ball",
+                GameRules.StraightPool => "14.1 straight pool",
+                _ => m.Rules.ToName(),
+            };
+            return $"{PlatformWiring.WindowTitle}: {game}, {m.Players[0].Name} vs {m.Players[1].Name}";
+        }
+        return scene.Name is { } name ? $"{PlatformWiring.WindowTitle}: {name}" : PlatformWiring.WindowTitle;
+    }
+
+    /// <summary>The <c>--fps-cap</c> value checked: null (the display's), 0 (none) or a rate up to <see cref="PlatformWiring.MaxFrameCap"/>.</summary>
+    public static double? FrameCap(double? value) =>
+        value is not { } v || (double.IsFinite(v) && v >= 0 && v <= PlatformWiring.MaxFrameCap)
+            ? value
+            : throw new CliException(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"--fps-cap {v}: expected 0 (no cap) to {PlatformWiring.MaxFrameCap} frames a second"));
 
     /// <summary>Loads the scene, opens the platform and runs the game until the window closes.</summary>
     /// <param name="scenePath">The scene, or null for <see cref="DefaultScene"/>.</param>
@@ -73,7 +103,7 @@ public static class PlayCommand
         {
             throw new CliException($"--record {recordPath}: {path} has no match to record (it names no rules and no --rules was given, or it has no cue ball)");
         }
-        string title = scene.Name is { } name ? $"{PlatformWiring.WindowTitle}: {name}" : PlatformWiring.WindowTitle;
+        string title = TitleFor(scene, match);
         using var platform = OpenOrExplain(openPlatform, title);
         var gameClock = new ScriptClock(clock ?? new StopwatchClock());
         using var scripted = script is null ? null : new ScriptedInput(platform.Window, script, gameClock);
@@ -160,7 +190,9 @@ public static class PlayCommand
                     {
                         current.Dispose();
                     }
-                    current = create((chosen, new MatchSetup(next.Rules, next.Players)));
+                    var setup = new MatchSetup(next.Rules, next.Players);
+                    current = create((chosen, setup));
+                    platform.SetTitle?.Invoke(TitleFor(chosen, setup));
                     current.Tree.Root.AddChild(new AudioNode(audio));
                     current.World.Menu.StartSettings = current.World.Menu.PlayedSettings = next.Settings;
                     Listen(current);

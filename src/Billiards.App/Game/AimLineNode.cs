@@ -10,8 +10,9 @@ namespace Billiards.App.Game;
 
 /// <summary>
 /// The aim line (<see cref="AimPreview"/>): the cue ball's path to the first ball it meets, the
-/// ghost ball there, and the object ball's direction after contact; with no ball on the line, the
-/// path alone. Drawn as a few flat shapes over the view (<see cref="AidShape"/>): three thin quads
+/// ghost ball there, and the object ball's direction after contact, stopped at the cushion; with
+/// no ball on the line, the path to the cushion and its bank off it. Nothing is drawn over the
+/// rails or the floor. Drawn as a few flat shapes over the view (<see cref="AidShape"/>): three thin quads
 /// and a ring, so it costs a software rasteriser almost nothing. <see cref="ToggleKey"/> turns it
 /// on and off; it starts on for practice and against a computer of level 2 or less.
 /// </summary>
@@ -20,7 +21,7 @@ public sealed class AimLineNode : Node
     /// <summary>The key that shows or hides the aim line.</summary>
     public const Key ToggleKey = Key.L;
 
-    /// <summary>How far the object ball's direction is drawn (m).</summary>
+    /// <summary>How far the object ball's direction is drawn at most (m): less when it reaches a cushion first.</summary>
     public const double ObjectLineLength = 0.5;
 
     /// <summary>The highest computer level against which the line starts on.</summary>
@@ -29,6 +30,7 @@ public sealed class AimLineNode : Node
     private static readonly Vector4 PathColour = new(1, 1, 1, 0.7f);
     private static readonly Vector4 GhostColour = new(1, 1, 1, 0.8f);
     private static readonly Vector4 ObjectColour = new(1, 0.85f, 0.2f, 0.85f);
+    private static readonly Vector4 BankColour = new(1, 1, 1, 0.4f);
 
     private PhysicsNode? _physics;
     private CueNode? _cue;
@@ -76,7 +78,7 @@ public sealed class AimLineNode : Node
         }
         var sim = physics.Simulation;
         int cueIndex = sim.IndexOf(BallId.Cue);
-        var preview = AimPreview.Compute(sim.Balls, sim.Ids, cueIndex, cue.AimDirection, physics.BallRadius, _pockets);
+        var preview = AimPreview.Compute(sim.Balls, sim.Ids, cueIndex, cue.AimDirection, physics.BallRadius, _pockets, physics.Table);
         Preview = preview;
         float r = (float)physics.BallRadius;
         var lift = new Vector3(0, 0, r);
@@ -89,6 +91,10 @@ public sealed class AimLineNode : Node
         {
             shapes.Add(path);
         }
+        if (preview.Bank is { } bank && Segment(vp, frame, ghost, bank.ToVector3() + lift, BankColour) is { } banked)
+        {
+            shapes.Add(banked);
+        }
         if (preview.Ball is { } ball && RenderMath.ToPixel(vp, ghost, frame.Width, frame.Height) is { } g)
         {
             // The ring's radius on screen: the ball's radius seen at the ghost ball's distance.
@@ -98,7 +104,9 @@ public sealed class AimLineNode : Node
                 shapes.Add(new AidShape(g, g, Vector2.Distance(g, edge), GhostColour));
             }
             var centre = (sim.Balls[sim.IndexOf(ball)].Position with { Z = 0 }).ToVector3() + lift;
-            var end = centre + (preview.ObjectDirection.ToVector3() * (float)ObjectLineLength);
+            var from = sim.Balls[sim.IndexOf(ball)].Position;
+            double run = Math.Min(ObjectLineLength, AimPreview.ToCushion(from, preview.ObjectDirection, physics.Table, physics.BallRadius));
+            var end = centre + (preview.ObjectDirection.ToVector3() * (float)run);
             if (Segment(vp, frame, centre, end, ObjectColour) is { } objectLine)
             {
                 shapes.Add(objectLine);

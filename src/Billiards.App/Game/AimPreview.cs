@@ -9,17 +9,36 @@ namespace Billiards.App.Game;
 /// Where the aimed shot goes first, by ghost-ball geometry on the bed: the first object ball the
 /// cue ball's path meets, the ghost ball (the cue ball's centre at contact), the object ball's
 /// direction after contact (along the line of centres), and the easiest pocket for that ball
-/// (the smallest cut angle, then the shortest distance). Throw, squirt and cushions are ignored:
-/// it is an aid for the player and the default call, not a prediction of the physics.
+/// (the smallest cut angle, then the shortest distance). Given the table, a path that meets no ball
+/// ends where the cue ball reaches a cushion, with its mirror bank off it (<see cref="Bank"/>).
+/// Throw, squirt, spin and the cushion's own physics are ignored: it is an aid for the player and
+/// the default call, not a prediction of the physics.
 /// </summary>
 /// <param name="Ball">The first object ball hit, or null when the path meets none.</param>
-/// <param name="Ghost">The cue ball's centre at contact, or the end of the path drawn (m).</param>
+/// <param name="Ghost">The cue ball's centre at contact, or the end of the path drawn: at the cushion when the table is known (m).</param>
 /// <param name="ObjectDirection">The object ball's direction after contact (unit, bed plane), zero without a ball.</param>
 /// <param name="Pocket">The easiest pocket for <paramref name="Ball"/>, or none.</param>
 public sealed record AimPreview(BallId? Ball, Vec3 Ghost, Vec3 ObjectDirection, PocketId Pocket)
 {
-    /// <summary>How far the path is drawn when it meets no ball (m).</summary>
+    /// <summary>How far the path is drawn when it meets no ball and the table is not known (m).</summary>
     public const double FreeLength = 1.0;
+
+    /// <summary>How far the bank off the cushion is drawn at most (m).</summary>
+    public const double BankLength = 0.5;
+
+    /// <summary>The end of the bank off the cushion (the mirror of the path, stopped at the next cushion), or null.</summary>
+    public Vec3? Bank { get; init; }
+
+    /// <summary>
+    /// The distance (m) from a ball's centre at <paramref name="from"/> along <paramref name="direction"/>
+    /// (unit, bed plane) to where that ball touches a cushion nose line: its centre one radius inside
+    /// the nose rectangle. Infinity for a zero direction.
+    /// </summary>
+    public static double ToCushion(Vec3 from, Vec3 direction, TableSpec table, double radius)
+    {
+        ArgumentNullException.ThrowIfNull(table);
+        return table.DistanceToCushion(from, direction, radius);
+    }
 
     /// <summary>Computes the preview from the cue ball along <paramref name="direction"/> (bed plane).</summary>
     /// <param name="balls">Every ball's state.</param>
@@ -28,11 +47,13 @@ public sealed record AimPreview(BallId? Ball, Vec3 Ghost, Vec3 ObjectDirection, 
     /// <param name="direction">The aim (need not be unit; z is ignored).</param>
     /// <param name="radius">Ball radius (m).</param>
     /// <param name="pockets">The pockets' capture circles.</param>
-    public static AimPreview Compute(ReadOnlySpan<BallState> balls, IReadOnlyList<BallId> ids, int cueIndex, Vec3 direction, double radius, ReadOnlySpan<PocketCircle> pockets)
+    /// <param name="table">The table: the path stops at its cushions and banks off them; null draws <see cref="FreeLength"/>.</param>
+    public static AimPreview Compute(ReadOnlySpan<BallState> balls, IReadOnlyList<BallId> ids, int cueIndex, Vec3 direction, double radius, ReadOnlySpan<PocketCircle> pockets, TableSpec? table = null)
     {
         var start = balls[cueIndex].Position with { Z = 0 };
         var d = (direction with { Z = 0 }).Normalized();
-        double best = double.PositiveInfinity;
+        double cushion = table is null ? double.PositiveInfinity : ToCushion(start, d, table, radius);
+        double best = cushion;
         int hit = -1;
         for (int i = 0; i < balls.Length; i++)
         {
@@ -55,9 +76,18 @@ public sealed record AimPreview(BallId? Ball, Vec3 Ghost, Vec3 ObjectDirection, 
                 hit = i;
             }
         }
-        if (hit < 0)
+        if (hit < 0 && table is null)
         {
             return new AimPreview(null, start + FreeLength * d, Vec3.Zero, PocketId.None);
+        }
+        if (hit < 0)
+        {
+            var rail = start + cushion * d;
+            // The mirror bank: the component square to the cushion it reached turns round.
+            bool end = Math.Abs(Math.Abs(rail.X) - (table!.HalfLength - radius)) < 1e-9;
+            var banked = end ? d with { X = -d.X } : d with { Y = -d.Y };
+            double run = Math.Min(BankLength, ToCushion(rail, banked, table, radius));
+            return new AimPreview(null, rail, Vec3.Zero, PocketId.None) { Bank = rail + run * banked };
         }
         var ghost = start + best * d;
         var target = balls[hit].Position with { Z = 0 };

@@ -89,15 +89,37 @@ public sealed class CallPickerNode : Node
         }
         foreach (var pocket in _pockets)
         {
+            // The capture circle sits in the mouth, a ball's radius past the jaws; the hole a player
+            // sees opens beyond it into the rail. A click anywhere on the line from the one out over
+            // the other (HoleReach radii) calls the pocket.
             var c = pocket.Centre.ToVector3() with { Z = 0 };
-            if (Pixel(c) is { } centre && Pixel(c + new Vector3((float)pocket.Radius, 0, 0)) is { } edge
-                && Vector2.Distance(centre, at) <= MathF.Max(Vector2.Distance(centre, edge) * 1.5f, 12))
+            var outward = Outward(c);
+            var far = c + (outward * (float)(HoleReach * pocket.Radius));
+            if (Pixel(c) is { } centre && Pixel(far) is { } hole && Pixel(c + new Vector3((float)pocket.Radius, 0, 0)) is { } edge
+                && DistanceToSegment(at, centre, hole) <= MathF.Max(Vector2.Distance(centre, edge) * 1.5f, 12))
             {
                 match.CallPocket(PocketIds.FromIndex(pocket.Pocket));
                 return true;
             }
         }
         return false;
+    }
+
+    /// <summary>How far past the capture circle's centre a click still calls the pocket, in its radii: over the hole cut into the rail.</summary>
+    public const double HoleReach = 3;
+
+    // Out of the table from a pocket: a side pocket straight across, a corner one along its diagonal.
+    private static Vector3 Outward(Vector3 pocket)
+    {
+        float x = MathF.Abs(pocket.X) > 0.1f ? MathF.Sign(pocket.X) : 0;
+        return Vector3.Normalize(new Vector3(x, MathF.Sign(pocket.Y), 0));
+    }
+
+    private static float DistanceToSegment(Vector2 p, Vector2 a, Vector2 b)
+    {
+        var ab = b - a;
+        float t = ab.LengthSquared() > 1e-6f ? Math.Clamp(Vector2.Dot(p - a, ab) / ab.LengthSquared(), 0, 1) : 0;
+        return Vector2.Distance(p, a + (t * ab));
     }
 
     private Vector2? Pixel(Vector3 world) => RenderMath.ToPixel(_viewProjection, world, _size.Width, _size.Height);

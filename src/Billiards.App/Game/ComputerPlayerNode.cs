@@ -3,6 +3,7 @@ using Billiards.App.Nodes;
 using Billiards.App.Platform;
 using Billiards.Core.Ai;
 using Billiards.Core.Rules;
+using Billiards.Core.Table;
 
 namespace Billiards.App.Game;
 
@@ -50,6 +51,21 @@ public sealed class ComputerPlayerNode : Node
 
     /// <summary>The last hint taken, or null.</summary>
     public Decision? LastHint { get; private set; }
+
+    /// <summary>
+    /// What a hint says: the shot, its speed, and for a pot how often the planner saw it pot; a
+    /// safety, a kick, a break or a push-out is not meant to pot, so no rate is given for it.
+    /// </summary>
+    public static string HintLine(Decision hint)
+    {
+        ArgumentNullException.ThrowIfNull(hint);
+        var c = System.Globalization.CultureInfo.InvariantCulture;
+        string what = hint.Call is { IsSafety: false } call ? $"the {call.Ball} in the {call.Pocket.ToName()} pocket"
+            : hint.Call is { IsSafety: true } ? "a safety"
+            : $"{hint.Kind.ToString().ToLowerInvariant()} on the {hint.Target}";
+        string rate = ShotKinds.IsPot(hint.Kind, hint.Pocket) ? string.Create(c, $" (pots {hint.ExpectedPot * 100:0} % of the time)") : "";
+        return string.Create(c, $"Hint: {what} at {hint.Shot.Speed:0.0} m/s{rate}; Space shoots.");
+    }
 
     // Leave a core to the game's frames: the search runs beside them, never in their way.
     private static PlannerBudget Budget(int ms) => new(ms, Math.Max(1, Environment.ProcessorCount - 1));

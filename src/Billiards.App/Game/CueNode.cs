@@ -43,10 +43,28 @@ public sealed class CueNode : Node
     /// <summary>The least elevation (deg) that clears the rail behind the cue ball along the aim (<see cref="CueClearance"/>).</summary>
     public double RailElevationDegrees => _physics is null
         ? 0
-        : CueClearance.MinElevationDegrees(_physics.CueBallPosition, AimDirection, _physics.Table, _physics.BallRadius);
+        : CueClearance.RailElevationDegrees(_physics.CueBallPosition, AimDirection, _physics.Table, _physics.BallRadius, Tip.HeightFraction);
 
-    /// <summary>The elevation the cue is played and drawn at (deg): the chosen one, raised over a rail when it must be.</summary>
-    public double EffectiveElevationDegrees => Math.Min(Math.Max(ElevationDegrees, RailElevationDegrees), SeedControls.MaxElevationDegrees);
+    /// <summary>The least elevation (deg) at which the cue clears the rail and every ball behind the cue ball (<see cref="CueClearance"/>).</summary>
+    public double ClearanceDegrees => _physics is null
+        ? 0
+        : CueClearance.MinElevationDegrees(_physics.Table, _physics.BallRadius, _physics.CueBallPosition, AimDirection, BallsOnTable(), Tip.SideFraction, Tip.HeightFraction);
+
+    /// <summary>The elevation the cue is played and drawn at (deg): the chosen one, raised over a rail or a ball when it must be.</summary>
+    public double EffectiveElevationDegrees => Math.Min(Math.Max(ElevationDegrees, ClearanceDegrees), SeedControls.MaxElevationDegrees);
+
+    /// <summary>The shot as this cue can play it from where the cue ball lies (its elevation raised to the clearance along its own aim and tip).</summary>
+    public ShotSpec Playable(ShotSpec shot) => _physics is null
+        ? shot
+        : CueClearance.Playable(shot, _physics.Table, _physics.BallRadius, _physics.CueBallPosition, BallsOnTable());
+
+    /// <summary>Takes a planned shot's tip offset and elevation (a hint: the aim and the power are the match's).</summary>
+    public void Take(ShotSpec shot)
+    {
+        ArgumentNullException.ThrowIfNull(shot);
+        Tip.Set(shot.TipSide * SeedControls.BallRadiusCentimetres, shot.TipHeight * SeedControls.BallRadiusCentimetres);
+        ElevationDegrees = Math.Clamp(shot.ElevationDeg, 0, SeedControls.MaxElevationDegrees);
+    }
 
     /// <summary>Raises or lowers the cue by <paramref name="degrees"/>, within [0, max].</summary>
     public void ChangeElevation(double degrees) =>
@@ -55,6 +73,22 @@ public sealed class CueNode : Node
     /// <summary>The shot this cue would play at a cue speed (m/s): aim from the camera, tip offset and the effective elevation.</summary>
     public ShotSpec MakeShot(double speed) =>
         new(speed, ViewMath.AimDegrees(AimDirection), Tip.SideFraction, Tip.HeightFraction, EffectiveElevationDegrees);
+
+    // Reused: the clearance is asked for every frame.
+    private readonly List<Vec3> _balls = [];
+
+    private List<Vec3> BallsOnTable()
+    {
+        _balls.Clear();
+        foreach (var b in _physics!.Simulation.Balls)
+        {
+            if (!b.IsPocketed)
+            {
+                _balls.Add(b.Position);
+            }
+        }
+        return _balls;
+    }
 
     /// <inheritdoc />
     protected override void Ready()

@@ -70,6 +70,7 @@ public sealed class GameHost : IDisposable
     {
         double now = _clock.Now;
         FrameStarting?.Invoke(now);
+        _router.Repeat();
         double frameTime = now - _lastFrame;
         _lastFrame = now;
         _world.Loop.Advance(frameTime, _physicsStep, TimeScale);

@@ -28,6 +28,9 @@ public interface IFrameLoop
 /// <param name="GlRenderer">The GL renderer's name (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"), or null.</param>
 public sealed record GamePlatform(IGameWindow Window, IFrameLoop Loop, IFrameRenderer Renderer, IDisposable? Resources = null, string? GlRenderer = null) : IDisposable
 {
+    /// <summary>Sets the window's title (a game chosen in the start menu names itself), or null where there is no title.</summary>
+    public Action<string>? SetTitle { get; init; }
+
     /// <summary>Releases <see cref="Resources"/>.</summary>
     public void Dispose() => Resources?.Dispose();
 }

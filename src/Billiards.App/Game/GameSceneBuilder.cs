@@ -25,7 +25,7 @@ public sealed record MatchSetup(Billiards.Core.Rules.GameRules Rules, IReadOnlyL
 /// <summary>
 /// Builds the node tree a scene asks for: a scene loads only what it declares. Always: table,
 /// physics, camera, control modes, system keys and HUD. Only with a cue ball: the cue (without it
-/// there is nothing to shoot, and only view mode works). Only with a match (the scene's rules, or a chosen game): the match, the computer player and the call picker.
+/// there is nothing to shoot, and only view mode works). Only with a match (the scene's rules, or a chosen game): the match, the computer player, the call picker and the view that turns to the next legal ball.
 /// </summary>
 public static class GameSceneBuilder
 {
@@ -51,6 +51,7 @@ public static class GameSceneBuilder
             root.AddChild(new MatchNode(match.Rules, match.Players, scene.Game));
             root.AddChild(new ComputerPlayerNode());
             root.AddChild(new CallPickerNode());
+            root.AddChild(new TargetViewNode());
         }
         // Added after the modes: input runs from the last child back, so these keys come first.
         var keys = root.AddChild(new SystemKeysNode(loop));

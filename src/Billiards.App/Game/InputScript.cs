@@ -64,11 +64,12 @@ public sealed record ScriptEvent(double Time, ScriptAction Action, Key Key = Key
 ///     { "t": 1.3, "mouse_down": "left" },
 ///     { "t": 1.4, "mouse_move_by": [0, 40] },
 ///     { "t": 1.9, "mouse_up": "left" },
-///     { "t": 2.0, "wheel": 1 } ] }
+///     { "t": 2.0, "wheel": 1 }, { "t": 2.1, "wheel": -1 } ] }
 /// </code>
 /// <c>t</c> is seconds after the first frame, non-decreasing. Keys are the game's key names
 /// (letters, <c>D0</c>..<c>D9</c>, <c>Space</c>, <c>Escape</c>, <c>Up</c>, <c>F1</c>, ...), buttons
-/// <c>left</c>, <c>right</c>, <c>middle</c>; positions are window pixels, y down. The game closes
+/// <c>left</c>, <c>right</c>, <c>middle</c>; positions are window pixels, y down; the wheel turns
+/// by notches, positive away from the user, negative towards. The game closes
 /// at <c>duration</c> seconds (default: one second after the last event).
 /// <c>{ "t": 5.0, "wait": "rest" }</c> stops the script's clock at 5 s until every ball rests; the
 /// script's times are then its own clock's, which stands still while it waits. <c>"speed"</c> (default
@@ -198,7 +199,7 @@ public sealed record InputScript(IReadOnlyList<ScriptEvent> Events, double Durat
                 "mouse_move_by" => new ScriptEvent(time, ScriptAction.MouseMoveBy, Vector: Pair(property.Value, name, where)),
                 "mouse_down" => new ScriptEvent(time, ScriptAction.MouseDown, Button: ParseButton(property.Value, name, where)),
                 "mouse_up" => new ScriptEvent(time, ScriptAction.MouseUp, Button: ParseButton(property.Value, name, where)),
-                "wheel" => new ScriptEvent(time, ScriptAction.Wheel, Amount: (float)Number(property.Value, name, where)),
+                "wheel" => new ScriptEvent(time, ScriptAction.Wheel, Amount: Notches(property.Value, name, where)),
                 "wait" => property.Value.ValueKind == JsonValueKind.String && property.Value.GetString() == "rest"
                     ? new ScriptEvent(time, ScriptAction.WaitRest)
                     : throw Bad(name, where, "expected \"rest\""),
@@ -212,6 +213,15 @@ public sealed record InputScript(IReadOnlyList<ScriptEvent> Events, double Durat
         e.ValueKind == JsonValueKind.Number && e.TryGetDouble(out double v) && double.IsFinite(v) && v >= 0 && v <= 86_400
             ? v
             : throw Bad(name, at, "expected a number from 0 to 86400");
+
+    /// <summary>The most notches one wheel event may turn, either way.</summary>
+    public const double MaxWheelNotches = 100;
+
+    // Either way: negative notches turn the wheel towards the user.
+    private static float Notches(JsonElement e, string name, string at) =>
+        e.ValueKind == JsonValueKind.Number && e.TryGetDouble(out double v) && double.IsFinite(v) && Math.Abs(v) <= MaxWheelNotches
+            ? (float)v
+            : throw Bad(name, at, string.Create(CultureInfo.InvariantCulture, $"expected a number of notches from -{MaxWheelNotches} to {MaxWheelNotches}"));
 
     private static Vector2 Pair(JsonElement e, string name, string at)
     {

@@ -57,7 +57,7 @@ public sealed record MatchPlayer(string Name, int? ComputerLevel = null)
 /// applies the ruling (spots, reracks, ball in hand, the winner), and the node shows the table the
 /// match keeps and gives the cue ball in hand in its region. A game played here replays like any
 /// other (<see cref="Billiards.Core.Scenes.GameRecordFile"/>).
-/// Keys: Left/Right aim (A/D fine), W/Q power, Space shoots, 1-5 choose an offered option,
+/// Keys: Left/Right aim (A/D or Shift fine; held keys repeat, faster the longer they are held), W/Q power, Space shoots, 1-5 choose an offered option,
 /// O declares a push-out, C cycles the called pocket, B cycles the called ball, X aims at the call, Enter rematch.
 /// </summary>
 public sealed class MatchNode : Node
@@ -219,6 +219,7 @@ public sealed class MatchNode : Node
         {
             // A hint sets the person's power; the computer strikes its own shot and leaves the person's power alone.
             Power = Math.Clamp(decision.Shot.Speed, MinPower, MaxPower);
+            _cue?.Take(decision.Shot);
         }
         AimAt(decision.Shot.AimDeg);
     }
@@ -227,8 +228,7 @@ public sealed class MatchNode : Node
     public void SayHint(Billiards.Core.Ai.Decision hint)
     {
         ArgumentNullException.ThrowIfNull(hint);
-        string what = hint.Call is { IsSafety: false } c ? $"the {c.Ball} in the {c.Pocket.ToName()} pocket" : hint.Call is { IsSafety: true } ? "a safety" : $"{hint.Kind.ToString().ToLowerInvariant()} on the {hint.Target}";
-        Say(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"Hint: {what} at {hint.Shot.Speed:0.0} m/s (works {hint.ExpectedPot * 100:0} % of the time); Space shoots."));
+        Say(ComputerPlayerNode.HintLine(hint));
     }
 
     /// <summary>Calls a ball (a click on it): its easiest pocket until a pocket is called.</summary>
@@ -256,7 +256,7 @@ public sealed class MatchNode : Node
     {
         if (CanShoot)
         {
-            _physics!.Strike(shot);
+            _physics!.Strike(_cue?.Playable(shot) ?? shot);
         }
     }
 
@@ -384,8 +384,8 @@ public sealed class MatchNode : Node
             case Key.Left or Key.Right or Key.A or Key.D:
                 Turn(key.Key switch
                 {
-                    Key.Left => AimStepDegrees,
-                    Key.Right => -AimStepDegrees,
+                    Key.Left => key.Shift ? FineAimStepDegrees : AimStepDegrees,
+                    Key.Right => key.Shift ? -FineAimStepDegrees : -AimStepDegrees,
                     Key.A => FineAimStepDegrees,
                     _ => -FineAimStepDegrees,
                 });

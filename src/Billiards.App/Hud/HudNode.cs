@@ -22,6 +22,7 @@ public sealed class HudNode : Node
     private MatchNode? _match;
     private ComputerPlayerNode? _computer;
     private AimLineNode? _aimLine;
+    private Audio.AudioNode? _audio;
 
     /// <summary>The frame-rate meter, fed every frame.</summary>
     public FrameRateMeter FrameRate { get; } = new();
@@ -105,16 +106,23 @@ public sealed class HudNode : Node
         _lines.Add(_physics?.LastShot is { } shot
             ? string.Create(c, $"Last shot: {shot.Speed:0.00} m/s")
             : "Last shot: -");
-        if (_cue is not null)
+        // The cue's settings only while it is there to be set: rolling balls would show stale ones.
+        if (_cue is { IsVisible: true })
         {
             _lines.Add(string.Create(c, $"Spin: side {_cue.Tip.SideFraction:+0.00;-0.00;0.00} R, height {_cue.Tip.HeightFraction:+0.00;-0.00;0.00} R"));
             _lines.Add(_cue.EffectiveElevationDegrees > _cue.ElevationDegrees + 0.5
-                ? string.Create(c, $"Elevation: {_cue.EffectiveElevationDegrees:0} deg (over the rail)")
+                ? string.Create(c, $"Elevation: {_cue.EffectiveElevationDegrees:0} deg ({(_cue.RailElevationDegrees >= _cue.ClearanceDegrees - 1e-9 ? "over the rail" : "over a ball")})")
                 : string.Create(c, $"Elevation: {_cue.ElevationDegrees:0} deg"));
         }
         if (_match is not null && _physics is not null)
         {
             MatchLines.Add(_lines, _match, _physics, _computer?.Status, _icons);
+        }
+        // The sound joins the tree after the game has started: looked for until found.
+        _audio ??= FindInTree<Audio.AudioNode>();
+        if (_audio?.StatusLine is { } sound)
+        {
+            _lines.Add(sound);
         }
         _lines.Add(string.Create(c, $"FPS: {FrameRate.Smoothed:0}"));
         if (_keys is { Loop.Paused: true })
@@ -129,7 +137,7 @@ public sealed class HudNode : Node
     {
         InputMode.View => "view [V]",
         InputMode.Shot => "shot [S]",
-        InputMode.Spin => "effet [E]",
+        InputMode.Spin => "spin [E]",
         InputMode.Move => "move cue ball [M]",
         _ => mode.ToString(),
     };

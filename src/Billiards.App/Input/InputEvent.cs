@@ -8,10 +8,18 @@ namespace Billiards.App.Input;
 /// window reported it: the stroke (Formel 31) measures time between mouse events.
 /// </summary>
 /// <param name="Time">Clock time of the event (s).</param>
-public abstract record InputEvent(double Time);
+public abstract record InputEvent(double Time)
+{
+    /// <summary>True when Shift was held: the fine version of an aim key or of a mouse orbit.</summary>
+    public bool Shift { get; init; }
+}
 
-/// <summary>A key went down or up.</summary>
-public sealed record KeyInput(double Time, Key Key, bool Pressed) : InputEvent(Time);
+/// <summary>A key went down or up; <see cref="IsRepeat"/> marks a held key's repeat (see <see cref="KeyRepeat"/>).</summary>
+public sealed record KeyInput(double Time, Key Key, bool Pressed) : InputEvent(Time)
+{
+    /// <summary>True for a repeat of a held key rather than the key going down.</summary>
+    public bool IsRepeat { get; init; }
+}
 
 /// <summary>The cursor moved; <paramref name="Delta"/> is the movement since the previous event (pixels, y down).</summary>
 public sealed record MouseMoveInput(double Time, Vector2 Position, Vector2 Delta) : InputEvent(Time);

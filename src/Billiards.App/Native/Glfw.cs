@@ -9,7 +9,7 @@ internal static unsafe class Glfw
     public const int Focused = 0x20001, Resizable = 0x20003, Visible = 0x20004;
     public const int Samples = 0x2100D, ContextVersionMajor = 0x22002, ContextVersionMinor = 0x22003;
     public const int OpenGlForwardCompat = 0x22006, OpenGlProfile = 0x22008, OpenGlCoreProfile = 0x32001;
-    public const int CursorMode = 0x33001, CursorNormal = 0x34001, CursorDisabled = 0x34003, RawMouseMotion = 0x33005;
+    public const int CursorMode = 0x33001, CursorNormal = 0x34001, CursorHidden = 0x34002, CursorDisabled = 0x34003, RawMouseMotion = 0x33005;
     public const int Release = 0, Press = 1, Repeat = 2;
 
     private static readonly Lazy<nint> s_library = new(() => NativeLoader.Load("GLFW 3",
@@ -96,6 +96,8 @@ internal static unsafe class Glfw
         ((delegate* unmanaged<nint, int*, int*, void>)F("glfwGetWindowSize"))(window, &w, &h);
         return (w, h);
     }
+
+    public static int GetInputMode(nint window, int mode) => ((delegate* unmanaged<nint, int, int>)F("glfwGetInputMode"))(window, mode);
 
     public static void SetInputMode(nint window, int mode, int value) => ((delegate* unmanaged<nint, int, int, void>)F("glfwSetInputMode"))(window, mode, value);
     public static bool RawMouseMotionSupported() => ((delegate* unmanaged<int>)F("glfwRawMouseMotionSupported"))() != 0;

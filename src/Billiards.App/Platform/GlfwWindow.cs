@@ -72,14 +72,17 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
 
     /// <summary>
     /// Runs the loop until the window closes: polls events, calls <paramref name="frame"/> with
-    /// the seconds since the previous frame (0 on the first), swaps buffers.
+    /// the seconds since the previous frame (0 on the first), swaps buffers, and waits as
+    /// <see cref="FrameCap"/> says.
     /// </summary>
     public void Run(Action<double> frame)
     {
+        var pacer = new FramePacer(FrameCap);
         double last = Glfw.GetTime();
         bool first = true;
         while (!Glfw.WindowShouldClose(_window))
         {
+            double started = Glfw.GetTime();
             Glfw.PollEvents();
             if (_pending is { } pending)
             {
@@ -95,20 +98,51 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
             // frame's input is read, so input shows on the next frame. Without it a driver may
             // queue frames (or, without vsync, pile them up) between the input and the screen.
             Gl.Finish();
+            double ended = Glfw.GetTime();
+            LastWorkSeconds = ended - started;
+            double wait = pacer.WaitAfter(ended);
+            if (wait > 0)
+            {
+                Thread.Sleep(TimeSpan.FromSeconds(wait));
+            }
+        }
+    }
+
+    /// <summary>
+    /// The most frames a second <see cref="Run"/> draws (0: no cap). The swap waits for the
+    /// display's refresh where the driver can (vsync); this cap also holds where it cannot (a
+    /// software rasteriser, a virtual display), so that the game does not keep every core busy.
+    /// </summary>
+    public double FrameCap { get; set; }
+
+    /// <summary>How long the last frame's work took (s): input, the frame, the swap and the wait for the GPU, not the cap's wait.</summary>
+    public double LastWorkSeconds { get; private set; }
+
+    /// <summary>The primary monitor's refresh rate (Hz), or 0 when the display does not say.</summary>
+    public static int RefreshRate
+    {
+        get
+        {
+            nint monitor = Glfw.GetPrimaryMonitor();
+            return monitor == 0 ? 0 : Math.Max(0, Glfw.GetVideoMode(monitor).RefreshRate);
         }
     }
 
     /// <summary>Sets the title bar text.</summary>
     public void SetTitle(string title) => Glfw.SetWindowTitle(_window, title);
 
-    public void SetMouseCaptured(bool captured)
-    {
-        Glfw.SetInputMode(_window, Glfw.CursorMode, captured ? Glfw.CursorDisabled : Glfw.CursorNormal);
-        if (captured && Glfw.RawMouseMotionSupported())
-        {
-            Glfw.SetInputMode(_window, Glfw.RawMouseMotion, Glfw.True);
-        }
-    }
+    /// <summary>
+    /// Hides the cursor while stroking (or shows it again). The cursor is hidden, not disabled:
+    /// a disabled cursor reports motion relative to a point GLFW warps it back to, which only a
+    /// relative mouse gives; a tablet, a remote desktop or a virtual machine moves the pointer to
+    /// absolute positions, and the stroke (which reads the pointer's height) would see jumps or
+    /// nothing. While the button is held the window keeps the pointer's reports even outside it.
+    /// </summary>
+    public void SetMouseCaptured(bool captured) =>
+        Glfw.SetInputMode(_window, Glfw.CursorMode, captured ? Glfw.CursorHidden : Glfw.CursorNormal);
+
+    /// <summary>True while the cursor is hidden for a stroke.</summary>
+    public bool IsCursorHidden => Glfw.GetInputMode(_window, Glfw.CursorMode) == Glfw.CursorHidden;
 
     public void ToggleFullscreen()
     {
@@ -165,6 +199,7 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
         291 => Key.F2,
         292 => Key.F3,
         300 => Key.F11,
+        340 or 344 => Key.Shift,
         _ => Key.Unknown,
     };
 
@@ -188,6 +223,7 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
     private static void OnKey(nint window, int key, int scancode, int action, int mods)
     {
         var mapped = MapKey(key);
+        // The system's repeats (Glfw.Repeat) are left out: the game repeats held keys itself (KeyRepeat).
         if (action == Glfw.Press)
         {
             Dispatch(window, w => w.KeyDown?.Invoke(mapped));

@@ -13,6 +13,8 @@ public enum Key
     D0, D1, D2, D3, D4, D5, D6, D7, D8, D9,
     /// <summary>Other keys.</summary>
     Space, Escape, Enter, Tab, Up, Down, Left, Right, PageUp, PageDown, Plus, Minus, F1, F2, F3, F11,
+    /// <summary>Either Shift key: fine aim.</summary>
+    Shift,
 }
 
 /// <summary>Mouse buttons.</summary>
@@ -56,7 +58,7 @@ public interface IGameWindow
     /// <summary>Framebuffer size (pixels).</summary>
     (int Width, int Height) FramebufferSize { get; }
 
-    /// <summary>Hides and locks the cursor (for stroking) or releases it.</summary>
+    /// <summary>Hides the cursor (for stroking) or shows it again.</summary>
     void SetMouseCaptured(bool captured);
 
     /// <summary>Switches between windowed and fullscreen.</summary>

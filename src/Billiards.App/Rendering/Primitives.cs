@@ -6,13 +6,13 @@ namespace Billiards.App.Rendering;
 public static class Primitives
 {
     /// <summary>Cue length (m): the seed's 145 cm.</summary>
-    public const float CueLength = 1.45f;
+    public const float CueLength = (float)Billiards.Core.Cue.CueClearance.CueLength;
 
     /// <summary>Radius at the tip (m): 0.5 cm.</summary>
-    public const float CueTipRadius = 0.005f;
+    public const float CueTipRadius = (float)Billiards.Core.Cue.CueClearance.TipRadius;
 
     /// <summary>Radius at the butt (m): 1.25 cm, closed by a sphere of 1.26 cm.</summary>
-    public const float CueButtRadius = 0.0125f;
+    public const float CueButtRadius = (float)Billiards.Core.Cue.CueClearance.ButtRadius;
 
     /// <summary>
     /// A unit sphere of <paramref name="slices"/> x <paramref name="stacks"/> quads; uv is the

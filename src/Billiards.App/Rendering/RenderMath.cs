@@ -40,8 +40,14 @@ public static class RenderMath
     }
 
     /// <summary>The view-projection of a frame.</summary>
-    public static Matrix4x4 ViewProjection(RenderFrame frame) =>
-        View(frame.Eye, frame.Target) * Projection(frame.FovYDegrees, (float)frame.Width / Math.Max(1, frame.Height));
+    public static Matrix4x4 ViewProjection(RenderFrame frame) => ViewProjection(frame, frame.Width, frame.Height);
+
+    /// <summary>The view-projection of a frame drawn on a target of <paramref name="width"/> x <paramref name="height"/> pixels.</summary>
+    public static Matrix4x4 ViewProjection(RenderFrame frame, int width, int height)
+    {
+        ArgumentNullException.ThrowIfNull(frame);
+        return View(frame.Eye, frame.Target) * Projection(frame.FovYDegrees, (float)width / Math.Max(1, height));
+    }
 
     /// <summary>
     /// Pixel coordinates (x right, y down from the top-left corner) of a world point, or null

@@ -28,18 +28,16 @@ internal sealed class Renderer : IDisposable
     private readonly HudRenderer _hud;
     private readonly StaticLayer _tableLayer;
     private readonly StaticLayer _sceneLayer;
-    private readonly Action _drawTable;
-    private readonly Action _drawScene;
+    private readonly Action<Pass> _drawTable;
+    private readonly Action<Pass> _drawScene;
     private readonly List<BallVisual> _lastBalls = [];
     private float _lastRadius;
     private long _ballsVersion;
-    private StaticLayer.ViewKey _view;
     private Vector3? _lastEye;
     private Matrix4x4 _lastViewProjection;
     private PlainFramebuffer _reduced;
     private (int Width, int Height) _reducedSize;
     private readonly float[] _lamps = new float[12];
-    private RenderFrame? _tableFrame;
     private TableModel? _table;
     private TableModel? _room;
     private readonly DetailTextures _details;
@@ -96,8 +94,24 @@ internal sealed class Renderer : IDisposable
     /// </summary>
     public bool DynamicResolution { get; set; }
 
-    /// <summary>Scale of the 3D scene's resolution while the camera moves (with <see cref="DynamicResolution"/>).</summary>
-    public const float MovingScale = 0.5f;
+    /// <summary>The scale of the 3D scene's resolution while the camera moves (with <see cref="DynamicResolution"/>): the governor's.</summary>
+    public float MovingScale => _governor.Scale;
+
+    private readonly ResolutionGovernor _governor = new();
+    private bool _lastReduced;
+
+    /// <summary>
+    /// Tells the renderer how long the last frame's work took (s, the swap and the wait for the
+    /// GPU included, any frame cap's wait left out) against the frame's budget (s): after a frame
+    /// drawn at reduced resolution, the governor moves the scale so that such frames fit.
+    /// </summary>
+    public void ReportFrameTime(double seconds, double budget)
+    {
+        if (_lastReduced)
+        {
+            _governor.Report(seconds, budget);
+        }
+    }
 
     /// <summary>Frames drawn at the reduced resolution because the camera moved.</summary>
     public long ReducedFrames { get; private set; }
@@ -110,13 +124,14 @@ internal sealed class Renderer : IDisposable
         bool moving = _lastEye is { } eye && (eye != frame.Eye || _lastViewProjection != viewProjection);
         _lastEye = frame.Eye;
         _lastViewProjection = viewProjection;
-        if (DynamicResolution && moving)
+        _lastReduced = DynamicResolution && moving && MovingScale < 1;
+        if (_lastReduced)
         {
             DrawReduced(frame);
         }
         else
         {
-            DrawScene3D(frame);
+            DrawScene3D(frame, frame.Width, frame.Height);
         }
 
         if (frame.Hud is { } hud)
@@ -138,17 +153,7 @@ internal sealed class Renderer : IDisposable
             _reducedSize = (w, h);
         }
         _gl.BindFramebuffer(Gl.Framebuffer, _reduced.Framebuffer);
-        frame.Width = w;
-        frame.Height = h;
-        try
-        {
-            DrawScene3D(frame);
-        }
-        finally
-        {
-            frame.Width = width;
-            frame.Height = height;
-        }
+        DrawScene3D(frame, w, h);
         _gl.BindFramebuffer(Gl.ReadFramebuffer, _reduced.Framebuffer);
         _gl.BindFramebuffer(Gl.DrawFramebuffer, target);
         _gl.BlitFramebuffer(0, 0, w, h, 0, 0, width, height, Gl.ColorBufferBit, (uint)Gl.Linear);
@@ -157,26 +162,33 @@ internal sealed class Renderer : IDisposable
         ReducedFrames++;
     }
 
-    /// <summary>The table, the room, the balls, the cue and the debug lines, at the frame's size.</summary>
-    private void DrawScene3D(RenderFrame frame)
+    /// <summary>
+    /// What a pass draws: the frame, and the view it is drawn from at the size of the target
+    /// (the frame's own size, or less for a reduced frame; the frame itself is never changed).
+    /// </summary>
+    private readonly record struct Pass(RenderFrame Frame, StaticLayer.ViewKey View)
+    {
+        public int Width => View.Width;
+
+        public int Height => View.Height;
+    }
+
+    /// <summary>The table, the room, the balls, the cue and the debug lines, at <paramref name="width"/> x <paramref name="height"/>.</summary>
+    private void DrawScene3D(RenderFrame frame, int width, int height)
     {
         var gl = _gl;
-        var viewProjection = RenderMath.ViewProjection(frame);
+        var viewProjection = RenderMath.ViewProjection(frame, width, height);
         float radius = frame.BallRadius;
-        Span<float> lamps = stackalloc float[12];
-        Lamps(frame.Table, lamps);
-        lamps.CopyTo(_lamps);
-        _tableFrame = frame;
-        var view = new StaticLayer.ViewKey(viewProjection, frame.Eye, frame.Table, frame.Width, frame.Height);
-        _view = view;
-        _sceneLayer.Draw(view, BallsVersion(frame), _drawScene);
-        gl.Viewport(0, 0, frame.Width, frame.Height);
+        Lamps(frame.Table, _lamps);
+        var pass = new Pass(frame, new StaticLayer.ViewKey(viewProjection, frame.Eye, frame.Table, width, height));
+        _sceneLayer.Draw(pass.View, BallsVersion(frame), _drawScene, pass);
+        gl.Viewport(0, 0, width, height);
         gl.Enable(Gl.DepthTest);
         gl.DepthFunc(Gl.LessEqual);
         gl.Disable(Gl.Blend);
         gl.Enable(Gl.CullFace);
         gl.CullFaceMode(Gl.Back);
-        _lit.Begin(viewProjection, frame.Eye, lamps);
+        _lit.Begin(viewProjection, frame.Eye, _lamps);
 
         if (frame.Cue.Visible)
         {
@@ -188,7 +200,7 @@ internal sealed class Renderer : IDisposable
 
         if (frame.ShowCollisionGeometry && frame.CollisionTriangles.Count > 0)
         {
-            _lines.Draw(viewProjection, frame.CollisionTriangles, frame.Width, frame.Height);
+            _lines.Draw(viewProjection, frame.CollisionTriangles, width, height);
         }
     }
 
@@ -196,19 +208,19 @@ internal sealed class Renderer : IDisposable
     /// The table, then the balls' shadows and the balls: the part of the frame that stands still
     /// between shots. The table alone is its own layer, kept while the balls roll.
     /// </summary>
-    private void DrawScene()
+    private void DrawScene(Pass pass)
     {
         var gl = _gl;
-        var frame = _tableFrame!;
+        var frame = pass.Frame;
         float radius = frame.BallRadius;
-        _tableLayer.Draw(_view, 0, _drawTable);
-        gl.Viewport(0, 0, frame.Width, frame.Height);
+        _tableLayer.Draw(pass.View, 0, _drawTable, pass);
+        gl.Viewport(0, 0, pass.Width, pass.Height);
         gl.Enable(Gl.DepthTest);
         gl.DepthFunc(Gl.LessEqual);
         gl.Disable(Gl.Blend);
-        _shadows.Draw(_view.ViewProjection, frame.Balls, radius, _lamps, LampRadius, Ambient);
+        _shadows.Draw(pass.View.ViewProjection, frame.Balls, radius, _lamps, LampRadius, Ambient);
 
-        _lit.Begin(_view.ViewProjection, frame.Eye, _lamps);
+        _lit.Begin(pass.View.ViewProjection, frame.Eye, _lamps);
         // Balls and the cue are closed and wound counter-clockwise outwards: their far halves are
         // dropped before rasterising.
         gl.Enable(Gl.CullFace);
@@ -221,7 +233,7 @@ internal sealed class Renderer : IDisposable
             }
             var model = Matrix4x4.CreateScale(radius) * Matrix4x4.CreateFromQuaternion(Normalized(ball.Orientation)) * Matrix4x4.CreateTranslation(ball.Position);
             _lit.Material(Vector4.One, new Vector3(0.55f), 160, reflect: 0.045f);
-            _lit.Draw(model, BallTexture(ball.Id), SphereFor(ball.Position, frame, radius));
+            _lit.Draw(model, BallTexture(ball.Id), SphereFor(ball.Position, frame, pass.Height, radius));
         }
         gl.Disable(Gl.CullFace);
     }
@@ -240,11 +252,11 @@ internal sealed class Renderer : IDisposable
         return _ballsVersion;
     }
 
-    private void DrawTable()
+    private void DrawTable(Pass pass)
     {
         var gl = _gl;
-        var frame = _tableFrame!;
-        gl.Viewport(0, 0, frame.Width, frame.Height);
+        var frame = pass.Frame;
+        gl.Viewport(0, 0, pass.Width, pass.Height);
         gl.ClearColor(0.018f, 0.016f, 0.014f, 1);
         gl.Clear(Gl.ColorBufferBit | Gl.DepthBufferBit);
         gl.Enable(Gl.DepthTest);
@@ -252,7 +264,7 @@ internal sealed class Renderer : IDisposable
         gl.Disable(Gl.CullFace);
         gl.Disable(Gl.Blend);
         gl.Enable(Gl.Multisample);
-        _gouraud.Begin(_view.ViewProjection, frame.Eye, _lamps);
+        _gouraud.Begin(pass.View.ViewProjection, frame.Eye, _lamps);
         _gouraud.Half((float)frame.Table.HalfLength, (float)frame.Table.HalfWidth);
         foreach (var part in _table!.Parts)
         {
@@ -335,16 +347,20 @@ internal sealed class Renderer : IDisposable
     }
 
     /// <summary>The ball's radius on screen (px) at <paramref name="position"/>, seen from the frame's eye.</summary>
-    public static float RadiusPixels(Vector3 position, RenderFrame frame, float radius)
+    public static float RadiusPixels(Vector3 position, RenderFrame frame, float radius) => RadiusPixels(position, frame, frame.Height, radius);
+
+    /// <summary>The ball's radius (px) on a target <paramref name="height"/> pixels high.</summary>
+    public static float RadiusPixels(Vector3 position, RenderFrame frame, int height, float radius)
     {
+        ArgumentNullException.ThrowIfNull(frame);
         float distance = MathF.Max(Vector3.Distance(position, frame.Eye), RenderMath.Near);
-        float focal = 0.5f * frame.Height / MathF.Tan(frame.FovYDegrees * MathF.PI / 360);
+        float focal = 0.5f * height / MathF.Tan(frame.FovYDegrees * MathF.PI / 360);
         return radius * focal / distance;
     }
 
-    private GpuMesh SphereFor(Vector3 position, RenderFrame frame, float radius)
+    private GpuMesh SphereFor(Vector3 position, RenderFrame frame, int height, float radius)
     {
-        int slices = SlicesFor(RadiusPixels(position, frame, radius));
+        int slices = SlicesFor(RadiusPixels(position, frame, height, radius));
         foreach (var (n, mesh) in _spheres)
         {
             if (n == slices)

@@ -33,16 +33,16 @@ internal sealed class StaticLayer : IDisposable
     /// Puts the layer into the bound draw framebuffer: from the stored layer when
     /// <paramref name="view"/> and <paramref name="content"/> (a version the caller changes
     /// whenever what <paramref name="draw"/> draws changes) are the stored ones, else by
-    /// <paramref name="draw"/> (which clears and draws into whatever framebuffer is bound),
-    /// storing the result when they stood still for two frames.
+    /// <paramref name="draw"/> with <paramref name="state"/> (which clears and draws into whatever
+    /// framebuffer is bound), storing the result when they stood still for two frames.
     /// </summary>
-    public void Draw(ViewKey view, long content, Action draw)
+    public void Draw<TState>(ViewKey view, long content, Action<TState> draw, TState state)
     {
         var key = (view, content);
         uint target = (uint)_gl.GetInteger(Gl.DrawFramebufferBinding);
         if (_unsupported || _gl.GetInteger(Gl.Samples) > 0)
         {
-            draw();
+            draw(state);
             return;
         }
         if (_stored == key)
@@ -55,18 +55,18 @@ internal sealed class StaticLayer : IDisposable
         {
             _previous = key;
             _stored = null;
-            draw();
+            draw(state);
             return;
         }
         Ensure(view.Width, view.Height);
         if (_unsupported)
         {
             _gl.BindFramebuffer(Gl.Framebuffer, target);
-            draw();
+            draw(state);
             return;
         }
         _gl.BindFramebuffer(Gl.Framebuffer, _target.Framebuffer);
-        draw();
+        draw(state);
         _stored = key;
         CopyTo(target, view);
         if (_gl.GetError() != 0)
@@ -75,7 +75,7 @@ internal sealed class StaticLayer : IDisposable
             _unsupported = true;
             _stored = null;
             _gl.BindFramebuffer(Gl.Framebuffer, target);
-            draw();
+            draw(state);
         }
     }
 

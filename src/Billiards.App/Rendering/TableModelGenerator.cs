@@ -41,6 +41,7 @@ public static class TableModelGenerator
         public static readonly MeshMaterial Frame = new("frame", new(0.26f, 0.11f, 0.045f), new(0.1f, 0.09f, 0.08f), 80);
         public static readonly MeshMaterial Sight = new("sight", new(0.95f, 0.93f, 0.86f), new(0.6f, 0.6f, 0.6f), 80);
         public static readonly MeshMaterial Pocket = new("pocket", new(0.16f, 0.09f, 0.05f), new(0.12f, 0.1f, 0.08f), 30);
+        public static readonly MeshMaterial PocketFloor = new("pocket_floor", new(0.035f, 0.022f, 0.014f), new(0.02f, 0.02f, 0.02f), 10);
         public static readonly MeshMaterial Trim = new("trim", new(0.06f, 0.05f, 0.045f), new(0.3f, 0.3f, 0.3f), 40);
         public static readonly MeshMaterial Floor = new("floor", new(0.24f, 0.17f, 0.12f), new(0.06f, 0.06f, 0.06f), 12);
     }
@@ -67,6 +68,7 @@ public static class TableModelGenerator
         var sight = new MeshBuilder(Materials.Sight);
         var pocket = new MeshBuilder(Materials.Pocket);
         var trim = new MeshBuilder(Materials.Trim);
+        var pocketFloor = new MeshBuilder(Materials.PocketFloor);
         var floor = new MeshBuilder(Materials.Floor);
 
         // Pockets in the order a counter-clockwise walk round the bed meets them.
@@ -88,10 +90,10 @@ public static class TableModelGenerator
         BuildSights(sight, spec, hx, hy, railTop);
         foreach (var p in pockets)
         {
-            BuildPocket(pocket, trim, p, hx + inner, hy + inner, railTop);
+            BuildPocket(pocket, pocketFloor, trim, p, railTop);
         }
         BuildLegsAndFloor(frame, floor, hx + outer, hy + outer);
-        return [cloth, cushion, rail, frame, sight, pocket, trim, floor];
+        return [cloth, cushion, rail, frame, sight, pocket, pocketFloor, trim, floor];
     }
 
     private static Pocket CornerPocket(TableSpec spec, float hx, float hy, int sx, int sy, float outer)
@@ -383,38 +385,55 @@ public static class TableModelGenerator
         }
     }
 
-    private static void BuildPocket(MeshBuilder cup, MeshBuilder trim, Pocket p, float bx, float by, float railTop)
+    private static void BuildPocket(MeshBuilder cup, MeshBuilder bottomOf, MeshBuilder trim, Pocket p, float railTop)
     {
-        const int Segments = 48;
         float bottom = -PocketDepth;
-        var centre3 = new Vector3(p.Centre, 0);
-        for (int k = 0; k < Segments; k++)
+        // The cup's rim follows the hole exactly, on the very points of the bed's and the rail's
+        // outlines: its near half from jaw to jaw at the bed, its far half at the rail's top. A wall
+        // cut in angular steps instead stood up over the cloth at one jaw and left a gap under the
+        // rail at the other, and its edge did not meet the hole's.
+        var near = new List<Vector2> { p.JawA };
+        near.AddRange(Arc(p.Centre, p.Radius, p.JawA, p.NearApex));
+        near.AddRange(Arc(p.Centre, p.Radius, p.NearApex, p.JawB));
+        var far = new List<Vector2> { p.JawB };
+        far.AddRange(Arc(p.Centre, p.Radius, p.JawB, p.FarApex));
+        far.AddRange(Arc(p.Centre, p.Radius, p.FarApex, p.JawA));
+        // A leather trim round the rail's cut: a thin flat ring on the rail, and its outer edge; the
+        // far wall rises to the ring's top, so that nothing lies in the wall's own surface (which
+        // fought with it for depth and speckled the rim).
+        const float Width = 0.01f, Rise = 0.001f;
+        float z = railTop + Rise;
+        Wall(cup, p, near, 0, bottom);
+        Wall(cup, p, far, z, bottom);
+        var rim = near.Concat(far.Skip(1)).ToList();
+        var centre3 = new Vector3(p.Centre, bottom);
+        for (int k = 0; k + 1 < rim.Count; k++)
         {
-            float a0 = 2 * MathF.PI * k / Segments, a1 = 2 * MathF.PI * (k + 1) / Segments;
-            var d0 = new Vector2(MathF.Cos(a0), MathF.Sin(a0));
-            var d1 = new Vector2(MathF.Cos(a1), MathF.Sin(a1));
-            var p0 = p.Centre + (p.Radius * d0);
-            var p1 = p.Centre + (p.Radius * d1);
-            var mid = (p0 + p1) / 2;
-            // Over the rail the wall starts at the rail top, inside the bed at the bed.
-            bool underRail = MathF.Abs(mid.X) > bx || MathF.Abs(mid.Y) > by;
-            float top = underRail ? railTop : 0;
-            cup.Quad(new Vector3(p0, top), new Vector3(p1, top), new Vector3(p1, bottom), new Vector3(p0, bottom),
-                new Vector3(-d0, 0), new Vector3(-d1, 0), new Vector3(-d1, 0), new Vector3(-d0, 0));
-            cup.ConvexPolygon([centre3 with { Z = bottom }, new Vector3(p1, bottom), new Vector3(p0, bottom)], Vector3.UnitZ);
-            if (underRail)
-            {
-                // A leather trim round the rail's cut: a flat ring and its outer edge.
-                const float Width = 0.014f, Rise = 0.002f;
-                var q0 = p.Centre + ((p.Radius + Width) * d0);
-                var q1 = p.Centre + ((p.Radius + Width) * d1);
-                float z = railTop + Rise;
-                trim.Quad(new Vector3(p0, z), new Vector3(p1, z), new Vector3(q1, z), new Vector3(q0, z), Vector3.UnitZ);
-                trim.Quad(new Vector3(q0, z), new Vector3(q1, z), new Vector3(q1, railTop), new Vector3(q0, railTop),
-                    new Vector3(d0, 0), new Vector3(d1, 0), new Vector3(d1, 0), new Vector3(d0, 0));
-                trim.Quad(new Vector3(p0, z), new Vector3(p1, z), new Vector3(p1, railTop - 0.01f), new Vector3(p0, railTop - 0.01f),
-                    new Vector3(-d0, 0), new Vector3(-d1, 0), new Vector3(-d1, 0), new Vector3(-d0, 0));
-            }
+            // Darker than the walls, which the lamps light: the hole reads as deep, not as a disc.
+            bottomOf.ConvexPolygon([centre3, new Vector3(rim[k + 1], bottom), new Vector3(rim[k], bottom)], Vector3.UnitZ);
+        }
+        for (int k = 0; k + 1 < far.Count; k++)
+        {
+            var d0 = Vector2.Normalize(far[k] - p.Centre);
+            var d1 = Vector2.Normalize(far[k + 1] - p.Centre);
+            var q0 = far[k] + (Width * d0);
+            var q1 = far[k + 1] + (Width * d1);
+            trim.Quad(new Vector3(far[k], z), new Vector3(far[k + 1], z), new Vector3(q1, z), new Vector3(q0, z), Vector3.UnitZ);
+            trim.Quad(new Vector3(q0, z), new Vector3(q1, z), new Vector3(q1, railTop), new Vector3(q0, railTop),
+                new Vector3(d0, 0), new Vector3(d1, 0), new Vector3(d1, 0), new Vector3(d0, 0));
+        }
+    }
+
+    // The cup's wall under a run of rim points, from their height down to the bottom, facing the centre.
+    private static void Wall(MeshBuilder cup, Pocket p, List<Vector2> points, float top, float bottom)
+    {
+        for (int k = 0; k + 1 < points.Count; k++)
+        {
+            var p0 = points[k];
+            var p1 = points[k + 1];
+            var n0 = new Vector3(Vector2.Normalize(p.Centre - p0), 0);
+            var n1 = new Vector3(Vector2.Normalize(p.Centre - p1), 0);
+            cup.Quad(new Vector3(p0, top), new Vector3(p1, top), new Vector3(p1, bottom), new Vector3(p0, bottom), n0, n1, n1, n0);
         }
     }
 

@@ -374,9 +374,13 @@ public sealed class ShotPlanner
                 workers[w] = new Worker(planner, roots);
             }
 
+            // Every shot as the cue can play it (raised over a rail or a ball behind the cue ball),
+            // before its aim is centred and again after, for the aim it ends with.
+            Playable(roots, variations);
             if (level.AimTrials > 0)
             {
                 CentreAims(workers, variations);
+                Playable(roots, variations);
             }
 
             // Round 1: every variation with a few error samples; then the best again with more,
@@ -460,6 +464,16 @@ public sealed class ShotPlanner
                 var v = variations[which[j]];
                 variations[which[j]] = v with { Shot = v.Shot with { AimDeg = aims[j] } };
                 _simulations += trials[j];
+            }
+        }
+
+        private void Playable(List<Root> roots, List<Variation> variations)
+        {
+            for (int i = 0; i < variations.Count; i++)
+            {
+                var v = variations[i];
+                var root = roots[v.Root];
+                variations[i] = v with { Shot = CueClearance.Playable(v.Shot, _table.Table, _table.R, root.Cue, root.Position.Positions) };
             }
         }
 

@@ -61,4 +61,24 @@ public sealed record TableSpec(
 
     /// <summary>Half the width (m).</summary>
     public double HalfWidth => Width / 2;
+
+    /// <summary>
+    /// The distance (m) from <paramref name="from"/> along <paramref name="direction"/> (unit, bed
+    /// plane) to the cushion nose rectangle shrunk by <paramref name="inset"/> on every side (a
+    /// ball's radius: where its centre is when it touches a cushion); infinity for a zero
+    /// direction, 0 from outside. Pockets are not gaps here: the rectangle is closed.
+    /// </summary>
+    public double DistanceToCushion(Mathematics.Vec3 from, Mathematics.Vec3 direction, double inset = 0)
+    {
+        double hx = HalfLength - inset, hy = HalfWidth - inset, best = double.PositiveInfinity;
+        if (Math.Abs(direction.X) > 1e-12)
+        {
+            best = Math.Min(best, ((Math.Sign(direction.X) * hx) - from.X) / direction.X);
+        }
+        if (Math.Abs(direction.Y) > 1e-12)
+        {
+            best = Math.Min(best, ((Math.Sign(direction.Y) * hy) - from.Y) / direction.Y);
+        }
+        return Math.Max(best, 0);
+    }
 }

@@ -126,3 +126,43 @@ public sealed class AudioNodeTests
         Assert.Contains(Hud.HelpText.Lines, l => l.TrimStart().StartsWith('U') && l.Contains("mute", StringComparison.Ordinal));
     }
 }
+
+public sealed class SoundStateTests
+{
+    private static string? SoundLine(Billiards.App.Tests.Game.TestGame game) =>
+        game.Frame().Hud!.Lines.SingleOrDefault(l => l.StartsWith("Sound: ", StringComparison.Ordinal));
+
+    [Fact]
+    public void Without_a_device_the_hud_says_so_and_shows_the_volume_keys_effect_for_a_moment()
+    {
+        using var game = new Billiards.App.Tests.Game.TestGame();
+        game.World.Tree.Root.AddChild(new AudioNode(new SilentAudio()));
+        Assert.Equal("Sound: off (no audio device)", SoundLine(game));
+        game.Window.Press(Key.Plus);
+        Assert.Equal($"Sound: volume {(AudioPlayer.DefaultVolume + AudioNode.VolumeStep) * 100:0} % (+/-), no audio device", SoundLine(game));
+        for (int i = 0; i < 3 * 64; i++)
+        {
+            game.Frame();
+        }
+        Assert.Equal("Sound: off (no audio device)", SoundLine(game));
+    }
+
+    [Fact]
+    public void With_a_device_mute_and_volume_show_for_a_moment_and_then_the_line_goes()
+    {
+        using var game = new Billiards.App.Tests.Game.TestGame();
+        game.World.Tree.Root.AddChild(new AudioNode(new RecordingAudio()));
+        Assert.Null(SoundLine(game));
+        game.Window.Press(Key.U);
+        Assert.Equal($"Sound: muted (U), volume {AudioPlayer.DefaultVolume * 100:0} %", SoundLine(game));
+        game.Window.Press(Key.Minus);
+        Assert.Equal($"Sound: muted (U), volume {(AudioPlayer.DefaultVolume - AudioNode.VolumeStep) * 100:0} %", SoundLine(game));
+        game.Window.Press(Key.Plus);   // + also unmutes
+        Assert.Equal($"Sound: volume {AudioPlayer.DefaultVolume * 100:0} % (+/-)", SoundLine(game));
+        for (int i = 0; i < 3 * 64; i++)
+        {
+            game.Frame();
+        }
+        Assert.Null(SoundLine(game));
+    }
+}

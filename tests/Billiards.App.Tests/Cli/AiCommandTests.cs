@@ -46,17 +46,50 @@ public sealed class AiCommandTests : IDisposable
         Assert.InRange(expected.GetProperty("pot").GetDouble(), 0.9, 1.0);
         Assert.Equal("9", expected.GetProperty("ruling").GetProperty("pocketed")[0].GetString());
 
-        // The printed shot, simulated from the scene, pots the 9 (and nothing else happens to the cue ball).
-        var s = root.GetProperty("shot");
+        AssertPotsTheNine(scene, ShotOf(root));
+    }
+
+    private static ShotSpec ShotOf(JsonElement suggestion)
+    {
+        var s = suggestion.GetProperty("shot");
         var tip = s.GetProperty("tip");
-        var shot = new ShotSpec(s.GetProperty("speed").GetDouble(), s.GetProperty("aim_deg").GetDouble(), tip[0].GetDouble(), tip[1].GetDouble(), s.GetProperty("elevation_deg").GetDouble());
-        var loaded = SceneLoader.Load(scene);
-        var sim = SimulationFactory.Create(loaded);
+        return new ShotSpec(s.GetProperty("speed").GetDouble(), s.GetProperty("aim_deg").GetDouble(), tip[0].GetDouble(), tip[1].GetDouble(), s.GetProperty("elevation_deg").GetDouble());
+    }
+
+    // The shot, simulated from the scene, pots the 9 and not the cue ball.
+    private static void AssertPotsTheNine(string scene, ShotSpec shot)
+    {
+        var sim = SimulationFactory.Create(SceneLoader.Load(scene));
         sim.Strike(shot);
         sim.AdvanceTo(120);
         var record = ShotRecord.LastShot(sim, shot);
         Assert.True(record.IsPocketedAfter(new BallId(9)));
         Assert.False(record.IsPocketedAfter(BallId.Cue));
+    }
+
+    [Fact]
+    public void SuggestFromACueBallFrozenToARailRaisesTheCueOverTheRailAndTheShotStillPots()
+    {
+        // The cue ball touches the long rail; the 9 lies on the line to the far corner, 22 deg off
+        // the rail's normal: a level cue would pass through the rail behind the cue ball.
+        string scene = Write("frozen.json", """
+            { "format": "billiards-scene/1", "table": { "preset": "pool-9ft" },
+              "balls": [ { "id": "cue", "position": [0.77, -0.606425] }, { "id": "9", "position": [1.045, 0.0764] } ],
+              "rules": "nine-ball" }
+            """);
+        var (code, stdout, stderr) = CliRun.Run("suggest", scene, "--level", "5");
+
+        Assert.True(code == 0, stderr);
+        using var doc = JsonDocument.Parse(stdout);
+        var shot = ShotOf(doc.RootElement);
+        var loaded = SceneLoader.Load(scene);
+        var cue = loaded.Balls.Single(b => b.Id.IsCue).Position with { Z = loaded.BallRadius };
+        double a = shot.AimDeg * Math.PI / 180;
+        var aim = new Billiards.Core.Mathematics.Vec3(Math.Cos(a), Math.Sin(a), 0);
+        double rail = CueClearance.RailElevationDegrees(cue, aim, loaded.Table, loaded.BallRadius, shot.TipHeight);
+        Assert.True(rail > 15, $"the rail needs {rail} deg");
+        Assert.True(shot.ElevationDeg >= rail - 1e-9, $"elevation {shot.ElevationDeg} deg, the rail needs {rail}");
+        AssertPotsTheNine(scene, shot);
     }
 
     [Theory]

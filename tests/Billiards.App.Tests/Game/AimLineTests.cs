@@ -42,6 +42,50 @@ public class AimLineTests
     }
 
     [Fact]
+    public void A_path_that_meets_no_ball_stops_at_the_cushion_and_shows_its_mirror_bank()
+    {
+        using var game = new TestGame(); // cue ball (-0.635, 0), the 1 on (0.635, 0)
+        var camera = game.World.Tree.Find<Billiards.App.Camera.CameraNode>()!;
+        camera.Camera.SetPhi((30 * Math.PI / 180) + Math.PI);   // aim 30 deg: past the 1, to the side cushion
+        var frame = game.Frame();
+        var line = game.World.Tree.Find<AimLineNode>()!;
+        double r = game.World.Physics.BallRadius;
+        var table = game.Scene.Table;
+        Assert.Null(line.Preview!.Ball);
+        // The cue ball touches the side cushion where its centre is R inside the nose line.
+        double s = (table.HalfWidth - r) / Math.Sin(30 * Math.PI / 180);
+        Assert.Equal(table.HalfWidth - r, line.Preview.Ghost.Y, 9);
+        Assert.Equal(-0.635 + (s * Math.Cos(30 * Math.PI / 180)), line.Preview.Ghost.X, 9);
+        // The bank: the y component turned round, BankLength long.
+        var bank = line.Preview.Bank!.Value;
+        Assert.Equal(line.Preview.Ghost.X + (AimPreview.BankLength * Math.Cos(30 * Math.PI / 180)), bank.X, 9);
+        Assert.Equal(line.Preview.Ghost.Y - (AimPreview.BankLength * Math.Sin(30 * Math.PI / 180)), bank.Y, 9);
+        var vp = RenderMath.ViewProjection(frame);
+        var lines = frame.Hud!.Aids!.Where(a => a.Radius == 0).ToList();
+        Assert.Equal(2, lines.Count);
+        Assert.Equal(lines[0].B, lines[1].A);
+        Assert.Equal(RenderMath.ToPixel(vp, new Vector3((float)bank.X, (float)bank.Y, (float)r), frame.Width, frame.Height)!.Value, lines[1].B);
+        Assert.DoesNotContain(frame.Hud.Aids!, a => a.Radius > 0);
+    }
+
+    [Fact]
+    public void The_object_balls_line_stops_where_the_ball_reaches_the_cushion()
+    {
+        string json = """
+            { "format": "billiards-scene/1", "table": { "preset": "pool-9ft" }, "physics": { "dt": 0.00390625 },
+              "balls": [ { "id": "cue", "position": [0.5, 0.0] }, { "id": "1", "position": [1.0, 0.0] } ] }
+            """;
+        using var game = new TestGame(Billiards.Core.Scenes.SceneLoader.Parse(json, "t.json"));
+        var frame = game.Frame();
+        double r = game.World.Physics.BallRadius;
+        var vp = RenderMath.ViewProjection(frame);
+        var lines = frame.Hud!.Aids!.Where(a => a.Radius == 0).ToList();
+        double stop = game.Scene.Table.HalfLength - r;
+        Assert.True(stop < 1.0 + AimLineNode.ObjectLineLength);
+        Assert.Equal(RenderMath.ToPixel(vp, new Vector3((float)stop, 0, (float)r), frame.Width, frame.Height)!.Value, lines[1].B);
+    }
+
+    [Fact]
     public void Nothing_is_drawn_while_the_balls_roll()
     {
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
@@ -128,6 +172,39 @@ public class CallPickerTests
         window.MoveTo(left.X, left.Y);
         window.Down();
         window.MoveTo(left.X + 40, left.Y);
+        window.Up();
+        Assert.Equal(new Call(new BallId(1), PocketId.FootRight), match.CurrentCall);
+    }
+
+    [Fact]
+    public void A_click_on_the_dark_hole_of_a_pocket_calls_it_not_only_a_click_in_its_mouth()
+    {
+        var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
+        var scene = TestScenes.TwoBalls(rules: "eight-ball") with { Game = new GameState(GameRules.EightBall) { Shot = 3, Players = new PerPlayer<string>("Anna", "Ben") } };
+        var window = new FakeWindow { FramebufferSize = (1280, 720) };
+        using var host = new GameHost(scene, TestScenes.Create, window, new ManualClock(), new MatchSetup(GameRules.EightBall, players));
+        var match = host.Tree.Root.GetInTree<MatchNode>();
+        host.RunFrame();
+        window.Press(Billiards.App.Camera.CameraNode.OverheadKey);
+        var frame = host.RunFrame();
+        var vp = RenderMath.ViewProjection(frame);
+        var r = (float)host.World.Physics.BallRadius;
+        var capture = Billiards.Core.Table.TableGeometry.Build(scene.Table, r).Pockets.ToArray()
+            .Single(p => PocketIds.FromIndex(p.Pocket) == PocketId.FootRight).Centre;
+        // The hole as the table model cuts it: the middle of its floor's rim points round that pocket.
+        var floor = TableModelGenerator.Generate(scene.Table).Single(m => m.Material.Name == "pocket_floor").Positions
+            .Where(p => Math.Abs(p.X - capture.X) < 0.15 && Math.Abs(p.Y - capture.Y) < 0.15).ToList();
+        var hole = new Vector3((floor.Min(p => p.X) + floor.Max(p => p.X)) / 2, (floor.Min(p => p.Y) + floor.Max(p => p.Y)) / 2, 0);
+        var holePixel = RenderMath.ToPixel(vp, hole, 1280, 720)!.Value;
+        var capturePixel = RenderMath.ToPixel(vp, capture.ToVector3() with { Z = 0 }, 1280, 720)!.Value;
+        var captureEdge = RenderMath.ToPixel(vp, capture.ToVector3() with { Z = 0 } + new Vector3(r, 0, 0), 1280, 720)!.Value;
+        // The hole's middle lies beyond what a click round the capture circle alone reaches.
+        Assert.True(Vector2.Distance(holePixel, capturePixel) > MathF.Max(1.5f * Vector2.Distance(capturePixel, captureEdge), 12),
+            $"the hole's middle is {Vector2.Distance(holePixel, capturePixel)} px from the capture circle's");
+
+        match.CallBall(new BallId(1));
+        window.MoveTo(holePixel.X, holePixel.Y);
+        window.Down();
         window.Up();
         Assert.Equal(new Call(new BallId(1), PocketId.FootRight), match.CurrentCall);
     }

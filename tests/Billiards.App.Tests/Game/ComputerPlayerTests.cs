@@ -170,7 +170,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void The_hint_key_asks_the_planner_and_takes_its_aim_power_and_call()
+    public void The_hint_key_asks_the_planner_and_takes_its_aim_power_spin_elevation_and_call()
     {
         using var game = new Game(new MatchPlayer("Anna"), new MatchPlayer("Ben"));
         game.Frame();
@@ -186,9 +186,19 @@ public class ComputerPlayerTests
             Assert.Equal(place.X, game.Host.World.Physics.CueBallPosition.X, 9);
             Assert.Equal(place.Y, game.Host.World.Physics.CueBallPosition.Y, 9);
         }
-        // Space plays it as a person's shot, at the hint's aim.
+        // The break's planned draw and its elevation over the head rail, not the cue's centre and level.
+        var cue = game.Host.Tree.Root.GetInTree<CueNode>();
+        Assert.NotEqual(0, hint.Shot.TipHeight);
+        Assert.True(hint.Shot.ElevationDeg > 1, $"{hint.Shot.ElevationDeg} deg");
+        Assert.Equal(hint.Shot.TipSide, cue.Tip.SideFraction, 9);
+        Assert.Equal(hint.Shot.TipHeight, cue.Tip.HeightFraction, 9);
+        Assert.Equal(hint.Shot.ElevationDeg, cue.ElevationDegrees, 9);
+        // Space plays it as a person's shot: the hint's aim, spin and elevation.
         game.Press(Key.Space);
-        Assert.Equal(hint.Shot.AimDeg, game.Match.Shots[0].Shot.AimDeg, 9);
+        var played = game.Match.Shots[0].Shot;
+        Assert.Equal(hint.Shot.AimDeg, played.AimDeg, 9);
+        Assert.Equal(hint.Shot.TipHeight, played.TipHeight, 9);
+        Assert.Equal(hint.Shot.ElevationDeg, played.ElevationDeg, 9);
         Assert.Equal(0, game.Match.Shots[0].Before.Shooter);
     }
 }

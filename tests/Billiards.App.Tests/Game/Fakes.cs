@@ -148,6 +148,10 @@ internal sealed class FakeWindow : IGameWindow
         KeyUp?.Invoke(key);
     }
 
+    public void Hold(Key key) => KeyDown?.Invoke(key);
+
+    public void Release(Key key) => KeyUp?.Invoke(key);
+
     public void MoveTo(float x, float y) => MouseMove?.Invoke(new Vector2(x, y));
 
     public void Down(MouseButton button = MouseButton.Left) => MouseDown?.Invoke(button);
@@ -208,12 +212,12 @@ internal static class TestScenes
 /// <summary>A game host on a fake window, a manual clock and fake physics.</summary>
 internal sealed class TestGame : IDisposable
 {
-    public TestGame(Scene? scene = null)
+    public TestGame(Scene? scene = null, MatchSetup? match = null)
     {
         Window = new FakeWindow();
         Clock = new ManualClock();
         Scene = scene ?? TestScenes.TwoBalls();
-        Host = new GameHost(Scene, s => Simulation = new FakeSimulation(s), Window, Clock);
+        Host = new GameHost(Scene, s => Simulation = new FakeSimulation(s), Window, Clock, match);
     }
 
     public Scene Scene { get; }

@@ -251,7 +251,7 @@ public class SystemKeysAndHudTests
             game.Window.Press(Key.Up);             // 4 deg: above the 2.5 deg the head rail asks for
         }
         var hud = game.Frame(1.0 / 64).Hud!;
-        Assert.Equal("Mode: effet [E]", hud.Lines[0]);
+        Assert.Equal("Mode: spin [E]", hud.Lines[0]);
         Assert.Equal("Spin: side +0.50 R, height 0.00 R", hud.Lines[2]);
         Assert.Equal("Elevation: 4 deg", hud.Lines[3]);
         Assert.Equal(0.5f, hud.SpinPoint.X, 6);

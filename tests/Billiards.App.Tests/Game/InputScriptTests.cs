@@ -13,11 +13,11 @@ public class InputScriptTests
             { "format": "billiards-input-script/1", "duration": 5, "events": [
               { "t": 0.5, "key_down": "s" }, { "t": 0.5, "key_up": "F1" },
               { "t": 1, "mouse_move": [10, 20] }, { "t": 1.5, "mouse_move_by": [0, -4.5] },
-              { "t": 2, "mouse_down": "left" }, { "t": 2, "mouse_up": "right" }, { "t": 3, "wheel": 2 } ] }
+              { "t": 2, "mouse_down": "left" }, { "t": 2, "mouse_up": "right" }, { "t": 3, "wheel": 2 }, { "t": 3, "wheel": -1 } ] }
             """, "s.json");
         Assert.Equal(5, script.Duration);
         Assert.Equal(
-            ["key_down S", "key_up F1", "mouse_move 10,20", "mouse_move_by 0,-4.5", "mouse_down left", "mouse_up right", "wheel 2"],
+            ["key_down S", "key_up F1", "mouse_move 10,20", "mouse_move_by 0,-4.5", "mouse_down left", "mouse_up right", "wheel 2", "wheel -1"],
             script.Events.Select(e => e.Describe()));
         Assert.Equal(Key.S, script.Events[0].Key);
         Assert.Equal(MouseButton.Right, script.Events[5].Button);
@@ -39,6 +39,7 @@ public class InputScriptTests
     [InlineData("""{ "format": "billiards-input-script/1", "events": [ { "t": 1, "mouse_move": [1] } ] }""", "s.json: $.events[0].mouse_move: expected [x, y]")]
     [InlineData("""{ "format": "billiards-input-script/1", "events": [ { "t": 1, "mouse_down": "thumb" } ] }""", "s.json: $.events[0].mouse_down: expected")]
     [InlineData("""{ "format": "billiards-input-script/1", "duration": 1, "events": [ { "t": 2, "wheel": 1 } ] }""", "s.json: $.duration: 1 s ends before")]
+    [InlineData("""{ "format": "billiards-input-script/1", "events": [ { "t": 1, "wheel": -101 } ] }""", "s.json: $.events[0].wheel: expected a number of notches from -100 to 100")]
     [InlineData("""[1]""", "s.json: $: expected an object")]
     [InlineData("""{ "format": "billiards-input-script/1", "events": [ { "t": 1, "wait": "keys" } ] }""", "s.json: $.events[0].wait: expected \"rest\"")]
     [InlineData("""{ "format": "billiards-input-script/1", "speed": 0, "events": [] }""", "s.json: $.speed: expected a number above 0, at most 64")]

@@ -68,6 +68,28 @@ public class PlayCommandTests
     }
 }
 
+public class FrameCapOptionTests
+{
+    [Theory]
+    [InlineData(-1)]
+    [InlineData(1001)]
+    [InlineData(double.NaN)]
+    public void A_cap_out_of_range_is_refused_in_one_line(double value)
+    {
+        var e = Assert.Throws<CliException>(() => PlayCommand.FrameCap(value));
+        Assert.StartsWith("--fps-cap ", e.Message, StringComparison.Ordinal);
+        Assert.Contains("expected 0 (no cap) to 1000", e.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void No_cap_zero_and_a_rate_pass()
+    {
+        Assert.Null(PlayCommand.FrameCap(null));
+        Assert.Equal(0, PlayCommand.FrameCap(0));
+        Assert.Equal(144, PlayCommand.FrameCap(144));
+    }
+}
+
 public class StartMenuTests
 {
     private sealed class ClickingLoop(ManualClock clock, FakeWindow window, RecordingRenderer renderer, string[] clicks) : IFrameLoop

@@ -4,6 +4,7 @@ using Billiards.App.Game;
 using Billiards.App.Input.Modes;
 using Billiards.App.Platform;
 using Billiards.App.Rendering;
+using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Scenes;
 using Billiards.Core.Table;
@@ -81,25 +82,25 @@ public class CameraTests
 
 public class CueRailTests
 {
-    private static readonly TableSpec s_table = TableSpec.FromPreset("pool-9ft");
-    private const double R = 0.028575;
-
     [Fact]
-    public void A_cue_over_open_bed_needs_no_raise_and_near_a_rail_it_clears_the_rail_top()
+    public void The_cue_is_lifted_over_a_ball_behind_the_cue_ball_drawn_so_and_struck_so()
     {
-        // Far from the rail behind: 1 m of bed; the cue rising from the ball's centre is above the rail top after 1 m at 1 deg or so.
-        var aim = new Vec3(1, 0, 0);
-        double far = CueClearance.MinElevationDegrees(new Vec3(0, 0, R), aim, s_table, R);
-        Assert.InRange(far, 0, 2);
-        // 2 cm from the head cushion's nose, aiming away from it.
-        var ball = new Vec3(-s_table.HalfLength + R + 0.02, 0, R);
-        double s = CueClearance.DistanceToRail(ball, aim, s_table);
-        Assert.Equal(R + 0.02, s, 12);
-        double e = CueClearance.MinElevationDegrees(ball, aim, s_table, R);
-        // Where it crosses the nose line the cue's underside is the rail top plus the gap.
-        double underside = R + (s * Math.Tan(e * Math.PI / 180)) - (Primitives.CueTipRadius + ((Primitives.CueButtRadius - Primitives.CueTipRadius) * s / Primitives.CueLength));
-        Assert.Equal(CueClearance.RailTop(s_table) + CueClearance.RailGap, underside, 9);
-        Assert.True(e > 20, $"{e} deg");
+        // The 2 lies 2.2 R behind the cue ball on the aim line (the cue points along +x at the start).
+        string json = """
+            { "format": "billiards-scene/1", "table": { "preset": "pool-9ft" }, "physics": { "dt": 0.00390625 },
+              "balls": [ { "id": "cue", "position": [0.0, 0.0] }, { "id": "2", "position": [-0.062865, 0.0] }, { "id": "1", "position": [0.6, 0.0] } ] }
+            """;
+        using var game = new TestGame(SceneLoader.Parse(json, "t.json"));
+        var cue = game.World.Tree.Find<CueNode>()!;
+        var frame = game.Frame();
+        double r = game.World.Physics.BallRadius;
+        double over = CueClearance.BallElevationDegrees(new Vec3(0, 0, r), new Vec3(1, 0, 0), new Vec3(-0.062865, 0, r), r);
+        Assert.True(over > 30, $"{over} deg");
+        Assert.Equal(over, cue.EffectiveElevationDegrees, 6);
+        Assert.Equal((float)over, frame.Cue.ElevationDegrees, 3);
+        Assert.Contains(frame.Hud!.Lines, l => l.Contains("(over a ball)", StringComparison.Ordinal));
+        game.World.Physics.Strike(cue.MakeShot(2));
+        Assert.Equal(over, Assert.Single(game.Simulation.Strikes).ElevationDeg, 6);
     }
 
     [Fact]

@@ -1,6 +1,7 @@
 using Billiards.App.Game;
 using Billiards.App.Input.Modes;
 using Billiards.App.Platform;
+using Billiards.App.Rendering;
 using Billiards.App.Tests.Game;
 using Billiards.Core.Balls;
 
@@ -199,6 +200,31 @@ public class InputModeNodeTests
         Assert.Single(game.Simulation.Strikes);
         Assert.Equal(maxX, cue.Position.X, 12);
         Assert.Equal(ball.Y - 0.2, cue.Position.Y, 9);
+    }
+
+    [Fact]
+    public void From_above_the_cue_ball_follows_the_pointer_on_the_screen_not_the_cue()
+    {
+        using var game = new TestGame();
+        var cameraNode = game.World.Tree.Find<Billiards.App.Camera.CameraNode>()!;
+        cameraNode.Camera.SetPhi(2.0);                // the cue aims somewhere across the table
+        game.Window.Press(Billiards.App.Camera.CameraNode.OverheadKey);
+        var frame = game.Frame();
+        Assert.True(cameraNode.Overhead);
+        game.Window.Press(Key.M);
+        var before = game.World.Physics.CueBallPosition;
+        var vp = RenderMath.ViewProjection(frame);
+        var start = RenderMath.ToPixel(vp, before.ToVector3(), frame.Width, frame.Height)!.Value;
+        game.Window.MoveTo(start.X, start.Y);
+        game.Window.Down();
+        game.Window.MoveTo(start.X + 120, start.Y - 60);   // right and up on the screen
+        game.Window.Up();
+        var after = game.World.Physics.CueBallPosition;
+        // Right on the screen is +x on the table, up is +y; the ball stays under the pointer (within a pixel).
+        Assert.True(after.X > before.X && after.Y > before.Y);
+        var end = RenderMath.ToPixel(RenderMath.ViewProjection(game.Frame()), after.ToVector3(), frame.Width, frame.Height)!.Value;
+        Assert.InRange(end.X - (start.X + 120), -1.5, 1.5);
+        Assert.InRange(end.Y - (start.Y - 60), -1.5, 1.5);
     }
 
     [Fact]

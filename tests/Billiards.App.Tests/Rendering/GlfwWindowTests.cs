@@ -36,6 +36,34 @@ public class GlfwWindowTests
         Assert.Equal(20, frames);
     }
 
+    [Fact]
+    public void The_window_loop_keeps_to_its_cap()
+    {
+        TestDisplay.Ensure();
+        using var window = new GlfwWindow("cap", 160, 90) { FrameCap = 50 };
+        int frames = 0;
+        var clock = System.Diagnostics.Stopwatch.StartNew();
+        window.Run(_ =>
+        {
+            if (++frames >= 11)
+            {
+                window.Close();
+            }
+        });
+        // Ten periods of 20 ms between the first frame and the eleventh at least (a busy machine may take longer).
+        Assert.True(clock.Elapsed.TotalSeconds >= 0.2 - 0.002, $"{clock.Elapsed.TotalMilliseconds} ms");
+    }
+    [Fact]
+    public void Stroking_hides_the_cursor_rather_than_disabling_it_so_absolute_pointers_keep_their_positions()
+    {
+        TestDisplay.Ensure();
+        using var window = new GlfwWindow("cursor", 320, 200);
+        window.SetMouseCaptured(true);
+        Assert.True(window.IsCursorHidden);
+        window.SetMouseCaptured(false);
+        Assert.False(window.IsCursorHidden);
+    }
+
     [Theory]
     [InlineData(65, Key.A)]
     [InlineData(90, Key.Z)]
@@ -45,6 +73,8 @@ public class GlfwWindowTests
     [InlineData(265, Key.Up)]
     [InlineData(300, Key.F11)]
     [InlineData(334, Key.Plus)]
+    [InlineData(340, Key.Shift)]
+    [InlineData(344, Key.Shift)]
     [InlineData(999, Key.Unknown)]
     public void MapKey_TranslatesGlfwKeyCodes(int glfwKey, Key expected)
     {

@@ -90,6 +90,28 @@ public class TableModelTests
     }
 
     [Fact]
+    public void Each_pocket_cups_rim_lies_on_the_holes_outline_so_no_wall_stands_over_the_cloth_or_leaves_a_gap()
+    {
+        var spec = TableSpec.FromPreset("pool-9ft");
+        var parts = TableModelGenerator.Generate(spec);
+        var cloth = parts.Single(m => m.Material.Name == "cloth");
+        var cup = parts.Single(m => m.Material.Name == "pocket");
+        var trim = parts.Single(m => m.Material.Name == "trim");
+        static (int, int) Key(Vector3 p) => ((int)MathF.Round(p.X * 1e5f), (int)MathF.Round(p.Y * 1e5f));
+        var bed = cloth.Positions.Select(Key).ToHashSet();
+        // The cup's wall reaches the bed's height only on the cloth's own outline points.
+        var atBed = cup.Positions.Where(p => MathF.Abs(p.Z) < 1e-6f).ToList();
+        Assert.NotEmpty(atBed);
+        Assert.All(atBed, p => Assert.Contains(Key(p), bed));
+        // Above the bed it is at the trim's top exactly: nothing of the cup lies inside the trim's faces.
+        float top = trim.Positions.Max(p => p.Z);
+        Assert.All(cup.Positions.Where(p => p.Z > 1e-6f), p => Assert.Equal(top, p.Z, 6));
+        // And the bottom is its own, darker part.
+        var floor = parts.Single(m => m.Material.Name == "pocket_floor");
+        Assert.True(floor.Material.Diffuse.Length() < cup.Material.Diffuse.Length() / 2);
+    }
+
+    [Fact]
     public void Assimp_ReportsAnUnreadableFile()
     {
         string path = Path.Combine(Path.GetTempPath(), $"not-a-model-{Environment.ProcessId}.obj");

@@ -14,8 +14,9 @@ namespace Billiards.App.Input.Modes;
 /// </summary>
 /// <remarks>
 /// Additions to the seed: the cue's elevation (Up/Down or PageUp/PageDown, or the wheel in shot and
-/// effet mode) feeds the strike; the wheel zooms in view mode; the mouse is captured while stroking
-/// so that the cursor can neither leave the window nor stop at the screen's edge.
+/// spin mode) feeds the strike; the wheel zooms in view mode; Shift orbits (aims) a tenth as fast;
+/// the cursor is hidden while stroking. The stroke reads the pointer's position, not its motion, so
+/// that absolute pointers (tablets, remote desktops, virtual machines) stroke as a mouse does.
 /// </remarks>
 public sealed class InputModeNode : Node
 {
@@ -179,6 +180,9 @@ public sealed class InputModeNode : Node
         }
         switch (Mode)
         {
+            case InputMode.View when e.Shift:
+                _camera!.Camera.Orbit(dx * SeedControls.FineOrbitFactor, dy * SeedControls.FineOrbitFactor);
+                break;
             case InputMode.View:
                 _camera!.Camera.Orbit(dx, dy);
                 break;
@@ -236,8 +240,12 @@ public sealed class InputModeNode : Node
             return;
         }
         var old = _physics.CueBallPosition;
-        // Along the cue's aim, the camera's azimuth: exact whatever the eye's height (a scripted drag places the ball bit for bit).
-        var moved = _cue is null
+        // From above, the ball follows the pointer on the screen (the table's length across it, +y
+        // up); behind the ball, along the cue's aim, the camera's azimuth: exact whatever the eye's
+        // height (a scripted drag places the ball bit for bit).
+        var moved = _camera.Overhead
+            ? CueBallMover.ClampToBed(old + (new Billiards.Core.Mathematics.Vec3(dx, -dy, 0) * _camera.OverheadMetresPerPixel), _physics.Table, _physics.BallRadius)
+            : _cue is null
             ? CueBallMover.Move(old, _camera.Camera.Eye, dx, dy, _physics.Table, _physics.BallRadius)
             : CueBallMover.MoveAlong(old, _cue.AimDirection, dx, dy, _physics.Table, _physics.BallRadius);
         if (_physics.TryPlaceCueBall(moved))

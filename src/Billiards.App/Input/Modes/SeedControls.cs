@@ -32,11 +32,14 @@ public static class SeedControls
     /// </summary>
     public const double MoveMetresPerPixel = 0.01;
 
+    /// <summary>The share of the orbit (Listing 5) a mouse drag with Shift held turns: fine aim, an addition to the seed.</summary>
+    public const double FineOrbitFactor = 0.1;
+
     /// <summary>Cue elevation (deg) per key press or wheel notch. The seed's elevation ("grade") was visual only; here it feeds the strike.</summary>
     public const double ElevationStepDegrees = 1;
 
     /// <summary>Largest cue elevation (deg); Core accepts up to 90, but the cue would stand on the ball.</summary>
-    public const double MaxElevationDegrees = 80;
+    public const double MaxElevationDegrees = Billiards.Core.Cue.CueClearance.MaxElevationDegrees;
 
     /// <summary>Gap between the tip and the ball's surface at rest (m), the seed's cue offset d when not stroking; visual only.</summary>
     public const double CueRestGap = 0.01;

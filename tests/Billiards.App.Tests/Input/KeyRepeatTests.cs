@@ -1,0 +1,149 @@
+using Billiards.App.Game;
+using Billiards.App.Input;
+using Billiards.App.Platform;
+using Billiards.App.Tests.Game;
+
+namespace Billiards.App.Tests.Input;
+
+public class KeyRepeatTests
+{
+    // The repeats of one key held from 0 to `until` seconds, polled every `frame` seconds.
+    private static List<double> Repeats(Key key, double until, double frame)
+    {
+        var repeat = new KeyRepeat();
+        var times = new List<double>();
+        repeat.Down(key, 0);
+        for (double now = 0; now <= until + 1e-9; now += frame)
+        {
+            repeat.Due(now, (k, t) =>
+            {
+                Assert.Equal(key, k);
+                times.Add(t);
+            });
+        }
+        return times;
+    }
+
+    [Fact]
+    public void A_held_key_repeats_after_the_delay_and_speeds_up_to_the_top_rate()
+    {
+        var times = Repeats(Key.Left, 3, 1.0 / 60);
+        Assert.Equal(KeyRepeat.Delay, times[0], 12);
+        Assert.Equal(KeyRepeat.Delay + (1 / KeyRepeat.StartRate), times[1], 12);
+        var gaps = times.Zip(times.Skip(1), (a, b) => b - a).ToList();
+        Assert.All(gaps.Zip(gaps.Skip(1)), g => Assert.True(g.Second <= g.First + 1e-12));
+        Assert.Equal(1 / KeyRepeat.TopRate, gaps[^1], 12);
+        // Between the delay and the end of the ramp the count is about the mean rate's: 1.2 s at 25/s.
+        int ramp = times.Count(t => t < KeyRepeat.Delay + KeyRepeat.RampSeconds);
+        Assert.InRange(ramp, 27, 32);
+    }
+
+    [Fact]
+    public void The_repeats_fall_at_the_same_times_at_any_frame_rate()
+    {
+        var at60 = Repeats(Key.W, 2, 1.0 / 60);
+        Assert.Equal(at60, Repeats(Key.W, 2, 1.0 / 144));
+        Assert.Equal(at60, Repeats(Key.W, 2, 0.25));
+    }
+
+    [Fact]
+    public void Keys_that_do_not_step_a_value_never_repeat_and_a_released_key_stops()
+    {
+        Assert.Empty(Repeats(Key.Space, 3, 0.1));
+        Assert.Empty(Repeats(Key.G, 3, 0.1));
+        var repeat = new KeyRepeat();
+        repeat.Down(Key.Right, 0);
+        int n = 0;
+        repeat.Due(0.5, (_, _) => n++);
+        repeat.Up(Key.Right);
+        repeat.Due(5, (_, _) => n++);
+        Assert.Equal(2, n); // 0.35 and 0.45 s
+    }
+}
+
+public class HeldKeyTests
+{
+    private static MatchNode Match(TestGame game) => game.World.Tree.Root.GetInTree<MatchNode>();
+
+    private static TestGame Game() =>
+        new(TestScenes.TwoBalls(), new MatchSetup(Billiards.Core.Rules.GameRules.EightBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+
+    [Fact]
+    public void Holding_the_aim_key_turns_the_cue_once_then_by_every_repeat()
+    {
+        using var game = Game();
+        var match = Match(game);
+        game.Frame();
+        double start = match.AimDegrees;
+        game.Window.Hold(Key.Left);
+        for (int i = 0; i < 120; i++)
+        {
+            game.Frame(1.0 / 60);    // 2 s held
+        }
+        game.Window.Release(Key.Left);
+        game.Frame(1.0 / 60);
+        double turned = Math.IEEERemainder(match.AimDegrees - start, 360);
+        var repeat = new KeyRepeat();
+        repeat.Down(Key.Left, 0);
+        int repeats = 0;
+        repeat.Due(2.0 + 1e-9, (_, _) => repeats++);
+        Assert.True(repeats > 40, $"{repeats} repeats");
+        Assert.Equal((1 + repeats) * MatchNode.AimStepDegrees, turned, 6);
+        // Released: nothing more.
+        for (int i = 0; i < 30; i++)
+        {
+            game.Frame(1.0 / 60);
+        }
+        Assert.Equal(turned, Math.IEEERemainder(match.AimDegrees - start, 360), 9);
+    }
+
+    [Fact]
+    public void Holding_power_up_goes_from_3_to_8_metres_a_second_in_under_two_seconds()
+    {
+        using var game = Game();
+        var match = Match(game);
+        game.Frame();
+        Assert.Equal(3, match.Power);
+        game.Window.Hold(Key.W);
+        double held = 0;
+        while (match.Power < MatchNode.MaxPower && held < 5)
+        {
+            game.Frame(1.0 / 60);
+            held += 1.0 / 60;
+        }
+        game.Window.Release(Key.W);
+        Assert.Equal(MatchNode.MaxPower, match.Power);
+        Assert.InRange(held, 0.5, 1.5);
+    }
+
+    [Fact]
+    public void Shift_makes_the_arrow_keys_and_the_mouse_orbit_fine()
+    {
+        using var game = Game();
+        var match = Match(game);
+        var camera = game.World.Tree.Root.GetInTree<Billiards.App.Camera.CameraNode>().Camera;
+        game.Frame();
+        double a0 = match.AimDegrees;
+        game.Window.Hold(Key.Shift);
+        game.Window.Press(Key.Left);
+        game.Frame();
+        Assert.Equal(MatchNode.FineAimStepDegrees, Math.IEEERemainder(match.AimDegrees - a0, 360), 9);
+
+        // A 100 px drag in view mode with Shift turns a tenth of what it turns without.
+        double Drag()
+        {
+            double phi = camera.Phi;
+            game.Window.MoveTo(400, 300);
+            game.Window.Down();
+            game.Window.MoveTo(500, 300);
+            game.Window.Up();
+            game.Frame();
+            return camera.Phi - phi;
+        }
+        double fine = Drag();
+        game.Window.Release(Key.Shift);
+        double coarse = Drag();
+        Assert.NotEqual(0, coarse);
+        Assert.Equal(coarse * Billiards.App.Input.Modes.SeedControls.FineOrbitFactor, fine, 9);
+    }
+}

@@ -1,0 +1,31 @@
+using Billiards.App.Rendering;
+
+namespace Billiards.App.Tests.Rendering;
+
+public class ResolutionGovernorTests
+{
+    [Fact]
+    public void Slow_frames_lower_the_scale_at_once_to_its_floor_and_quick_ones_raise_it_slowly_to_full()
+    {
+        var governor = new ResolutionGovernor();
+        Assert.Equal(ResolutionGovernor.Start, governor.Scale);
+        governor.Report(0.030, 1.0 / 60);
+        Assert.Equal(ResolutionGovernor.Start * ResolutionGovernor.Down, governor.Scale, 6);
+        for (int i = 0; i < 100; i++)
+        {
+            governor.Report(0.030, 1.0 / 60);
+        }
+        Assert.Equal(ResolutionGovernor.Min, governor.Scale);
+        governor.Report(0.005, 1.0 / 60);
+        Assert.Equal(ResolutionGovernor.Min * ResolutionGovernor.Up, governor.Scale, 6);
+        // Within the band (60-90 % of the budget) it stays.
+        float held = governor.Scale;
+        governor.Report(0.8 / 60, 1.0 / 60);
+        Assert.Equal(held, governor.Scale);
+        for (int i = 0; i < 1000; i++)
+        {
+            governor.Report(0.001, 1.0 / 60);
+        }
+        Assert.Equal(ResolutionGovernor.Max, governor.Scale);
+    }
+}
