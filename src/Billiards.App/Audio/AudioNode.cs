@@ -61,7 +61,7 @@ public sealed class AudioNode(IAudioOutput output) : Node
         var sim = _physics!.Simulation;
         if (!ReferenceEquals(sim, _simulation))
         {
-            // A new simulation (the cue ball placed by hand) names its features afresh.
+            // A match runs every shot in a simulation of its own, which names its features afresh.
             _simulation = sim;
             _voicing = new EventVoicing(sim.FeatureName);
         }

@@ -149,7 +149,14 @@ public static class ReplayCommand
     }
 
     /// <summary>Plays a record back in a window from shot <paramref name="first"/>; the window closes a moment after the last shot.</summary>
-    public static int Play(GameRecord record, string path, int first, double timeScale, Func<string, GamePlatform> openPlatform, IClock? clock = null)
+    /// <param name="record">The record.</param>
+    /// <param name="path">Its file, for the window's title.</param>
+    /// <param name="first">The first shot shown.</param>
+    /// <param name="timeScale">How fast time runs (1 real time).</param>
+    /// <param name="openPlatform">Opens the window.</param>
+    /// <param name="clock">The clock; the real one by default.</param>
+    /// <param name="ruled">Told each shot's index and ruling as the window judges it.</param>
+    public static int Play(GameRecord record, string path, int first, double timeScale, Func<string, GamePlatform> openPlatform, IClock? clock = null, Action<int, Ruling>? ruled = null)
     {
         ArgumentNullException.ThrowIfNull(record);
         ArgumentNullException.ThrowIfNull(openPlatform);
@@ -160,6 +167,10 @@ public static class ReplayCommand
         using var platform = openPlatform($"{PlatformWiring.WindowTitle}: replay of {Path.GetFileName(path)}");
         using var host = new GameHost(scene, SimulationFactory.Create, platform.Window, clock ?? new StopwatchClock()) { TimeScale = timeScale };
         var replay = host.Tree.Root.AddChild(new ReplayNode(record, first));
+        if (ruled is not null)
+        {
+            replay.Ruled += ruled;
+        }
         double? closeAt = null;
         host.FrameStarting += now =>
         {

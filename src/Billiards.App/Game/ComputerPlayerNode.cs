@@ -189,7 +189,8 @@ public sealed class ComputerPlayerNode : Node
         if (_choosing is null)
         {
             var ruling = _match!.LastRuling!;
-            var position = TablePosition.Of(_physics!.Simulation);
+            // The table as the shot left it (a scratched cue ball is off it), as self-play chooses.
+            var position = new TablePosition(_match.Game!.Shots[^1].After);
             var planner = _planner!;
             _choosing = BackgroundWork.Run(() => planner.ChooseOption(ruling, position));
             Status = $"{_match.Shooter.Name} chooses...";

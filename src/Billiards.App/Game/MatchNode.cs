@@ -306,7 +306,7 @@ public sealed class MatchNode : Node
         {
             // The scene's own shot is already on its way: the match plays it from the scene's
             // position with the game block's call.
-            var sim = _match.Strike(new GameShot(opening, State.Call, _match.BallInHand == BallInHand.None ? null : _match.Balls[BallId.Cue], State.PushOut));
+            var sim = _match.Strike(new GameShot(opening, State.Call, _match.BallInHand == BallInHand.None ? null : _match.Balls[_ruleset.CueBall(State)], State.PushOut));
             _physics.ReplaceShot(sim);
         }
         else
@@ -631,9 +631,18 @@ public sealed class MatchNode : Node
 
     private void CyclePocket()
     {
+        var pockets = _physics?.Table.Pockets ?? [];
+        if (pockets.Count == 0)
+        {
+            return;
+        }
         var current = CurrentCall?.Pocket ?? _calledPocket ?? PocketId.None;
-        int next = ((int)current + 1) % PocketIds.All.Count;
-        _calledPocket = PocketIds.FromIndex(next);
+        int at = -1;
+        for (int i = 0; i < pockets.Count; i++)
+        {
+            at = pockets[i] == current ? i : at;
+        }
+        _calledPocket = pockets[(at + 1) % pockets.Count];
         _calledBall ??= Aim?.Ball;
     }
 

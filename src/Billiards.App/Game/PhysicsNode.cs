@@ -12,9 +12,12 @@ using Billiards.Core.Table;
 namespace Billiards.App.Game;
 
 /// <summary>
-/// Owns the <see cref="Simulation"/>: steps it once per fixed step while balls roll, remembers the
-/// previous step for interpolated drawing, and turns Core's state into signals (struck, events,
-/// came to rest). The game changes physics state only through Core's API.
+/// Runs the <see cref="Simulation"/> shown: steps it once per fixed step while balls roll,
+/// remembers the previous step for interpolated drawing, and turns Core's state into signals
+/// (struck, events, came to rest). In practice it keeps the scene's one simulation; in a match
+/// (and a replay) Core's match makes each shot's simulation (<see cref="StrikeThrough"/>) and the
+/// table between shots (<see cref="Load"/>), and only the referee decides a scratch. The game
+/// changes physics state only through Core's API.
 /// </summary>
 public sealed class PhysicsNode : Node
 {

@@ -26,6 +26,11 @@ public sealed class ReplayNode(GameRecord record, int firstShot) : Node
     /// <summary>The rulings the window's shots got, in order.</summary>
     public List<Ruling> Rulings { get; } = [];
 
+    /// <summary>The HUD's line: the shot shown of the record's shots and the last ruling's message.</summary>
+    public string? Status => _match is null ? null
+        : Finished ? $"Replay: all {record.Shots.Count} shots. {_match.LastRuling?.Message}"
+        : $"Replay: shot {_next + 1} of {record.Shots.Count}.{(_match.LastRuling is { } r ? " " + r.Message : "")}";
+
     /// <summary>True once the last shot came to rest.</summary>
     public bool Finished { get; private set; }
 

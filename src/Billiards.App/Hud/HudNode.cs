@@ -20,6 +20,7 @@ public sealed class HudNode : Node
     private CueNode? _cue;
     private SystemKeysNode? _keys;
     private MatchNode? _match;
+    private Game.ReplayNode? _replay;
     private ComputerPlayerNode? _computer;
     private AimLineNode? _aimLine;
     private Audio.AudioNode? _audio;
@@ -113,6 +114,12 @@ public sealed class HudNode : Node
             _lines.Add(_cue.EffectiveElevationDegrees > _cue.ElevationDegrees + 0.5
                 ? string.Create(c, $"Elevation: {_cue.EffectiveElevationDegrees:0} deg ({(_cue.RailElevationDegrees >= _cue.ClearanceDegrees - 1e-9 ? "over the rail" : "over a ball")})")
                 : string.Create(c, $"Elevation: {_cue.ElevationDegrees:0} deg"));
+        }
+        // A replay joins the tree after the HUD is ready: looked for while there is no match.
+        _replay ??= _match is null ? FindInTree<Game.ReplayNode>() : null;
+        if (_replay?.Status is { } replay)
+        {
+            _lines.Add(replay);
         }
         if (_match is not null && _physics is not null)
         {

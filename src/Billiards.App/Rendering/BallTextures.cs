@@ -26,19 +26,12 @@ public static class BallTextures
     private const float StripeHalfHeight = 0.55f; // |z| of the band's edges on the unit sphere
     private const float DigitHeight = 0.52f;   // gnomonic units (tan of the angle)
 
-    /// <summary>The ball's base colour (sRGB, 0..1): the solid or stripe colour, white for the cue ball.</summary>
-    public static Vector3 BaseColor(BallId id) => (id.Value == 0 ? 0 : ((id.Value - 1) % 8) + 1) switch
+    /// <summary>The ball's base colour (sRGB, 0..1), as its ball set's look has it.</summary>
+    public static Vector3 BaseColor(BallId id)
     {
-        0 => new(0.96f, 0.95f, 0.90f),
-        1 => new(0.98f, 0.80f, 0.06f), // yellow
-        2 => new(0.06f, 0.22f, 0.72f), // blue
-        3 => new(0.86f, 0.09f, 0.07f), // red
-        4 => new(0.36f, 0.13f, 0.58f), // purple
-        5 => new(0.98f, 0.45f, 0.06f), // orange
-        6 => new(0.04f, 0.48f, 0.23f), // green
-        7 => new(0.50f, 0.10f, 0.08f), // maroon
-        _ => new(0.04f, 0.04f, 0.045f), // black (8)
-    };
+        var look = BallSet.Pool.Kind(id).Look;
+        return new(look.Red, look.Green, look.Blue);
+    }
 
     /// <summary>Direction on the unit sphere (ball frame) of texel centre (i, j).</summary>
     public static Vector3 Direction(float u, float v)
@@ -65,7 +58,7 @@ public static class BallTextures
         var white = new Vector3(0.97f, 0.96f, 0.92f);
         var ink = new Vector3(0.03f, 0.03f, 0.03f);
         var baseColor = BaseColor(id);
-        float[] number = id.IsCue ? [] : NumberCoverage(id.Value.ToString(System.Globalization.CultureInfo.InvariantCulture));
+        float[] number = !BallSet.Pool.Kind(id).Look.Numbered ? [] : NumberCoverage(id.Value.ToString(System.Globalization.CultureInfo.InvariantCulture));
         var cosLon = new float[Width];
         var sinLon = new float[Width];
         for (int i = 0; i < Width; i++)
@@ -107,7 +100,7 @@ public static class BallTextures
             return Vector3.Lerp(baseColor, new Vector3(0.80f, 0.08f, 0.08f), spot);
         }
         var surface = baseColor;
-        if (id.IsStripe)
+        if (BallSet.Pool.Kind(id).Look.Striped)
         {
             // The band's edge as an angle: latitude asin(StripeHalfHeight).
             float band = Cover(MathF.Asin(StripeHalfHeight) - MathF.Abs(MathF.Asin(d.Z)), texel);

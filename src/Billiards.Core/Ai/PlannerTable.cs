@@ -47,7 +47,7 @@ public sealed class PlannerTable
             _axis[k] = side ? new Vec3(0, -Math.Sign(p.Y), 0) : new Vec3(-Math.Sign(p.X), -Math.Sign(p.Y), 0).Normalized();
             _mouth[k] = side ? table.SidePocketMouth : table.CornerPocketMouth;
         }
-        Pockets = table.HasPockets ? PocketIds.All : [];
+        Pockets = table.Pockets;
     }
 
     /// <summary>The table.</summary>

@@ -100,7 +100,7 @@ public sealed class SelfPlay
             if (game.PendingOptions.Count > 0)
             {
                 // The incoming player chooses from the table as the shot left it.
-                option = _planner.ChooseOption(played.Ruling, TablePosition.After(ShotRecord.LastShot(sim, executed)));
+                option = _planner.ChooseOption(played.Ruling, new TablePosition(played.After));
                 game.Choose(option.Value);
             }
             shots.Add(new SelfPlayShot(played.Before, place, decision.Shot, executed, decision.Kind, played.Ruling, option, decision.Milliseconds, decision.Simulations)

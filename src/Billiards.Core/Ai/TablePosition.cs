@@ -96,23 +96,30 @@ public sealed class TablePosition
     public TablePosition Without(BallId id) => new(Enumerate().Where(b => b.Id != id));
 
     /// <summary>
-    /// True when a ball of radius <paramref name="radius"/> at <paramref name="p"/> lies on the bed
-    /// inside the region and touches no ball but <paramref name="ignore"/>.
+    /// True when a ball of radius <paramref name="radius"/> at <paramref name="p"/> may be placed
+    /// there (<see cref="Placement.FitsOnTable"/>: on the bed inside the region, over no pocket) and
+    /// touches no ball but <paramref name="ignore"/>, a small margin clear of every limit.
     /// </summary>
     public bool CanPlace(Vec3 p, BallInHand region, TableSpec table, double radius, BallId ignore)
     {
         ArgumentNullException.ThrowIfNull(table);
-        const double Margin = 1e-4;
-        if (Math.Abs(p.X) > table.HalfLength - radius - Margin || Math.Abs(p.Y) > table.HalfWidth - radius - Margin)
+        var where = region == BallInHand.Kitchen ? PlacementRegion.Kitchen : PlacementRegion.Table;
+        if (!Placement.FitsOnTable(table, radius, p, where, PlacementMargin))
         {
             return false;
         }
-        if (region == BallInHand.Kitchen && p.X >= -table.HalfLength / 2 - Margin)
+        for (int i = 0; i < _ids.Length; i++)
         {
-            return false;
+            if (_ids[i] != ignore && Placement.Overlaps(radius, _positions[i], p, PlacementMargin))
+            {
+                return false;
+            }
         }
-        return IsFree(p, radius + Margin / 2, ignore);
+        return true;
     }
+
+    // The planner's placements keep this far (m) from every limit of the placement test.
+    private const double PlacementMargin = 1e-4;
 
     /// <summary>
     /// A simulation of this position with the standard model's event integrator (the fastest),
@@ -148,17 +155,5 @@ public sealed class TablePosition
         {
             yield return (_ids[i], _positions[i]);
         }
-    }
-
-    private bool IsFree(Vec3 p, double radius, BallId ignore)
-    {
-        for (int i = 0; i < _ids.Length; i++)
-        {
-            if (_ids[i] != ignore && (_positions[i] - p).LengthXY < 2 * radius)
-            {
-                return false;
-            }
-        }
-        return true;
     }
 }

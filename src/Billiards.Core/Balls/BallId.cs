@@ -3,25 +3,24 @@ using System.Globalization;
 namespace Billiards.Core.Balls;
 
 /// <summary>
-/// Identity of a ball: 0 is the cue ball, 1 and up the numbered balls of its <see cref="BallSet"/>.
-/// In scene and result files a ball id is the string "cue" or the number.
+/// Identity of a ball within its <see cref="BallSet"/>. In scene and result files a ball id is
+/// the ball's name in its set ("cue", or the number in pool's). Which ball is a cue ball, what
+/// it is called and how it looks are the set's to say; the members here answer for pool's set,
+/// the one played now.
 /// </summary>
 public readonly record struct BallId(int Value)
 {
-    /// <summary>The cue ball.</summary>
-    public static BallId Cue => new(0);
+    /// <summary>Pool's cue ball.</summary>
+    public static BallId Cue => BallSet.Pool.CueBalls[0];
 
-    /// <summary>True for the cue ball.</summary>
-    public bool IsCue => Value == 0;
+    /// <summary>True for a cue ball of pool's set.</summary>
+    public bool IsCue => BallSet.Pool.IsCueBall(this);
 
-    /// <summary>Solids are 1..7 (and 8 for the purpose of colour only).</summary>
-    public bool IsSolid => Value is >= 1 and <= 8;
+    /// <summary>True for one of pool's stripes.</summary>
+    public bool IsStripe => BallSet.Pool.Group("stripes").Contains(this);
 
-    /// <summary>Stripes are 9 up to the highest ball of pool's set.</summary>
-    public bool IsStripe => Value >= 9 && Value <= BallSet.Pool.HighestNumber;
-
-    /// <summary>The id as a scene file writes it: "cue", or the number ("1", "2", ...).</summary>
-    public override string ToString() => Value == 0 ? "cue" : Value.ToString(CultureInfo.InvariantCulture);
+    /// <summary>The id as a scene file writes it: the ball's name in pool's set ("cue", "1", "2", ...).</summary>
+    public override string ToString() => BallSet.Pool.NameOf(this);
 
     /// <summary>Parses a ball id of pool's set (<see cref="BallSet.Pool"/>): "cue" or "1" .. "15".</summary>
     public static bool TryParse(string? text, out BallId id) => BallSet.Pool.TryParse(text, out id);

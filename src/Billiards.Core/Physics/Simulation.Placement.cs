@@ -240,39 +240,18 @@ public abstract partial class Simulation
     }
 
     // The x nearest to `start` in `direction` (+1 towards the foot rail, -1 towards the head) at
-    // which a ball on y = 0 touches no ball in play but the one at `self`: each ball within 2R
-    // of the axis blocks an open interval of x; step past any that contains the candidate until
-    // none does.
+    // which a ball on y = 0 touches no ball in play but the one at `self` (Placement's search).
     private double FreeAlongLongAxis(int self, double start, int direction)
     {
-        double r = BallRadius;
-        double x = start;
+        var others = new List<Vec3>();
         var balls = Balls;
-        bool moved = true;
-        while (moved)
+        for (int j = 0; j < balls.Length; j++)
         {
-            moved = false;
-            for (int j = 0; j < balls.Length; j++)
+            if (j != self && !balls[j].IsPocketed)
             {
-                if (j == self || balls[j].IsPocketed)
-                {
-                    continue;
-                }
-                double dy = balls[j].Position.Y;
-                double reach = 4 * r * r - dy * dy;
-                if (reach <= 0)
-                {
-                    continue;
-                }
-                double half = Math.Sqrt(reach);
-                double dx = x - balls[j].Position.X;
-                if (Math.Abs(dx) < half - Placement.Tolerance)
-                {
-                    x = balls[j].Position.X + direction * half;
-                    moved = true;
-                }
+                others.Add(balls[j].Position);
             }
         }
-        return x;
+        return Placement.FreeOnLongAxis(BallRadius, others, start, direction);
     }
 }

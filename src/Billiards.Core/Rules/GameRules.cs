@@ -16,18 +16,17 @@ public enum GameRules
 /// <summary>A group of 8-ball.</summary>
 public enum BallGroup
 {
-    /// <summary>Balls 1-7.</summary>
+    /// <summary>Pool's solids (1-7).</summary>
     Solids,
-    /// <summary>Balls 9-15.</summary>
+    /// <summary>Pool's stripes (9-15).</summary>
     Stripes,
 }
 
 /// <summary>Which balls make up an 8-ball group.</summary>
 public static class BallGroups
 {
-    /// <summary>True for a ball of <paramref name="group"/>: 1-7 for solids, 9-15 for stripes.</summary>
-    public static bool Contains(this BallGroup group, Balls.BallId ball) =>
-        group == BallGroup.Solids ? ball.Value is >= 1 and <= 7 : ball.IsStripe;
+    /// <summary>True for a ball of <paramref name="group"/> in pool's set (<see cref="Balls.BallSet.Group"/>).</summary>
+    public static bool Contains(this BallGroup group, Balls.BallId ball) => Balls.BallSet.Pool.Group(group.ToName()).Contains(ball);
 }
 
 /// <summary>Where the next shooter may place the cue ball.</summary>

@@ -38,7 +38,7 @@ public sealed record GameSetup(TableSpec Table, PhysicsConfig Physics, int Seed,
 
     /// <summary>The rack of <paramref name="rack"/> (0 the first) with the cue ball on the head spot.</summary>
     public IReadOnlyList<(BallId Id, Vec3 Position)> Racked(int rack) =>
-        [(BallId.Cue, Initializer.HeadSpot(Table, BallRadius)), .. Ruleset.Rack(Table, BallRadius, Seed + rack)];
+        [(Ruleset.CueBall(Start), Initializer.HeadSpot(Table, BallRadius)), .. Ruleset.Rack(Table, BallRadius, Seed + rack)];
 }
 
 /// <summary>What a player does on one shot.</summary>
@@ -142,12 +142,13 @@ public sealed class Match
     public Simulation Layout()
     {
         var balls = new Dictionary<BallId, Vec3>(_balls);
-        if (!balls.ContainsKey(BallId.Cue))
+        var cue = Ruleset.CueBall(State);
+        if (!balls.ContainsKey(cue))
         {
             var region = BallInHand == BallInHand.Kitchen ? PlacementRegion.Kitchen : PlacementRegion.Table;
             var head = Initializer.HeadSpot(Setup.Table, Setup.BallRadius);
-            balls[BallId.Cue] = BallInHand == BallInHand.None ? head
-                : Placement.FreeSpotNear(Setup.Table, Setup.BallRadius, BallId.Cue, head, balls.Select(b => (b.Key, b.Value)), region);
+            balls[cue] = BallInHand == BallInHand.None ? head
+                : Placement.FreeSpotNear(Setup.Table, Setup.BallRadius, cue, head, balls.Select(b => (b.Key, b.Value)), region);
         }
         var sim = _createSimulation(SceneOf(balls, null));
         sim.RefereeRules = true;
@@ -199,6 +200,7 @@ public sealed class Match
             throw new InvalidOperationException(_struck is not null ? "a shot is still running" : "an option must be chosen before the next shot");
         }
         double r = Setup.BallRadius;
+        var cue = Ruleset.CueBall(State);
         var before = State with { Call = input.Call, PushOut = input.PushOut, Placement = null };
         if (input.Place is { } place)
         {
@@ -207,13 +209,13 @@ public sealed class Match
                 throw new InvalidOperationException($"shot {State.Shot}: the cue ball can only be placed with ball in hand");
             }
             var p = place with { Z = r };
-            _balls[BallId.Cue] = p;
+            _balls[cue] = p;
             before = before with { Placement = p };
         }
-        else if (!_balls.ContainsKey(BallId.Cue))
+        else if (!_balls.ContainsKey(cue))
         {
-            _balls[BallId.Cue] = Initializer.HeadSpot(Setup.Table, r);
-            before = before with { Placement = _balls[BallId.Cue] };
+            _balls[cue] = Initializer.HeadSpot(Setup.Table, r);
+            before = before with { Placement = _balls[cue] };
         }
         // No wall-clock bound: a shot must end the same way on every machine.
         var sim = _createSimulation(SceneOf(_balls, input.Shot));

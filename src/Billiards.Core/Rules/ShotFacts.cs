@@ -1,3 +1,4 @@
+using Billiards.Core.Setup;
 using Billiards.Core.Balls;
 using Billiards.Core.Physics;
 using Billiards.Core.Table;
@@ -105,13 +106,8 @@ internal sealed class ShotFacts
         {
             return false;
         }
-        const double Tolerance = 1e-9;
-        if (Math.Abs(p.X) > table.HalfLength - radius + Tolerance || Math.Abs(p.Y) > table.HalfWidth - radius + Tolerance)
-        {
-            return true;
-        }
         // The head spot lies on the head string: a centre on the string counts as behind it (ours).
-        if (region == BallInHand.Kitchen && p.X > -table.HalfLength / 2 + Tolerance)
+        if (!Placement.FitsOnTable(table, radius, p, region == BallInHand.Kitchen ? PlacementRegion.Kitchen : PlacementRegion.Table))
         {
             return true;
         }
@@ -126,7 +122,7 @@ internal sealed class ShotFacts
         for (int i = 0; i < ids.Length; i++)
         {
             if (!ids[i].IsCue && !moved.Contains(ids[i]) && !after[i].IsPocketed
-                && (after[i].Position - p).Length < 2 * radius - Tolerance)
+                && Placement.Overlaps(radius, after[i].Position, p))
             {
                 return true;
             }

@@ -122,7 +122,11 @@ public static class GameBlockReader
         if (f.TryGetValue("fouls_in_row", out var fouls))
         {
             var pair = Pair(fouls, $"{path}.fouls_in_row");
-            if (pair.First is < 0 or > 2 || pair.Second is < 0 or > 2)
+            if (pair.First < 0 || pair.Second < 0)
+            {
+                throw Error($"{path}.fouls_in_row", "each count must be 0 or more");
+            }
+            if (Ruleset.For(rules).HasThreeFouls && (pair.First > 2 || pair.Second > 2))
             {
                 throw Error($"{path}.fouls_in_row", "each count must be 0, 1 or 2 (a third foul ends the count)");
             }

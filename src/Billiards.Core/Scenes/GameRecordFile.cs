@@ -362,8 +362,10 @@ public static class GameRecordFile
             {
                 played = replayed.Play(record.Shots[k]);
             }
-            catch (InvalidOperationException e)
+            catch (Exception e) when (e is InvalidOperationException or ArgumentException)
             {
+                // The replayed game went elsewhere: the shot cannot be played as recorded (the game
+                // is over, no ball in hand for its placement, its option not offered).
                 return new ReplayReport(record.Shots.Count, k, new ReplayDifference(k, "shot", "\"played\"", JsonString(e.Message)));
             }
             if (FirstDifference(record.Rulings[k], GameBlockWriter.RulingToUtf8(played.Ruling)) is { } field)

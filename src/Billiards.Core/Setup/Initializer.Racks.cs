@@ -58,19 +58,19 @@ public static partial class Initializer
     public static IReadOnlyList<(BallId Id, Vec3 Position)> Rerack(IReadOnlyList<BallId> balls, TableSpec table, double radius, int seed)
     {
         ArgumentNullException.ThrowIfNull(balls);
-        if (balls.Count > 15)
+        if (balls.Count > Triangle)
         {
-            throw new ArgumentException($"a triangle holds 15 balls, not {balls.Count}", nameof(balls));
+            throw new ArgumentException($"a triangle holds {Triangle} balls, not {balls.Count}", nameof(balls));
         }
         var random = new Random(seed);
         int[] numbers = [.. balls.Select(b => b.Value).Order()];
-        if (numbers.Length == 15)
+        if (numbers.Length == Triangle)
         {
             return Place([1, 2, 3, 4, 5], numbers, table, radius, random);
         }
-        // Place() fills the triangle apex first; a zero marks the empty apex and is dropped.
-        var placed = Place([1, 2, 3, 4, 5], [0, .. numbers], table, radius, random);
-        return [.. placed.Where(b => b.Item1.Value != 0)];
+        // Place() fills the triangle apex first; a marker that is no ball holds the empty apex and is dropped.
+        var placed = Place([1, 2, 3, 4, 5], [EmptySpot, .. numbers], table, radius, random);
+        return [.. placed.Where(b => b.Item1.Value != EmptySpot)];
     }
 
     /// <summary>
@@ -128,23 +128,30 @@ public static partial class Initializer
         return ideal; // unreachable in practice: the unjittered spot keeps a 2 mm gap
     }
 
+    // Pool's triangle holds every object ball of its set (15).
+    private static int Triangle => BallSet.Pool.HighestNumber;
+
+    // Marks the empty apex of a rerack: no ball has it.
+    private const int EmptySpot = -1;
+
     // Rows are filled apex first, left to right: index 0 is the apex, 4 the centre, 10 and 14 the back corners.
     private static int[] EightBallOrder(Random random)
     {
-        var solids = new List<int> { 2, 3, 4, 5, 6, 7 };
-        var stripes = new List<int> { 9, 10, 11, 12, 13, 14, 15 };
+        // The 1 at the apex, the 8 in the centre: the others of each group are drawn.
+        var solids = BallSet.Pool.Group("solids").Select(b => b.Value).Where(n => n != 1).ToList();
+        var stripes = BallSet.Pool.Group("stripes").Select(b => b.Value).ToList();
         int solid = Take(solids, random);
         int stripe = Take(stripes, random);
         bool solidLeft = random.Next(2) == 0;
         var rest = solids.Concat(stripes).ToArray();
         random.Shuffle(rest);
-        var order = new int[15];
+        var order = new int[Triangle];
         order[0] = 1;
         order[4] = 8;
         order[10] = solidLeft ? solid : stripe;
         order[14] = solidLeft ? stripe : solid;
         int r = 0;
-        for (int i = 0; i < 15; i++)
+        for (int i = 0; i < Triangle; i++)
         {
             if (order[i] == 0)
             {
@@ -172,7 +179,7 @@ public static partial class Initializer
 
     private static int[] StraightPoolOrder(Random random)
     {
-        int[] all = [.. Enumerable.Range(1, 15)];
+        int[] all = [.. Enumerable.Range(1, Triangle)];
         random.Shuffle(all);
         return all;
     }

@@ -37,41 +37,103 @@ public static class Placement
     public static string? OnTable(TableSpec table, double radius, BallId id, Vec3 position, PlacementRegion region = PlacementRegion.Table)
     {
         ArgumentNullException.ThrowIfNull(table);
-        if (!double.IsFinite(position.X) || !double.IsFinite(position.Y))
+        return Where(table, radius, position, region, 0) switch
         {
-            return $"ball \"{id}\" has no finite position on the bed";
-        }
-        double maxX = table.HalfLength - radius;
-        double maxY = table.HalfWidth - radius;
-        if (Math.Abs(position.X) > maxX + Tolerance || Math.Abs(position.Y) > maxY + Tolerance)
-        {
+            Problem.None => null,
+            Problem.NotFinite => $"ball \"{id}\" has no finite position on the bed",
             // A ball in a pocket's mouth is refused in both models: the standard model's jaws and
             // capture circles and the thesis model's rail triangles and pocket test decide about
             // balls arriving from the bed, and a ball starting between them is on neither.
-            return Text($"ball \"{id}\" at [{position.X}, {position.Y}] is off the table (the centre must stay within [{-maxX:0.######}, {maxX:0.######}] x [{-maxY:0.######}, {maxY:0.######}]: on the bed, R inside the cushion noses; in both models a ball starts on the bed, never in a pocket's mouth)");
-        }
-        if (region == PlacementRegion.Kitchen && position.X > HeadString(table) + Tolerance)
+            Problem.OffTable => Text($"ball \"{id}\" at [{position.X}, {position.Y}] is off the table (the centre must stay within [{-(table.HalfLength - radius):0.######}, {table.HalfLength - radius:0.######}] x [{-(table.HalfWidth - radius):0.######}, {table.HalfWidth - radius:0.######}]: on the bed, R inside the cushion noses; in both models a ball starts on the bed, never in a pocket's mouth)"),
+            Problem.OutsideKitchen => Text($"ball \"{id}\" at [{position.X}, {position.Y}] is outside the kitchen (x must be at most the head string, {HeadString(table):0.######} m)"),
+            _ => Text($"ball \"{id}\" at [{position.X}, {position.Y}] is over the {PocketIds.FromIndex(OverPocket(table, radius, position, 0)).ToName()} pocket"),
+        };
+    }
+
+    /// <summary>
+    /// True when a ball of radius <paramref name="radius"/> (m) may rest at <paramref name="position"/>
+    /// in <paramref name="region"/>, <paramref name="margin"/> (m) clear of every limit (the
+    /// planner keeps a margin so that its placements are never on an edge): the same test as
+    /// <see cref="OnTable"/>, without a message.
+    /// </summary>
+    public static bool FitsOnTable(TableSpec table, double radius, Vec3 position, PlacementRegion region, double margin = 0)
+    {
+        ArgumentNullException.ThrowIfNull(table);
+        return Where(table, radius, position, region, margin) == Problem.None;
+    }
+
+    /// <summary>True when balls of radius <paramref name="radius"/> (m) at <paramref name="a"/> and <paramref name="b"/> overlap, or come within <paramref name="margin"/> (m) of it.</summary>
+    public static bool Overlaps(double radius, Vec3 a, Vec3 b, double margin = 0) =>
+        (a - b).XY.Length < 2 * radius + margin - Tolerance;
+
+    private enum Problem
+    {
+        None,
+        NotFinite,
+        OffTable,
+        OutsideKitchen,
+        OverPocket,
+    }
+
+    private static Problem Where(TableSpec table, double radius, Vec3 position, PlacementRegion region, double margin)
+    {
+        if (!double.IsFinite(position.X) || !double.IsFinite(position.Y))
         {
-            return Text($"ball \"{id}\" at [{position.X}, {position.Y}] is outside the kitchen (x must be at most the head string, {HeadString(table):0.######} m)");
+            return Problem.NotFinite;
         }
-        if (table.HasPockets)
+        double maxX = table.HalfLength - radius - margin;
+        double maxY = table.HalfWidth - radius - margin;
+        if (Math.Abs(position.X) > maxX + Tolerance || Math.Abs(position.Y) > maxY + Tolerance)
         {
-            foreach (var pocket in TableGeometry.Build(table, radius).Pockets)
+            return Problem.OffTable;
+        }
+        if (region == PlacementRegion.Kitchen && position.X > HeadString(table) - margin + Tolerance)
+        {
+            return Problem.OutsideKitchen;
+        }
+        return OverPocket(table, radius, position, margin) >= 0 ? Problem.OverPocket : Problem.None;
+    }
+
+    // The index of the pocket whose capture circle (grown by the margin) holds the centre, or -1.
+    private static int OverPocket(TableSpec table, double radius, Vec3 position, double margin)
+    {
+        if (!table.HasPockets)
+        {
+            return -1;
+        }
+        foreach (var pocket in Pockets(table, radius))
+        {
+            if ((position - pocket.Centre).XY.Length < pocket.Radius + margin - Tolerance)
             {
-                if ((position - pocket.Centre).XY.Length < pocket.Radius - Tolerance)
-                {
-                    return Text($"ball \"{id}\" at [{position.X}, {position.Y}] is over the {PocketIds.FromIndex(pocket.Pocket).ToName()} pocket");
-                }
+                return pocket.Pocket;
             }
         }
-        return null;
+        return -1;
+    }
+
+    // The last table's capture circles: a placement search asks for the same table many times.
+    // A reference, swapped whole, so that threads searching at once never see half of one.
+    private sealed record PocketCache(TableSpec Table, double Radius, PocketCircle[] Pockets);
+
+    private static PocketCache? s_pockets;
+
+    private static PocketCircle[] Pockets(TableSpec table, double radius)
+    {
+        var cached = s_pockets;
+        if (cached is not null && ReferenceEquals(cached.Table, table) && cached.Radius == radius)
+        {
+            return cached.Pockets;
+        }
+        var pockets = TableGeometry.Build(table, radius).Pockets.ToArray();
+        s_pockets = new PocketCache(table, radius, pockets);
+        return pockets;
     }
 
     /// <summary>What is wrong with ball <paramref name="id"/> at <paramref name="position"/> next to ball <paramref name="other"/> at <paramref name="otherPosition"/> (m); null when they do not overlap.</summary>
     public static string? Overlap(double radius, BallId id, Vec3 position, BallId other, Vec3 otherPosition)
     {
         double d = (position - otherPosition).XY.Length;
-        return d < 2 * radius - Tolerance
+        return Overlaps(radius, position, otherPosition)
             ? Text($"ball \"{id}\" overlaps ball \"{other}\" (centres {d:0.######} m apart, less than 2R = {2 * radius:0.######} m)")
             : null;
     }
@@ -134,6 +196,40 @@ public static class Placement
             }
         }
         return near;
+    }
+
+    /// <summary>
+    /// The free point on the long axis (y = 0) nearest <paramref name="startX"/> (m) in
+    /// <paramref name="direction"/> (+1 towards the foot rail, -1 towards the head rail) where a ball
+    /// of radius <paramref name="radius"/> (m) touches none of <paramref name="others"/>: each ball
+    /// in the way pushes the point to just past it, until none is (the spotting rule of rules.md).
+    /// The caller checks the result against the cushion.
+    /// </summary>
+    public static double FreeOnLongAxis(double radius, IReadOnlyList<Vec3> others, double startX, int direction)
+    {
+        ArgumentNullException.ThrowIfNull(others);
+        double x = startX;
+        bool moved = true;
+        while (moved)
+        {
+            moved = false;
+            foreach (var other in others)
+            {
+                double dy = other.Y;
+                double reach = 4 * radius * radius - dy * dy;
+                if (reach <= 0)
+                {
+                    continue;
+                }
+                double half = Math.Sqrt(reach);
+                if (Math.Abs(x - other.X) < half - Tolerance)
+                {
+                    x = other.X + direction * half;
+                    moved = true;
+                }
+            }
+        }
+        return x;
     }
 
     // Rings of the free-spot search: 200 R reaches every corner of the largest table.

@@ -27,6 +27,9 @@ public sealed record TableSpec(
     double SideJawAngleDeg,
     double SightOffset)
 {
+    /// <summary>The table's pockets, in index order: the six of a pool or snooker table, none for a pocketless one.</summary>
+    public IReadOnlyList<PocketId> Pockets => HasPockets ? PocketIds.All : [];
+
     /// <summary>Default cushion contact height: 0.64 of the ball diameter (physics-standard-model.md).</summary>
     public const double DefaultCushionHeight = 0.64 * 2 * 0.028575;
 

@@ -105,6 +105,23 @@ public class GameSceneTests
     }
 
     [Fact]
+    public void In_a_match_the_physics_leaves_a_scratched_cue_ball_to_the_referee()
+    {
+        // HandOnly: a match is driving; the physics node does not put the cue ball in hand itself.
+        using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
+        var physics = game.World.Physics;
+        physics.HandOnly = true;
+        bool returned = false;
+        physics.CueBallReturned += _ => returned = true;
+        game.Frame();
+        game.Simulation.Pocket(BallId.Cue);
+        game.RunUntilRest();
+        Assert.False(returned);
+        Assert.False(physics.BallInHand);
+        Assert.False(physics.HasCueBall);
+    }
+
+    [Fact]
     public void The_frame_carries_table_camera_cue_and_hud()
     {
         using var game = new TestGame();

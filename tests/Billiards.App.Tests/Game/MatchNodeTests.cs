@@ -60,6 +60,30 @@ public class MatchNodeTests
     }
 
     [Fact]
+    public void A_scene_s_own_shot_is_judged_as_simulate_judges_it_and_the_game_replays_from_the_scene()
+    {
+        string path = AssetFolder.Scene(Path.Combine("rules", "nine-ball-push-out.json"));
+        using var game = new RealGame(path, GameRules.NineBall);
+        Assert.True(game.Host.World.Physics.IsRolling, "the scene's shot plays at once");
+        game.RunUntilRest();
+        var ruling = Assert.Single(game.Match.Rulings);
+        Assert.Equal([RefereeOption.Shoot, RefereeOption.PassBack], game.Match.PendingOptions);
+
+        var (code, stdout, stderr) = Cli.CliRun.Run("simulate", path);
+        Assert.True(code == 0, stderr);
+        var simulated = System.Text.Json.Nodes.JsonNode.Parse(stdout)!["ruling"];
+        var played = System.Text.Json.Nodes.JsonNode.Parse(GameBlockWriter.RulingToUtf8(ruling));
+        Assert.True(System.Text.Json.Nodes.JsonNode.DeepEquals(simulated, played), $"{simulated} != {played}");
+
+        // The record starts from the scene's position, not a rack, and replays.
+        game.Press(Key.D2); // pass back
+        var record = GameRecordFile.Parse(System.Text.Encoding.UTF8.GetString(GameRecordFile.ToUtf8(game.Match.Game!)), "w.json");
+        Assert.Equal(6, record.Setup.Position!.Count);
+        Assert.Equal(RefereeOption.PassBack, record.Shots[0].Choice);
+        Assert.Null(GameRecordFile.Verify(record, out _).FirstDifference);
+    }
+
+    [Fact]
     public void A_soft_break_is_a_foul_whose_options_are_chosen_by_number_and_the_turn_passes()
     {
         using var game = new RealGame(AssetFolder.Scene("eight-ball.json"), GameRules.EightBall);

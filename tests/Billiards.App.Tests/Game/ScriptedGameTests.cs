@@ -68,6 +68,24 @@ public class ScriptedGameTests
         Assert.True(report.Shots >= 4);
     }
 
+    [Fact]
+    public void The_scripted_game_plays_back_in_the_window_from_its_record_with_every_ruling()
+    {
+        string text = PlayHeadlessText(1.0 / 60);
+        var record = GameRecordFile.Parse(text, "w.json");
+        var clock = new ManualClock();
+        var window = new FakeWindow { FramebufferSize = (1280, 720) };
+        var rulings = new List<(int Shot, string Ruling)>();
+        const int first = 2;
+        int code = ReplayCommand.Play(record, "w.json", first, 16, _ => new GamePlatform(window, new UntilClosedLoop(clock, window, 1.0 / 30), new NullRenderer()), clock,
+            (k, ruling) => rulings.Add((k, System.Text.Encoding.UTF8.GetString(GameBlockWriter.RulingToUtf8(ruling)))));
+        Assert.Equal(0, code);
+        Assert.True(window.Closed, "the playback never ended");
+        // Shot by shot from the one asked for, each judged as recorded.
+        Assert.Equal(Enumerable.Range(first, record.Shots.Count - first), rulings.Select(r => r.Shot));
+        Assert.All(rulings, r => Assert.Equal(record.Rulings[r.Shot], r.Ruling));
+    }
+
     // Internal so that the window test below can share it.
     internal static void AssertGame(JsonElement root) => AssertWholeGame(root, TableSpec.FromPreset("pool-9ft"));
 

@@ -2,7 +2,7 @@ using Billiards.Core.Balls;
 
 namespace Billiards.Core.Tests.Balls;
 
-/// <summary>Ball sets: pool's is the cue ball and 1-15.</summary>
+/// <summary>Ball sets as data: pool's is the cue ball and 1-15; other sets (carom's two cue balls) are data too.</summary>
 public class BallSetTests
 {
     [Fact]
@@ -41,5 +41,43 @@ public class BallSetTests
     {
         Assert.False(BallSet.Pool.TryParse(text, out _));
         Assert.False(BallId.TryParse(text, out _));
+    }
+
+    [Fact]
+    public void PoolsBallsKnowTheirGroupsLooksRadiusAndMass()
+    {
+        var pool = BallSet.Pool;
+        Assert.Equal(Enumerable.Range(1, 7), pool.Group("solids").Select(b => b.Value));
+        Assert.Equal(Enumerable.Range(9, 7), pool.Group("stripes").Select(b => b.Value));
+        Assert.Empty(pool.Group("reds"));
+        Assert.Equal([BallId.Cue], pool.CueBalls);
+        Assert.All(pool.Balls, b => Assert.Equal(b.Value > 8, b.Look.Striped));
+        Assert.All(pool.Balls, b => Assert.Equal(!pool.IsCueBall(b.Id), b.Look.Numbered));
+        // The 1 and the 9 share yellow; the 8 is black; the cue ball is near white.
+        Assert.Equal((pool.Kind(new BallId(1)).Look.Red, pool.Kind(new BallId(1)).Look.Blue), (pool.Kind(new BallId(9)).Look.Red, pool.Kind(new BallId(9)).Look.Blue));
+        Assert.True(pool.Kind(new BallId(8)).Look.Red < 0.1f);
+        Assert.True(pool.Kind(BallId.Cue).Look.Green > 0.9f);
+        Assert.Equal(Billiards.Core.Physics.PhysicsParams.DefaultRadius, pool.Radius);
+        Assert.Equal(Billiards.Core.Physics.PhysicsParams.DefaultMass, pool.Mass);
+    }
+
+    [Fact]
+    public void ASetWithTwoCueBallsKnowsBoth()
+    {
+        var look = new BallLook(1, 1, 1, false, false);
+        var white = new BallId(0);
+        var yellow = new BallId(1);
+        var red = new BallId(2);
+        var carom = new BallSet("carom", [new(white, "white", 0, look), new(yellow, "yellow", 0, look with { Blue = 0 }), new(red, "red", 0, look with { Green = 0, Blue = 0 })],
+            [white, yellow], new Dictionary<string, IReadOnlyList<BallId>>(), 0.03075, 0.21);
+        Assert.True(carom.IsCueBall(white));
+        Assert.True(carom.IsCueBall(yellow));
+        Assert.False(carom.IsCueBall(red));
+        Assert.True(carom.TryParse("yellow", out var parsed));
+        Assert.Equal(yellow, parsed);
+        Assert.False(carom.TryParse("1", out _));
+        Assert.Equal("\"white\", \"yellow\", \"red\"", carom.Describe());
+        Assert.Equal("red", carom.NameOf(red));
+        Assert.Throws<ArgumentException>(() => carom.Kind(new BallId(3)));
     }
 }

@@ -106,6 +106,18 @@ public class CommonFoulTests
     }
 
     [Fact]
+    public void ABallPlacedOverAPocketIsBadPlacementAsThePlacementTestSays()
+    {
+        // In the foot-right corner, R from both cushion noses: on the bed, but in the pocket's mouth.
+        var table = Billiards.Core.Table.TableSpec.FromPreset("pool-9ft");
+        var corner = new Vec3(table.HalfLength - ShotBuilder.R, table.HalfWidth - ShotBuilder.R, ShotBuilder.R);
+        Assert.Contains("pocket", Billiards.Core.Setup.Placement.OnTable(table, ShotBuilder.R, Billiards.Core.Balls.BallId.Cue, corner), StringComparison.Ordinal);
+        var before = NineBall with { BallInHand = BallInHand.Table, Placement = corner };
+        var r = Judge(before, ShotBuilder.Of(GameRules.NineBall).Hit(1).Rail(1));
+        Assert.Equal([Foul.BadPlacement], r.Fouls);
+    }
+
+    [Fact]
     public void SeveralFoulsAreAllListedAndCountAsOne()
     {
         var r = Judge(NineBall, ShotBuilder.Of(GameRules.NineBall).Hit(3).Rail(3).Pocket(0, PocketId.HeadLeft));

@@ -168,6 +168,21 @@ public class MatchTests
     }
 
     [Fact]
+    public void AnEightBallGameWithThreeFoulsInARowReplays()
+    {
+        // 8-ball has no three-foul rule: the count goes on, and its record still reads.
+        var game = new Match(GameSetup.Of(GameRules.EightBall, 3, Players));
+        game.Play(Aimer.Break(game, null));
+        for (int k = 0; k < 6 && !game.IsOver; k++)
+        {
+            game.Play(Aimer.Roll(game) with { Call = Call.Safety });
+        }
+        Assert.False(game.IsOver);
+        Assert.True(Math.Max(game.State.FoulsInRow[0], game.State.FoulsInRow[1]) >= 3);
+        AssertReplays(game);
+    }
+
+    [Fact]
     public void AMatchFromASetPositionStartsThereAndItsRecordReplaysFromIt()
     {
         var start = GameSetup.Of(GameRules.NineBall, 3, Players);
@@ -200,6 +215,25 @@ public class MatchTests
         Assert.Equal(changed, report.FirstDifference!.Shot);
         Assert.NotEqual(report.FirstDifference.Recorded, report.FirstDifference.Replayed);
         Assert.Null(GameRecordFile.Verify(record, out _).FirstDifference);
+    }
+
+    [Fact]
+    public void AShotTheReplayCannotPlayIsTheFirstDifference()
+    {
+        var game = PlayOut(GameSetup.Of(GameRules.NineBall, 1, Players));
+        Assert.True(game.IsOver);
+        var record = GameRecordFile.Parse(Encoding.UTF8.GetString(GameRecordFile.ToUtf8(game)), "game.json");
+        // One shot more than the game had: the replayed game is over by then.
+        var longer = record with
+        {
+            Shots = [.. record.Shots, record.Shots[^1]],
+            Rulings = [.. record.Rulings, record.Rulings[^1]],
+            Balls = [.. record.Balls, record.Balls[^1]],
+        };
+        var report = GameRecordFile.Verify(longer, out _);
+        Assert.Equal(record.Shots.Count, report.Same);
+        Assert.Equal(record.Shots.Count, report.FirstDifference!.Shot);
+        Assert.Equal("shot", report.FirstDifference.Field);
     }
 
     [Fact]

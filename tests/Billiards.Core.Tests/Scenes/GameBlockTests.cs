@@ -44,6 +44,10 @@ public class GameBlockTests
     }
 
     [Fact]
+    public void EightBallCountsFoulsInARowPastTwoForItHasNoThreeFoulRule() =>
+        Assert.Equal(new PerPlayer<int>(4, 0), Parse("""{ "rules": "eight-ball", "shot": 9, "fouls_in_row": [4, 0] }""").Game!.FoulsInRow);
+
+    [Fact]
     public void ASafetyCallReads() =>
         Assert.Equal(Call.Safety, Parse("""{ "rules": "ten-ball", "shot": 2, "call": { "safety": true } }""").Game!.Call);
 
@@ -61,6 +65,7 @@ public class GameBlockTests
     [InlineData("""{ "rules": "eight-ball", "push_out": true, "shot": 1 }""", "$.game.push_out", "eight-ball has no push-out")]
     [InlineData("""{ "rules": "nine-ball", "push_out": true, "shot": 4 }""", "$.game.push_out", "only allowed on the shot after the break")]
     [InlineData("""{ "rules": "nine-ball", "fouls_in_row": [3, 0] }""", "$.game.fouls_in_row", "each count must be 0, 1 or 2")]
+    [InlineData("""{ "rules": "eight-ball", "fouls_in_row": [0, -1] }""", "$.game.fouls_in_row", "each count must be 0 or more")]
     [InlineData("""{ "rules": "nine-ball", "fouls_in_row": [1] }""", "$.game.fouls_in_row", "one whole number per player")]
     [InlineData("""{ "rules": "nine-ball", "players": ["Anna"] }""", "$.game.players", "the names of the two players")]
     [InlineData("""{ "rules": "nine-ball", "shot": -1 }""", "$.game.shot", "negative")]

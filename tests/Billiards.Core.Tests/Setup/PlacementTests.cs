@@ -96,4 +96,45 @@ public class PlacementTests
             Assert.InRange(Math.Abs(rack[k].Position.Y - spots[k].Y), 0, Initializer.RackJitter);
         }
     }
+
+    [Fact]
+    public void ThePlannersPlacementsAreThePlacementTestWithAMargin()
+    {
+        var table = TableSpec.FromPreset("pool-9ft");
+        double r = 0.028575;
+        var onString = new Vec3(Placement.HeadString(table), 0.2, r);
+        // The referee takes a centre on the head string as behind it; the planner keeps 0.1 mm clear.
+        Assert.True(Placement.FitsOnTable(table, r, onString, PlacementRegion.Kitchen));
+        Assert.Null(Placement.OnTable(table, r, BallId.Cue, onString, PlacementRegion.Kitchen));
+        var position = new Billiards.Core.Ai.TablePosition([(new BallId(1), new Vec3(0.5, 0, r))]);
+        Assert.False(position.CanPlace(onString, Billiards.Core.Rules.BallInHand.Kitchen, table, r, BallId.Cue));
+        Assert.True(position.CanPlace(onString with { X = onString.X - 0.001 }, Billiards.Core.Rules.BallInHand.Kitchen, table, r, BallId.Cue));
+        // Touching a ball is allowed; the planner wants its margin.
+        var touching = new Vec3(0.5 - 2 * r, 0, r);
+        Assert.False(Placement.Overlaps(r, touching, new Vec3(0.5, 0, r)));
+        Assert.False(position.CanPlace(touching, Billiards.Core.Rules.BallInHand.Table, table, r, BallId.Cue));
+        Assert.True(position.CanPlace(touching with { X = touching.X - 0.001 }, Billiards.Core.Rules.BallInHand.Table, table, r, BallId.Cue));
+        // Over a pocket, for both.
+        var corner = new Vec3(table.HalfLength - r, table.HalfWidth - r, r);
+        Assert.False(Placement.FitsOnTable(table, r, corner, PlacementRegion.Table));
+        Assert.False(position.CanPlace(corner, Billiards.Core.Rules.BallInHand.Table, table, r, BallId.Cue));
+    }
+
+    [Fact]
+    public void TheFreeSpotSearchFindsTheNearestPointClearOfEveryBall()
+    {
+        var table = TableSpec.FromPreset("pool-9ft");
+        double r = 0.028575;
+        var head = new Vec3(-table.HalfLength / 2, 0, r);
+        Assert.Equal(head, Placement.FreeSpotNear(table, r, BallId.Cue, head, []));
+        // A ball on the head spot: the first free point is on the first ring that clears it (2R away), at angle 0.
+        var spot = Placement.FreeSpotNear(table, r, BallId.Cue, head, [(new BallId(1), head)]);
+        Assert.Equal(2 * r, (spot - head).Length, 9);
+        Assert.Equal(head.Y, spot.Y, 12);
+        Assert.True(spot.X > head.X);
+        // In the kitchen, the ring point ahead of the head string is refused: the first one behind it.
+        var kitchen = Placement.FreeSpotNear(table, r, BallId.Cue, head, [(new BallId(1), head)], PlacementRegion.Kitchen);
+        Assert.True(kitchen.X <= Placement.HeadString(table) + Placement.Tolerance);
+        Assert.True((kitchen - head).Length >= 2 * r - Placement.Tolerance);
+    }
 }

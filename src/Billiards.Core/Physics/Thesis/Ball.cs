@@ -26,11 +26,11 @@ public sealed class Ball
         Position = position;
     }
 
-    /// <summary>0 for the cue ball, 1..15 for the numbered balls.</summary>
+    /// <summary>The ball's id value in pool's set (<see cref="Balls.BallSet.Pool"/>): the cue ball and the numbered balls.</summary>
     public int Number { get; }
 
-    /// <summary>True for the cue ball (number 0), the only ball the effet acts on (seed 4.3.2).</summary>
-    public bool IsCue => Number == 0;
+    /// <summary>True for the cue ball, the only ball the effet acts on (seed 4.3.2).</summary>
+    public bool IsCue => Balls.BallSet.Pool.IsCueBall(new Balls.BallId(Number));
 
     /// <summary>Centre of the ball (cm); y = 2.86 while it lies on the bed.</summary>
     public Vector3 Position { get; set; }

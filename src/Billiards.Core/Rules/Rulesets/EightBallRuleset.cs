@@ -22,6 +22,9 @@ public sealed class EightBallRuleset : Ruleset
     /// <inheritdoc />
     public override bool HasGroups => true;
 
+    /// <summary>No: 8-ball has no three-foul rule.</summary>
+    public override bool HasThreeFouls => false;
+
     /// <inheritdoc />
     public override IReferee Referee(TableSpec table, double ballRadius) => new EightBallReferee(table, ballRadius);
 

@@ -17,7 +17,7 @@ public abstract class RotationRuleset : Ruleset
     public override bool HasPushOut => true;
 
     /// <inheritdoc />
-    public override IReferee Referee(TableSpec table, double ballRadius) => new RotationReferee(Game, table, ballRadius);
+    public override IReferee Referee(TableSpec table, double ballRadius) => new RotationReferee(this, table, ballRadius);
 
     /// <summary>The lowest-numbered ball on the table.</summary>
     public override IReadOnlyList<BallId> LegalTargets(GameState state, IEnumerable<BallId> objectBalls)
@@ -46,8 +46,8 @@ public sealed class NineBallRuleset : RotationRuleset
     /// <inheritdoc />
     protected override RackGame RackShape => RackGame.NineBall;
 
-    /// <summary>Never: 9-ball is not a called game.</summary>
-    public override bool NeedsCall(GameState state) => false;
+    /// <summary>No: 9-ball is not a called game.</summary>
+    public override bool CallsShots => false;
 }
 
 /// <summary>10-ball (rules.md): 9-ball's rules with called shots and the 10.</summary>

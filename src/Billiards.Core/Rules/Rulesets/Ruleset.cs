@@ -38,6 +38,9 @@ public abstract class Ruleset
     /// <summary>The ball set the game is played with.</summary>
     public virtual BallSet BallSet => BallSet.Pool;
 
+    /// <summary>The cue ball the shooter of <paramref name="state"/> strikes (pool: the one cue ball; carom's players each have their own).</summary>
+    public virtual BallId CueBall(GameState state) => BallSet.CueBalls[0];
+
     /// <summary>The balls of a game, cue ball first (a subset of <see cref="BallSet"/>).</summary>
     public abstract IReadOnlyList<BallId> Balls { get; }
 
@@ -54,11 +57,14 @@ public abstract class Ruleset
     /// <summary>The referee of the game on <paramref name="table"/> with balls of radius <paramref name="ballRadius"/> (m).</summary>
     public abstract IReferee Referee(TableSpec table, double ballRadius);
 
+    /// <summary>True when the game calls its shots (every shot but the break).</summary>
+    public virtual bool CallsShots => true;
+
     /// <summary>True when the shooter must call the shot (ball and pocket, or a safety) before it.</summary>
-    public virtual bool NeedsCall(GameState state)
+    public bool NeedsCall(GameState state)
     {
         ArgumentNullException.ThrowIfNull(state);
-        return state.Shot > 0;
+        return CallsShots && state.Shot > 0;
     }
 
     /// <summary>True when the game has a push-out (9-ball and 10-ball).</summary>
@@ -73,6 +79,13 @@ public abstract class Ruleset
 
     /// <summary>True when players own groups of balls (8-ball's solids and stripes).</summary>
     public virtual bool HasGroups => false;
+
+    /// <summary>
+    /// True when three fouls in a row have a consequence (a loss in 9-ball and 10-ball, a penalty
+    /// in 14.1), which ends the count: a player then has at most two fouls in a row before a shot.
+    /// Without it (8-ball) the count only grows.
+    /// </summary>
+    public virtual bool HasThreeFouls => true;
 
     /// <summary>True when the game keeps a score with a target (14.1).</summary>
     public virtual bool HasScore => false;

@@ -9,11 +9,11 @@ namespace Billiards.Core.Rules;
 /// shot, the break included; 10-ball calls every shot but the break, and only the 10 legally
 /// pocketed in its called pocket wins.
 /// </summary>
-internal sealed class RotationReferee(GameRules rules, TableSpec table, double ballRadius) : RefereeBase(rules, table, ballRadius)
+internal sealed class RotationReferee(RotationRuleset ruleset, TableSpec table, double ballRadius) : RefereeBase(ruleset.Game, table, ballRadius)
 {
-    private bool Called => Rules == GameRules.TenBall;
+    private bool Called => ruleset.CallsShots;
 
-    private BallId Money => new(Called ? 10 : 9);
+    private BallId Money => ruleset.Money;
 
     protected override void Judge(GameState before, ShotFacts facts, RulingBuilder ruling)
     {

@@ -1,0 +1,87 @@
+using Billiards.Core.Rules;
+
+namespace Billiards.Core.Ai;
+
+/// <summary>How the planner scores a judged shot for the player who shot it.</summary>
+public sealed partial class ShotPlanner
+{
+    /// <summary>Score of a won game.</summary>
+    public const double WonScore = 1;
+
+    /// <summary>Score of a lost game.</summary>
+    public const double LostScore = 0;
+
+    /// <summary>Score of a game that ended without a winner, and the quality assumed for a position a level does not look at.</summary>
+    public const double EvenScore = 0.5;
+
+    /// <summary>Score of a foul (not a loss).</summary>
+    public const double FoulScore = 0.08;
+
+    /// <summary>Score of a foul on a push-out.</summary>
+    public const double PushOutFoulScore = 0.1;
+
+    /// <summary>Score of a push-out that leaves a shot of middling ease; it falls by <see cref="PushOutSpread"/> towards an easy or a hopeless leave.</summary>
+    public const double PushOutBestScore = 0.4;
+
+    /// <summary>How much a push-out's score falls from <see cref="PushOutBestScore"/> at an easy or hopeless leave.</summary>
+    public const double PushOutSpread = 0.3;
+
+    /// <summary>Score of staying at the table before the position counts.</summary>
+    public const double ContinueScore = 0.7;
+
+    /// <summary>Weight of the next shot's position quality when the shooter stays at the table.</summary>
+    public const double PositionWeight = 0.3;
+
+    /// <summary>Cost of each ball left without a straight way to a pocket (<see cref="PlannerTable.ProblemBalls"/>).</summary>
+    public const double ProblemBallCost = 0.04;
+
+    /// <summary>Score of a legal miss (a safety) before the opponent's chances count.</summary>
+    public const double SafetyScore = 0.5;
+
+    /// <summary>Weight of the opponent's best shot after a legal miss.</summary>
+    public const double OpponentWeight = 0.4;
+
+    /// <summary>
+    /// The score of a judged shot for the player who shot it (see the class remarks), with the
+    /// balls after it in <paramref name="after"/>, as <paramref name="level"/> judges it: levels
+    /// without look-ahead see only the ruling; the others also the next shot, their own judged with
+    /// their own error (<see cref="SkillLevel.PositionAimStdDeg"/>), the opponent's as if the
+    /// opponent were at least as good (<see cref="SkillLevel.OpponentAimStdDeg"/>).
+    /// </summary>
+    public double Score(GameState before, Ruling ruling, TablePosition after, SkillLevel level)
+    {
+        ArgumentNullException.ThrowIfNull(before);
+        ArgumentNullException.ThrowIfNull(ruling);
+        ArgumentNullException.ThrowIfNull(level);
+        bool look = level.LookAhead > 0;
+        if (ruling.GameOver)
+        {
+            return ruling.Winner is not { } w ? EvenScore : w == before.Shooter ? WonScore : LostScore;
+        }
+        if (before.PushOut)
+        {
+            if (!ruling.Legal)
+            {
+                return PushOutFoulScore;
+            }
+            // The opponent shoots a good leave and hands back a bad one: leave one in between.
+            double q = look ? Table.BestEase(after, ruling.Next) : EvenScore;
+            return PushOutBestScore - PushOutSpread * Math.Abs(2 * q - 1);
+        }
+        if (ruling.Continue)
+        {
+            // Position counts, but less than the pot: for a strong player a moderate next shot is
+            // still likely, and the pot in hand is certain. Each ball left without a straight way
+            // to a pocket costs a little, so that shots which free a cluster are preferred.
+            double q = look ? Table.PositionQuality(after, ruling.Next, level.PositionAimStdDeg) : EvenScore;
+            double problems = look ? ProblemBallCost * Table.ProblemBalls(after, ruling.Next) : 0;
+            return ContinueScore + PositionWeight * q - problems;
+        }
+        if (!ruling.Legal)
+        {
+            return FoulScore;
+        }
+        double opponent = look ? Table.BestEase(after, ruling.Next, level.OpponentAimStdDeg) : EvenScore;
+        return SafetyScore - OpponentWeight * opponent;
+    }
+}

@@ -1,0 +1,95 @@
+using Billiards.Core.Cue;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Rules;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Ai;
+
+/// <summary>The variations the search simulates: each candidate at several speeds and spins, and the break.</summary>
+public sealed partial class ShotPlanner
+{
+    private sealed partial class Search
+    {
+        private void AddVariations(int rootIndex, Root root, int candidates, List<Variation> variations)
+        {
+            var cue = root.Cue;
+            if (state.Shot == 0)
+            {
+                AddBreak(rootIndex, root, variations);
+                return;
+            }
+            var pots = CandidateGenerator.Pots(_table, state, root.Position, cue)
+                .OrderByDescending(c => c.Prior).Take(candidates).ToList();
+            var safeties = CandidateGenerator.Safeties(_table, state, root.Position, cue)
+                .Take(level.Level >= 3 ? candidates / 2 + 2 : 2).ToList();
+            if (pots.Count == 0 && safeties.Count == 0)
+            {
+                safeties = CandidateGenerator.LastResort(_table, state, root.Position, cue);
+            }
+            bool call = Ruleset.For(state.Rules).NeedsCall(state);
+            var before = state with { Placement = root.Place, PushOut = false };
+            foreach (var c in pots)
+            {
+                var withCall = before with { Call = call ? new Call(c.Called, c.Pocket) : null };
+                Vary(rootIndex, c, cue, withCall, level.Speeds, level.Spins, variations);
+            }
+            foreach (var c in safeties)
+            {
+                var withCall = before with { Call = call ? Call.Safety : null };
+                Vary(rootIndex, c, cue, withCall, Math.Min(level.Speeds, 3), Math.Min(level.Spins, 3), variations);
+            }
+            // 9-ball and 10-ball: the shot after the break may be a push-out (no contact needed).
+            if (level.LookAhead > 0 && Ruleset.For(state.Rules).MayPushOut(state)
+                && pots.All(c => c.Prior < 0.2))
+            {
+                var push = state with { Placement = root.Place, PushOut = true, Call = null };
+                foreach (var c in safeties.Take(3))
+                {
+                    Vary(rootIndex, c with { Kind = ShotKind.PushOut }, cue, push, 2, 1, variations);
+                }
+            }
+        }
+
+        private void AddBreak(int rootIndex, Root root, List<Variation> variations)
+        {
+            var balls = root.Position.Enumerate().Where(b => !b.Id.IsCue).ToList();
+            if (balls.Count == 0)
+            {
+                return;
+            }
+            var foot = Setup.Initializer.FootSpot(_table.Table, _table.R);
+            var apex = balls.OrderBy(b => (b.Position - foot).LengthXY).First();
+            var before = state with { Placement = root.Place, Call = null, PushOut = false };
+            var n = (apex.Position - root.Cue).XY.Normalized();
+            var side = new Vec3(-n.Y, n.X, 0);
+            var offsets = level.Level >= 3 ? new[] { 0.0, 0.3, -0.3 } : [0.0];
+            var speeds = level.Level >= 2 ? new[] { 6.0, 7.5 } : [6.5];
+            foreach (double offset in offsets)
+            {
+                var aimPoint = apex.Position + side * (offset * _table.R);
+                var c = new Candidate(ShotKind.Break, apex.Id, apex.Id, PocketId.None, apex.Position, Vec3.Zero, aimPoint, 7, 0.5);
+                foreach (double speed in speeds)
+                {
+                    var d = aimPoint - root.Cue;
+                    var shot = new ShotSpec(speed, Math.Atan2(d.Y, d.X) * 180 / Math.PI, 0, -0.2, 0);
+                    variations.Add(new Variation(rootIndex, c, shot, before));
+                }
+            }
+        }
+
+        private void Vary(int rootIndex, Candidate c, Vec3 cue, GameState before, int speeds, int spins, List<Variation> variations)
+        {
+            var factors = SpeedFactors.Take(speeds).Order().ToArray();
+            for (int k = 0; k < spins; k++)
+            {
+                var (sideTip, height, elevation) = SpinSet[k];
+                double aim = planner.AimFor(c, cue, sideTip, height);
+                foreach (double f in factors)
+                {
+                    double speed = Math.Min(MaxNormalSpeed, c.BaseSpeed * f);
+                    variations.Add(new Variation(rootIndex, c, new ShotSpec(speed, aim, sideTip, height, elevation), before));
+                }
+            }
+        }
+    }
+}
