@@ -12,11 +12,15 @@ public static class ResultWriter
     /// <summary>The format tag of a result.</summary>
     public const string Format = "billiards-result/1";
 
-    /// <summary>The result as UTF-8 JSON bytes, indented, with round-trip numbers.</summary>
-    public static byte[] ToUtf8(RunOutcome outcome)
+    /// <summary>
+    /// The result as UTF-8 JSON bytes with round-trip numbers and a final line break: indented, or
+    /// on one line (<paramref name="indented"/> false, one line of <c>simulate --batch</c>); the two
+    /// differ only in white space.
+    /// </summary>
+    public static byte[] ToUtf8(RunOutcome outcome, bool indented = true)
     {
         using var stream = new MemoryStream();
-        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
+        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = indented }))
         {
             Write(w, outcome);
         }
