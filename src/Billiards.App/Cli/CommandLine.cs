@@ -16,6 +16,8 @@ namespace Billiards.App.Cli;
 /// <item><see cref="EnvironmentException"/>, I/O and access errors (a read-only disk, a full disk),
 /// missing native libraries: an environment problem, exit <see cref="Failure"/> (1).</item>
 /// <item>Anything else is a defect of the program: one line naming it, exit <see cref="Failure"/>.</item>
+/// <item><c>simulate --batch</c> whose lines all ran but some gave an error record (written in their
+/// place in the output): exit <see cref="BatchSimulation.SomeFailed"/> (3).</item>
 /// </list>
 /// A verb checks its arguments and every output path (<see cref="OutputFiles.Check"/>) before it
 /// starts working, and writes its files with <see cref="OutputFiles.Write"/> (temporary file beside
@@ -36,7 +38,7 @@ public static class CommandLine
         {
             var root = new RootCommand("Billiards: a pool game and billiards physics engine.")
             {
-                SimulateCommand.Create(stdout),
+                SimulateCommand.Create(stdout, stderr),
                 RenderCommand.Create(stdout),
                 RenderAudioCommand.Create(),
                 ReportCommand.Create(stdout, stderr),

@@ -73,6 +73,31 @@ public static class OutputFiles
     public static void Write(string path, ReadOnlySpan<byte> bytes) => WriteAll([(path, bytes.ToArray())]);
 
     /// <summary>
+    /// Writes one file atomically as <see cref="WriteAll"/> does, but from a writer that streams
+    /// into it (for outputs too large to hold in memory, such as <c>simulate --batch</c>): the
+    /// temporary file is renamed into place only when <paramref name="write"/> returns.
+    /// </summary>
+    public static void WriteStreaming(string path, Action<Stream> write)
+    {
+        ArgumentNullException.ThrowIfNull(write);
+        string target = Path.GetFullPath(path);
+        string temp = TempName(target);
+        try
+        {
+            using (var stream = new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1 << 16))
+            {
+                write(stream);
+                stream.Flush(flushToDisk: true);
+            }
+            File.Move(temp, target, overwrite: true);
+        }
+        finally
+        {
+            TryDelete(temp);
+        }
+    }
+
+    /// <summary>
     /// Writes files so that each appears whole or not at all: every file goes to a temporary file
     /// beside its target first, and only when all are written are they renamed into place. On any
     /// failure every temporary file is deleted and the error passes on.

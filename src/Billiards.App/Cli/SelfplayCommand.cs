@@ -12,10 +12,13 @@ using Billiards.Core.Table;
 namespace Billiards.App.Cli;
 
 /// <summary>
-/// <c>selfplay --rules R --games N --levels A,B --seed S [--target P] [--out FILE.jsonl]</c>: the
-/// computer against itself on a 9 ft table; prints one summary JSON, writes one game record per line
-/// with <c>--out</c> (<see cref="GameRecordFile"/>'s record on one line, so each replays ruling for
-/// ruling), and reports progress on stderr.
+/// <c>selfplay --rules R --games N --levels A,B --seed S [--target P] [--shard K/N] [--out FILE.jsonl] [--summary FILE.json]</c>:
+/// the computer against itself on a 9 ft table; prints one summary JSON (<see cref="SelfPlaySummary"/>)
+/// or writes it to <c>--summary</c>, writes one game record per line with <c>--out</c>
+/// (<see cref="GameRecordFile"/>'s record on one line, so each replays ruling for ruling), and
+/// reports progress on stderr. <c>--shard K/N</c> plays the games g of the run with g mod N = K
+/// (<see cref="SelfPlayShard"/>); <c>selfplay --merge A.json B.json ...</c> merges the shards'
+/// summaries into the whole run's.
 /// </summary>
 public static class SelfplayCommand
 {
@@ -34,19 +37,37 @@ public static class SelfplayCommand
     /// <summary>Builds the verb.</summary>
     public static Command Create(TextWriter stdout, TextWriter stderr)
     {
-        var rules = new Option<string>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball or straight-pool.", Required = true };
-        var games = new Option<int>("--games") { Description = "Number of games.", Required = true };
-        var levels = new Option<string>("--levels") { Description = "The two players' levels, 1-5, e.g. 5,3 (the first is player 0).", Required = true };
-        var seed = new Option<long>("--seed") { Description = "Seed of every rack and every error.", Required = true };
+        // Not Required: --merge needs none of them (checked in the action).
+        var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball or straight-pool." };
+        var games = new Option<int?>("--games") { Description = "Number of games of the whole run." };
+        var levels = new Option<string?>("--levels") { Description = "The two players' levels, 1-5, e.g. 5,3 (the first is player 0)." };
+        var seed = new Option<long?>("--seed") { Description = "Seed of every rack and every error." };
         var target = new Option<int?>("--target") { Description = "Straight pool: the score that wins (default 100)." };
+        var shard = new Option<string?>("--shard") { Description = "K/N: play only the games g of the run with g mod N = K (0 <= K < N), with the run's seeds." };
         var output = new Option<string?>("--out") { Description = "Write the game records (billiards-game/1, one per line) to FILE.jsonl." };
+        var summary = new Option<string?>("--summary") { Description = "Write the summary JSON to FILE instead of standard output." };
+        var merge = new Option<string[]>("--merge") { Description = "Merge the summaries of every shard of one run into the run's summary.", AllowMultipleArgumentsPerToken = true, Arity = ArgumentArity.OneOrMore };
         var command = new Command("selfplay", "Play the computer against itself and print a summary JSON.")
         {
-            rules, games, levels, seed, target, output,
+            rules, games, levels, seed, target, shard, output, summary, merge,
         };
         command.SetAction(parse =>
         {
-            string rulesName = parse.GetValue(rules)!;
+            string? summaryPath = parse.GetValue(summary) is { } sp ? OutputFiles.Check("--summary", sp) : null;
+            if (parse.GetValue(merge) is { Length: > 0 } summaries)
+            {
+                foreach (var (name, given) in new[] { ("--rules", parse.GetValue(rules) is not null), ("--games", parse.GetValue(games) is not null), ("--levels", parse.GetValue(levels) is not null),
+                    ("--seed", parse.GetValue(seed) is not null), ("--target", parse.GetValue(target) is not null), ("--shard", parse.GetValue(shard) is not null), ("--out", parse.GetValue(output) is not null) })
+                {
+                    if (given)
+                    {
+                        throw new CliException($"--merge: {name} does not go with it (the summaries say what the run was; --summary FILE is the only option)");
+                    }
+                }
+                Emit(stdout, summaryPath, Merge(summaries).ToUtf8(), []);
+                return 0;
+            }
+            string rulesName = parse.GetValue(rules) ?? throw Missing("--rules");
             if (!RuleNames.TryParseGame(rulesName, out var game))
             {
                 throw new CliException($"--rules {rulesName}: expected one of {string.Join(", ", RuleNames.GameNames)}");
@@ -56,32 +77,40 @@ public static class SelfplayCommand
             {
                 throw new CliException($"--target {points}: expected 1 to {MaxTarget}");
             }
-            int count = parse.GetValue(games);
+            int count = parse.GetValue(games) ?? throw Missing("--games");
             if (count < 1 || count > MaxGames)
             {
                 throw new CliException($"--games {count}: expected 1 to {MaxGames}");
             }
-            var pair = ParseLevels(parse.GetValue(levels)!);
-            long seedValue = parse.GetValue(seed);
+            var pair = ParseLevels(parse.GetValue(levels) ?? throw Missing("--levels"));
+            long seedValue = parse.GetValue(seed) ?? throw Missing("--seed");
+            var part = SelfPlayShard.Whole;
+            if (parse.GetValue(shard) is { } shardText)
+            {
+                part = SelfPlayShard.TryParse(shardText, out string problem) ?? throw new CliException($"--shard {shardText}: {problem}");
+            }
             string? outPath = parse.GetValue(output) is { } o ? OutputFiles.Check("--out", o) : null;
 
             var table = TableSpec.FromPreset("pool-9ft");
             var physics = PhysicsParams.Default;
             var selfPlay = new SelfPlay(table, physics);
-            var played = new List<PlayedGame>(count);
+            int mine = part.GameCount(count);
+            var played = new List<PlayedGame>(mine);
             var clock = Stopwatch.StartNew();
             var lastReport = TimeSpan.Zero;
-            for (int g = 0; g < count; g++)
+            string label = part.IsWhole ? "selfplay" : $"selfplay {part.Index}/{part.Count}";
+            foreach (int g in part.Games(count))
             {
+                // Game g has the same seed and breaker in every shard count: the shards play the run's games.
                 played.Add(selfPlay.Play(game, pair, g % 2, PlannerRandom.Derive((ulong)seedValue, g), Budget, points));
-                if (clock.Elapsed - lastReport > TimeSpan.FromSeconds(5) || g == count - 1)
+                if (clock.Elapsed - lastReport > TimeSpan.FromSeconds(5) || played.Count == mine)
                 {
                     lastReport = clock.Elapsed;
-                    int wins0 = played.Count(p => p.Winner == 0);
                     stderr.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                        $"selfplay: {g + 1}/{count} games, level {pair.First} won {wins0}, level {pair.Second} won {played.Count(p => p.Winner == 1)}, {clock.Elapsed.TotalSeconds:F0} s"));
+                        $"{label}: {played.Count}/{mine} games, level {pair.First} won {played.Count(p => p.Winner == 0)}, level {pair.Second} won {played.Count(p => p.Winner == 1)}, {clock.Elapsed.TotalSeconds:F0} s"));
                 }
             }
+            var files = new List<(string Path, byte[] Bytes)>();
             if (outPath is not null)
             {
                 using var lines = new MemoryStream();
@@ -89,13 +118,54 @@ public static class SelfplayCommand
                 {
                     OneLine(GameRecordFile.ToUtf8(p.Record), lines);
                 }
-                OutputFiles.Write(outPath, lines.ToArray());
+                files.Add((outPath, lines.ToArray()));
             }
-            stdout.WriteLine(Encoding.UTF8.GetString(Summary(game, seedValue, pair, played, clock.Elapsed.TotalMilliseconds)));
+            var result = SelfPlaySummary.Of(game, seedValue, pair, points, count, part, played, clock.Elapsed.TotalMilliseconds);
+            Emit(stdout, summaryPath, result.ToUtf8(), files);
             return 0;
         });
         return command;
     }
+
+    /// <summary>Reads and merges the shard summaries named by <paramref name="files"/>.</summary>
+    public static SelfPlaySummary Merge(IReadOnlyList<string> files)
+    {
+        ArgumentNullException.ThrowIfNull(files);
+        var summaries = new List<SelfPlaySummary>(files.Count);
+        foreach (string file in files)
+        {
+            string text;
+            try
+            {
+                text = File.ReadAllText(file);
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
+            {
+                throw new CliException($"--merge {file}: cannot read the file ({e.Message})");
+            }
+            summaries.Add(SelfPlaySummary.Parse(text, file));
+        }
+        return SelfPlaySummary.Merge(summaries, files);
+    }
+
+    // The summary to stdout or, with the records, atomically to its file.
+    private static void Emit(TextWriter stdout, string? summaryPath, byte[] summary, List<(string Path, byte[] Bytes)> files)
+    {
+        if (summaryPath is not null)
+        {
+            files.Add((summaryPath, summary));
+        }
+        if (files.Count > 0)
+        {
+            OutputFiles.WriteAll(files);
+        }
+        if (summaryPath is null)
+        {
+            stdout.Write(Encoding.UTF8.GetString(summary));
+        }
+    }
+
+    private static CliException Missing(string option) => new($"selfplay: {option} is required (or --merge SUMMARY.json ...)");
 
     /// <summary>Parses "A,B" with both levels in 1-5.</summary>
     public static PerPlayer<int> ParseLevels(string text)
@@ -111,51 +181,6 @@ public static class SelfplayCommand
         return new PerPlayer<int>(a, b);
     }
 
-    private static byte[] Summary(GameRules game, long seed, PerPlayer<int> levels, List<PlayedGame> played, double ms)
-    {
-        using var stream = new MemoryStream();
-        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
-        {
-            w.WriteStartObject();
-            w.WriteString("rules", game.ToName());
-            w.WriteNumber("games", played.Count);
-            w.WriteNumber("seed", seed);
-            w.WriteStartArray("levels");
-            w.WriteNumberValue(levels.First);
-            w.WriteNumberValue(levels.Second);
-            w.WriteEndArray();
-            w.WriteNumber("unfinished", played.Count(p => p.Winner is null));
-            w.WriteStartArray("players");
-            for (int player = 0; player < 2; player++)
-            {
-                var s = SelfPlayStats.Of(played, player);
-                w.WriteStartObject();
-                w.WriteNumber("player", player);
-                w.WriteNumber("level", levels[player]);
-                w.WriteNumber("games_won", s.GamesWon);
-                w.WriteNumber("shots", s.Shots);
-                w.WriteNumber("pots", s.Pots);
-                w.WriteNumber("pot_attempts", s.PotAttempts);
-                w.WriteNumber("pot_rate", Round(s.PotAttempts > 0 ? (double)s.Pots / s.PotAttempts : 0));
-                w.WriteNumber("expected_pot_rate", Round(s.ExpectedPotRate));
-                w.WriteNumber("fouls", s.Fouls);
-                w.WriteNumber("breaks", s.Breaks);
-                w.WriteNumber("potting_breaks", s.PottingBreaks);
-                w.WriteNumber("break_and_runs", s.BreakAndRuns);
-                w.WriteNumber("run_outs", s.RunOuts);
-                w.WriteStartObject("decision_ms");
-                w.WriteNumber("median", Round(s.DecisionMedianMs));
-                w.WriteNumber("p95", Round(s.DecisionP95Ms));
-                w.WriteEndObject();
-                w.WriteEndObject();
-            }
-            w.WriteEndArray();
-            w.WriteNumber("ms", Round(ms));
-            w.WriteEndObject();
-        }
-        return stream.ToArray();
-    }
-
     // The record as GameRecordFile writes it, on one line (numbers keep their text).
     private static void OneLine(byte[] record, Stream output)
     {
@@ -166,6 +191,4 @@ public static class SelfplayCommand
         }
         output.WriteByte((byte)'\n');
     }
-
-    private static double Round(double x) => Math.Round(x, 4);
 }

@@ -43,11 +43,11 @@ public static class SceneFrames
         for (int i = 0; i < states.Length; i++)
         {
             var state = states[i];
-            frame.Balls.Add(new BallVisual(simulation.Ids[i], ToVector(state.Position), state.Orientation, !state.IsPocketed));
+            frame.Balls.Add(new BallVisual(simulation.Ids[i], ToVector(state.Position), state.Orientation, !state.IsOutOfPlay));
         }
         // As in the game, the cue is back, addressing the cue ball, once every ball rests.
         int cue = simulation.IndexOf(BallId.Cue);
-        if (simulation.IsAtRest && cue >= 0 && !states[cue].IsPocketed)
+        if (simulation.IsAtRest && cue >= 0 && !states[cue].IsOutOfPlay)
         {
             frame.Cue = AddressingCue(frame, ToVector(states[cue].Position));
         }

@@ -48,7 +48,7 @@ public sealed class TablePosition
         var balls = simulation.Balls;
         for (int i = 0; i < balls.Length; i++)
         {
-            if (!balls[i].IsPocketed)
+            if (!balls[i].IsOutOfPlay)
             {
                 list.Add((simulation.Ids[i], balls[i].Position));
             }
@@ -65,7 +65,7 @@ public sealed class TablePosition
         var ids = record.Ids;
         for (int i = 0; i < balls.Length; i++)
         {
-            if (!balls[i].IsPocketed)
+            if (!balls[i].IsOutOfPlay)
             {
                 list.Add((ids[i], balls[i].Position));
             }

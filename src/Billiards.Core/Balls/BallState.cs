@@ -29,4 +29,7 @@ public struct BallState
 
     /// <summary>True once the ball is in a pocket.</summary>
     public readonly bool IsPocketed => State == MotionState.Pocketed;
+
+    /// <summary>True once the ball is out of play: in a pocket, or off the table over a rail.</summary>
+    public readonly bool IsOutOfPlay => State is MotionState.Pocketed or MotionState.OffTable;
 }

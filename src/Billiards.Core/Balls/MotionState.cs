@@ -13,12 +13,16 @@ public enum MotionState : byte
     Rolling,
     /// <summary>In a pocket; out of play.</summary>
     Pocketed,
+    /// <summary>In the air (standard model): on a parabola under gravity, spin constant, until it lands.</summary>
+    Airborne,
+    /// <summary>Left the table over a rail; out of play, at its last position.</summary>
+    OffTable,
 }
 
 /// <summary>Names of motion states as the result format writes them.</summary>
 public static class MotionStateNames
 {
-    /// <summary>"stationary", "spinning", "sliding", "rolling" or "pocketed".</summary>
+    /// <summary>"stationary", "spinning", "sliding", "rolling", "pocketed", "airborne" or "off-table".</summary>
     public static string ToName(this MotionState state) => state switch
     {
         MotionState.Stationary => "stationary",
@@ -26,6 +30,8 @@ public static class MotionStateNames
         MotionState.Sliding => "sliding",
         MotionState.Rolling => "rolling",
         MotionState.Pocketed => "pocketed",
+        MotionState.Airborne => "airborne",
+        MotionState.OffTable => "off-table",
         _ => throw new ArgumentOutOfRangeException(nameof(state)),
     };
 }

@@ -14,15 +14,19 @@ namespace Billiards.Core.Cue;
 /// (a, -c, b) from the centre and pushes along (0, cos theta, -sin theta). The impulse's torque
 /// gives w = v / (I/m) ((c sin theta - b cos theta) i + a sin theta j + a cos theta k), which is
 /// the spec's (-c sin theta + b cos theta, a sin theta, -a cos theta) written in the pooltool frame
-/// (x to the left, y back along the cue, z up) where a is measured to the left. The bed takes the
-/// impulse's downward part, so the ball leaves horizontally at v cos theta.
+/// (x to the left, y back along the cue, z up) where a is measured to the left. The impulse's
+/// downward part drives the ball into the slate at v sin theta (<see cref="Outcome.IntoSlate"/>),
+/// and <see cref="Outcome.Velocity"/> is the rest, v cos theta along the bed. The standard model
+/// lands the ball at once on the slate, which returns it with e_t and its friction (a steep, fast
+/// stroke jumps); a model without flight lets the bed take the downward part.
 /// </remarks>
 public static class CueStrike
 {
     /// <summary>The ball's velocity and spin just after the strike.</summary>
     /// <param name="Velocity">Velocity of the centre (m/s), in the bed plane.</param>
     /// <param name="Spin">Angular velocity (rad/s).</param>
-    public readonly record struct Outcome(Vec3 Velocity, Vec3 Spin);
+    /// <param name="IntoSlate">The downward speed v sin theta the strike drives the ball into the slate with (m/s).</param>
+    public readonly record struct Outcome(Vec3 Velocity, Vec3 Spin, double IntoSlate = 0);
 
     /// <summary>
     /// Speed factor of TP A-30: v = 2 V0 / (1 + m/M + (a^2 + (b cos t)^2 + (c sin t)^2 - 2 b c cos t sin t) / (I/m)),
@@ -79,6 +83,6 @@ public static class CueStrike
 
         var velocity = j * (v * cos);
         var spin = i * (k * (c * sin - b * cos)) + j * (k * a * sin) + new Vec3(0, 0, k * a * cos);
-        return new Outcome(velocity, spin);
+        return new Outcome(velocity, spin, v * sin);
     }
 }

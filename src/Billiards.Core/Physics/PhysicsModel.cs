@@ -27,6 +27,9 @@ public abstract class PhysicsModel
     /// <summary>True when the model takes a resolver per interaction (<see cref="PhysicsConfig.Models"/>).</summary>
     public virtual bool TakesInteractionModels => false;
 
+    /// <summary>True when the model's balls can leave the bed (a scene may then give [x, y, z] positions and [vx, vy, vz] velocities).</summary>
+    public virtual bool HasFlight => false;
+
     /// <summary>The table preset of a scene that names none.</summary>
     public abstract string DefaultTablePreset { get; }
 

@@ -30,6 +30,10 @@ public enum BallBallFriction
 /// Stronge's compliant cushion: the ratio omega_t / omega_n of the contact's tangential and normal
 /// frequencies, in the open interval (1, 2); pooltool's default 1.8. Symbol "omega_ratio".
 /// </param>
+/// <param name="ET">
+/// Ball-table restitution e_t: a landing ball leaves the bed again at e_t times its vertical impact
+/// speed (Dr Dave's 0.5). Symbol "e_t".
+/// </param>
 public sealed record PhysicsParams(
     double M = PhysicsParams.DefaultMass,
     double R = PhysicsParams.DefaultRadius,
@@ -44,7 +48,8 @@ public sealed record PhysicsParams(
     double G = 9.81,
     double CueMass = 0.567,
     double CueEndMass = PhysicsParams.DefaultMass / 30,
-    double OmegaRatio = 1.8)
+    double OmegaRatio = 1.8,
+    double ET = 0.5)
 {
     /// <summary>Default ball mass (kg).</summary>
     public const double DefaultMass = 0.170097;
@@ -57,7 +62,7 @@ public sealed record PhysicsParams(
 
     /// <summary>The symbol names a scene may override, in the order of the doc's table.</summary>
     public static IReadOnlyList<string> Symbols { get; } =
-        ["m", "R", "mu_s", "mu_r", "mu_sp", "mu_b", "e_b", "e_c", "f_c", "g", "M", "m_e", "omega_ratio"];
+        ["m", "R", "mu_s", "mu_r", "mu_sp", "mu_b", "e_b", "e_c", "f_c", "g", "M", "m_e", "omega_ratio", "e_t"];
 
     /// <summary>Moment of inertia of a solid ball, 2/5 m R^2 (kg m^2).</summary>
     public double Inertia => 0.4 * M * R * R;

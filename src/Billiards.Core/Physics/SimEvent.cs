@@ -14,6 +14,15 @@ public enum EventKind : byte
     BallCushion,
     /// <summary>A ball drops into a pocket; <see cref="SimEvent.Feature"/> is the pocket index.</summary>
     BallPocket,
+    /// <summary>
+    /// A ball leaves the bed (an elevated cue's strike returned by the slate, a bounce, a collision
+    /// that lifts it); <see cref="SimEvent.Speed"/> is its upward speed (m/s).
+    /// </summary>
+    BallAirborne,
+    /// <summary>A ball lands on the bed or bounces on it; <see cref="SimEvent.Speed"/> is its vertical speed at impact (m/s).</summary>
+    BallTable,
+    /// <summary>A ball leaves the table over a rail; <see cref="SimEvent.Speed"/> is its speed as it lands beyond (m/s).</summary>
+    BallOffTable,
 }
 
 /// <summary>

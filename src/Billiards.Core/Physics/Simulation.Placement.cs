@@ -40,7 +40,7 @@ public abstract partial class Simulation
         var balls = Balls;
         for (int j = 0; j < balls.Length; j++)
         {
-            if (j != index && !balls[j].IsPocketed
+            if (j != index && !balls[j].IsOutOfPlay
                 && Placement.Overlap(BallRadius, id, position, Ids[j], balls[j].Position) is { } overlap)
             {
                 return overlap;
@@ -164,7 +164,7 @@ public abstract partial class Simulation
         var current = Balls;
         for (int j = 0; j < current.Length; j++)
         {
-            if (!listed[j] && !current[j].IsPocketed)
+            if (!listed[j] && !current[j].IsOutOfPlay)
             {
                 all.Add((Ids[j], current[j].Position));
             }
@@ -247,7 +247,7 @@ public abstract partial class Simulation
         var balls = Balls;
         for (int j = 0; j < balls.Length; j++)
         {
-            if (j != self && !balls[j].IsPocketed)
+            if (j != self && !balls[j].IsOutOfPlay)
             {
                 others.Add(balls[j].Position);
             }

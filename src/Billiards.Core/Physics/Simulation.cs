@@ -108,7 +108,7 @@ public abstract partial class Simulation
     public void Strike(ShotSpec shot)
     {
         int cue = IndexOf(BallId.Cue);
-        if (cue < 0 || Balls[cue].IsPocketed)
+        if (cue < 0 || Balls[cue].IsOutOfPlay)
         {
             return;
         }

@@ -30,7 +30,7 @@ public static class StateChecker
             {
                 Fail(simulation, $"ball {simulation.Ids[i]} has a non-finite state: position {b.Position}, velocity {b.Velocity}, spin {b.Spin}");
             }
-            if (b.IsPocketed)
+            if (b.IsPocketed || b.State == Balls.MotionState.OffTable)
             {
                 continue;
             }
@@ -44,11 +44,11 @@ public static class StateChecker
             }
             for (int j = i + 1; j < balls.Length; j++)
             {
-                if (balls[j].IsPocketed)
+                if (balls[j].IsPocketed || balls[j].State == Balls.MotionState.OffTable)
                 {
                     continue;
                 }
-                double gap = (b.Position - balls[j].Position).XY.Length - 2 * radius;
+                double gap = (b.Position - balls[j].Position).Length - 2 * radius;
                 if (gap < -OverlapTolerance)
                 {
                     Fail(simulation, $"balls {simulation.Ids[i]} and {simulation.Ids[j]} overlap by {-gap} m");

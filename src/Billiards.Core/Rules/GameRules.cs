@@ -78,6 +78,10 @@ public enum Foul
     EightBallUncalled,
     /// <summary>Three fouls in a row: a loss in 9-ball and 10-ball, -15 points in 14.1.</summary>
     ThreeFouls,
+    /// <summary>A ball (cue or object) left the table over a rail (a ball-off-table event).</summary>
+    BallOffTable,
+    /// <summary>8-ball: the 8 left the table (loss).</summary>
+    EightBallOffTable,
 }
 
 /// <summary>
@@ -106,6 +110,7 @@ public static class RuleNames
     [
         "bad-placement", "cue-ball-pocketed", "no-contact", "wrong-ball-first", "no-rail", "bad-break",
         "eight-ball-early", "eight-ball-foul", "eight-ball-uncalled", "three-fouls",
+        "ball-off-table", "eight-ball-off-table",
     ];
 
     /// <summary>The game names in <see cref="GameRules"/> order.</summary>

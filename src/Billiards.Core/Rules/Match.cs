@@ -323,7 +323,7 @@ public sealed class Match
         var after = sim.Balls;
         for (int i = 0; i < after.Length; i++)
         {
-            if (!after[i].IsPocketed)
+            if (!after[i].IsOutOfPlay)
             {
                 balls[sim.Ids[i]] = after[i].Position with { Z = Setup.BallRadius };
             }

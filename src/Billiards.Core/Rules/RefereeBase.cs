@@ -44,6 +44,7 @@ internal abstract class RefereeBase(GameRules rules, TableSpec table, double bal
         {
             ruling.Foul(Foul.CueBallPocketed);
         }
+        OffTableFoul(facts, ruling);
         if (facts.FirstContact is not { } first)
         {
             ruling.Foul(Foul.NoContact);
@@ -61,6 +62,15 @@ internal abstract class RefereeBase(GameRules rules, TableSpec table, double bal
     }
 
     /// <summary>"the 3", "the 8".</summary>
+    /// <summary>The <c>ball-off-table</c> foul, when a ball (cue or object) left the table over a rail.</summary>
+    protected static void OffTableFoul(ShotFacts facts, RulingBuilder ruling)
+    {
+        if (facts.CueOffTable || facts.OffTable.Count > 0)
+        {
+            ruling.Foul(Foul.BallOffTable);
+        }
+    }
+
     protected static string The(BallId ball) => "the " + ball.ToString();
 }
 
@@ -217,6 +227,8 @@ internal sealed class RulingBuilder(GameState before, ShotFacts facts)
         Rules.Foul.EightBallFoul => "the 8 was pocketed on a foul",
         Rules.Foul.EightBallUncalled => "the 8 went into a pocket that was not called",
         Rules.Foul.ThreeFouls => "three fouls in a row",
+        Rules.Foul.BallOffTable => facts.CueOffTable ? "the cue ball left the table" : "a ball left the table",
+        Rules.Foul.EightBallOffTable => "the 8 left the table",
         _ => foul.ToName(),
     };
 }

@@ -26,6 +26,12 @@ internal sealed class ShotFacts
                 case EventKind.BallPocket when e.A.IsCue:
                     Scratch = true;
                     break;
+                case EventKind.BallOffTable when e.A.IsCue:
+                    CueOffTable = true;
+                    break;
+                case EventKind.BallOffTable:
+                    OffTable.Add(e.A);
+                    break;
                 case EventKind.BallPocket when !PocketOf.ContainsKey(e.A):
                     PocketOf[e.A] = e.Pocket;
                     Pocketed.Add(e.A);
@@ -44,12 +50,12 @@ internal sealed class ShotFacts
             {
                 continue;
             }
-            if (!after[i].IsPocketed)
+            if (!after[i].IsOutOfPlay)
             {
                 OnTableAfter.Add(ids[i].Value);
                 OnTableBefore.Add(ids[i].Value);
             }
-            else if (PocketOf.ContainsKey(ids[i]))
+            else if (PocketOf.ContainsKey(ids[i]) || OffTable.Contains(ids[i]))
             {
                 OnTableBefore.Add(ids[i].Value);
             }
@@ -62,6 +68,12 @@ internal sealed class ShotFacts
 
     /// <summary>The cue ball was pocketed.</summary>
     public bool Scratch { get; }
+
+    /// <summary>The cue ball left the table over a rail.</summary>
+    public bool CueOffTable { get; }
+
+    /// <summary>Object balls that left the table over a rail on the shot, in the order they left.</summary>
+    public List<BallId> OffTable { get; } = [];
 
     /// <summary>Object balls pocketed on the shot, in the order they dropped.</summary>
     public List<BallId> Pocketed { get; } = [];
@@ -121,7 +133,7 @@ internal sealed class ShotFacts
         var after = shot.BallsAfter;
         for (int i = 0; i < ids.Length; i++)
         {
-            if (!ids[i].IsCue && !moved.Contains(ids[i]) && !after[i].IsPocketed
+            if (!ids[i].IsCue && !moved.Contains(ids[i]) && !after[i].IsOutOfPlay
                 && Placement.Overlaps(radius, after[i].Position, p))
             {
                 return true;

@@ -60,6 +60,7 @@ public static class GameRecordFile
         w.WriteNumber("length", setup.Table.Length);
         w.WriteNumber("width", setup.Table.Width);
         w.WriteNumber("cushion_height", setup.Table.CushionHeight);
+        w.WriteNumber("rail_height", setup.Table.RailHeight);
         w.WriteEndObject();
         WritePhysics(w, setup.Physics);
         w.WriteStartObject("rack");
@@ -189,6 +190,7 @@ public static class GameRecordFile
         w.WriteNumber("M", p.CueMass);
         w.WriteNumber("m_e", p.CueEndMass);
         w.WriteNumber("omega_ratio", p.OmegaRatio);
+        w.WriteNumber("e_t", p.ET);
         w.WriteEndObject();
         if (physics.Model.TakesInteractionModels)
         {

@@ -12,11 +12,15 @@ public static class ResultWriter
     /// <summary>The format tag of a result.</summary>
     public const string Format = "billiards-result/1";
 
-    /// <summary>The result as UTF-8 JSON bytes, indented, with round-trip numbers.</summary>
-    public static byte[] ToUtf8(RunOutcome outcome)
+    /// <summary>
+    /// The result as UTF-8 JSON bytes with round-trip numbers and a final line break: indented, or
+    /// on one line (<paramref name="indented"/> false, one line of <c>simulate --batch</c>); the two
+    /// differ only in white space.
+    /// </summary>
+    public static byte[] ToUtf8(RunOutcome outcome, bool indented = true)
     {
         using var stream = new MemoryStream();
-        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
+        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = indented }))
         {
             Write(w, outcome);
         }
@@ -90,6 +94,16 @@ public static class ResultWriter
                     w.WriteString("pocket", sim.FeatureName(e.Kind, e.Feature));
                     w.WriteNumber("speed", e.Speed);
                     break;
+                case EventKind.BallAirborne or EventKind.BallTable or EventKind.BallOffTable:
+                    w.WriteString("type", e.Kind switch
+                    {
+                        EventKind.BallAirborne => "ball-airborne",
+                        EventKind.BallTable => "ball-table",
+                        _ => "ball-off-table",
+                    });
+                    WriteIds(w, e.A);
+                    w.WriteNumber("speed", e.Speed);
+                    break;
             }
             w.WriteEndObject();
         }
@@ -108,6 +122,7 @@ public static class ResultWriter
                     w.WriteStartArray(sim.Ids[i].ToString());
                     w.WriteNumberValue(s.Positions[i].X);
                     w.WriteNumberValue(s.Positions[i].Y);
+                    w.WriteNumberValue(s.Positions[i].Z);
                     w.WriteEndArray();
                 }
                 w.WriteEndObject();

@@ -118,7 +118,7 @@ public static class SceneLoader
                 foreach (var item in Array(b, "$.balls"))
                 {
                     string itemPath = $"$.balls[{i++}]";
-                    var ball = ReadBall(item, itemPath, radius);
+                    var ball = ReadBall(item, itemPath, radius, physics.Model.HasFlight);
                     if (!explicitIds.Add(ball.Id.Value))
                     {
                         throw Error(itemPath + ".id", $"ball \"{ball.Id}\" appears twice");
@@ -151,7 +151,7 @@ public static class SceneLoader
 
         private TableSpec ReadTable(JsonElement e)
         {
-            var f = Object(e, "$.table", "preset", "length", "width", "cushion_height");
+            var f = Object(e, "$.table", "preset", "length", "width", "cushion_height", "rail_height");
             if (!f.TryGetValue("preset", out var preset))
             {
                 throw Error("$.table", "missing \"preset\"");
@@ -168,6 +168,20 @@ public static class SceneLoader
             if (f.TryGetValue("cushion_height", out var h))
             {
                 table = table with { CushionHeight = Number(h, "$.table.cushion_height", 0.0, 0.1) };
+            }
+            if (f.TryGetValue("rail_height", out var rh))
+            {
+                table = table with { RailHeight = Number(rh, "$.table.rail_height", 0.0, 0.5) };
+            }
+            else
+            {
+                // A higher cushion than the preset's raises the rails' top with it.
+                table = table with { RailHeight = Math.Max(table.RailHeight, table.CushionHeight) };
+            }
+            if (table.RailHeight < table.CushionHeight)
+            {
+                throw Error("$.table.rail_height", string.Create(CultureInfo.InvariantCulture,
+                    $"the top of the rails ({table.RailHeight} m) is below the cushion's contact height ({table.CushionHeight} m)"));
             }
             return table;
         }
@@ -268,6 +282,7 @@ public static class SceneLoader
                 EB = Get("e_b", 0, 1, p.EB),
                 EC = Get("e_c", 0, 1, p.EC),
                 FC = Get("f_c", 0, 2, p.FC),
+                ET = Get("e_t", 0, 1, p.ET),
                 G = Get("g", 0.1, 100, p.G),
                 CueMass = Get("M", 0.01, 10, p.CueMass),
             };
@@ -328,7 +343,7 @@ public static class SceneLoader
             return new RackSpec(game, seed);
         }
 
-        private BallSetup ReadBall(JsonElement e, string path, double radius)
+        private BallSetup ReadBall(JsonElement e, string path, double radius, bool flight)
         {
             var f = Object(e, path, "id", "position", "velocity", "spin");
             if (!f.TryGetValue("id", out var idElement))
@@ -344,10 +359,23 @@ public static class SceneLoader
             {
                 throw Error(path, "missing \"position\"");
             }
-            var p = Numbers(pos, path + ".position", 2, 100);
-            var v = f.TryGetValue("velocity", out var ve) ? Numbers(ve, path + ".velocity", 2, MaxShotSpeed) : [0, 0];
+            // [x, y] on the bed, or [x, y, z] (z >= R) and [vx, vy, vz] for a ball that may fly.
+            var p = Numbers(pos, path + ".position", 2, 100, allowZ: true);
+            var v = f.TryGetValue("velocity", out var ve) ? Numbers(ve, path + ".velocity", 2, MaxShotSpeed, allowZ: true) : [0, 0];
             var w = f.TryGetValue("spin", out var sp) ? Numbers(sp, path + ".spin", 3, 5000) : [0, 0, 0];
-            return new BallSetup(id, new Vec3(p[0], p[1], radius), new Vec3(v[0], v[1], 0), new Vec3(w[0], w[1], w[2]));
+            double z = p.Length == 3 ? p[2] : radius;
+            double vz = v.Length == 3 ? v[2] : 0;
+            if ((p.Length == 3 || v.Length == 3) && !flight)
+            {
+                throw Error(p.Length == 3 ? path + ".position" : path + ".velocity",
+                    "a third (vertical) component needs the standard model, whose balls can fly; give [x, y]");
+            }
+            if (z < radius)
+            {
+                throw Error(path + ".position[2]", string.Create(CultureInfo.InvariantCulture,
+                    $"{z} puts the ball into the bed: its centre must be at least R = {radius} above it"));
+            }
+            return new BallSetup(id, new Vec3(p[0], p[1], z), new Vec3(v[0], v[1], vz), new Vec3(w[0], w[1], w[2]));
         }
 
         private ShotSpec ReadShot(JsonElement e)
@@ -421,13 +449,14 @@ public static class SceneLoader
             return x;
         }
 
-        private double[] Numbers(JsonElement e, string path, int count, double maxAbs)
+        private double[] Numbers(JsonElement e, string path, int count, double maxAbs, bool allowZ = false)
         {
-            if (e.ValueKind != JsonValueKind.Array || e.GetArrayLength() != count)
+            if (e.ValueKind != JsonValueKind.Array || (e.GetArrayLength() != count && !(allowZ && e.GetArrayLength() == count + 1)))
             {
-                throw Error(path, $"expected an array of {count} numbers, found {Describe(e)}");
+                string expected = allowZ ? $"{count} or {count + 1}" : $"{count}";
+                throw Error(path, $"expected an array of {expected} numbers, found {Describe(e)}");
             }
-            var result = new double[count];
+            var result = new double[e.GetArrayLength()];
             int i = 0;
             foreach (var x in e.EnumerateArray())
             {

@@ -63,8 +63,14 @@ public static class Placement
     }
 
     /// <summary>True when balls of radius <paramref name="radius"/> (m) at <paramref name="a"/> and <paramref name="b"/> overlap, or come within <paramref name="margin"/> (m) of it.</summary>
-    public static bool Overlaps(double radius, Vec3 a, Vec3 b, double margin = 0) =>
-        (a - b).XY.Length < 2 * radius + margin - Tolerance;
+    public static bool Overlaps(double radius, Vec3 a, Vec3 b, double margin = 0)
+    {
+        // In space when a ball is above the bed (a scene's ball in the air); on the bed the height
+        // is left out, since callers give bed positions at z = 0 or z = R alike.
+        double dz = Math.Max(a.Z, b.Z) > radius + 1e-9 ? a.Z - b.Z : 0;
+        var d = (a - b).XY;
+        return Math.Sqrt(d.X * d.X + d.Y * d.Y + dz * dz) < 2 * radius + margin - Tolerance;
+    }
 
     private enum Problem
     {
@@ -132,7 +138,7 @@ public static class Placement
     /// <summary>What is wrong with ball <paramref name="id"/> at <paramref name="position"/> next to ball <paramref name="other"/> at <paramref name="otherPosition"/> (m); null when they do not overlap.</summary>
     public static string? Overlap(double radius, BallId id, Vec3 position, BallId other, Vec3 otherPosition)
     {
-        double d = (position - otherPosition).XY.Length;
+        double d = (position - otherPosition).Length;
         return Overlaps(radius, position, otherPosition)
             ? Text($"ball \"{id}\" overlaps ball \"{other}\" (centres {d:0.######} m apart, less than 2R = {2 * radius:0.######} m)")
             : null;

@@ -15,6 +15,10 @@ namespace Billiards.Core.Table;
 /// <param name="CornerJawAngleDeg">Angle between the two jaws of a corner pocket (deg, WPA 142).</param>
 /// <param name="SideJawAngleDeg">Angle between the two jaws of a side pocket (deg, WPA 104).</param>
 /// <param name="SightOffset">Distance of the sights behind the cushion nose (m).</param>
+/// <param name="RailHeight">
+/// Height of the top of the rails above the bed (m): a ball in the air whose bottom is above it
+/// passes over the cushions. Default <see cref="DefaultRailHeight"/>.
+/// </param>
 public sealed record TableSpec(
     string Preset,
     double Length,
@@ -25,8 +29,16 @@ public sealed record TableSpec(
     double SidePocketMouth,
     double CornerJawAngleDeg,
     double SideJawAngleDeg,
-    double SightOffset)
+    double SightOffset,
+    double RailHeight = TableSpec.DefaultRailHeight)
 {
+    /// <summary>
+    /// Default top of the rails: 1.75 in (44.45 mm) above the bed, every preset's (ours: the WPA
+    /// gives no figure; the rail cap of a pool table stands a little above the cushion's nose, at
+    /// about 0.78 of the ball's diameter).
+    /// </summary>
+    public const double DefaultRailHeight = 1.75 * 0.0254;
+
     /// <summary>The table's pockets, in index order: the six of a pool or snooker table, none for a pocketless one.</summary>
     public IReadOnlyList<PocketId> Pockets => HasPockets ? PocketIds.All : [];
 

@@ -29,6 +29,9 @@ public class AllocationTests
     [InlineData("eight-ball-break.json", "event")]
     [InlineData("eight-ball-break.json", "euler")]
     [InlineData("nine-ball-break.json", "exact")]
+    [InlineData("flight/jump.json", "exact")]
+    [InlineData("flight/jump.json", "event")]
+    [InlineData("flight/jump.json", "euler")]
     public void AWholeBreakAllocatesNothingAfterWarmUp(string file, string integrator)
     {
         var sim = Break(file, integrator);
@@ -40,6 +43,24 @@ public class AllocationTests
             sim.AdvanceTo(600);
         });
         Assert.True(sim.IsAtRest);
+        Assert.Equal(0, bytes);
+    }
+
+    [Theory]
+    [InlineData("exact")]
+    [InlineData("event")]
+    public void ABreakWithTheCueBallHoppingIntoTheRackAllocatesNothing(string integrator)
+    {
+        var sim = Break("eight-ball-break.json", integrator);
+        var shot = SceneLoader.Load(AssetFolder.Scene("eight-ball-break.json")).Shot! with { ElevationDeg = 6 };
+        long bytes = BytesOf(() =>
+        {
+            sim.Reset();
+            sim.Strike(shot);
+            sim.AdvanceTo(600);
+        });
+        Assert.True(sim.IsAtRest);
+        Assert.Contains(sim.Events.AsSpan().ToArray(), e => e.Kind == EventKind.BallAirborne);
         Assert.Equal(0, bytes);
     }
 

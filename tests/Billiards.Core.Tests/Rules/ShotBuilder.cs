@@ -66,6 +66,14 @@ internal sealed class ShotBuilder
         return this;
     }
 
+    /// <summary>A ball leaves the table over a rail (0 = the cue ball).</summary>
+    public ShotBuilder Jump(int ball)
+    {
+        _events.Add(new SimEvent(Next, EventKind.BallOffTable, new BallId(ball), new BallId(ball), -1, 2.0));
+        _balls[_ids.IndexOf(new BallId(ball))].State = MotionState.OffTable;
+        return this;
+    }
+
     /// <summary>Balls that were pocketed before this shot.</summary>
     public ShotBuilder Off(params int[] balls)
     {

@@ -113,7 +113,7 @@ public class SceneLoaderTests
     [InlineData("""{ §, "balls": { } }""", "$.balls", "expected an array")]
     [InlineData("""{ §, "balls": [ { "id": "16", "position": [0, 0] } ] }""", "$.balls[0].id", "unknown ball id \"16\"")]
     [InlineData("""{ §, "balls": [ { "id": "3" } ] }""", "$.balls[0]", "missing \"position\"")]
-    [InlineData("""{ §, "balls": [ { "id": "3", "position": [0] } ] }""", "$.balls[0].position", "expected an array of 2 numbers, found an array of 1")]
+    [InlineData("""{ §, "balls": [ { "id": "3", "position": [0] } ] }""", "$.balls[0].position", "expected an array of 2 or 3 numbers, found an array of 1")]
     [InlineData("""{ §, "balls": [ { "id": "3", "position": [0, null] } ] }""", "$.balls[0].position[1]", "expected a number, found null")]
     [InlineData("""{ §, "balls": [ { "id": "3", "position": [0, 0], "spin": [0, 0] } ] }""", "$.balls[0].spin", "expected an array of 3 numbers")]
     [InlineData("""{ §, "balls": [ { "id": "3", "position": [0, 0] }, { "id": "3", "position": [1, 0] } ] }""", "$.balls[1].id", "ball \"3\" appears twice")]

@@ -17,7 +17,26 @@ public readonly struct MotionConstants
         SlidingDeceleration = p.MuS * p.G;
         RollingDeceleration = p.MuR * p.G;
         SpinDeceleration = 5 * p.MuSp * p.G / (2 * p.R);
+        G = p.G;
+        MuS = p.MuS;
+        TableRestitution = p.ET;
+        BounceThreshold = Math.Sqrt(2 * p.G * BallMotion.LowestBounce);
     }
+
+    /// <summary>Gravity g (m/s^2): a ball in the air accelerates at -g along z.</summary>
+    public double G { get; }
+
+    /// <summary>Ball-table friction mu_s, also the friction of a landing's impulse.</summary>
+    public double MuS { get; }
+
+    /// <summary>Ball-table restitution e_t.</summary>
+    public double TableRestitution { get; }
+
+    /// <summary>
+    /// sqrt(2 g 0.005) (m/s): a ball leaving the bed slower than this would not rise 5 mm, and
+    /// stays on the bed instead (physics-standard-model.md, "Flight").
+    /// </summary>
+    public double BounceThreshold { get; }
 
     /// <summary>Ball radius R (m).</summary>
     public double R { get; }
@@ -51,6 +70,12 @@ public static class BallMotion
     /// <summary>Spin rates (rad/s) below this are zero when a state is classified.</summary>
     public const double SpinEpsilon = 1e-10;
 
+    /// <summary>Heights (m) of the centre above R that still count as on the bed: round-off of a landing.</summary>
+    public const double HeightEpsilon = 1e-9;
+
+    /// <summary>The lowest bounce (m) a ball rises to; a lower one ends on the bed.</summary>
+    public const double LowestBounce = 0.005;
+
     /// <summary>Velocity of the contact point with the cloth, u = v + R (z x w), in the bed plane (m/s).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Vec3 Slip(in BallState b, double radius) =>
@@ -58,21 +83,32 @@ public static class BallMotion
 
     /// <summary>True for the states in which the centre moves.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static bool Translates(MotionState s) => s is MotionState.Sliding or MotionState.Rolling;
+    public static bool Translates(MotionState s) => s is MotionState.Sliding or MotionState.Rolling or MotionState.Airborne;
 
-    /// <summary>True for the states that end by themselves (sliding, rolling, spinning).</summary>
+    /// <summary>True for the states that end by themselves (sliding, rolling, spinning, airborne: it lands).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static bool IsActive(MotionState s) => s is MotionState.Sliding or MotionState.Rolling or MotionState.Spinning;
+    public static bool IsActive(MotionState s) => s is MotionState.Sliding or MotionState.Rolling or MotionState.Spinning or MotionState.Airborne;
+
+    /// <summary>True for the states out of play (pocketed, off the table).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static bool IsOut(MotionState s) => s is MotionState.Pocketed or MotionState.OffTable;
 
     /// <summary>
-    /// Sets the state from the velocities after an impulse (strike or collision): sliding when
-    /// the contact point slips, rolling when it does not, spinning when only w_z remains,
-    /// stationary otherwise. Snaps the quantities the state implies (w_xy = z x v / R when rolling).
+    /// Sets the state from the velocities after an impulse (strike or collision): airborne when the
+    /// centre is above R or moves up (or down into the bed, which a landing at once resolves);
+    /// otherwise sliding when the contact point slips, rolling when it does not, spinning when only
+    /// w_z remains, stationary otherwise. Snaps the quantities the state implies (w_xy = z x v / R
+    /// when rolling).
     /// </summary>
     public static void Classify(ref BallState b, in MotionConstants k)
     {
-        if (b.State == MotionState.Pocketed)
+        if (IsOut(b.State))
         {
+            return;
+        }
+        if (b.Position.Z > k.R + HeightEpsilon || b.Velocity.Z > SpeedEpsilon || b.Velocity.Z < -SpeedEpsilon)
+        {
+            b.State = MotionState.Airborne;
             return;
         }
         b.Velocity = b.Velocity.XY;
@@ -104,8 +140,22 @@ public static class BallMotion
         MotionState.Sliding => Duration(Slip(b, k.R).LengthXY, 3.5 * k.SlidingDeceleration),
         MotionState.Rolling => Duration(b.Velocity.LengthXY, k.RollingDeceleration),
         MotionState.Spinning => Duration(Math.Abs(b.Spin.Z), k.SpinDeceleration),
+        MotionState.Airborne => LandingTime(b.Position.Z - k.R, b.Velocity.Z, k.G),
         _ => double.PositiveInfinity,
     };
+
+    /// <summary>
+    /// Time (s) until a ball whose centre is <paramref name="height"/> above its resting height,
+    /// rising at <paramref name="vz"/>, lands: the positive root of height + vz t - g t^2 / 2,
+    /// (vz + s) / g with s = sqrt(vz^2 + 2 g height), written as 2 height / (s - vz) when vz &lt; 0
+    /// so that no digits cancel. 0 for a ball at the bed moving down.
+    /// </summary>
+    public static double LandingTime(double height, double vz, double g)
+    {
+        double h = Math.Max(height, 0);
+        double s = Math.Sqrt(vz * vz + 2 * g * h);
+        return vz >= 0 ? (vz + s) / g : 2 * h / (s - vz);
+    }
 
     private static double Duration(double amount, double rate) => rate > 0 ? amount / rate : double.PositiveInfinity;
 
@@ -129,6 +179,8 @@ public static class BallMotion
                     double s = b.Velocity.LengthXY;
                     return s > 0 ? b.Velocity * (-k.RollingDeceleration / s) : Vec3.Zero;
                 }
+            case MotionState.Airborne:
+                return new Vec3(0, 0, -k.G);
             default:
                 return Vec3.Zero;
         }
@@ -172,6 +224,15 @@ public static class BallMotion
                 break;
             case MotionState.Spinning:
                 break;
+            case MotionState.Airborne:
+                // A parabola; nothing touches the ball, so its spin stays as it is.
+                b.Position += b.Velocity * dt + acceleration * (0.5 * dt * dt);
+                b.Velocity += acceleration * dt;
+                if (trackOrientation)
+                {
+                    Rotate(ref b.Orientation, b.Spin * dt);
+                }
+                return;
             default:
                 return;
         }

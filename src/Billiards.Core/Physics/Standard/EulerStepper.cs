@@ -1,6 +1,7 @@
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics.Collisions;
+using Billiards.Core.Physics.Collisions.BallTable;
 using Billiards.Core.Table;
 
 namespace Billiards.Core.Physics.Standard;
@@ -89,6 +90,11 @@ public sealed class EulerStepper
             if (BallMotion.IsActive(_balls[i].State))
             {
                 Integrate(ref _balls[i], dt);
+                if (_balls[i].State == MotionState.Airborne && _balls[i].Position.Z <= _k.R)
+                {
+                    // Found by overlap, like every contact here: the step that went below the bed.
+                    Land(i, timeAfter);
+                }
                 translating |= BallMotion.Translates(_balls[i].State);
             }
         }
@@ -99,12 +105,22 @@ public sealed class EulerStepper
         }
     }
 
+    private void Land(int i, double time) => FrictionalLanding.LandLogged(ref _balls[i], _k, _log, _ids[i], time);
+
     private void Integrate(ref BallState b, double dt)
     {
         double r = _k.R;
         var spin0 = b.Spin;
         switch (b.State)
         {
+            case MotionState.Airborne:
+                b.Position += b.Velocity * dt;
+                b.Velocity = new Vec3(b.Velocity.X, b.Velocity.Y, b.Velocity.Z - _k.G * dt);
+                if (TrackOrientation)
+                {
+                    BallMotion.Rotate(ref b.Orientation, b.Spin * dt);
+                }
+                return;
             case MotionState.Sliding:
                 {
                     var u = BallMotion.Slip(b, r);
@@ -156,18 +172,19 @@ public sealed class EulerStepper
         for (int i = 0; i < balls.Length; i++)
         {
             ref var a = ref balls[i];
-            if (a.State == MotionState.Pocketed)
+            if (BallMotion.IsOut(a.State))
             {
                 continue;
             }
             for (int j = i + 1; j < balls.Length; j++)
             {
                 ref var b = ref balls[j];
-                if (b.State == MotionState.Pocketed || !(BallMotion.Translates(a.State) || BallMotion.Translates(b.State)))
+                if (BallMotion.IsOut(b.State) || !(BallMotion.Translates(a.State) || BallMotion.Translates(b.State)))
                 {
                     continue;
                 }
-                var d = (b.Position - a.Position).XY;
+                // In space: a ball in the air passes over the balls below it (on the bed, z is equal).
+                var d = b.Position - a.Position;
                 if (d.LengthSquared >= 4 * r * r)
                 {
                     continue;
@@ -196,6 +213,22 @@ public sealed class EulerStepper
             if (!BallMotion.Translates(b.State))
             {
                 continue;
+            }
+            bool high = b.State == MotionState.Airborne && b.Position.Z - r >= _geometry.Spec.RailHeight;
+            bool beyond = Math.Abs(b.Position.X) > _geometry.Spec.HalfLength || Math.Abs(b.Position.Y) > _geometry.Spec.HalfWidth;
+            // Past the noses' line in the air it is gone: above the rails, or come down on one
+            // (anywhere but over a pocket's mouth).
+            if (b.State == MotionState.Airborne && beyond && (high || !TableBounds.Contains(_geometry.Spec, b.Position, r)))
+            {
+                _log.Add(new SimEvent(time, EventKind.BallOffTable, _ids[i], _ids[i], -1, b.Velocity.Length));
+                b.Velocity = Vec3.Zero;
+                b.Spin = Vec3.Zero;
+                b.State = MotionState.OffTable;
+                continue;
+            }
+            if (high)
+            {
+                continue; // above the rails: no cushion, jaw or hole reaches it
             }
             // A swept contact (the ball stopped on a face or nose) replaces the overlap tests; the
             // pocket test below still runs, since a bounce in a mouth can leave it over the hole.
@@ -245,7 +278,7 @@ public sealed class EulerStepper
                     break;
                 }
             }
-            if (b.State != MotionState.Pocketed && !TableBounds.Contains(_geometry.Spec, b.Position, r))
+            if (b.State is not (MotionState.Pocketed or MotionState.Airborne) && !TableBounds.Contains(_geometry.Spec, b.Position, r))
             {
                 LeftTheTable(ref b, i, time);
             }

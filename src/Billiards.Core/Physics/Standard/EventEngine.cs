@@ -270,7 +270,14 @@ public sealed class EventEngine
         {
             case EventQueue.RankTransition:
                 Sync(a);
-                BallMotion.EndState(ref _balls[a], _k);
+                if (_balls[a].State == MotionState.Airborne)
+                {
+                    _resolver.Land(a, Time);
+                }
+                else
+                {
+                    BallMotion.EndState(ref _balls[a], _k);
+                }
                 Repredict(a);
                 UpdateActive(a);
                 break;

@@ -20,6 +20,9 @@ public sealed class StandardModel : PhysicsModel
     public override bool TakesInteractionModels => true;
 
     /// <inheritdoc />
+    public override bool HasFlight => true;
+
+    /// <inheritdoc />
     public override string DefaultTablePreset => "pool-9ft";
 
     /// <summary>The scene's R.</summary>

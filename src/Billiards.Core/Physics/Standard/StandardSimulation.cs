@@ -37,8 +37,8 @@ public sealed partial class StandardSimulation : Simulation
             var setup = scene.Balls[i];
             _balls[i] = new BallState
             {
-                Position = setup.Position with { Z = Parameters.R },
-                Velocity = setup.Velocity.XY,
+                Position = setup.Position,
+                Velocity = setup.Velocity,
                 Spin = setup.Spin,
                 Orientation = Quaternion.Identity,
                 Pocket = -1,
@@ -122,6 +122,15 @@ public sealed partial class StandardSimulation : Simulation
         var outcome = CueStrike.Strike(shot, Parameters);
         _balls[cue].Velocity = outcome.Velocity;
         _balls[cue].Spin = outcome.Spin;
+        // An elevated cue drives the ball into the slate. When the slate's return (e_t v sin theta)
+        // would lift it 5 mm, the engine lands it at once (t = 0, a ball-table event): e_t and the
+        // bed's friction send it up, a jump. A smaller return ends on the bed, where the strike's
+        // model (TP A-30) has always let the bed take the downward part without friction, so every
+        // stroke that does not jump plays exactly as before.
+        if (Parameters.ET * outcome.IntoSlate >= _model.Constants.BounceThreshold)
+        {
+            _balls[cue].Velocity = outcome.Velocity with { Z = -outcome.IntoSlate };
+        }
         _stepper.BallChanged(cue);
     }
 

@@ -26,11 +26,29 @@ internal sealed class EightBallReferee(TableSpec table, double ballRadius) : Ref
         {
             Shot(before, facts, ruling);
         }
+        JumpedBalls(before, facts, ruling);
         ruling.CountFouls();
         // A bad break alone is no ball in hand: the incoming player accepts the table as it lies or reracks.
         if (!ruling.Legal && !ruling.GameOver && !(ruling.Has(Foul.BadBreak) && ruling.FoulCount == 1))
         {
             ruling.BallInHand = BallInHand.Table;
+        }
+    }
+
+    // Jumped object balls are spotted; the 8 off the table loses the game (rules.md).
+    private static void JumpedBalls(GameState before, ShotFacts facts, RulingBuilder ruling)
+    {
+        foreach (var ball in facts.OffTable)
+        {
+            if (ball == Eight)
+            {
+                ruling.Foul(Foul.EightBallOffTable);
+                ruling.Win(before.Incoming, $"{before.IncomingName} wins.");
+            }
+            else
+            {
+                ruling.SpotBall(ball);
+            }
         }
     }
 
@@ -40,6 +58,7 @@ internal sealed class EightBallReferee(TableSpec table, double ballRadius) : Ref
         {
             ruling.Foul(Foul.CueBallPocketed);
         }
+        OffTableFoul(facts, ruling);
         if (facts.Pocketed.Count == 0 && facts.ObjectBallsToCushion < 4)
         {
             ruling.Foul(Foul.BadBreak, "the break pocketed no ball and sent fewer than four object balls to a cushion");

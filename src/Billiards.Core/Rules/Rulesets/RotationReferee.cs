@@ -29,6 +29,7 @@ internal sealed class RotationReferee(RotationRuleset ruleset, TableSpec table, 
             {
                 ruling.Foul(Foul.CueBallPocketed);
             }
+            OffTableFoul(facts, ruling);
             if (facts.FirstContact != facts.Lowest || (facts.Pocketed.Count == 0 && facts.ObjectBallsToCushion < 4))
             {
                 ruling.Foul(Foul.BadBreak, $"the break did not hit the {facts.Lowest} first, or pocketed no ball and sent fewer than four object balls to a cushion");
@@ -43,6 +44,7 @@ internal sealed class RotationReferee(RotationRuleset ruleset, TableSpec table, 
             {
                 ruling.Foul(Foul.CueBallPocketed);
             }
+            OffTableFoul(facts, ruling);
             if (ruling.Legal)
             {
                 ruling.Options.AddRange([RefereeOption.Shoot, RefereeOption.PassBack]);
@@ -74,6 +76,11 @@ internal sealed class RotationReferee(RotationRuleset ruleset, TableSpec table, 
             {
                 ruling.Note = $"Warning: {before.ShooterName} has two fouls in a row; a third loses the game.";
             }
+        }
+        // Jumped balls stay off the table, except the game ball, which is spotted (rules.md).
+        if (facts.OffTable.Contains(Money))
+        {
+            ruling.SpotBall(Money);
         }
         if (moneyDown)
         {

@@ -36,6 +36,7 @@ internal sealed class StraightPoolReferee(TableSpec table, double ballRadius) : 
             {
                 ruling.Foul(Foul.CueBallPocketed);
             }
+            OffTableFoul(facts, ruling);
             if (!made && !(facts.ObjectBallsToCushion >= 2 && facts.CueToCushion))
             {
                 // A breaking violation, not a foul of the three-foul count (ours: the WPA's reading).
@@ -80,9 +81,15 @@ internal sealed class StraightPoolReferee(TableSpec table, double ballRadius) : 
                 ruling.SpotBall(ball);
             }
         }
+        // Jumped object balls are spotted (rules.md).
+        foreach (var ball in facts.OffTable)
+        {
+            ruling.SpotBall(ball);
+        }
         ruling.Score = ruling.Score.With(shooter, ruling.Score[shooter] + points);
         ruling.Continue = scores;
-        ruling.BallInHand = facts.Scratch ? BallInHand.Kitchen
+        // A cue ball off the table is a scratch's foul, with ball in hand in the kitchen.
+        ruling.BallInHand = facts.Scratch || facts.CueOffTable ? BallInHand.Kitchen
             : !ruling.Legal && !(ruling.Has(Foul.BadBreak) && !ruling.Has(Foul.BadPlacement)) ? BallInHand.Table
             : BallInHand.None;
 

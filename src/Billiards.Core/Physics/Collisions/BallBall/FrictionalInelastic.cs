@@ -25,10 +25,19 @@ public sealed class FrictionalInelastic : IBallBallModel
     public string Name => "frictional-inelastic";
 
     /// <inheritdoc />
-    public void Resolve(ref BallState a, ref BallState b, PhysicsParams p)
+    public void Resolve(ref BallState a, ref BallState b, PhysicsParams p) => Resolve(ref a, ref b, p, inSpace: false);
+
+    /// <summary>
+    /// The same impact for balls that touch off the bed plane (one or both in the air): the line of
+    /// centres is taken in space and the vertical impulse is kept, so a ball struck from above is
+    /// driven down (into the bed, which then returns it) and one struck from below is lifted.
+    /// </summary>
+    public static void ResolveInSpace(ref BallState a, ref BallState b, PhysicsParams p) => Instance.Resolve(ref a, ref b, p, inSpace: true);
+
+    private void Resolve(ref BallState a, ref BallState b, PhysicsParams p, bool inSpace)
     {
         double r = p.R;
-        var n = (b.Position - a.Position).XY.Normalized();
+        var n = inSpace ? (b.Position - a.Position).Normalized() : (b.Position - a.Position).XY.Normalized();
         double v1n = Vec3.Dot(a.Velocity, n);
         double v2n = Vec3.Dot(b.Velocity, n);
         double e = p.EB;
@@ -58,9 +67,10 @@ public sealed class FrictionalInelastic : IBallBallModel
             w1 += dw;
             w2 += dw;
         }
-        // The balls stay on the bed: a vertical impulse would make them hop, which the model leaves out.
-        a.Velocity = v1.XY;
-        b.Velocity = v2.XY;
+        // On the bed the balls stay there: the vertical part of the friction would make them hop,
+        // which the model leaves out (and the bed's reaction would mostly take).
+        a.Velocity = inSpace ? v1 : v1.XY;
+        b.Velocity = inSpace ? v2 : v2.XY;
         a.Spin = w1;
         b.Spin = w2;
     }

@@ -16,6 +16,8 @@ internal enum RailKind : byte
     Nose,
     /// <summary>A pocket's capture circle.</summary>
     Pocket,
+    /// <summary>The line of the cushion noses, crossed in the air above the rails: the ball leaves the table.</summary>
+    OffTable,
 }
 
 /// <summary>
@@ -42,6 +44,7 @@ internal sealed class Predictor
     private readonly MotionConstants _k;
     private readonly double _r;
     private readonly TableGeometry _geometry;
+    private readonly double _railHeight;
     private readonly BroadPhase _grid;
 
     private readonly FeatureBoxes _features;
@@ -66,6 +69,7 @@ internal sealed class Predictor
         _k = model.Constants;
         _r = _k.R;
         _geometry = model.Geometry;
+        _railHeight = model.Geometry.Spec.RailHeight;
         _features = model.Features;
         _grid = grid;
 
@@ -130,6 +134,7 @@ internal sealed class Predictor
         double horizon = Math.Min(duration, MaxHorizon);
         var box = PathBox(b.Position, b.Velocity, acc, horizon);
         double r = _r;
+        bool airborne = b.State == MotionState.Airborne;
         Coefficients c = default;
         double best = double.PositiveInfinity;
 
@@ -151,7 +156,7 @@ internal sealed class Predictor
                 // The contact must fall on the face; past its ends the noses take over.
                 var p = b.Position + b.Velocity * t + acc * (0.5 * t * t);
                 double along = Vec3.Dot(p - g.Start, g.Direction);
-                if (along >= 0 && along <= g.Length)
+                if (along >= 0 && along <= g.Length && !(airborne && Clears(b, t)))
                 {
                     best = t;
                     _railKind[i] = RailKind.Segment;
@@ -172,7 +177,7 @@ internal sealed class Predictor
             double reach = r + noses[s].Radius;
             CircleGap(b.Position - noses[s].Centre, b.Velocity, acc, reach, ref c);
             double t = Polynomial.FirstEntry(ref c, 4, horizon, 2 * reach * OverlapTolerance);
-            if (t < best)
+            if (t < best && !(airborne && Clears(b, t)))
             {
                 best = t;
                 _railKind[i] = RailKind.Nose;
@@ -189,17 +194,60 @@ internal sealed class Predictor
                 continue;
             }
             CircleGap(b.Position - pockets[s].Centre, b.Velocity, acc, pockets[s].Radius, ref c);
-            // Any centre inside the circle and going deeper is pocketed.
+            // Any centre inside the circle and going deeper is pocketed; from the air only a ball
+            // low enough to pass under the rails' top (one higher flies over the hole).
             double t = Polynomial.FirstEntry(ref c, 4, horizon, double.PositiveInfinity);
-            if (t < best)
+            if (t < best && !(airborne && Clears(b, t)))
             {
                 best = t;
                 _railKind[i] = RailKind.Pocket;
                 _railIndex[i] = s;
             }
         }
+        if (airborne)
+        {
+            double t = OffTableTime(b);
+            if (t < best && t <= horizon && (Clears(b, t) || !OverAMouth(b, t)))
+            {
+                best = t;
+                _railKind[i] = RailKind.OffTable;
+                _railIndex[i] = -1;
+            }
+        }
         _railTime[i] = time + best;
         PredictWindow(i, Math.Min(duration, best), time);
+    }
+
+    // True when a ball in the air is, t seconds on, with its bottom above the rails' top: it
+    // passes over the cushions and jaws there, and over the pockets' holes.
+    private bool Clears(in BallState b, double t) =>
+        b.Position.Z + b.Velocity.Z * t - 0.5 * _k.G * t * t - _r >= _railHeight;
+
+    // True when a ball in the air crosses the noses' line t seconds on into a pocket's mouth (a
+    // millimetre on it is still over the table's bounds), where a low ball goes on to the hole. A
+    // low ball crossing elsewhere passed over the cushion's face high and came down on the rail.
+    private bool OverAMouth(in BallState b, double t)
+    {
+        var p = b.Position + b.Velocity * t;
+        var step = b.Velocity.XY.Normalized() * 1e-3;
+        return TableBounds.Contains(_geometry.Spec, p + step, _r);
+    }
+
+    // When a ball in the air, moving in a straight line over the bed, first has its centre on the
+    // rectangle of the cushion noses (a root of a linear polynomial per side), or +infinity when it
+    // is already outside it (in a pocket's mouth) or never gets there.
+    private double OffTableTime(in BallState b)
+    {
+        double hx = _geometry.Spec.HalfLength, hy = _geometry.Spec.HalfWidth;
+        var p = b.Position;
+        var v = b.Velocity;
+        if (Math.Abs(p.X) > hx || Math.Abs(p.Y) > hy)
+        {
+            return double.PositiveInfinity;
+        }
+        double tx = v.X > 0 ? (hx - p.X) / v.X : v.X < 0 ? (-hx - p.X) / v.X : double.PositiveInfinity;
+        double ty = v.Y > 0 ? (hy - p.Y) / v.Y : v.Y < 0 ? (-hy - p.Y) / v.Y : double.PositiveInfinity;
+        return Math.Min(tx, ty);
     }
 
     /// <summary>
@@ -213,7 +261,7 @@ internal sealed class Predictor
         ref readonly var b = ref _balls[i];
         _refreshTime[i] = double.PositiveInfinity;
         _windowEnd[i] = Math.Min(_transitionTime[i], _railTime[i]);
-        if (b.State == MotionState.Pocketed)
+        if (BallMotion.IsOut(b.State))
         {
             _grid.Unregister(i);
             return;
@@ -249,7 +297,7 @@ internal sealed class Predictor
     {
         ref readonly var a = ref _balls[i];
         ref readonly var b = ref _balls[j];
-        if (a.State == MotionState.Pocketed || b.State == MotionState.Pocketed
+        if (BallMotion.IsOut(a.State) || BallMotion.IsOut(b.State)
             || !(BallMotion.Translates(a.State) || BallMotion.Translates(b.State)))
         {
             return false;
@@ -323,7 +371,7 @@ internal sealed class Predictor
             return double.PositiveInfinity;
         }
         Coefficients c = default;
-        CircleGap(d, dv, da, 2 * r, ref c);
+        SphereGap(d, dv, da, 2 * r, ref c);
         double t = Polynomial.FirstEntry(ref c, 4, horizon, 4 * r * OverlapTolerance);
         return time + t;
     }
@@ -366,6 +414,21 @@ internal sealed class Predictor
         c[2] = Vec3.Dot(dv, dv) + 2 * Vec3.Dot(h, dd);
         c[1] = 2 * Vec3.Dot(dv, dd);
         c[0] = Vec3.Dot(dd, dd) - reach * reach;
+    }
+
+    // |d + v t + a t^2 / 2|^2 - reach^2 in space, for two balls: a ball in the air moves on a
+    // parabola, so the gap of two balls is still a quartic. On the bed every z term is exactly 0
+    // (both centres at z = R, no vertical velocity or acceleration), so bed pairs get the same
+    // coefficients, bit for bit, as in the plane. The bed-plane culls (ClearOf, HullClear, the
+    // boxes) stay valid: a horizontal distance never exceeds the distance in space.
+    private static void SphereGap(Vec3 d, Vec3 v, Vec3 a, double reach, ref Coefficients c)
+    {
+        var h = a * 0.5;
+        c[4] = Vec3.Dot(h, h);
+        c[3] = 2 * Vec3.Dot(h, v);
+        c[2] = Vec3.Dot(v, v) + 2 * Vec3.Dot(h, d);
+        c[1] = 2 * Vec3.Dot(v, d);
+        c[0] = Vec3.Dot(d, d) - reach * reach;
     }
 
     // Exact bounding box of r0 + v t + a t^2 / 2 on [0, T]: each coordinate is extreme at an end

@@ -1,6 +1,8 @@
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics.Collisions;
+using Billiards.Core.Physics.Collisions.BallBall;
+using Billiards.Core.Physics.Collisions.BallTable;
 using Billiards.Core.Table;
 
 namespace Billiards.Core.Physics.Standard.Events;
@@ -46,10 +48,20 @@ internal sealed class Resolver
     {
         ref var a = ref _balls[i];
         ref var b = ref _balls[j];
-        var n = (b.Position - a.Position).XY.Normalized();
+        // In the air the line of centres leaves the bed plane; the bed's models (Mathavan's included)
+        // assume it horizontal, so such contacts take the frictional-inelastic impact in space.
+        bool inSpace = a.State == MotionState.Airborne || b.State == MotionState.Airborne;
+        var n = inSpace ? (b.Position - a.Position).Normalized() : (b.Position - a.Position).XY.Normalized();
         double approach = Vec3.Dot(a.Velocity - b.Velocity, n);
         bool repeat = _contacts.IsRepeat(i, j, time) || _contacts.IsRepeat(j, i, time);
-        _ballBall.Resolve(ref a, ref b, repeat ? _elastic : _params);
+        if (inSpace)
+        {
+            FrictionalInelastic.ResolveInSpace(ref a, ref b, repeat ? _elastic : _params);
+        }
+        else
+        {
+            _ballBall.Resolve(ref a, ref b, repeat ? _elastic : _params);
+        }
         double separation = Vec3.Dot(b.Velocity - a.Velocity, n);
         if (repeat && separation < EventEngine.RepeatSeparationSpeed)
         {
@@ -59,9 +71,13 @@ internal sealed class Resolver
         }
         _contacts.Remember(i, j, time);
         _contacts.Remember(j, i, time);
+        var stateA = a.State;
+        var stateB = b.State;
         BallMotion.Classify(ref a, _k);
         BallMotion.Classify(ref b, _k);
         _log.Add(new SimEvent(time, EventKind.BallBall, _ids[i], _ids[j], -1, approach));
+        LogLift(i, stateA, time);
+        LogLift(j, stateB, time);
     }
 
     /// <summary>Ball i meets the face, nose or pocket <paramref name="index"/> at <paramref name="time"/> (s).</summary>
@@ -85,6 +101,9 @@ internal sealed class Resolver
             case RailKind.Pocket:
                 Pocket(i, _geometry.Pockets[index].Pocket, time);
                 break;
+            case RailKind.OffTable:
+                LeaveTable(i, time);
+                break;
         }
     }
 
@@ -93,15 +112,50 @@ internal sealed class Resolver
         ref var ball = ref _balls[i];
         double approach = -Vec3.Dot(ball.Velocity, normal);
         bool repeat = _contacts.IsRepeat(i, _n + feature, time);
+        // The cushion models work in the bed plane; a ball in the air keeps its vertical speed.
+        double vz = ball.Velocity.Z;
         _ballCushion.Resolve(ref ball, normal, _geometry.CushionHeight, repeat ? _elastic : _params);
+        if (ball.State == MotionState.Airborne)
+        {
+            ball.Velocity = ball.Velocity with { Z = vz };
+        }
         double separation = Vec3.Dot(ball.Velocity, normal);
         if (repeat && separation < EventEngine.RepeatSeparationSpeed)
         {
             ball.Velocity += normal * (EventEngine.RepeatSeparationSpeed - separation);
         }
         _contacts.Remember(i, _n + feature, time);
+        var before = ball.State;
         BallMotion.Classify(ref ball, _k);
         _log.Add(new SimEvent(time, EventKind.BallCushion, _ids[i], _ids[i], feature, approach));
+        LogLift(i, before, time);
+    }
+
+    /// <summary>Ball i, in the air, reaches the bed at <paramref name="time"/> (s): it lands, and may bounce.</summary>
+    public void Land(int i, double time)
+    {
+        FrictionalLanding.LandLogged(ref _balls[i], _k, _log, _ids[i], time);
+    }
+
+    // Logs a ball that a contact lifted off the bed.
+    private void LogLift(int i, MotionState before, double time)
+    {
+        ref readonly var ball = ref _balls[i];
+        if (before != MotionState.Airborne && ball.State == MotionState.Airborne)
+        {
+            _log.Add(new SimEvent(time, EventKind.BallAirborne, _ids[i], _ids[i], -1, ball.Velocity.Z));
+        }
+    }
+
+    // Over the rails in the air: the ball is out of play where it crossed the cushions' line.
+    private void LeaveTable(int i, double time)
+    {
+        ref var ball = ref _balls[i];
+        double speed = ball.Velocity.Length;
+        ball.Velocity = Vec3.Zero;
+        ball.Spin = Vec3.Zero;
+        ball.State = MotionState.OffTable;
+        _log.Add(new SimEvent(time, EventKind.BallOffTable, _ids[i], _ids[i], -1, speed));
     }
 
     private void Pocket(int i, int pocket, double time)
