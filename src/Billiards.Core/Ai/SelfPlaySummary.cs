@@ -235,16 +235,7 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
     /// <exception cref="SceneException">When the text is not a summary this program writes.</exception>
     public static SelfPlaySummary Parse(string json, string file)
     {
-        JsonDocument doc;
-        try
-        {
-            doc = JsonDocument.Parse(json);
-        }
-        catch (JsonException e)
-        {
-            throw new SceneException(file, "$", $"not valid JSON: line {e.LineNumber + 1}, byte {e.BytePositionInLine + 1}");
-        }
-        using (doc)
+        using (var doc = SceneLoader.ParseJson(json, file))
         {
             try
             {

@@ -203,16 +203,7 @@ public static class GameRecordFile
     /// <exception cref="SceneException">When the record is malformed or invalid.</exception>
     public static GameRecord Parse(string json, string path)
     {
-        JsonDocument doc;
-        try
-        {
-            doc = JsonDocument.Parse(json);
-        }
-        catch (JsonException e)
-        {
-            throw new SceneException(path, "$", $"not valid JSON: line {e.LineNumber + 1}: {e.Message}");
-        }
-        using (doc)
+        using (var doc = SceneLoader.ParseJson(json, path))
         {
             try
             {

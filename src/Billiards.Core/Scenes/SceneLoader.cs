@@ -49,18 +49,24 @@ public static class SceneLoader
     /// <exception cref="SceneException">When the text is malformed or invalid.</exception>
     public static Scene Parse(string json, string path, SceneOverrides? overrides = null)
     {
-        JsonDocument doc;
+        using var doc = ParseJson(json, path);
+        return new Reader(path).ReadScene(doc.RootElement, overrides ?? new SceneOverrides());
+    }
+
+    /// <summary>
+    /// Parses the text of any of the program's JSON files (scenes, game records, self-play
+    /// summaries), strictly; malformed text is one <see cref="SceneException"/> at <c>$</c> with
+    /// the line and byte of the problem.
+    /// </summary>
+    internal static JsonDocument ParseJson(string json, string path)
+    {
         try
         {
-            doc = JsonDocument.Parse(json, new JsonDocumentOptions { AllowTrailingCommas = false, CommentHandling = JsonCommentHandling.Disallow });
+            return JsonDocument.Parse(json, new JsonDocumentOptions { AllowTrailingCommas = false, CommentHandling = JsonCommentHandling.Disallow });
         }
         catch (JsonException e)
         {
             throw new SceneException(path, "$", $"not valid JSON: line {e.LineNumber + 1}, byte {e.BytePositionInLine + 1}: {FirstSentence(e.Message)}");
-        }
-        using (doc)
-        {
-            return new Reader(path).ReadScene(doc.RootElement, overrides ?? new SceneOverrides());
         }
     }
 
