@@ -49,12 +49,15 @@ internal static class TestDisplay
             {
                 return;
             }
-            string display = $":{90 + (Environment.ProcessId % 400)}";
+            // -displayfd: Xvfb picks a display number no other server holds and writes it to its
+            // standard output once it accepts connections (a number of our own could collide with
+            // another server, and its socket can exist before the server is ready).
             try
             {
-                s_xvfb = Process.Start(new ProcessStartInfo("Xvfb", $"{display} -screen 0 1280x1024x24 -nolisten tcp")
+                s_xvfb = Process.Start(new ProcessStartInfo("Xvfb", "-displayfd 1 -screen 0 1280x1024x24 -nolisten tcp")
                 {
                     UseShellExecute = false,
+                    RedirectStandardOutput = true,
                     RedirectStandardError = true,
                 })!;
             }
@@ -64,15 +67,12 @@ internal static class TestDisplay
             }
             s_xvfb.ErrorDataReceived += (_, _) => { };
             s_xvfb.BeginErrorReadLine();
-            string socket = $"/tmp/.X11-unix/X{display[1..]}";
-            for (int i = 0; i < 100 && !File.Exists(socket) && !s_xvfb.HasExited; i++)
+            var ready = s_xvfb.StandardOutput.ReadLineAsync();
+            if (!ready.Wait(TimeSpan.FromSeconds(10)) || !int.TryParse(ready.Result, out int number))
             {
-                Thread.Sleep(50);
+                throw new InvalidOperationException($"{why}; and Xvfb did not report a display within 10 s{(s_xvfb.HasExited ? " (it exited)" : "")}");
             }
-            if (s_xvfb.HasExited)
-            {
-                throw new InvalidOperationException($"{why}; and Xvfb {display} exited at once");
-            }
+            string display = $":{number}";
             // GLFW reads the environment through libc, not through .NET's copy of it.
             _ = SetEnv("DISPLAY", display, 1);
             Environment.SetEnvironmentVariable("DISPLAY", display);
