@@ -33,18 +33,8 @@ public static class PlatformWiring
         var window = new GlfwWindow(title, 1280, 720, samples: 4);
         if (window.IsSoftwareRenderer)
         {
-            // GLFW stays initialised across the swap: terminating and initialising it again at once
-            // sometimes failed to reopen the X display.
-            GlfwRuntime.Acquire(out _);
-            try
-            {
-                window.Dispose();
-                window = new GlfwWindow(title, 1280, 720, samples: 0);
-            }
-            finally
-            {
-                GlfwRuntime.Release();
-            }
+            window.Dispose();
+            window = new GlfwWindow(title, 1280, 720, samples: 0);
         }
         int refresh = GlfwWindow.RefreshRate;
         window.FrameCap = frameCap ?? (refresh > 0 ? refresh : DefaultFrameCap);

@@ -34,7 +34,6 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
         if (_window == 0)
         {
             string reason = Glfw.GetError() ?? "no reason given";
-            GlfwRuntime.Release();
             throw new InvalidOperationException($"cannot open an OpenGL 3.3 window: {reason}");
         }
         s_windows[_window] = this;
@@ -173,7 +172,6 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
             s_windows.Remove(_window);
             Glfw.DestroyWindow(_window);
             _window = 0;
-            GlfwRuntime.Release();
         }
     }
 

@@ -28,7 +28,6 @@ internal sealed class HiddenGlfwContext : IGlContext
             if (window == 0)
             {
                 error = $"GLFW: cannot create a hidden OpenGL 3.3 window ({Glfw.GetError() ?? "no reason given"})";
-                GlfwRuntime.Release();
                 return null;
             }
             var context = new HiddenGlfwContext(window);
@@ -55,33 +54,32 @@ internal sealed class HiddenGlfwContext : IGlContext
             Glfw.MakeContextCurrent(0);
             Glfw.DestroyWindow(_window);
             _window = 0;
-            GlfwRuntime.Release();
         }
     }
 }
 
-/// <summary>Reference-counted glfwInit/glfwTerminate shared by the game window and hidden contexts.</summary>
+/// <summary>
+/// glfwInit, once for the process: the game window and the hidden contexts share it, and it is
+/// never terminated (terminating and initialising GLFW again at once sometimes failed to reopen
+/// the X display; the process's exit frees what it holds).
+/// </summary>
 internal static class GlfwRuntime
 {
-    private static int s_users;
+    private static readonly Lock s_lock = new();
+    private static bool s_initialised;
 
     public static bool Acquire(out string? error)
     {
-        error = null;
-        if (s_users == 0 && !Glfw.Init())
+        lock (s_lock)
         {
-            error = $"GLFW: glfwInit failed ({Glfw.GetError() ?? "no display?"})";
-            return false;
-        }
-        s_users++;
-        return true;
-    }
-
-    public static void Release()
-    {
-        if (--s_users == 0)
-        {
-            Glfw.Terminate();
+            error = null;
+            if (!s_initialised && !Glfw.Init())
+            {
+                error = $"GLFW: glfwInit failed ({Glfw.GetError() ?? "no display?"})";
+                return false;
+            }
+            s_initialised = true;
+            return true;
         }
     }
 
