@@ -246,10 +246,10 @@ public sealed class DrillAttempt(Drill drill)
         {
             double d = zone.DistanceTo(shot.CueAtRest);
             return zone.Contains(shot.CueAtRest)
-                ? End(true, d, string.Create(CultureInfo.InvariantCulture, $"Success: the cue ball stopped {d * 100:0.0} cm from the zone's centre."))
+                ? End(true, d, string.Create(CultureInfo.InvariantCulture, $"The {next} went in and the cue ball stopped {d * 100:0.0} cm from the zone's centre."))
                 : End(false, d, string.Create(CultureInfo.InvariantCulture, $"Potted, but the cue ball stopped {(d - zone.Radius) * 100:0.0} cm outside the zone."));
         }
-        return End(true, null, Drill.Sequence.Count > 1 ? "Success: every ball potted in order." : "Success.");
+        return End(true, null, Drill.Sequence.Count > 1 ? "Every ball potted in order." : $"The {next} went in.");
     }
 
     private DrillOutcome End(bool success, double? distance, string reason) =>
