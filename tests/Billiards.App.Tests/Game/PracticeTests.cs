@@ -329,3 +329,25 @@ internal sealed class NullFrameRenderer : IFrameRenderer
     {
     }
 }
+
+public class PracticeHelpTests
+{
+    [Fact]
+    public void The_help_shows_practice_s_keys_in_practice_and_the_match_s_in_a_match_and_fits_a_720_line_window()
+    {
+        var practice = HelpText.For(match: false, practice: true);
+        var match = HelpText.For(match: true, practice: false);
+        Assert.Contains(practice, l => l.Contains("Backspace", StringComparison.Ordinal));
+        Assert.Contains(practice, l => l.Contains("F6 / F7", StringComparison.Ordinal));
+        Assert.DoesNotContain(practice, l => l.StartsWith("Match", StringComparison.Ordinal));
+        Assert.DoesNotContain(match, l => l.Contains("Backspace", StringComparison.Ordinal));
+        Assert.Contains(match, l => l.StartsWith("Match", StringComparison.Ordinal));
+        // Every section but the other's, in order.
+        Assert.Equal(HelpText.Lines.Count, practice.Count + match.Count - HelpText.For(false, false).Count);
+        int scale = HudRenderer.Scale(720);
+        Assert.True((practice.Count * HudFont.LineHeight * scale) + (4 * 8 * scale) <= 720, $"{practice.Count} lines");
+
+        using var game = new TestGame(SceneLoader.Load(Path.Combine(AssetFolder.Assets, "scenes", "practice.json")), practice: new PracticeSetup(Path.Combine(Path.GetTempPath(), "unused.json")), create: SimulationFactory.Create);
+        Assert.Equal(practice, game.Frame().Hud!.HelpLines);
+    }
+}
