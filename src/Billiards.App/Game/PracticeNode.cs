@@ -40,7 +40,8 @@ public sealed record PracticeSetup(string SavePath, Drill? Drill = null, DrillRe
 /// shows the result and counts it in the records (Enter starts again). F6 shows the shot's
 /// sensitivity: the planner's sampler (<see cref="ShotPlanner.Sensitivity"/>) plays the shot the
 /// cue is set to with the error of a level (F7 cycles 1-5) and the HUD shows how often it pots,
-/// with each sample's cue-ball ending drawn on the table.
+/// with each sample's cue-ball ending drawn on the table (green where it potted, red where not) and,
+/// for a miss, where the target ball stopped.
 /// </summary>
 /// <remarks>
 /// Every shot is struck on a new simulation of the position as a scene (the balls at rest, no
@@ -62,6 +63,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
     private static readonly Vector4 ZoneColour = new(1f, 0.85f, 0.2f, 0.9f);
     private static readonly Vector4 PottedColour = new(0.35f, 1f, 0.45f, 0.85f);
     private static readonly Vector4 MissedColour = new(1f, 0.35f, 0.3f, 0.85f);
+    private static readonly Vector4 TargetColour = new(1f, 0.85f, 0.2f, 0.7f);
 
     private Scene _start = start with { Shot = null, Game = null };
     private PhysicsNode? _physics;
@@ -577,6 +579,11 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
                 if (ending.Cue is { } at)
                 {
                     Circle(aids, f, at, physics.BallRadius * 0.5, ending.Potted ? PottedColour : MissedColour, 12);
+                }
+                // Where a miss left the target ball: a smaller ring of its own colour.
+                if (ending.Target is { } target)
+                {
+                    Circle(aids, f, target, physics.BallRadius * 0.3, TargetColour, 8);
                 }
             }
         }

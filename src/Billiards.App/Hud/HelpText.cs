@@ -4,8 +4,8 @@ namespace Billiards.App.Hud;
 public static class HelpText
 {
     /// <summary>
-    /// The overlay's lines for a game: the match's keys only in a match, practice's only in
-    /// practice, so that the overlay fits the window.
+    /// The overlay's lines for a game: practice's keys only in practice, the match's everywhere but
+    /// in practice, so that the overlay fits the window.
     /// </summary>
     public static IReadOnlyList<string> For(bool match, bool practice)
     {
@@ -15,7 +15,8 @@ public static class HelpText
         {
             if (!line.StartsWith(' '))
             {
-                keep = (match || !line.StartsWith("Match", StringComparison.Ordinal)) && (practice || !line.StartsWith("Practice", StringComparison.Ordinal));
+                // A scene played without a match or practice (a physics scene) keeps the match's keys, as before.
+                keep = (match || !practice || !line.StartsWith("Match", StringComparison.Ordinal)) && (practice || !line.StartsWith("Practice", StringComparison.Ordinal));
             }
             if (keep)
             {
