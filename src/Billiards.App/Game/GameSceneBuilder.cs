@@ -41,13 +41,13 @@ public static class GameSceneBuilder
         var physics = root.AddChild(new PhysicsNode(scene, createSimulation));
         var loop = new FixedStepLoop(physics.Simulation.Dt);
         root.AddChild(new CameraNode());
-        if (scene.Balls.Any(b => b.Id == BallId.Cue))
+        if (scene.Balls.Any(b => b.Id == scene.CueBall))
         {
             root.AddChild(new CueNode());
             root.AddChild(new AimLineNode());
         }
         var modes = root.AddChild(new InputModeNode());
-        if (match is not null && scene.Balls.Any(b => b.Id == BallId.Cue))
+        if (match is not null && scene.Balls.Any(b => b.Id == scene.CueBall))
         {
             root.AddChild(new MatchNode(match.Rules, match.Players, scene.Game));
             root.AddChild(new ComputerPlayerNode());
@@ -57,7 +57,7 @@ public static class GameSceneBuilder
         // Added after the modes: input runs from the last child back, so these keys come first.
         var keys = root.AddChild(new SystemKeysNode(loop));
         root.AddChild(new HudNode());
-        if (practice is not null && match is null && scene.Balls.Any(b => b.Id == BallId.Cue))
+        if (practice is not null && match is null && scene.Balls.Any(b => b.Id == scene.CueBall))
         {
             // After the HUD: it adds its lines and the drill's zone to the HUD's frame, and takes its keys before the others.
             root.AddChild(new PracticeNode(scene, practice));

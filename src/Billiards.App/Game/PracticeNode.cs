@@ -246,7 +246,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         }
         Message = null;
         var sim = _physics!.CreateSimulation(position);
-        sim.Strike(shot);
+        sim.Strike(shot, _physics.CueBall);
         return sim;
     }
 
@@ -294,7 +294,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         var physics = _physics!;
         _planner ??= new ShotPlanner(physics.Table, physics.Params, physics.Models);
         var planner = _planner;
-        var position = TablePosition.Of(physics.Simulation);
+        var position = TablePosition.Of(physics.Simulation, physics.CueBall);
         var level = SkillLevel.Of(SensitivityLevel);
         var target = Attempt?.Next ?? (FindInTree<AimLineNode>()?.Preview?.Ball);
         _asked = (shot, _version);
@@ -447,7 +447,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         }
     }
 
-    // The lowest-numbered pool ball not on the table, under the cursor or else at the free spot nearest the foot spot.
+    // The lowest-numbered ball of the set not on the table, under the cursor or else at the free spot nearest the foot spot.
     private void Add()
     {
         if (!CanEdit())
@@ -457,10 +457,14 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         }
         var position = Position();
         var ids = position.Balls.Select(b => b.Id).ToHashSet();
+        // The set's balls in order: the lowest-numbered object ball not on the table.
         BallId? next = null;
-        for (int n = 1; n <= 15 && next is null; n++)
+        foreach (var candidate in _start.BallSet.Ids)
         {
-            next = ids.Contains(new BallId(n)) ? null : new BallId(n);
+            if (next is null && !ids.Contains(candidate) && !_start.BallSet.IsCueBall(candidate))
+            {
+                next = candidate;
+            }
         }
         if (next is not { } id)
         {
@@ -482,7 +486,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
             Say("A drill's position is fixed.");
             return;
         }
-        if (BallAt(_cursor) is not { } id || id.IsCue)
+        if (BallAt(_cursor) is not { } id || id == _physics!.CueBall)
         {
             Say("Point at an object ball to remove it.");
             return;
@@ -540,7 +544,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
             Say(e.Message);
             return;
         }
-        if (scene.Table != _physics.Table || !scene.Balls.Any(b => b.Id.IsCue))
+        if (scene.Table != _physics.Table || !scene.Balls.Any(b => b.Id == scene.CueBall))
         {
             Say($"{setup.SavePath} is for another table or has no cue ball: play --practice {setup.SavePath}");
             return;

@@ -30,14 +30,14 @@ public sealed partial class ShotPlanner
         ArgumentOutOfRangeException.ThrowIfGreaterThan(samples, MaxSensitivitySamples);
         var sim = position.CreateSimulation(Model);
         var start = sim.CreateSnapshot();
-        int cue = sim.IndexOf(BallId.Cue);
+        int cue = sim.IndexOf(position.CueBall);
         int aimed = target is { } t ? sim.IndexOf(t) : -1;
         var endings = new ShotEnding[samples];
         for (int i = 0; i < samples; i++)
         {
             var played = level.Execute(shot, new PlannerRandom(PlannerRandom.Derive(seed, i)));
             sim.Restore(start);
-            sim.Strike(played);
+            sim.Strike(played, position.CueBall);
             sim.AdvanceTo(MaxShotTime);
             var balls = sim.Balls;
             bool cueOn = cue >= 0 && !balls[cue].IsOutOfPlay;
@@ -99,7 +99,7 @@ public sealed partial class ShotPlanner
 
         private void AddBreak(int rootIndex, Root root, List<Variation> variations)
         {
-            var balls = root.Position.Enumerate().Where(b => !b.Id.IsCue).ToList();
+            var balls = root.Position.Enumerate().Where(b => b.Id != root.Position.CueBall).ToList();
             if (balls.Count == 0)
             {
                 return;

@@ -85,7 +85,7 @@ public sealed record Drill(string Name, string Title, string Goal, Scene Scene, 
             throw Bad("$.scene", "missing (the drill's position, a billiards-scene/1 object)");
         }
         var scene = SceneLoader.ReadScene(sceneElement, path + " (its scene)");
-        if (scene.Shot is not null || scene.Game is not null || !scene.Balls.Any(b => b.Id.IsCue))
+        if (scene.Shot is not null || scene.Game is not null || !scene.Balls.Any(b => b.Id == scene.CueBall))
         {
             throw Bad("$.scene", "a drill's position has a cue ball, and no shot or game block");
         }
@@ -97,7 +97,7 @@ public sealed record Drill(string Name, string Title, string Goal, Scene Scene, 
         int i = 0;
         foreach (var item in seq.EnumerateArray())
         {
-            if (item.ValueKind != JsonValueKind.String || !BallId.TryParse(item.GetString(), out var id) || id.IsCue
+            if (item.ValueKind != JsonValueKind.String || !scene.BallSet.TryParse(item.GetString(), out var id) || scene.BallSet.IsCueBall(id)
                 || !scene.Balls.Any(b => b.Id == id) || sequence.Contains(id))
             {
                 throw Bad($"$.sequence[{i}]", "expected an object ball of the scene, once");
@@ -116,8 +116,8 @@ public sealed record Drill(string Name, string Title, string Goal, Scene Scene, 
             foreach (var item in ps.EnumerateArray())
             {
                 pockets.Add(item.ValueKind == JsonValueKind.Null ? PocketId.None
-                    : item.ValueKind == JsonValueKind.String && PocketIds.TryParse(item.GetString(), out var pocket) && scene.Table.Pockets.Contains(pocket) ? pocket
-                    : throw Bad($"$.pockets[{k}]", $"expected a pocket of the table ({string.Join(", ", scene.Table.Pockets.Select(x => x.ToName()))}) or null"));
+                    : item.ValueKind == JsonValueKind.String && scene.Table.Pockets.TryParse(item.GetString(), out var pocket) ? pocket
+                    : throw Bad($"$.pockets[{k}]", $"expected a pocket of the table ({scene.Table.Pockets.Describe()}) or null"));
                 k++;
             }
         }
@@ -172,14 +172,14 @@ public sealed record DrillShot(IReadOnlyList<(BallId Ball, PocketId Pocket)> Pot
         for (int i = 0; i < sim.Ids.Count; i++)
         {
             var id = sim.Ids[i];
-            if (id.IsCue)
+            if (sim.BallSet.IsCueBall(id))
             {
                 cueOn = !balls[i].IsOutOfPlay;
                 cueAt = balls[i].Position;
             }
             else if (balls[i].IsOutOfPlay && onTable.Contains(id))
             {
-                potted.Add((id, balls[i].IsPocketed ? PocketIds.FromIndex(balls[i].Pocket) : PocketId.None));
+                potted.Add((id, balls[i].IsPocketed ? sim.Table.Pockets.Id(balls[i].Pocket) : PocketId.None));
             }
         }
         return new DrillShot(potted, cueOn, cueAt);

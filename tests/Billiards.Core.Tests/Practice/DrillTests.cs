@@ -18,6 +18,10 @@ public class DrillTests
 
     public static TheoryData<string> Names() => [.. DrillNames()];
 
+    // A pocket of the pool tables by its name in files.
+    private static PocketId Pocket(string name) =>
+        TableSpec.FromPreset("pool-9ft").Pockets.TryParse(name, out var pocket) ? pocket : throw new ArgumentException(name);
+
     private static Drill Load(string name)
     {
         string path = Path.Combine(Folder, name + ".json");
@@ -123,7 +127,8 @@ public class DrillTests
         Assert.True(off < 2 * kick.BallRadius, $"the 2 is {off:0.000} m off the line");
         // And the reference kicks: the cue ball meets a cushion before any ball.
         List<SimEvent> kicked = Collisions(Load("kick-shot"));
-        Assert.Equal(EventKind.BallCushion, kicked.First(e => e.A.IsCue || e.B.IsCue).Kind);
+        var cueBall = kick.CueBall;
+        Assert.Equal(EventKind.BallCushion, kicked.First(e => e.A == cueBall || e.B == cueBall).Kind);
 
         // The bank: once struck, the 1 meets a cushion before it drops.
         List<SimEvent> banked = Collisions(Load("bank-shot"));
@@ -135,9 +140,9 @@ public class DrillTests
 
         // The 60 degree cut: between the cue ball's path to the ghost ball and the 1's path to the pocket.
         var cut = Load("cut-60");
-        var c = cut.Scene.Balls.First(b => b.Id.IsCue).Position;
+        var c = cut.Scene.Balls.First(b => b.Id == cut.Scene.CueBall).Position;
         var b1 = cut.Scene.Balls.First(b => b.Id == new BallId(1)).Position;
-        var pocket = TableGeometry.Build(cut.Scene.Table, cut.Scene.BallRadius).Pockets.ToArray().First(p => p.Pocket == (int)PocketId.FootLeft).Centre with { Z = b1.Z };
+        var pocket = TableGeometry.Build(cut.Scene.Table, cut.Scene.BallRadius).Pockets.ToArray().First(p => p.Pocket == Pocket("foot-left").Index).Centre with { Z = b1.Z };
         var u = (pocket - b1).Normalized();
         var ghost = b1 - (u * (2 * cut.Scene.BallRadius));
         double angle = Math.Acos(Vec3.Dot((ghost - c).Normalized(), u)) * 180 / Math.PI;
@@ -156,7 +161,7 @@ public class DrillTests
     private static Drill TwoShotDrill(DrillZone? zone = null) => new(
         "test", "Test", "Pot the 1 then the 2.",
         SceneLoader.Parse("""{ "format": "billiards-scene/1", "balls": [ { "id": "cue", "position": [0, 0] }, { "id": "1", "position": [0.5, 0] }, { "id": "2", "position": [0.5, 0.3] } ] }""", "t.json"),
-        [new BallId(1), new BallId(2)], zone, []) { Pockets = [PocketId.FootLeft, PocketId.None] };
+        [new BallId(1), new BallId(2)], zone, []) { Pockets = [Pocket("foot-left"), PocketId.None] };
 
     [Fact]
     public void An_attempt_fails_on_a_scratch_a_wrong_ball_a_wrong_pocket_or_an_extra_ball_and_succeeds_only_in_order()
@@ -174,15 +179,15 @@ public class DrillTests
             return o;
         }
         var here = new Vec3(0, 0, 0);
-        Assert.False(Judge(new DrillShot([(one, PocketId.FootLeft)], false, here))!.Success);
-        Assert.False(Judge(new DrillShot([(two, PocketId.FootLeft)], true, here))!.Success);
-        Assert.False(Judge(new DrillShot([(one, PocketId.FootRight)], true, here))!.Success);
-        Assert.False(Judge(new DrillShot([(one, PocketId.FootLeft), (two, PocketId.FootLeft)], true, here))!.Success);
+        Assert.False(Judge(new DrillShot([(one, Pocket("foot-left"))], false, here))!.Success);
+        Assert.False(Judge(new DrillShot([(two, Pocket("foot-left"))], true, here))!.Success);
+        Assert.False(Judge(new DrillShot([(one, Pocket("foot-right"))], true, here))!.Success);
+        Assert.False(Judge(new DrillShot([(one, Pocket("foot-left")), (two, Pocket("foot-left"))], true, here))!.Success);
         // The first ball right: the attempt goes on; then the second in any pocket.
         var attempt = new DrillAttempt(TwoShotDrill());
-        Assert.Null(attempt.Judge(new DrillShot([(one, PocketId.FootLeft)], true, here)));
+        Assert.Null(attempt.Judge(new DrillShot([(one, Pocket("foot-left"))], true, here)));
         Assert.Equal(two, attempt.Next);
-        var done = attempt.Judge(new DrillShot([(two, PocketId.HeadRight)], true, here))!;
+        var done = attempt.Judge(new DrillShot([(two, Pocket("head-right"))], true, here))!;
         Assert.True(done.Success);
         Assert.Equal(2, done.Potted);
         Assert.Null(attempt.Next);
@@ -196,13 +201,13 @@ public class DrillTests
         var one = new BallId(1);
         var two = new BallId(2);
         var inside = new DrillAttempt(TwoShotDrill(zone));
-        inside.Judge(new DrillShot([(one, PocketId.FootLeft)], true, new Vec3(1, 1, 0)));
-        var o = inside.Judge(new DrillShot([(two, PocketId.SideLeft)], true, new Vec3(0.23, 0.14, 0.028)))!;
+        inside.Judge(new DrillShot([(one, Pocket("foot-left"))], true, new Vec3(1, 1, 0)));
+        var o = inside.Judge(new DrillShot([(two, Pocket("side-left"))], true, new Vec3(0.23, 0.14, 0.028)))!;
         Assert.True(o.Success);
         Assert.Equal(0.05, o.ZoneDistance!.Value, 12);
         var outside = new DrillAttempt(TwoShotDrill(zone));
-        outside.Judge(new DrillShot([(one, PocketId.FootLeft)], true, Vec3.Zero));
-        var miss = outside.Judge(new DrillShot([(two, PocketId.SideLeft)], true, new Vec3(0.2, 0.2, 0)))!;
+        outside.Judge(new DrillShot([(one, Pocket("foot-left"))], true, Vec3.Zero));
+        var miss = outside.Judge(new DrillShot([(two, Pocket("side-left"))], true, new Vec3(0.2, 0.2, 0)))!;
         Assert.False(miss.Success);
         Assert.Equal(0.1, miss.ZoneDistance!.Value, 12);
     }

@@ -10,6 +10,8 @@ namespace Billiards.Core.Tests.Practice;
 /// <summary>The planner's variation sampler turned on a person's shot (<see cref="ShotPlanner.Sensitivity"/>).</summary>
 public class SensitivityTests
 {
+    private static readonly BallId Cue = BallSet.Pool.CueBalls[0];
+
     private static readonly ShotPlanner Planner = new(TableSpec.FromPreset("pool-9ft"), PhysicsParams.Default);
 
     // A straight pot of 30 cm into the foot-left corner's capture circle, and a long thin cut.
@@ -20,7 +22,7 @@ public class SensitivityTests
         var u = (pocket - one).Normalized();
         var cue = one - (u * 0.3);
         double aim = Math.Atan2(u.Y, u.X) * 180 / Math.PI;
-        return (new TablePosition([(BallId.Cue, cue), (new BallId(1), one)]), new ShotSpec(2.0, aim, 0, 0, 0));
+        return (new TablePosition([(Cue, cue), (new BallId(1), one)], Cue), new ShotSpec(2.0, aim, 0, 0, 0));
     }
 
     [Fact]
@@ -60,7 +62,7 @@ public class SensitivityTests
         double cut = 50 * Math.PI / 180;
         var back = new Vec3(-u.X * Math.Cos(cut) + u.Y * Math.Sin(cut), -u.X * Math.Sin(cut) - u.Y * Math.Cos(cut), 0);
         var cue = ghost + (back * 1.5);
-        var thin = new TablePosition([(BallId.Cue, cue), (new BallId(1), one)]);
+        var thin = new TablePosition([(Cue, cue), (new BallId(1), one)], Cue);
         var d = ghost - cue;
         var cutShot = new ShotSpec(3.0, Math.Atan2(d.Y, d.X) * 180 / Math.PI, 0, 0, 0);
         var beginner = Planner.Sensitivity(thin, cutShot, SkillLevel.Of(1), 40, 1, new BallId(1));
