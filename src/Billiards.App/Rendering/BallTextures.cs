@@ -29,7 +29,7 @@ public static class BallTextures
     /// <summary>The ball's base colour (sRGB, 0..1), as its ball set's look has it.</summary>
     public static Vector3 BaseColor(BallId id)
     {
-        var look = BallSet.Pool.Kind(id).Look;
+        var look = BallSet.KindOfAny(id).Look;
         return new(look.Red, look.Green, look.Blue);
     }
 
@@ -58,7 +58,7 @@ public static class BallTextures
         var white = new Vector3(0.97f, 0.96f, 0.92f);
         var ink = new Vector3(0.03f, 0.03f, 0.03f);
         var baseColor = BaseColor(id);
-        float[] number = !BallSet.Pool.Kind(id).Look.Numbered ? [] : NumberCoverage(id.Value.ToString(System.Globalization.CultureInfo.InvariantCulture));
+        float[] number = !BallSet.KindOfAny(id).Look.Numbered ? [] : NumberCoverage(id.Value.ToString(System.Globalization.CultureInfo.InvariantCulture));
         var cosLon = new float[Width];
         var sinLon = new float[Width];
         for (int i = 0; i < Width; i++)
@@ -100,11 +100,16 @@ public static class BallTextures
             return Vector3.Lerp(baseColor, new Vector3(0.80f, 0.08f, 0.08f), spot);
         }
         var surface = baseColor;
-        if (BallSet.Pool.Kind(id).Look.Striped)
+        if (BallSet.KindOfAny(id).Look.Striped)
         {
             // The band's edge as an angle: latitude asin(StripeHalfHeight).
             float band = Cover(MathF.Asin(StripeHalfHeight) - MathF.Abs(MathF.Asin(d.Z)), texel);
             surface = Vector3.Lerp(white, baseColor, band);
+        }
+        if (number.Length == 0)
+        {
+            // A ball without a number (snooker's) is its colour all over.
+            return surface;
         }
         // Number discs at +x and -x; read upright with z up.
         foreach (float side in s_sides)

@@ -19,9 +19,9 @@ public readonly record struct BallId(int Value)
     /// <summary>True for one of pool's stripes.</summary>
     public bool IsStripe => BallSet.Pool.Group("stripes").Contains(this);
 
-    /// <summary>The id as a scene file writes it: the ball's name in pool's set ("cue", "1", "2", ...).</summary>
-    public override string ToString() => BallSet.Pool.NameOf(this);
+    /// <summary>The id as a scene file writes it: the ball's name in its set ("cue", "1", "2", ..., "red-1", ..., "black").</summary>
+    public override string ToString() => BallSet.NameOfAny(this);
 
-    /// <summary>Parses a ball id of pool's set (<see cref="BallSet.Pool"/>): "cue" or "1" .. "15".</summary>
-    public static bool TryParse(string? text, out BallId id) => BallSet.Pool.TryParse(text, out id);
+    /// <summary>Parses a ball's name in any set (<see cref="BallSet.Pool"/>, <see cref="BallSet.Snooker"/>): "cue", "1" .. "15", "red-1" .. "black".</summary>
+    public static bool TryParse(string? text, out BallId id) => BallSet.TryParseAny(text, out id);
 }

@@ -94,7 +94,8 @@ public static class SceneLoader
             }
             string? name = fields.TryGetValue("name", out var n) ? String(n, "$.name") : null;
 
-            var physics = fields.TryGetValue("physics", out var p) ? ReadPhysics(p, overrides) : ApplyOverrides(PhysicsConfig.Default, overrides, "$");
+            var set = SceneBallSet(fields);
+            var physics = fields.TryGetValue("physics", out var p) ? ReadPhysics(p, overrides, set) : ApplyOverrides(PhysicsConfig.Default with { Params = set.DefaultParams }, overrides, "$");
             var table = fields.TryGetValue("table", out var t)
                 ? ReadTable(t)
                 : TableSpec.FromPreset(physics.Model.DefaultTablePreset);
@@ -114,7 +115,7 @@ public static class SceneLoader
                 }
                 if (!balls.ContainsKey(0))
                 {
-                    balls[0] = (new BallSetup(BallId.Cue, Initializer.HeadSpot(table, radius), Vec3.Zero, Vec3.Zero), "$.rack");
+                    balls[0] = (new BallSetup(BallId.Cue, Initializer.CueStart(rack.Game, table, radius), Vec3.Zero, Vec3.Zero), "$.rack");
                 }
             }
             if (fields.TryGetValue("balls", out var b))
@@ -124,7 +125,7 @@ public static class SceneLoader
                 foreach (var item in Array(b, "$.balls"))
                 {
                     string itemPath = $"$.balls[{i++}]";
-                    var ball = ReadBall(item, itemPath, radius, physics.Model.HasFlight);
+                    var ball = ReadBall(item, itemPath, radius, physics.Model.HasFlight, set);
                     if (!explicitIds.Add(ball.Id.Value))
                     {
                         throw Error(itemPath + ".id", $"ball \"{ball.Id}\" appears twice");
@@ -145,6 +146,21 @@ public static class SceneLoader
             // A game block without a shot is a position to play (suggest); a run refuses it (SimulationRunner).
             var game = fields.TryGetValue("game", out var gm) ? GameBlockReader.Read(gm, file) : null;
             return new Scene(file, name, table, physics, rack, list.Select(x => x.Ball).ToList(), shot, rules) { Game = game };
+        }
+
+        // The balls a scene is played with, for its ball ids and the default radius and mass:
+        // snooker's when the scene names snooker (its rules, rack, game or table), else pool's.
+        // Read before the fields are validated, which happens as each is read.
+        private static BallSet SceneBallSet(Dictionary<string, JsonElement> fields)
+        {
+            static bool Is(JsonElement e, string property, string value) =>
+                e.ValueKind == JsonValueKind.Object && e.TryGetProperty(property, out var v)
+                && v.ValueKind == JsonValueKind.String && v.GetString() == value;
+            bool snooker = (fields.TryGetValue("rules", out var rules) && rules.ValueKind == JsonValueKind.String && rules.GetString() == "snooker")
+                || (fields.TryGetValue("rack", out var rack) && Is(rack, "game", "snooker"))
+                || (fields.TryGetValue("game", out var game) && Is(game, "rules", "snooker"))
+                || (fields.TryGetValue("table", out var table) && Is(table, "preset", SnookerTable.Preset));
+            return snooker ? BallSet.Snooker : BallSet.Pool;
         }
 
         private void ValidatePlacement(List<(BallSetup Ball, string Path)> balls, TableSpec table, double radius)
@@ -192,10 +208,10 @@ public static class SceneLoader
             return table;
         }
 
-        private PhysicsConfig ReadPhysics(JsonElement e, SceneOverrides overrides)
+        private PhysicsConfig ReadPhysics(JsonElement e, SceneOverrides overrides, BallSet set)
         {
             var f = Object(e, "$.physics", "model", "integrator", "dt", "params", "models");
-            var config = PhysicsConfig.Default;
+            var config = PhysicsConfig.Default with { Params = set.DefaultParams };
             if (f.TryGetValue("model", out var m))
             {
                 var model = ModelRegistry.Get(OneOf(m, "$.physics.model", [.. ModelRegistry.Names]));
@@ -213,7 +229,7 @@ public static class SceneLoader
             }
             if (f.TryGetValue("params", out var p))
             {
-                config = config with { Params = ReadParams(p) };
+                config = config with { Params = ReadParams(p, set) };
             }
             config = ApplyOverrides(config, overrides, "$.physics");
             if (f.TryGetValue("models", out var ms))
@@ -272,10 +288,10 @@ public static class SceneLoader
             return config;
         }
 
-        private PhysicsParams ReadParams(JsonElement e)
+        private PhysicsParams ReadParams(JsonElement e, BallSet set)
         {
             var f = Object(e, "$.physics.params", [.. PhysicsParams.Symbols]);
-            var p = PhysicsParams.Default;
+            var p = set.DefaultParams;
             double Get(string key, double min, double max, double fallback) =>
                 f.TryGetValue(key, out var v) ? Number(v, $"$.physics.params.{key}", min, max) : fallback;
 
@@ -331,11 +347,12 @@ public static class SceneLoader
             {
                 throw Error("$.rack", "missing \"game\"");
             }
-            var game = OneOf(g, "$.rack.game", "eight-ball", "nine-ball", "ten-ball", "straight-pool") switch
+            var game = OneOf(g, "$.rack.game", "eight-ball", "nine-ball", "ten-ball", "straight-pool", "snooker") switch
             {
                 "eight-ball" => RackGame.EightBall,
                 "nine-ball" => RackGame.NineBall,
                 "ten-ball" => RackGame.TenBall,
+                "snooker" => RackGame.Snooker,
                 _ => RackGame.StraightPool,
             };
             int seed = 0;
@@ -349,7 +366,7 @@ public static class SceneLoader
             return new RackSpec(game, seed);
         }
 
-        private BallSetup ReadBall(JsonElement e, string path, double radius, bool flight)
+        private BallSetup ReadBall(JsonElement e, string path, double radius, bool flight, BallSet set)
         {
             var f = Object(e, path, "id", "position", "velocity", "spin");
             if (!f.TryGetValue("id", out var idElement))
@@ -357,9 +374,9 @@ public static class SceneLoader
                 throw Error(path, "missing \"id\"");
             }
             string idText = String(idElement, path + ".id");
-            if (!BallSet.Pool.TryParse(idText, out var id))
+            if (!set.TryParse(idText, out var id))
             {
-                throw Error(path + ".id", $"unknown ball id \"{idText}\" (expected {BallSet.Pool.Describe()})");
+                throw Error(path + ".id", $"unknown ball id \"{idText}\" (expected {set.Describe()})");
             }
             if (!f.TryGetValue("position", out var pos))
             {

@@ -46,8 +46,9 @@ public readonly record struct PocketCircle(Vec3 Centre, double Radius, int Pocke
 /// Pockets (physics-standard-model.md, WPA): the mouth is measured between the points where the
 /// rail's nose line meets the jaw's face. Each jaw leaves the rail at the WPA jaw angle (142 deg
 /// corner, 104 deg side, measured through the cushion rubber), so the jaws converge towards the
-/// back of the pocket. The sharp corner is rounded by a nose of <see cref="NoseRadius"/>. The
-/// capture circle of radius R sits R behind the middle of the mouth line: a ball is pocketed once
+/// back of the pocket. The corner is rounded by a nose of <see cref="TableSpec.JawNoseRadius"/>
+/// (pool's sharp <see cref="NoseRadius"/>, snooker's rounder). The
+/// capture circle of radius R (wider where the jaws leave more room) sits R behind the middle of the mouth line: a ball is pocketed once
 /// its centre is past the mouth line and more than half of it hangs over the hole, or it rattles
 /// off a jaw first.
 /// </remarks>
@@ -151,6 +152,7 @@ public sealed class TableGeometry
             (5, false, 3, "foot"), (5, true, 5, "right"),
         };
         var trimmed = rails.Select(r => (r.A, r.B)).ToArray();
+        var jaws = Enumerable.Range(0, PocketNames.Count).Select(_ => new List<CushionSegment>(2)).ToArray();
         foreach (var (rail, atB, pocket, railWord) in ends)
         {
             var (a, b, nIn) = rails[rail];
@@ -167,14 +169,17 @@ public sealed class TableGeometry
             var jawNormal = leftHanded ? new Vec3(-jaw.Y, jaw.X, 0) : new Vec3(jaw.Y, -jaw.X, 0);
 
             // Round the corner with a nose tangent to both faces, inside the cushion body.
-            double tangent = NoseRadius / Math.Tan(angle / 2);
+            double nose = spec.JawNoseRadius;
+            double tangent = nose / Math.Tan(angle / 2);
             var bisector = (back + jaw).Normalized();
-            var noseCentre = tip + bisector * (NoseRadius / Math.Sin(angle / 2));
+            var noseCentre = tip + bisector * (nose / Math.Sin(angle / 2));
             int feature = names.Count;
             names.Add($"{PocketNames[pocket]}-jaw-{railWord}");
             ids.Add(CushionIds.Jaw((PocketId)pocket));
-            noses.Add(new CushionNose(noseCentre, NoseRadius, feature));
-            segments.Add(new CushionSegment(tip + jaw * tangent, tip + jaw * JawLength, jawNormal, feature));
+            noses.Add(new CushionNose(noseCentre, nose, feature));
+            var face = new CushionSegment(tip + jaw * tangent, tip + jaw * JawLength, jawNormal, feature);
+            segments.Add(face);
+            jaws[pocket].Add(face);
             var rt = trimmed[rail];
             trimmed[rail] = atB ? (rt.A, tip + back * tangent) : (tip + back * tangent, rt.B);
         }
@@ -183,7 +188,10 @@ public sealed class TableGeometry
             segments.Insert(i, new CushionSegment(trimmed[i].A, trimmed[i].B, rails[i].N, i));
         }
 
-        // Capture circles: R behind the middle of each mouth line, radius R.
+        // Capture circles: R behind the middle of each mouth line, radius R, or wider where the
+        // channel a ball's centre can reach between the jaws is wider than the circle there (a
+        // small ball in wide jaws): the circle then spans the channel, so no ball can roll past
+        // it between the jaws and off the table.
         var mouths = new (Vec3 Middle, Vec3 Out)[]
         {
             (new Vec3(-hx + corner / 2, hy - corner / 2, 0), new Vec3(-1, 1, 0).Normalized()),
@@ -195,8 +203,25 @@ public sealed class TableGeometry
         };
         for (int i = 0; i < mouths.Length; i++)
         {
-            pockets.Add(new PocketCircle(mouths[i].Middle + mouths[i].Out * ballRadius, ballRadius, i));
+            var centre = mouths[i].Middle + mouths[i].Out * ballRadius;
+            var across = new Vec3(-mouths[i].Out.Y, mouths[i].Out.X, 0);
+            pockets.Add(new PocketCircle(centre, Math.Max(ballRadius, ChannelHalfWidth(jaws[i], centre, across, ballRadius)), i));
         }
         return new TableGeometry(spec, segments, noses, pockets, names, ids);
+    }
+
+    /// <summary>
+    /// How far from <paramref name="centre"/>, along the line <paramref name="across"/> the
+    /// pocket's mouth, a ball's centre can be while at least R from both jaw faces' lines (m).
+    /// </summary>
+    internal static double ChannelHalfWidth(IReadOnlyList<CushionSegment> jaws, Vec3 centre, Vec3 across, double radius)
+    {
+        double widest = 0;
+        foreach (var face in jaws)
+        {
+            // Where along the chord the centre is exactly R from this jaw face's line.
+            widest = Math.Max(widest, Math.Abs((radius - Vec3.Dot(face.Normal, centre - face.Start)) / Vec3.Dot(face.Normal, across)));
+        }
+        return widest;
     }
 }
