@@ -181,9 +181,10 @@ public static class GameBlockReader
         if (f.TryGetValue("misses_in_row", out var misses))
         {
             var pair = Pair(misses, $"{path}.misses_in_row");
-            if (pair.First < 0 || pair.Second < 0 || pair.First > 2 || pair.Second > 2)
+            // Misses without a full ball view go on counting past two (rules.md: only the third with a view loses).
+            if (pair.First < 0 || pair.Second < 0)
             {
-                throw Error($"{path}.misses_in_row", "each count must be 0, 1 or 2 (a third miss with a full ball view ends the frame)");
+                throw Error($"{path}.misses_in_row", "each count must be 0 or more");
             }
             state = state with { MissesInRow = pair };
         }
