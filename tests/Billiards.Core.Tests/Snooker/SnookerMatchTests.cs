@@ -10,6 +10,8 @@ namespace Billiards.Core.Tests.Snooker;
 /// <summary>Core's match drives snooker frames with real physics: the break-off, the options after a foul, replace, and records that replay.</summary>
 public class SnookerMatchTests
 {
+    private static readonly BallId Cue = BallSet.Snooker.CueBalls[0];
+
     private static readonly Vec3 BreakPlace = new(SnookerTable.BaulkLineX(TableSpec.FromPreset("snooker-12ft")), -0.146, 0.02625);
 
     // The break-off into the side of the pack, then the incoming player plays away from every ball (a foul and a miss).
@@ -79,7 +81,7 @@ public class SnookerMatchTests
         Assert.Equal(0.02625, match.Setup.BallRadius);
         Assert.Equal(22, match.Balls.Count);
         Assert.Equal(BallInHand.D, match.BallInHand);
-        Assert.True(SnookerTable.InD(match.Setup.Table, match.Balls[BallId.Cue]));
+        Assert.True(SnookerTable.InD(match.Setup.Table, match.Balls[Cue]));
     }
 
     [Fact]
@@ -103,7 +105,7 @@ public class SnookerMatchTests
         var match = Opening(RefereeOption.Play);
         var lie = match.Shots[^1].After.ToDictionary(b => b.Id, b => b.Position);
         Assert.All(lie, b => Assert.Equal(b.Value, match.Balls[b.Key]));
-        Assert.NotEqual(match.Shots[0].After.Single(b => b.Id.IsCue).Position, match.Balls[BallId.Cue]);
+        Assert.NotEqual(match.Shots[0].After.Single(b => b.Id == Cue).Position, match.Balls[Cue]);
         Assert.Equal(0, match.State.Shooter);
     }
 

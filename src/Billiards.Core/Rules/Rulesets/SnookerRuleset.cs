@@ -108,7 +108,7 @@ public sealed class SnookerRuleset : Ruleset
     public override bool MayCall(GameState state, BallId ball)
     {
         ArgumentNullException.ThrowIfNull(state);
-        return state.FreeBall ? !ball.IsCue : BallOnOf(state) == Colour && IsColour(ball);
+        return state.FreeBall ? !BallSet.IsCueBall(ball) : BallOnOf(state) == Colour && IsColour(ball);
     }
 
     /// <summary>A frame rarely lasts 300 shots; 600 leaves room for long safety exchanges.</summary>
