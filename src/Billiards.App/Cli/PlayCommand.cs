@@ -135,7 +135,7 @@ public static class PlayCommand
                 warm = true;
                 return;
             }
-            stats?.FrameStarted(now);
+            stats?.FrameStarted(now, Platform.CpuClock.ProcessSeconds());
             if (scripted is not null)
             {
                 scripted.Pump(now);
@@ -163,7 +163,7 @@ public static class PlayCommand
         }
         if (stats is not null && statsPath is not null)
         {
-            stats.Ended(gameClock.Now);
+            stats.Ended(gameClock.Now, Platform.CpuClock.ProcessSeconds());
             var (width, height) = platform.Window.FramebufferSize;
             OutputFiles.Write(statsPath, stats.ToJson(path, options?.Script, width, height, platform.GlRenderer));
         }
