@@ -113,7 +113,7 @@ public static class PlayCommand
         using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, match);
         host.Tree.Root.AddChild(new AudioNode(audio));
         bool fastComputer = options?.FastComputer == true;
-        Pace(host, fastComputer);
+        Pace(host, fastComputer || settings.FastComputer);
         if (scripted is not null)
         {
             host.TimeScale = script!.Speed;
@@ -155,7 +155,7 @@ public static class PlayCommand
         if (startMenu || (script is null && statsPath is null && recordPath is null && match is not null))
         {
             host.World.Menu.StartSettings = host.World.Menu.PlayedSettings = settings;
-            RunWithStartMenu(host, platform, scene2 => Pace(new GameHost(scene2.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, scene2.Match), fastComputer), audio, settingsPath, startMenu);
+            RunWithStartMenu(host, platform, (scene2, fast) => Pace(new GameHost(scene2.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, scene2.Match), fastComputer || fast), audio, settingsPath, startMenu);
         }
         else
         {
@@ -186,11 +186,16 @@ public static class PlayCommand
 
     // The start menu shows over the default game; a different choice replaces the game (a new host
     // on the same window) between two frames.
-    private static void RunWithStartMenu(GameHost first, GamePlatform platform, Func<(Scene Scene, MatchSetup Match), GameHost> create, IAudioOutput audio, string settingsPath, bool showAtStart)
+    private static void RunWithStartMenu(GameHost first, GamePlatform platform, Func<(Scene Scene, MatchSetup Match), bool, GameHost> create, IAudioOutput audio, string settingsPath, bool showAtStart)
     {
         var current = first;
         (GameRules Rules, MatchPlayer[] Players, GameSettings Settings)? pending = null;
-        void Listen(GameHost h) => h.World.Menu.StartRequested += (rules, players) => pending = (rules, players, h.World.Menu.StartSettings);
+        void Listen(GameHost h)
+        {
+            h.World.Menu.StartRequested += (rules, players) => pending = (rules, players, h.World.Menu.StartSettings);
+            // A new pace alone keeps the game: it is saved here, a new game saves its own.
+            h.World.Menu.SettingsChosen += chosen => chosen.Save(settingsPath, Console.Error);
+        }
         Listen(first);
         if (showAtStart)
         {
@@ -210,7 +215,7 @@ public static class PlayCommand
                         current.Dispose();
                     }
                     var setup = new MatchSetup(next.Rules, next.Players);
-                    current = create((chosen, setup));
+                    current = create((chosen, setup), next.Settings.FastComputer);
                     platform.SetTitle?.Invoke(TitleFor(chosen, setup));
                     current.Tree.Root.AddChild(new AudioNode(audio));
                     current.World.Menu.StartSettings = current.World.Menu.PlayedSettings = next.Settings;

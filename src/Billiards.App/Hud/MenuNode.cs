@@ -49,6 +49,9 @@ public sealed class MenuNode : Node
     /// <summary>Signal: the player confirmed quitting.</summary>
     public event Action? QuitConfirmed;
 
+    /// <summary>Signal: the start menu's settings were changed and Start pressed (to keep them).</summary>
+    public event Action<GameSettings>? SettingsChosen;
+
     /// <summary>Signal: the start menu asks for a new game of these rules between these players.</summary>
     public event Action<GameRules, MatchPlayer[]>? StartRequested;
 
@@ -79,9 +82,19 @@ public sealed class MenuNode : Node
     private void Begin()
     {
         Resume();
-        if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings == PlayedSettings)
+        if (StartSettings != PlayedSettings)
         {
-            return; // the game behind the menu is the one chosen
+            SettingsChosen?.Invoke(StartSettings);
+        }
+        if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings.Physics == PlayedSettings.Physics)
+        {
+            // The game behind the menu is the one chosen; a new pace takes effect in it at once.
+            if (FindInTree<ComputerPlayerNode>() is { } computer)
+            {
+                computer.Fast = StartSettings.FastComputer;
+            }
+            PlayedSettings = StartSettings;
+            return;
         }
         var opponent = StartOpponent is int level ? new MatchPlayer($"Computer L{level}", level) : new MatchPlayer("Player 2");
         StartRequested?.Invoke(StartGame, [new MatchPlayer("Player 1"), opponent]);
@@ -223,7 +236,7 @@ public sealed class MenuNode : Node
         switch (Page)
         {
             case MenuPage.Start:
-                title = "New game: the game, the opponent (a person or the computer's level), the physics (cushion, cloth), Start";
+                title = "New game: the game, the opponent (a person or the computer's level), the physics (cushion, cloth), the computer's pace, Start";
                 foreach (var game in Ruleset.All.Select(r => r.Game))
                 {
                     items.Add((Mark(game.ToName(), StartGame == game), () => StartGame = game));
@@ -237,6 +250,8 @@ public sealed class MenuNode : Node
                 rows.Add(opponents);
                 rows.Add([.. ModelRegistry.BallCushionModels.Select(m => (Mark($"Physics: {m.Name}", StartSettings.Cushion == m), (Action)(() => StartSettings = StartSettings with { Cushion = m })))]);
                 rows.Add([.. Cloth.All.Select(c => (Mark($"{c.Name} cloth", StartSettings.Cloth == c), (Action)(() => StartSettings = StartSettings with { Cloth = c })))]);
+                rows.Add([(Mark("computer: watchable", !StartSettings.FastComputer), () => StartSettings = StartSettings with { FastComputer = false }),
+                    (Mark("computer: fast", StartSettings.FastComputer), () => StartSettings = StartSettings with { FastComputer = true })]);
                 rows.Add([("Start [Enter]", Begin)]);
                 // Below the HUD panel, whose lines reach about 0.4 of the height at the start.
                 y = height * 0.5f;
