@@ -236,7 +236,7 @@ public sealed class MenuNode : Node
         switch (Page)
         {
             case MenuPage.Start:
-                title = "New game: the game, the opponent (a person or the computer's level), the physics (cushion, cloth), the computer's pace, Start";
+                title = "New game: the game, the opponent, the physics, the computer's pace";
                 foreach (var game in Ruleset.All.Select(r => r.Game))
                 {
                     items.Add((Mark(game.ToName(), StartGame == game), () => StartGame = game));
