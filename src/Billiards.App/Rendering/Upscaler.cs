@@ -52,16 +52,7 @@ internal sealed class Upscaler : IDisposable
         {
             Release();
             Size = (width, height);
-            _color = _gl.GenTexture();
-            _gl.BindTexture(Gl.Texture2D, _color);
-            _gl.TexImage2D(Gl.Texture2D, 0, Gl.Rgba8, width, height, Gl.Rgba, Gl.UnsignedByte, default);
-            _gl.TexParameter(Gl.Texture2D, Gl.TextureMinFilter, Gl.Linear);
-            _gl.TexParameter(Gl.Texture2D, Gl.TextureMagFilter, Gl.Linear);
-            _gl.TexParameter(Gl.Texture2D, Gl.TextureWrapS, Gl.ClampToEdge);
-            _gl.TexParameter(Gl.Texture2D, Gl.TextureWrapT, Gl.ClampToEdge);
-            _framebuffer = _gl.GenFramebuffer();
-            _gl.BindFramebuffer(Gl.Framebuffer, _framebuffer);
-            _gl.FramebufferTexture2D(Gl.Framebuffer, Gl.ColorAttachment0, Gl.Texture2D, _color, 0);
+            (_framebuffer, _color) = TextureFramebuffer.Create(_gl, width, height, Gl.Linear);
             _depth = _gl.GenRenderbuffer();
             _gl.BindRenderbuffer(Gl.Renderbuffer, _depth);
             _gl.RenderbufferStorage(Gl.Renderbuffer, Gl.Depth24Stencil8, width, height);
