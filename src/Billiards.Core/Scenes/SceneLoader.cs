@@ -70,6 +70,12 @@ public static class SceneLoader
         }
     }
 
+    /// <summary>Reads a scene object nested in another file (a drill's position); <paramref name="file"/> names that file in errors.</summary>
+    internal static Scene ReadScene(JsonElement e, string file) => new Reader(file).ReadScene(e, new SceneOverrides());
+
+    /// <summary>Reads a shot object (the scene's <c>shot</c> block) found at <paramref name="path"/> of another file.</summary>
+    internal static ShotSpec ReadShot(JsonElement e, string file, string path) => new Reader(file).ReadShot(e, path);
+
     private static string FirstSentence(string message)
     {
         int end = message.IndexOf(". ", StringComparison.Ordinal);
@@ -104,6 +110,9 @@ public static class SceneLoader
                 throw Error("$.physics.params.R", radiusProblem);
             }
 
+            // The game names the ball set; the game block is read in full below, once the balls are.
+            var set = BallSetOf(fields);
+            var cueBall = set.CueBalls[0];
             RackSpec? rack = fields.TryGetValue("rack", out var r) ? ReadRack(r) : null;
             var balls = new SortedDictionary<int, (BallSetup Ball, string Path)>();
             if (rack is not null)
@@ -112,9 +121,9 @@ public static class SceneLoader
                 {
                     balls[id.Value] = (new BallSetup(id, position, Vec3.Zero, Vec3.Zero), "$.rack");
                 }
-                if (!balls.ContainsKey(0))
+                if (!balls.ContainsKey(cueBall.Value))
                 {
-                    balls[0] = (new BallSetup(BallId.Cue, Initializer.HeadSpot(table, radius), Vec3.Zero, Vec3.Zero), "$.rack");
+                    balls[cueBall.Value] = (new BallSetup(cueBall, Initializer.HeadSpot(table, radius), Vec3.Zero, Vec3.Zero), "$.rack");
                 }
             }
             if (fields.TryGetValue("balls", out var b))
@@ -124,7 +133,7 @@ public static class SceneLoader
                 foreach (var item in Array(b, "$.balls"))
                 {
                     string itemPath = $"$.balls[{i++}]";
-                    var ball = ReadBall(item, itemPath, radius, physics.Model.HasFlight);
+                    var ball = ReadBall(item, itemPath, set, radius, physics.Model.HasFlight);
                     if (!explicitIds.Add(ball.Id.Value))
                     {
                         throw Error(itemPath + ".id", $"ball \"{ball.Id}\" appears twice");
@@ -136,15 +145,32 @@ public static class SceneLoader
             ValidatePlacement(list, table, radius);
 
             ShotSpec? shot = fields.TryGetValue("shot", out var s) ? ReadShot(s) : null;
-            if (shot is not null && !balls.ContainsKey(0))
-            {
-                throw Error("$.shot", "a shot needs a cue ball, and the scene has none");
-            }
             string? rules = fields.TryGetValue("rules", out var ru) ? OneOf(ru, "$.rules", [.. Rules.RuleNames.GameNames]) : null;
 
             // A game block without a shot is a position to play (suggest); a run refuses it (SimulationRunner).
-            var game = fields.TryGetValue("game", out var gm) ? GameBlockReader.Read(gm, file) : null;
-            return new Scene(file, name, table, physics, rack, list.Select(x => x.Ball).ToList(), shot, rules) { Game = game };
+            var game = fields.TryGetValue("game", out var gm) ? GameBlockReader.Read(gm, table.Pockets, file) : null;
+            var scene = new Scene(file, name, table, physics, rack, list.Select(x => x.Ball).ToList(), shot, rules) { Game = game, BallSet = set };
+            if (shot is not null && !balls.ContainsKey(scene.CueBall.Value))
+            {
+                throw Error("$.shot", $"a shot needs a cue ball (\"{set.NameOf(scene.CueBall)}\"), and the scene has none");
+            }
+            return scene;
+        }
+
+        // The set of the scene's game (the game block's rules, else "rules"), pool's without one;
+        // a bad name is refused where the field is read.
+        private static BallSet BallSetOf(Dictionary<string, JsonElement> fields)
+        {
+            string? game = null;
+            if (fields.TryGetValue("game", out var g) && g.ValueKind == JsonValueKind.Object && g.TryGetProperty("rules", out var gr) && gr.ValueKind == JsonValueKind.String)
+            {
+                game = gr.GetString();
+            }
+            else if (fields.TryGetValue("rules", out var ru) && ru.ValueKind == JsonValueKind.String)
+            {
+                game = ru.GetString();
+            }
+            return Rules.RuleNames.TryParseGame(game, out var rules) ? Rules.Ruleset.For(rules).BallSet : BallSet.Pool;
         }
 
         private void ValidatePlacement(List<(BallSetup Ball, string Path)> balls, TableSpec table, double radius)
@@ -349,7 +375,7 @@ public static class SceneLoader
             return new RackSpec(game, seed);
         }
 
-        private BallSetup ReadBall(JsonElement e, string path, double radius, bool flight)
+        private BallSetup ReadBall(JsonElement e, string path, BallSet set, double radius, bool flight)
         {
             var f = Object(e, path, "id", "position", "velocity", "spin");
             if (!f.TryGetValue("id", out var idElement))
@@ -357,9 +383,9 @@ public static class SceneLoader
                 throw Error(path, "missing \"id\"");
             }
             string idText = String(idElement, path + ".id");
-            if (!BallSet.Pool.TryParse(idText, out var id))
+            if (!set.TryParse(idText, out var id))
             {
-                throw Error(path + ".id", $"unknown ball id \"{idText}\" (expected {BallSet.Pool.Describe()})");
+                throw Error(path + ".id", $"unknown ball id \"{idText}\" (expected {set.Describe()})");
             }
             if (!f.TryGetValue("position", out var pos))
             {
@@ -384,24 +410,24 @@ public static class SceneLoader
             return new BallSetup(id, new Vec3(p[0], p[1], z), new Vec3(v[0], v[1], vz), new Vec3(w[0], w[1], w[2]));
         }
 
-        private ShotSpec ReadShot(JsonElement e)
+        public ShotSpec ReadShot(JsonElement e, string at = "$.shot")
         {
-            var f = Object(e, "$.shot", "speed", "aim_deg", "tip", "elevation_deg");
+            var f = Object(e, at, "speed", "aim_deg", "tip", "elevation_deg");
             if (!f.TryGetValue("speed", out var speed))
             {
-                throw Error("$.shot", "missing \"speed\"");
+                throw Error(at, "missing \"speed\"");
             }
             if (!f.TryGetValue("aim_deg", out var aim))
             {
-                throw Error("$.shot", "missing \"aim_deg\"");
+                throw Error(at, "missing \"aim_deg\"");
             }
-            double[] tip = f.TryGetValue("tip", out var t) ? Numbers(t, "$.shot.tip", 2, 1) : [0, 0];
+            double[] tip = f.TryGetValue("tip", out var t) ? Numbers(t, at + ".tip", 2, 1) : [0, 0];
             if (tip[0] * tip[0] + tip[1] * tip[1] >= 1)
             {
-                throw Error("$.shot.tip", "the tip offset must lie inside the ball (side^2 + height^2 < 1)");
+                throw Error(at + ".tip", "the tip offset must lie inside the ball (side^2 + height^2 < 1)");
             }
-            double elevation = f.TryGetValue("elevation_deg", out var el) ? Number(el, "$.shot.elevation_deg", 0, 90) : 0;
-            return new ShotSpec(Number(speed, "$.shot.speed", 0, MaxShotSpeed), Number(aim, "$.shot.aim_deg", -360, 360), tip[0], tip[1], elevation);
+            double elevation = f.TryGetValue("elevation_deg", out var el) ? Number(el, at + ".elevation_deg", 0, 90) : 0;
+            return new ShotSpec(Number(speed, at + ".speed", 0, MaxShotSpeed), Number(aim, at + ".aim_deg", -360, 360), tip[0], tip[1], elevation);
         }
 
         private Dictionary<string, JsonElement> Object(JsonElement e, string path, params string[] allowed)

@@ -75,7 +75,7 @@ public class ComputerPlayerTests
     public void While_it_aims_the_computer_says_which_ball_it_plays_into_which_pocket()
     {
         var shot = new Billiards.Core.Cue.ShotSpec(2.5, 10);
-        Decision Planned(Billiards.Core.Ai.ShotKind kind) => new(shot, null, null, false, kind, new Billiards.Core.Balls.BallId(9), Billiards.Core.Table.PocketId.HeadRight, 0.8, 0.8, 100, 5);
+        Decision Planned(Billiards.Core.Ai.ShotKind kind) => new(shot, null, null, false, kind, new Billiards.Core.Balls.BallId(9), new Billiards.Core.Table.PocketId(1, "head-right"), 0.8, 0.8, 100, 5);
         Assert.Equal("Computer L3 aims: 9 in head-right.", ComputerPlayerNode.AimStatus("Computer L3", Planned(Billiards.Core.Ai.ShotKind.Direct)));
         Assert.Equal("Computer L3 aims a safety on the 9.", ComputerPlayerNode.AimStatus("Computer L3", Planned(Billiards.Core.Ai.ShotKind.Safety)));
         Assert.Equal("Computer L3 aims its break.", ComputerPlayerNode.AimStatus("Computer L3", Planned(Billiards.Core.Ai.ShotKind.Break)));
