@@ -142,7 +142,7 @@ public static class PlayCommand
         host.Tree.Root.AddChild(new AudioNode(audio));
         options?.Started?.Invoke(host);
         bool fastComputer = options?.FastComputer == true;
-        Pace(host, fastComputer);
+        Pace(host, fastComputer || settings.FastComputer);
         if (scripted is not null)
         {
             host.TimeScale = script!.Speed;
@@ -164,7 +164,7 @@ public static class PlayCommand
                 warm = true;
                 return;
             }
-            stats?.FrameStarted(now);
+            stats?.FrameStarted(now, Platform.CpuClock.ProcessSeconds());
             if (scripted is not null)
             {
                 scripted.Pump(now);
@@ -184,7 +184,7 @@ public static class PlayCommand
         if (startMenu || (script is null && statsPath is null && recordPath is null && match is not null))
         {
             host.World.Menu.StartSettings = host.World.Menu.PlayedSettings = settings;
-            RunWithStartMenu(host, platform, next => Pace(new GameHost(next.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, next.Match, next.Practice), fastComputer), audio, settingsPath, startMenu, dataFolder);
+            RunWithStartMenu(host, platform, (next, fast) => Pace(new GameHost(next.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, next.Match, next.Practice), fastComputer || fast), audio, settingsPath, startMenu, dataFolder);
         }
         else
         {
@@ -192,7 +192,7 @@ public static class PlayCommand
         }
         if (stats is not null && statsPath is not null)
         {
-            stats.Ended(gameClock.Now);
+            stats.Ended(gameClock.Now, Platform.CpuClock.ProcessSeconds());
             var (width, height) = platform.Window.FramebufferSize;
             OutputFiles.Write(statsPath, stats.ToJson(path, options?.Script, width, height, platform.GlRenderer));
         }
@@ -215,7 +215,7 @@ public static class PlayCommand
 
     // The start menu shows over the default game; a different choice replaces the game (a new host
     // on the same window) between two frames.
-    private static void RunWithStartMenu(GameHost first, GamePlatform platform, Func<(Scene Scene, MatchSetup? Match, PracticeSetup? Practice), GameHost> create, IAudioOutput audio, string settingsPath, bool showAtStart, string dataFolder)
+    private static void RunWithStartMenu(GameHost first, GamePlatform platform, Func<(Scene Scene, MatchSetup? Match, PracticeSetup? Practice), bool, GameHost> create, IAudioOutput audio, string settingsPath, bool showAtStart, string dataFolder)
     {
         var current = first;
         // A match (rules and players), or practice (a drill's name, or null for free practice).
@@ -226,6 +226,8 @@ public static class PlayCommand
             h.World.Menu.Drills = drills;
             h.World.Menu.StartRequested += (rules, players) => pending = (rules, players, null, h.World.Menu.StartSettings);
             h.World.Menu.PracticeRequested += drill => pending = (null, null, drill, h.World.Menu.StartSettings);
+            // A new pace alone keeps the game: it is saved here, a new game saves its own.
+            h.World.Menu.SettingsChosen += chosen => chosen.Save(settingsPath, Console.Error);
         }
         Listen(first);
         if (showAtStart)
@@ -249,7 +251,7 @@ public static class PlayCommand
                     }
                     var setup = next.Rules is { } rules ? new MatchSetup(rules, next.Players!) : null;
                     var practice = setup is null ? PracticeFor(chosen, drill, Path.Combine(dataFolder, "practice", "position.json"), dataFolder) : null;
-                    current = create((chosen with { Shot = practice is null ? chosen.Shot : null }, setup, practice));
+                    current = create((chosen with { Shot = practice is null ? chosen.Shot : null }, setup, practice), next.Settings.FastComputer);
                     platform.SetTitle?.Invoke(practice is not null ? PracticeTitle(practice) : TitleFor(chosen, setup));
                     current.Tree.Root.AddChild(new AudioNode(audio));
                     current.World.Menu.StartSettings = current.World.Menu.PlayedSettings = next.Settings;

@@ -60,8 +60,13 @@ public sealed class GameHost : IDisposable
     /// </summary>
     public double TimeScale { get; set; } = 1;
 
-    /// <summary>True when nothing moves and nobody but a person is to act: the balls rest and no computer player is at work.</summary>
-    public bool IsSettled => !_world.Physics.IsRolling && _world.Tree.Root.FindInTree<MatchNode>() is not { IsComputerActing: true };
+    /// <summary>
+    /// True when nothing moves and nobody but a person is to act: the balls rest, no computer
+    /// player is at work and no hint is being searched (a script that waits for rest after G
+    /// shoots the hint, not whatever the cue pointed at when the search was slower).
+    /// </summary>
+    public bool IsSettled => !_world.Physics.IsRolling && _world.Tree.Root.FindInTree<MatchNode>() is not { IsComputerActing: true }
+        && _world.Tree.Root.FindInTree<ComputerPlayerNode>() is not { IsHinting: true };
 
     /// <summary>
     /// One frame: the physics steps owed since the last frame, Process with the frame's time, then

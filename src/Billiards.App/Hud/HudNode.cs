@@ -80,11 +80,21 @@ public sealed class HudNode : Node
             Developer = _keys?.ShowDeveloper ?? false,
             // Not at game over; the person's power not on the computer's turn.
             Gauges = _cue is { IsVisible: true } cue && _match is not { IsOver: true }
-                ? new CueGauges(cue.Tip.Fractions, (float)cue.EffectiveElevationDegrees, _match is null or { IsComputerActing: true } ? null : (float)(_match.Power / MatchNode.MaxPower))
+                ? new CueGauges(cue.Tip.Fractions, GaugeDegrees(cue.EffectiveElevationDegrees), _match is null or { IsComputerActing: true } ? null : (float)(_match.Power / MatchNode.MaxPower))
                 : null,
             Result = _match is null ? null : ScoreboardBuilder.Result(_match),
         };
     }
+
+    /// <summary>Steps the elevation diagram is drawn in (degrees).</summary>
+    public const double GaugeStepDegrees = 1;
+
+    /// <summary>
+    /// The elevation as the diagram draws it, in <see cref="GaugeStepDegrees"/>: the cue's lift
+    /// over a rail or a ball changes by thousandths of a degree as the aim turns, which no one can
+    /// see, but a diagram that changes in every frame keeps the HUD from its stored layer.
+    /// </summary>
+    public static float GaugeDegrees(double elevationDegrees) => (float)(Math.Round(elevationDegrees / GaugeStepDegrees) * GaugeStepDegrees);
 
     /// <summary>
     /// The power meter: while pushing, the push's speed (Formel 31) against the cap; while pulling

@@ -49,6 +49,9 @@ public sealed class MenuNode : Node
     /// <summary>Signal: the player confirmed quitting.</summary>
     public event Action? QuitConfirmed;
 
+    /// <summary>Signal: the start menu's settings were changed and Start pressed (to keep them).</summary>
+    public event Action<GameSettings>? SettingsChosen;
+
     /// <summary>Signal: the start menu asks for a new game of these rules between these players.</summary>
     public event Action<GameRules, MatchPlayer[]>? StartRequested;
 
@@ -85,9 +88,19 @@ public sealed class MenuNode : Node
     private void Begin()
     {
         Resume();
-        if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings == PlayedSettings)
+        if (StartSettings != PlayedSettings)
         {
-            return; // the game behind the menu is the one chosen
+            SettingsChosen?.Invoke(StartSettings);
+        }
+        if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings.Physics == PlayedSettings.Physics)
+        {
+            // The game behind the menu is the one chosen; a new pace takes effect in it at once.
+            if (FindInTree<ComputerPlayerNode>() is { } computer)
+            {
+                computer.Fast = StartSettings.FastComputer;
+            }
+            PlayedSettings = StartSettings;
+            return;
         }
         var opponent = StartOpponent is int level ? new MatchPlayer($"Computer L{level}", level) : new MatchPlayer("Player 2");
         StartRequested?.Invoke(StartGame, [new MatchPlayer("Player 1"), opponent]);
@@ -234,8 +247,8 @@ public sealed class MenuNode : Node
         {
             case MenuPage.Start:
                 title = Drills.Count > 0
-                    ? "New game: the game, the opponent, the physics (cushion, cloth), Start; or practice, or a drill"
-                    : "New game: the game, the opponent (a person or the computer's level), the physics (cushion, cloth), Start";
+                    ? "New game: game, opponent, physics, pace, Start; or practice, a drill"
+                    : "New game: the game, the opponent, the physics, the computer's pace";
                 foreach (var game in Ruleset.All.Select(r => r.Game))
                 {
                     items.Add((Mark(game.ToName(), StartGame == game), () => StartGame = game));
@@ -249,7 +262,9 @@ public sealed class MenuNode : Node
                 rows.Add(opponents);
                 rows.Add([.. ModelRegistry.BallCushionModels.Select(m => (Mark($"Physics: {m.Name}", StartSettings.Cushion == m), (Action)(() => StartSettings = StartSettings with { Cushion = m })))]);
                 rows.Add([.. Cloth.All.Select(c => (Mark($"{c.Name} cloth", StartSettings.Cloth == c), (Action)(() => StartSettings = StartSettings with { Cloth = c })))]);
-                rows.Add([("Start [Enter]", Begin)]);
+                // The computer's pace beside Start, one button that switches it (a row of its own
+                // would push the drills off a 720-line window).
+                rows.Add([("Start [Enter]", Begin), (StartSettings.FastComputer ? "computer: fast" : "computer: watchable", () => StartSettings = StartSettings with { FastComputer = !StartSettings.FastComputer })]);
                 rows.Add([("Practice (no referee)", () => RequestPractice(null))]);
                 // The drills by their titles, four to a row so that the rows fit a small window.
                 for (int i = 0; i < Drills.Count; i += 4)

@@ -28,7 +28,11 @@ internal sealed class HudRenderer : IDisposable
     private readonly HudLayer _helpLayer;
     private readonly Action<bool> _submitHelp;
 
-    // The list the quad helpers append to: the HUD's or the help overlay's.
+    // The aim line and the ghost ball follow the camera: drawn straight onto the frame under the
+    // HUD, not into its stored layer, which a moving camera would otherwise redraw every frame.
+    private readonly List<float> _aids = [];
+
+    // The list the quad helpers append to: the HUD's, the aids' or the help overlay's.
     private List<float> _out;
     private int _width, _height;
 
@@ -101,9 +105,11 @@ internal sealed class HudRenderer : IDisposable
         var textColor = new Vector4(0.95f, 0.95f, 0.9f, 1);
         var panel = new Vector4(0, 0, 0, 0.45f);
 
+        _aids.Clear();
         if (hud.Aids is { } aids)
         {
             // Under the panel: the aim line's segments as thin quads, the ghost ball as a ring.
+            _out = _aids;
             foreach (var aid in aids)
             {
                 if (aid.Radius > 0)
@@ -114,6 +120,11 @@ internal sealed class HudRenderer : IDisposable
                 {
                     Line(aid.A, aid.B, 1.5f * scale, aid.Color);
                 }
+            }
+            _out = _vertices;
+            if (_aids.Count > 0)
+            {
+                Submit(_aids, premultiplied: false);
             }
         }
 

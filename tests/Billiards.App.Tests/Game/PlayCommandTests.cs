@@ -190,6 +190,38 @@ public class StartMenuTests
         Assert.Equal("stronge-compliant", scenes[0].Physics.Models.BallCushion.Name);
     }
 
+    [Fact]
+    public void The_computers_pace_is_chosen_in_the_start_menu_keeps_the_game_and_is_remembered()
+    {
+        using var settings = new TempSettings();
+        int games = 0;
+        List<Billiards.App.Rendering.HudInfo> Run(params string[] clicks)
+        {
+            var clock = new ManualClock();
+            var window = new FakeWindow { FramebufferSize = (1280, 720) };
+            var renderer = new RecordingRenderer();
+            var loop = new ClickingLoop(clock, window, renderer, clicks);
+            Billiards.Core.Physics.Simulation Create(Billiards.Core.Scenes.Scene scene)
+            {
+                games++;
+                return TestScenes.Create(scene);
+            }
+            Assert.Equal(0, PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), Create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true, SettingsPath = settings.Path }));
+            return [.. renderer.Frames.Select(f => f.Hud!)];
+        }
+
+        Run();
+        int oneGame = games; // the simulations one game makes
+        games = 0;
+        var first = Run("computer: watchable", "Start");
+        Assert.Contains(first[0].Buttons!, b => b.Label == "computer: watchable");
+        Assert.Equal(oneGame, games); // the pace alone made no new game
+        Assert.Contains("\"computer_pace\": \"fast\"", File.ReadAllText(settings.Path), StringComparison.Ordinal);
+        var second = Run();
+        Assert.Contains(second[0].Buttons!, b => b.Label == "computer: fast");
+        Assert.Equal(GameSettings.Default with { FastComputer = true }, GameSettings.Load(settings.Path));
+    }
+
     // A settings file of the test's own, never the user's.
     private sealed class TempSettings : IDisposable
     {
