@@ -42,7 +42,7 @@ public sealed partial class ShotPlanner
     {
         single.Restore(rest);
         double h = Math.Sin(elevationDeg * Math.PI / 180);
-        single.Strike(new ShotSpec(speed, 0, 0, h, elevationDeg));
+        single.Strike(new ShotSpec(speed, 0, 0, h, elevationDeg), single.Ids[0]);
         // The slate's return is resolved at t = 0; a microsecond later the ball is on its parabola.
         const double After = 1e-6;
         single.AdvanceTo(After);
@@ -76,7 +76,7 @@ public sealed partial class ShotPlanner
         for (int i = 0; i < position.Count; i++)
         {
             var id = position.Ids[i];
-            if (id.IsCue || id == targetId)
+            if (id == position.CueBall || id == targetId)
             {
                 continue;
             }
@@ -111,7 +111,7 @@ public sealed partial class ShotPlanner
     internal List<(double Speed, double ElevationDeg)> JumpStrokes(TablePosition position, BallId targetId, Vec3 aim)
     {
         var cue = position.Cue!.Value;
-        var single = new TablePosition([(BallId.Cue, cue)]).CreateSimulation(Model);
+        var single = new TablePosition([(position.CueBall, cue)], position.CueBall).CreateSimulation(Model);
         return JumpStrokes(single, single.CreateSnapshot(), position, targetId, cue, aim, position.Positions[position.IndexOf(targetId)]);
     }
 
@@ -158,7 +158,7 @@ public sealed partial class ShotPlanner
             {
                 return;
             }
-            var single = new TablePosition([(BallId.Cue, cue)]).CreateSimulation(planner.Model);
+            var single = new TablePosition([(position.CueBall, cue)], position.CueBall).CreateSimulation(planner.Model);
             int dbg0 = variations.Count;
             var rest = single.CreateSnapshot();
             foreach (var t in targets)

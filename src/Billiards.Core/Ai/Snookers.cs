@@ -45,7 +45,8 @@ public static class Snookers
             var balls = new List<(BallId Id, Vec3 Position)>();
             bool Free(Vec3 p) => Math.Abs(p.X) <= hx && Math.Abs(p.Y) <= hy && balls.All(b => (b.Position - p).LengthXY > (2 * radius) + 0.002);
             var cue = Anywhere();
-            balls.Add((BallId.Cue, cue));
+            var cueBall = BallSet.Pool.CueBalls[0];
+            balls.Add((cueBall, cue));
             int solids = 1 + (int)(random.NextDouble() * 2);
             int stripe = 9;
             bool ok = true;
@@ -69,7 +70,7 @@ public static class Snookers
             {
                 continue;
             }
-            var position = new TablePosition(balls);
+            var position = new TablePosition(balls, cueBall);
             var state = new GameState(GameRules.EightBall) { Shot = 12, Groups = new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes) };
             if (PlannerTable.LegalTargets(state, position).All(t => planner.Blocked(position, cue, position.Positions[position.IndexOf(t)], t)))
             {
@@ -106,7 +107,7 @@ public static class Snookers
             {
                 sim.Restore(rest);
                 var shot = skill.Execute(decision.Shot, new PlannerRandom(PlannerRandom.Derive(seed, i, 2 + k)));
-                sim.Strike(shot);
+                sim.Strike(shot, position.CueBall);
                 sim.AdvanceTo(120);
                 record.Capture(sim, 0, shot);
                 var ruling = referee.Judge(before, record);

@@ -21,7 +21,7 @@ public sealed class JumpShotPlannerTests(ITestOutputHelper output)
         var target = new Vec3(0.1, 0.05, R);
         var u = (target - cue).XY.Normalized();
         var blocker = cue + (u * blockerAt) + (new Vec3(-u.Y, u.X, 0) * blockerOffset);
-        var position = new TablePosition([(BallId.Cue, cue), (new BallId(1), target), (new BallId(9), blocker), (new BallId(10), new Vec3(0.8, -0.5, R))]);
+        var position = new TablePosition([(PoolBalls.Cue, cue), (new BallId(1), target), (new BallId(9), blocker), (new BallId(10), new Vec3(0.8, -0.5, R))], PoolBalls.Cue);
         Assert.True(PlannerKit.Planner.Table.Blocked(position, cue, target, new BallId(1)));
         var strokes = PlannerKit.Planner.JumpStrokes(position, new BallId(1), target);
         Assert.NotEmpty(strokes);
@@ -36,7 +36,7 @@ public sealed class JumpShotPlannerTests(ITestOutputHelper output)
             var contacts = events.Where(e => e.Kind == EventKind.BallBall).ToList();
             output.WriteLine($"blocker at {blockerAt} m: {speed:0.00} m/s at {elevation} deg, first contact {contacts.FirstOrDefault().B}");
             Assert.NotEmpty(contacts);
-            Assert.Equal((BallId.Cue, new BallId(1)), (contacts[0].A, contacts[0].B));
+            Assert.Equal((PoolBalls.Cue, new BallId(1)), (contacts[0].A, contacts[0].B));
             Assert.DoesNotContain(events, e => e.Kind == EventKind.BallBall && e.B == new BallId(9) && e.Time < contacts[0].Time);
         }
     }
@@ -48,7 +48,7 @@ public sealed class JumpShotPlannerTests(ITestOutputHelper output)
         var cue = new Vec3(-0.8, 0, R);
         var blocker = new Vec3(-0.4, 0, R);
         var target = blocker + new Vec3(2 * R + 0.001, 0, 0);
-        var position = new TablePosition([(BallId.Cue, cue), (new BallId(1), target), (new BallId(9), blocker)]);
+        var position = new TablePosition([(PoolBalls.Cue, cue), (new BallId(1), target), (new BallId(9), blocker)], PoolBalls.Cue);
         Assert.Empty(PlannerKit.Planner.JumpStrokes(position, new BallId(1), target));
     }
 
