@@ -41,9 +41,11 @@ public static class ReportCommand
             }
             string dir = OutputFiles.CheckFolder("--out", parse.GetValue(output)!, [.. FileNames]);
             AccuracyReport.Validate(files);
+            string flight = AssetFolder.Scene("flight");
+            FlightAccuracy.Validate(flight);
 
             var rows = AccuracyReport.Measure(files, stderr);
-            string summary = AccuracyReport.ToMarkdown(rows, files.Count);
+            string summary = AccuracyReport.ToMarkdown(rows, files.Count) + FlightAccuracy.ToMarkdown(FlightAccuracy.Measure(flight));
             byte[][] contents =
             [
                 Encoding.UTF8.GetBytes(AccuracyReport.ToCsv(rows)),
