@@ -28,3 +28,28 @@ public sealed class FlightAccuracyTests(ITestOutputHelper output)
         Assert.All(rows.Where(r => r.Unit == "contacts"), r => Assert.Equal(0, r.Measured));
     }
 }
+
+public sealed class SnookerReportTests
+{
+    [Theory]
+    [InlineData("--level", "9", "--level 9: expected 1 to 5")]
+    [InlineData("--positions", "0", "--positions 0: expected 1 to 1000")]
+    [InlineData("--tries", "101", "--tries 101: expected 1 to 100")]
+    public void BadArgumentsAreOneLineAndExitTwo(string option, string value, string message)
+    {
+        var (code, stdout, stderr) = Billiards.App.Tests.Cli.CliRun.Run("report", "snookers", option, value);
+        Assert.Equal(2, code);
+        Assert.Equal("", stdout);
+        Assert.Equal($"billiards: {message}", stderr.Trim());
+    }
+
+    [Fact]
+    public void TwoPositionsPrintBothPlannersAndRepeat()
+    {
+        var first = Billiards.App.Tests.Cli.CliRun.Run("report", "snookers", "--positions", "2", "--tries", "1");
+        Assert.Equal(0, first.Code);
+        Assert.Contains("| without jumps | 2 |", first.Out);
+        Assert.Contains("| with jumps | 2 |", first.Out);
+        Assert.Equal(first.Out, Billiards.App.Tests.Cli.CliRun.Run("report", "snookers", "--positions", "2", "--tries", "1").Out);
+    }
+}
