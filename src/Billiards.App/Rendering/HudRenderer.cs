@@ -357,6 +357,13 @@ internal sealed class HudRenderer : IDisposable
         float e = Math.Clamp(gauges.ElevationDegrees, 0, 90) * MathF.PI / 180;
         Line(pivot, pivot + (arm * new Vector2(MathF.Cos(e), -MathF.Sin(e))), 3 * u, Gold);
         Disc(pivot, 3 * u, new Vector4(0.93f, 0.93f, 0.88f, 1), 2);
+        // The angle in degrees in the corner the quarter circle leaves free: a jump shot's 55 is
+        // told apart from 50 at a glance, which the cue's line alone does not do.
+        string degrees = Math.Round(Math.Clamp(gauges.ElevationDegrees, 0, 90)).ToString("0", System.Globalization.CultureInfo.InvariantCulture);
+        float ring = 1.5f * u, textW = degrees.Length * HudFont.Advance * scale;
+        float tx = x0 + column - (3 * u) - (2 * ring) - u - textW;
+        Text(degrees, tx, pivot.Y - arm, scale, Gold);
+        Disc(new Vector2(tx + textW + u + ring, pivot.Y - arm + (2 * u)), ring, Gold, 3);
         y += fan + (4 * u);
         // The cue ball with the tip's contact point.
         var centre = new Vector2(cx, y + r);

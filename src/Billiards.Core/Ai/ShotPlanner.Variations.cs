@@ -85,6 +85,7 @@ public sealed partial class ShotPlanner
                 var withCall = before with { Call = call ? Call.Safety : null };
                 Vary(rootIndex, c, cue, withCall, Math.Min(level.Speeds, 3), Math.Min(level.Spins, 3), variations);
             }
+            AddJumps(rootIndex, root, before, call, variations);
             // 9-ball and 10-ball: the shot after the break may be a push-out (no contact needed).
             if (level.LookAhead > 0 && Ruleset.For(state.Rules).MayPushOut(state)
                 && pots.All(c => c.Prior < 0.2))
