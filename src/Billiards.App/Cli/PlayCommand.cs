@@ -33,13 +33,15 @@ public static class PlayCommand
         var record = new Option<string?>("--record") { Description = $"Write the game ({GameRecordFile.Format} JSON, which replay reads) when the window closes." };
         var cap = new Option<double?>("--fps-cap") { Description = $"The most frames a second (0: no cap); default the display's refresh rate, else {PlatformWiring.DefaultFrameCap}." };
         var fast = new Option<bool>("--fast-computer") { Description = $"The computer turns to its aim and strikes in {ComputerPlayerNode.FastShare:0%} of the time (default: {ComputerPlayerNode.StrokeSeconds:0.0} s from its aim to its stroke)." };
-        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record, cap, fast };
+        var takeBacks = new Option<bool>("--take-backs") { Description = $"The players allow take-backs: {TakeBackNode.UndoKey} puts the game back before the last shot (off by default; practice always allows them)." };
+        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record, cap, fast, takeBacks };
         command.SetAction(parse => Play(parse.GetValue(scene), title => PlatformWiring.Open(title, FrameCap(parse.GetValue(cap))), options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))
         {
             Rules = parse.GetValue(rules),
             Players = parse.GetValue(players),
             Record = parse.GetValue(record),
             FastComputer = parse.GetValue(fast),
+            TakeBacks = parse.GetValue(takeBacks),
             StartMenu = parse.GetValue(scene) is null && parse.GetValue(rules) is null && parse.GetValue(players) is null
                 && parse.GetValue(script) is null && parse.GetValue(stats) is null && parse.GetValue(record) is null,
         }, openAudio: OpenAudio));
@@ -93,6 +95,10 @@ public static class PlayCommand
         bool startMenu = options?.StartMenu == true && options.Script is null && options.Stats is null && options.Record is null;
         string settingsPath = options?.SettingsPath ?? GameSettings.DefaultPath();
         var settings = startMenu ? GameSettings.Load(settingsPath, Console.Error) : GameSettings.Default;
+        if (options?.TakeBacks == true)
+        {
+            settings = settings with { TakeBacks = true };
+        }
         if (startMenu)
         {
             scene = settings.Apply(scene);
@@ -114,6 +120,8 @@ public static class PlayCommand
         host.Tree.Root.AddChild(new AudioNode(audio));
         bool fastComputer = options?.FastComputer == true;
         Pace(host, fastComputer);
+        AllowTakeBacks(host, settings.TakeBacks);
+        options?.Started?.Invoke(host);
         if (scripted is not null)
         {
             host.TimeScale = script!.Speed;
@@ -125,6 +133,7 @@ public static class PlayCommand
             }
         }
         var stats = statsPath is null ? null : new FrameStats();
+        var instantReplay = host.Tree.Root.FindInTree<InstantReplayNode>();
         bool warm = false;
         host.FrameStarting += now =>
         {
@@ -135,7 +144,7 @@ public static class PlayCommand
                 warm = true;
                 return;
             }
-            stats?.FrameStarted(now);
+            stats?.FrameStarted(now, Environment.CpuUsage.TotalTime.TotalSeconds, instantReplay is { IsActive: true });
             if (scripted is not null)
             {
                 scripted.Pump(now);
@@ -175,6 +184,14 @@ public static class PlayCommand
         return 0;
     }
 
+    private static void AllowTakeBacks(GameHost host, bool allowed)
+    {
+        if (host.Tree.Root.FindInTree<MatchNode>() is { } match)
+        {
+            match.TakeBacks = allowed;
+        }
+    }
+
     private static GameHost Pace(GameHost host, bool fast)
     {
         if (host.Tree.Root.FindInTree<ComputerPlayerNode>() is { } computer)
@@ -211,6 +228,7 @@ public static class PlayCommand
                     }
                     var setup = new MatchSetup(next.Rules, next.Players);
                     current = create((chosen, setup));
+                    AllowTakeBacks(current, next.Settings.TakeBacks);
                     platform.SetTitle?.Invoke(TitleFor(chosen, setup));
                     current.Tree.Root.AddChild(new AudioNode(audio));
                     current.World.Menu.StartSettings = current.World.Menu.PlayedSettings = next.Settings;
@@ -278,6 +296,12 @@ public static class PlayCommand
 
         /// <summary>The computer plays fast (<c>--fast-computer</c>).</summary>
         public bool FastComputer { get; init; }
+
+        /// <summary>The players allow take-backs (<c>--take-backs</c>); the start menu's setting otherwise.</summary>
+        public bool TakeBacks { get; init; }
+
+        /// <summary>Told the game once it is built, before its first frame (tests and tools watch it).</summary>
+        public Action<GameHost>? Started { get; init; }
 
         /// <summary>Open with the start menu (plain <c>play</c>: no scene, game, players, script, stats or record given).</summary>
         public bool StartMenu { get; init; }

@@ -15,7 +15,8 @@ namespace Billiards.App.Cli;
 /// <c>replay GAME.json --verify</c>: re-simulates every shot of a game record (billiards-game/1)
 /// and compares each ruling and the balls at rest with the recorded ones (scene-format.md); a
 /// file of several records, one per line, is verified record by record. <c>replay GAME.json
-/// [--shot K] [--speed X]</c>: plays the record back in the window.
+/// [--shot K] [--speed X] [--game N]</c>: plays the record back in the window (game N of a file
+/// of several, the first by default), with the next and previous shot keys and each ruling shown.
 /// </summary>
 public static class ReplayCommand
 {
@@ -31,27 +32,36 @@ public static class ReplayCommand
         var verify = new Option<bool>("--verify") { Description = "Re-simulate every shot headless and compare with the record; prints the comparison." };
         var shot = new Option<int?>("--shot") { Description = "Playback: the first shot to show (0 the break; earlier shots are played at once)." };
         var speed = new Option<double?>("--speed") { Description = "Playback: how fast time runs (1 real time, default 1)." };
-        var command = new Command("replay", "Verify a recorded game, or play it back in the window.") { file, verify, shot, speed };
+        var game = new Option<int?>("--game") { Description = "Playback of a file of several records (selfplay --out): the game to show, 1 the first (default 1)." };
+        var command = new Command("replay", "Verify a recorded game, or play it back in the window (PageUp/PageDown: previous/next shot; R: instant replay).") { file, verify, shot, speed, game };
         command.SetAction(parse =>
         {
             string path = parse.GetValue(file)!;
             var records = Load(path);
             if (parse.GetValue(verify))
             {
-                if (parse.GetValue(shot) is not null || parse.GetValue(speed) is not null)
+                if (parse.GetValue(shot) is not null || parse.GetValue(speed) is not null || parse.GetValue(game) is not null)
                 {
-                    throw new CliException("--verify replays every shot headless: --shot and --speed are for playback");
+                    throw new CliException("--verify replays every shot of every game headless: --shot, --speed and --game are for playback");
                 }
                 return Verify(records, stdout);
             }
-            if (records.Count != 1)
+            int chosen = parse.GetValue(game) ?? 1;
+            if (chosen < 1 || chosen > records.Count)
             {
-                throw new CliException($"{path}: holds {records.Count} records; playback shows one (verify them with --verify)");
+                throw new CliException(records.Count == 1
+                    ? $"--game {chosen}: {path} holds one game (--game 1)"
+                    : $"--game {chosen}: {path} holds games 1 to {records.Count}");
+            }
+            var record = records[chosen - 1];
+            if (record.Shots.Count == 0)
+            {
+                throw new CliException($"{path}: game {chosen} has no shots to play back");
             }
             int first = parse.GetValue(shot) ?? 0;
-            if (first < 0 || first >= records[0].Shots.Count)
+            if (first < 0 || first >= record.Shots.Count)
             {
-                throw new CliException($"--shot {first}: the record has shots 0 to {records[0].Shots.Count - 1}");
+                throw new CliException($"--shot {first}: the record has shots 0 to {record.Shots.Count - 1}");
             }
             double timeScale = parse.GetValue(speed) ?? 1;
             if (!double.IsFinite(timeScale) || timeScale <= 0 || timeScale > 100)
@@ -59,7 +69,7 @@ public static class ReplayCommand
                 throw new CliException($"--speed {timeScale.ToString(CultureInfo.InvariantCulture)}: expected a number above 0, at most 100");
             }
             PlayCommand.RequireDisplay();
-            return Play(records[0], path, first, timeScale, openPlatform ?? PlatformWiring.Open);
+            return Play(record, records.Count > 1 ? $"{path} game {chosen}" : path, first, timeScale, openPlatform ?? PlatformWiring.Open);
         });
         return command;
     }
@@ -181,6 +191,10 @@ public static class ReplayCommand
                 {
                     platform.Window.Close();
                 }
+            }
+            else
+            {
+                closeAt = null; // gone back to an earlier shot
             }
         };
         host.Run(platform.Loop, platform.Renderer);

@@ -20,6 +20,9 @@ public sealed class FrameStats
     public const string Format = "billiards-play-stats/1";
 
     private readonly List<double> _starts = [];
+    // The process's processor time at each frame's start (s), and whether the instant replay was shown.
+    private readonly List<double> _cpu = [];
+    private readonly List<bool> _replaying = [];
     private readonly List<(ScriptEvent Event, double Due, int Frame)> _inputs = [];
     private double? _zero;
     private double? _end;
@@ -28,10 +31,15 @@ public sealed class FrameStats
     public int Frames => _starts.Count;
 
     /// <summary>Records the start of a frame at clock time <paramref name="now"/> (s); the first sets time zero.</summary>
-    public void FrameStarted(double now)
+    /// <param name="now">The clock's time (s).</param>
+    /// <param name="processorSeconds">The process's processor time so far (s, every thread: the game's, the driver's, the computer's search), or null when not measured.</param>
+    /// <param name="replaying">True while the instant replay is shown.</param>
+    public void FrameStarted(double now, double? processorSeconds = null, bool replaying = false)
     {
         _zero ??= now;
         _starts.Add(now - _zero.Value);
+        _cpu.Add(processorSeconds ?? double.NaN);
+        _replaying.Add(replaying);
     }
 
     /// <summary>Records the end of the last frame (its swap finished) at clock time <paramref name="now"/> (s).</summary>
@@ -60,7 +68,9 @@ public sealed class FrameStats
     /// <param name="P95">95th percentile (ms).</param>
     /// <param name="P99">99th percentile (ms).</param>
     /// <param name="Max">Longest frame (ms).</param>
-    public sealed record SecondSample(int Second, int Frames, double P50, double P95, double P99, double Max);
+    /// <param name="CpuMsPerFrame">The process's processor time in the second over its frames (ms a frame), or NaN when not measured: the work a frame costs whatever the machine's load.</param>
+    /// <param name="Replay">True when the instant replay was shown in every frame of the second.</param>
+    public sealed record SecondSample(int Second, int Frames, double P50, double P95, double P99, double Max, double CpuMsPerFrame = double.NaN, bool Replay = false);
 
     /// <summary>One input event's delay.</summary>
     /// <param name="Time">Its time in the script (s).</param>
@@ -82,15 +92,22 @@ public sealed class FrameStats
         for (int s = 0; s < whole; s++)
         {
             var times = new List<double>();
+            int first = -1, after = -1;
+            bool replay = true;
             for (int k = 0; k < _starts.Count; k++)
             {
                 if (_starts[k] >= s && _starts[k] < s + 1 && Shown(k) is { } shown)
                 {
                     times.Add((shown - _starts[k]) * 1000);
+                    first = first < 0 ? k : first;
+                    after = k + 1;
+                    replay &= _replaying[k];
                 }
             }
+            // From the second's first frame to the start of the frame after its last.
+            double cpu = first >= 0 && after < _cpu.Count ? (_cpu[after] - _cpu[first]) * 1000 / (after - first) : double.NaN;
             times.Sort();
-            result.Add(new SecondSample(s, times.Count, Percentile(times, 0.5), Percentile(times, 0.95), Percentile(times, 0.99), times.Count > 0 ? times[^1] : 0));
+            result.Add(new SecondSample(s, times.Count, Percentile(times, 0.5), Percentile(times, 0.95), Percentile(times, 0.99), times.Count > 0 ? times[^1] : 0, cpu, replay && times.Count > 0));
         }
         return result;
     }
@@ -164,6 +181,14 @@ public sealed class FrameStats
                 w.WriteNumber("p99", Math.Round(s.P99, 3));
                 w.WriteNumber("max", Math.Round(s.Max, 3));
                 w.WriteEndObject();
+                if (double.IsFinite(s.CpuMsPerFrame))
+                {
+                    w.WriteNumber("cpu_ms_per_frame", Math.Round(s.CpuMsPerFrame, 3));
+                }
+                if (s.Replay)
+                {
+                    w.WriteBoolean("replay", true);
+                }
                 w.WriteEndObject();
             }
             w.WriteEndArray();
@@ -178,6 +203,24 @@ public sealed class FrameStats
             w.WriteNumber("input_delay_max_frames", delays.Count > 0 ? delays[^1] : 0);
             w.WriteNumber("input_delay_median_ms", Math.Round(Percentile(ms, 0.5), 3));
             w.WriteNumber("input_delay_max_ms", Math.Round(ms.Count > 0 ? ms[^1] : 0, 3));
+            var cpus = seconds.Where(x => double.IsFinite(x.CpuMsPerFrame)).Select(x => x.CpuMsPerFrame).Order().ToList();
+            if (cpus.Count > 0)
+            {
+                w.WriteNumber("cpu_ms_per_frame_median", Math.Round(Percentile(cpus, 0.5), 3));
+            }
+            var replay = seconds.Where(x => x.Replay).ToList();
+            if (replay.Count > 0)
+            {
+                // The seconds spent wholly in the instant replay, on their own.
+                w.WriteNumber("replay_seconds", replay.Count);
+                w.WriteNumber("replay_min_fps", replay.Min(x => x.Frames));
+                w.WriteNumber("replay_mean_fps", Math.Round(MeanFps(replay), 3));
+                var replayCpu = replay.Where(x => double.IsFinite(x.CpuMsPerFrame)).Select(x => x.CpuMsPerFrame).Order().ToList();
+                if (replayCpu.Count > 0)
+                {
+                    w.WriteNumber("replay_cpu_ms_per_frame_median", Math.Round(Percentile(replayCpu, 0.5), 3));
+                }
+            }
             w.WriteEndObject();
             w.WriteStartArray("inputs");
             foreach (var i in inputs)

@@ -8,11 +8,13 @@ namespace Billiards.App.Game;
 /// <summary>
 /// The player's physics choice of the start menu, kept between runs in <c>settings.json</c> under
 /// the user's configuration folder ($XDG_CONFIG_HOME/billiards, else ~/.config/billiards; the
-/// platform's application data folder elsewhere): the cushion model and the cloth.
+/// platform's application data folder elsewhere): the cushion model, the cloth and whether the
+/// players allow take-backs.
 /// </summary>
 /// <param name="Cushion">A cushion model of <see cref="ModelRegistry.BallCushionModels"/>.</param>
 /// <param name="Cloth">A cloth of <see cref="Core.Physics.Cloth.All"/>.</param>
-public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth)
+/// <param name="TakeBacks">The players allow take-backs in a game (off by default; practice always allows them).</param>
+public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth, bool TakeBacks = false)
 {
     /// <summary>The model's defaults.</summary>
     public static GameSettings Default { get; } = new(InteractionModels.Default.BallCushion, Cloth.Standard);
@@ -59,9 +61,11 @@ public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth)
             var root = doc.RootElement;
             string? cushion = root.TryGetProperty("ball_cushion", out var c) && c.ValueKind == JsonValueKind.String ? c.GetString() : null;
             string? cloth = root.TryGetProperty("cloth", out var k) && k.ValueKind == JsonValueKind.String ? k.GetString() : null;
+            // A file from before take-backs has none: off, the default.
+            bool takeBacks = root.TryGetProperty("take_backs", out var t) && t.ValueKind == JsonValueKind.True;
             if (ModelRegistry.FindBallCushion(cushion) is { } model && Cloth.Find(cloth) is { } found)
             {
-                return new GameSettings(model, found);
+                return new GameSettings(model, found, takeBacks);
             }
             warnings?.WriteLine($"billiards: {path}: unknown cushion model or cloth; using the defaults");
         }
@@ -84,6 +88,7 @@ public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth)
                 w.WriteStartObject();
                 w.WriteString("ball_cushion", Cushion.Name);
                 w.WriteString("cloth", Cloth.Name);
+                w.WriteBoolean("take_backs", TakeBacks);
                 w.WriteEndObject();
             }
             File.WriteAllBytes(path, stream.ToArray());

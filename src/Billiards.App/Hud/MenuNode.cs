@@ -37,6 +37,7 @@ public sealed class MenuNode : Node
     private SystemKeysNode? _keys;
     private MatchNode? _match;
     private PhysicsNode? _physics;
+    private InstantReplayNode? _replay;
     private bool _wasPaused;
     private (int Width, int Height) _size = (1280, 720);
 
@@ -93,6 +94,7 @@ public sealed class MenuNode : Node
         _keys = GetInTree<SystemKeysNode>();
         _match = FindInTree<MatchNode>();
         _physics = GetInTree<PhysicsNode>();
+        _replay = FindInTree<InstantReplayNode>();
     }
 
     /// <inheritdoc />
@@ -127,6 +129,8 @@ public sealed class MenuNode : Node
         }
         switch (Page)
         {
+            case MenuPage.None when key == Key.Escape && _replay is { IsActive: true }:
+                return false; // Escape leaves the instant replay first
             case MenuPage.None when key == Key.Escape:
                 Open();
                 return true;
@@ -223,7 +227,7 @@ public sealed class MenuNode : Node
         switch (Page)
         {
             case MenuPage.Start:
-                title = "New game: the game, the opponent (a person or the computer's level), the physics (cushion, cloth), Start";
+                title = "New game: the game, the opponent (a person or the computer's level), the physics (cushion, cloth), take-backs, Start";
                 foreach (var game in Ruleset.All.Select(r => r.Game))
                 {
                     items.Add((Mark(game.ToName(), StartGame == game), () => StartGame = game));
@@ -237,6 +241,8 @@ public sealed class MenuNode : Node
                 rows.Add(opponents);
                 rows.Add([.. ModelRegistry.BallCushionModels.Select(m => (Mark($"Physics: {m.Name}", StartSettings.Cushion == m), (Action)(() => StartSettings = StartSettings with { Cushion = m })))]);
                 rows.Add([.. Cloth.All.Select(c => (Mark($"{c.Name} cloth", StartSettings.Cloth == c), (Action)(() => StartSettings = StartSettings with { Cloth = c })))]);
+                rows.Add([(Mark("Take-backs off", !StartSettings.TakeBacks), () => StartSettings = StartSettings with { TakeBacks = false }),
+                    (Mark("Take-backs allowed (Z)", StartSettings.TakeBacks), () => StartSettings = StartSettings with { TakeBacks = true })]);
                 rows.Add([("Start [Enter]", Begin)]);
                 // Below the HUD panel, whose lines reach about 0.4 of the height at the start.
                 y = height * 0.5f;

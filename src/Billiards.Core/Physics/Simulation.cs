@@ -129,6 +129,9 @@ public abstract partial class Simulation
     /// </summary>
     public virtual TableModel TableModel => throw new NotSupportedException(Unsupported);
 
+    /// <summary>True when the simulation keeps snapshots (<see cref="CreateSnapshot"/>, <see cref="Restore"/>): every model's does, test doubles may not.</summary>
+    public virtual bool KeepsSnapshots => false;
+
     /// <summary>A new snapshot holding this simulation's current state (allocates; reuse it with <see cref="Capture"/>).</summary>
     public SimulationSnapshot CreateSnapshot()
     {

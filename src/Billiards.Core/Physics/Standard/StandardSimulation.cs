@@ -54,6 +54,9 @@ public sealed partial class StandardSimulation : Simulation
     public override TableModel TableModel => _model;
 
     /// <inheritdoc />
+    public override bool KeepsSnapshots => true;
+
+    /// <inheritdoc />
     public override InteractionModels Models => _model.Physics.Models;
 
     /// <summary>The model parameters.</summary>
