@@ -44,7 +44,9 @@ public sealed class InstantReplayNode : Node
     private PhysicsNode? _physics;
     private InputModeNode? _modes;
     private ShotReplay? _replay;
-    private (Simulation Shot, SimulationSnapshot AtStrike)? _replayOf;
+    private SimulationSnapshot? _replayOf;
+    private Task<ShotReplay>? _pending;
+    private SimulationSnapshot? _pendingOf;
 
     /// <summary>True while the replay is shown.</summary>
     public bool IsActive { get; private set; }
@@ -88,18 +90,33 @@ public sealed class InstantReplayNode : Node
     {
         _physics = GetInTree<PhysicsNode>();
         _modes = FindInTree<InputModeNode>();
-        _physics.Struck += _ =>
+        _physics.Struck += _ => Forget();
+        _physics.Undone += Forget;
+        // The replay is made while the player looks at the table: R then starts it at once.
+        _physics.CameToRest += _ => Prepare();
+    }
+
+    private void Forget()
+    {
+        Leave();
+        _replay = null;
+        _replayOf = null;
+        _pending = null;
+        _pendingOf = null;
+    }
+
+    // Starts making the last shot's replay on a background thread (from what the shot's
+    // simulation is made of, read here, so that the game may go on with it meanwhile).
+    private void Prepare()
+    {
+        if (_physics?.LastStrike is not { } strike || ReferenceEquals(_replayOf, strike.AtStrike) || ReferenceEquals(_pendingOf, strike.AtStrike))
         {
-            Leave();
-            _replay = null;
-            _replayOf = null;
-        };
-        _physics.Undone += () =>
-        {
-            Leave();
-            _replay = null;
-            _replayOf = null;
-        };
+            return;
+        }
+        var sim = strike.Shot;
+        var (model, ids, positions, rules, at) = (sim.TableModel, sim.Ids, ShotReplay.Positions(sim), sim.RefereeRules, strike.AtStrike);
+        _pendingOf = at;
+        _pending = BackgroundWork.Run(() => new ShotReplay(model, ids, positions, rules, at, Billiards.Core.Rules.Match.MaxShotTime));
     }
 
     /// <summary>
@@ -108,7 +125,7 @@ public sealed class InstantReplayNode : Node
     /// </summary>
     public bool Start()
     {
-        if (_physics is not { IsRolling: false } || Build() is not { } replay)
+        if (_physics is not { IsRolling: false } || Build(wait: true) is not { } replay)
         {
             return false;
         }
@@ -169,17 +186,33 @@ public sealed class InstantReplayNode : Node
         IsPaused = !IsPaused;
     }
 
-    // The last shot's replay, made once per shot (its first run gives the lines too).
-    private ShotReplay? Build()
+    // The last shot's replay, made once per shot (its first run gives the lines too); without
+    // waiting, null while it is still being made.
+    private ShotReplay? Build(bool wait)
     {
         if (_physics?.LastStrike is not { } strike)
         {
             return null;
         }
-        if (_replay is null || _replayOf is not { } of || !ReferenceEquals(of.AtStrike, strike.AtStrike))
+        if (_replay is not null && ReferenceEquals(_replayOf, strike.AtStrike))
         {
-            _replay = new ShotReplay(strike.Shot, strike.AtStrike, Billiards.Core.Rules.Match.MaxShotTime);
-            _replayOf = strike;
+            return _replay;
+        }
+        Prepare();
+        if (_pending is not { } pending || (!wait && !pending.IsCompleted))
+        {
+            return null;
+        }
+        _pending = null;
+        _pendingOf = null;
+        try
+        {
+            _replay = pending.GetAwaiter().GetResult();
+            _replayOf = strike.AtStrike;
+        }
+        catch (Exception e) when (e is NotSupportedException or ArgumentException or InvalidOperationException)
+        {
+            _replay = null; // a simulation without snapshots has no replay
         }
         return _replay;
     }
@@ -274,7 +307,7 @@ public sealed class InstantReplayNode : Node
     public IReadOnlyList<AidShape> Shapes(RenderFrame frame)
     {
         ArgumentNullException.ThrowIfNull(frame);
-        if (!ShowTracks || _physics is not { IsRolling: false } || (IsActive ? _replay : Build()) is not { } r)
+        if (!ShowTracks || _physics is not { IsRolling: false } || (IsActive ? _replay : Build(wait: false)) is not { } r)
         {
             return [];
         }

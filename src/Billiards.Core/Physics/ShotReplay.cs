@@ -54,17 +54,30 @@ public sealed class ShotReplay
     /// <exception cref="ArgumentException">The snapshot is of another table model or other balls.</exception>
     /// <exception cref="NotSupportedException">The simulation keeps no snapshots.</exception>
     public ShotReplay(Simulation shot, SimulationSnapshot atStrike, double maxSeconds = 600)
+        : this(Checked(shot).TableModel, shot.Ids, Positions(shot), shot.RefereeRules, atStrike, maxSeconds)
     {
-        ArgumentNullException.ThrowIfNull(shot);
+    }
+
+    /// <summary>
+    /// Makes the replay from what a simulation of the shot is made of (its table model, balls and
+    /// their places now, whether a referee rules), so that it can be made on another thread while
+    /// that simulation goes on: the first run to rest takes as long as the shot's simulation did.
+    /// </summary>
+    /// <exception cref="ArgumentException">The snapshot is of another table model or other balls.</exception>
+    public ShotReplay(TableModel model, IReadOnlyList<BallId> ids, IReadOnlyList<Vec3> positions, bool refereeRules, SimulationSnapshot atStrike, double maxSeconds = 600)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        ArgumentNullException.ThrowIfNull(ids);
+        ArgumentNullException.ThrowIfNull(positions);
         ArgumentNullException.ThrowIfNull(atStrike);
-        var model = shot.TableModel;
-        var balls = new List<BallSetup>(shot.Ids.Count);
-        for (int i = 0; i < shot.Ids.Count; i++)
+        var balls = new List<BallSetup>(ids.Count);
+        for (int i = 0; i < ids.Count; i++)
         {
-            balls.Add(new BallSetup(shot.Ids[i], shot.Balls[i].Position, Vec3.Zero, Vec3.Zero));
+            // Any places do: the snapshot sets every ball.
+            balls.Add(new BallSetup(ids[i], positions[i], Vec3.Zero, Vec3.Zero));
         }
         _sim = model.CreateSimulation(new Scene("replay", null, model.Table, model.Physics, null, balls, null, null));
-        _sim.RefereeRules = shot.RefereeRules;
+        _sim.RefereeRules = refereeRules;
         _sim.TrackOrientation = true;
         _sim.Restore(atStrike);
         _start = _sim.Time;
@@ -211,6 +224,25 @@ public sealed class ShotReplay
             }
         }
         return found;
+    }
+
+    /// <summary>The balls' places in <paramref name="simulation"/> now (m), in its order.</summary>
+    public static Vec3[] Positions(Simulation simulation)
+    {
+        ArgumentNullException.ThrowIfNull(simulation);
+        var balls = simulation.Balls;
+        var positions = new Vec3[balls.Length];
+        for (int i = 0; i < balls.Length; i++)
+        {
+            positions[i] = balls[i].Position;
+        }
+        return positions;
+    }
+
+    private static Simulation Checked(Simulation shot)
+    {
+        ArgumentNullException.ThrowIfNull(shot);
+        return shot;
     }
 
     // The game's own step: the window advances its shot one fixed step per tick just so.
