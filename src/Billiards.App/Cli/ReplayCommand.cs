@@ -47,17 +47,7 @@ public static class ReplayCommand
                 return Verify(records, stdout);
             }
             int chosen = parse.GetValue(game) ?? 1;
-            if (chosen < 1 || chosen > records.Count)
-            {
-                throw new CliException(records.Count == 1
-                    ? $"--game {chosen}: {path} holds one game (--game 1)"
-                    : $"--game {chosen}: {path} holds games 1 to {records.Count}");
-            }
-            var record = records[chosen - 1];
-            if (record.Shots.Count == 0)
-            {
-                throw new CliException($"{path}: game {chosen} has no shots to play back");
-            }
+            var record = Pick(records, chosen, path);
             int first = parse.GetValue(shot) ?? 0;
             if (first < 0 || first >= record.Shots.Count)
             {
@@ -95,6 +85,21 @@ public static class ReplayCommand
             return [GameRecordFile.Parse(text, path)];
         }
         return [.. lines.Select((l, i) => GameRecordFile.Parse(l, string.Create(CultureInfo.InvariantCulture, $"{path} line {i + 1}")))];
+    }
+
+    /// <summary>Game <paramref name="game"/> (1 the first) of a file's records, for playback.</summary>
+    /// <exception cref="CliException">When the file has no such game, or it has no shots.</exception>
+    public static GameRecord Pick(IReadOnlyList<GameRecord> records, int game, string path)
+    {
+        ArgumentNullException.ThrowIfNull(records);
+        if (game < 1 || game > records.Count)
+        {
+            throw new CliException(records.Count == 1
+                ? $"--game {game}: {path} holds one game (--game 1)"
+                : $"--game {game}: {path} holds games 1 to {records.Count}");
+        }
+        var record = records[game - 1];
+        return record.Shots.Count > 0 ? record : throw new CliException($"{path}: game {game} has no shots to play back");
     }
 
     private static bool IsJson(string line)
@@ -166,7 +171,8 @@ public static class ReplayCommand
     /// <param name="openPlatform">Opens the window.</param>
     /// <param name="clock">The clock; the real one by default.</param>
     /// <param name="ruled">Told each shot's index and ruling as the window judges it.</param>
-    public static int Play(GameRecord record, string path, int first, double timeScale, Func<string, GamePlatform> openPlatform, IClock? clock = null, Action<int, Ruling>? ruled = null)
+    /// <param name="started">Told the game once it is built (tests watch it).</param>
+    public static int Play(GameRecord record, string path, int first, double timeScale, Func<string, GamePlatform> openPlatform, IClock? clock = null, Action<int, Ruling>? ruled = null, Action<GameHost>? started = null)
     {
         ArgumentNullException.ThrowIfNull(record);
         ArgumentNullException.ThrowIfNull(openPlatform);
@@ -181,6 +187,7 @@ public static class ReplayCommand
         {
             replay.Ruled += ruled;
         }
+        started?.Invoke(host);
         double? closeAt = null;
         host.FrameStarting += now =>
         {

@@ -95,6 +95,16 @@ public abstract partial class Simulation
     }
 
     /// <summary>
+    /// Resolves the next event at or before <paramref name="time"/> (s) as one
+    /// <see cref="AdvanceTo"/> to that time would on its way, and stops there without bringing the
+    /// other balls to a time of their own: events taken one by one (a snapshot may be taken between
+    /// them) and then <c>AdvanceTo(time)</c> end bit for bit as that one call alone would. True when
+    /// an event was resolved, false when none is left before the time (or all rests), null for
+    /// an integrator that takes fixed steps (its <see cref="AdvanceTo"/> is those steps anyway).
+    /// </summary>
+    public virtual bool? AdvanceOneEvent(double time) => null;
+
+    /// <summary>
     /// Restores the scene's initial state (t = 0, before any shot): balls, time, step count and
     /// events. Allocates nothing, so a benchmark or a replay can rerun a shot.
     /// </summary>

@@ -122,4 +122,53 @@ public class ShotReplayTests
         var cuePath = replay.Paths[replay.Ids.ToList().IndexOf(BallId.Cue)];
         Assert.InRange(cuePath.Count, 3, steps.Count / 4);
     }
+
+    [Theory]
+    [MemberData(nameof(Breaks))]
+    public void RunToRestTheReplayEndsBitForBitWhereTheOneCallEndedAndShowsAnyTimeTheSameWhateverCameBefore(string file, string model, string integrator)
+    {
+        var scene = SimulationKit.Load(file, model, integrator);
+        var sim = SimulationFactory.Create(scene);
+        sim.Strike(scene.Shot!);
+        var atStrike = sim.CreateSnapshot();
+        double start = sim.Time;
+        Billiards.Core.Rules.Match.RunToRest(sim);
+        var end = sim.Balls.ToArray();
+        var replay = new ShotReplay(sim, atStrike, Billiards.Core.Rules.Match.MaxShotTime, ShotStepping.ToRest);
+
+        // Only the event integrator's run depends on where it stops: the others step to rest as by ticks.
+        Assert.Equal(integrator == Integrators.Event ? ShotStepping.ToRest : ShotStepping.Ticks, replay.Stepping);
+        Assert.Equal(sim.Time - start, replay.Duration, 12);
+        for (int i = 0; i < end.Length; i++)
+        {
+            Assert.Equal(end[i].Position, replay.Final[i].Position);
+            Assert.Equal(end[i].Velocity, replay.Final[i].Velocity);
+            Assert.Equal(end[i].State, replay.Final[i].State);
+        }
+        replay.Seek(replay.Duration);
+        for (int i = 0; i < end.Length; i++)
+        {
+            Assert.Equal(end[i].Position, replay.Current[i].Position);
+        }
+        // A time looks the same reached from before it or from after it.
+        double t = replay.Duration / 3;
+        replay.Seek(t);
+        var forwards = replay.Current.ToArray();
+        replay.Seek(replay.Duration * 0.9);
+        replay.Seek(0.01);
+        replay.Seek(t);
+        for (int i = 0; i < end.Length; i++)
+        {
+            Assert.Equal(forwards[i].Position, replay.Current[i].Position);
+        }
+        // Run by its events, a collision's mark lies exactly where its ball is shown at that time.
+        if (replay.Stepping != ShotStepping.ToRest)
+        {
+            return;
+        }
+        var mark = replay.Marks.First(m => m.Kind == EventKind.BallCushion);
+        replay.Seek(mark.Time);
+        var ball = replay.Current[replay.Ids.ToList().IndexOf(mark.Ball)].Position;
+        Assert.True((ball - mark.Position).Length < 1e-6, $"{ball} against {mark.Position}");
+    }
 }

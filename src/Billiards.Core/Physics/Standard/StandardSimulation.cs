@@ -109,6 +109,21 @@ public sealed partial class StandardSimulation : Simulation
     }
 
     /// <inheritdoc />
+    public override bool? AdvanceOneEvent(double time)
+    {
+        double now = Time;
+        long steps = StepCount;
+        bool? resolved = _stepper.AdvanceOneEvent(time, TrackOrientation, ref now, ref steps);
+        if (resolved is not null)
+        {
+            Time = now;
+            StepCount = steps;
+            EventCapHits = _stepper.EventCapHits;
+        }
+        return resolved;
+    }
+
+    /// <inheritdoc />
     public override void Reset()
     {
         _initial.CopyTo(_balls, 0);
