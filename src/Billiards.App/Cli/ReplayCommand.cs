@@ -182,7 +182,7 @@ public static class ReplayCommand
         var scene = new Scene(path, "replay", setup.Table, setup.Physics, null, balls, null, null);
         using var platform = openPlatform($"{PlatformWiring.WindowTitle}: replay of {Path.GetFileName(path)}");
         using var host = new GameHost(scene, SimulationFactory.Create, platform.Window, clock ?? new StopwatchClock()) { TimeScale = timeScale };
-        var replay = host.Tree.Root.AddChild(new ReplayNode(record, first));
+        var replay = host.Tree.Root.AddChild(new ReplayNode(record, first, timeScale));
         if (ruled is not null)
         {
             replay.Ruled += ruled;

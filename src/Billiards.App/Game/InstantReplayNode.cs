@@ -114,9 +114,9 @@ public sealed class InstantReplayNode : Node
             return;
         }
         var sim = strike.Shot;
-        var (model, ids, positions, rules, at) = (sim.TableModel, sim.Ids, ShotReplay.Positions(sim), sim.RefereeRules, strike.AtStrike);
+        var (model, ids, positions, rules, at, stepping) = (sim.TableModel, sim.Ids, ShotReplay.Positions(sim), sim.RefereeRules, strike.AtStrike, strike.Stepping);
         _pendingOf = at;
-        _pending = BackgroundWork.Run(() => new ShotReplay(model, ids, positions, rules, at, Billiards.Core.Rules.Match.MaxShotTime));
+        _pending = BackgroundWork.Run(() => new ShotReplay(model, ids, positions, rules, at, Billiards.Core.Rules.Match.MaxShotTime, stepping));
     }
 
     /// <summary>
@@ -286,17 +286,8 @@ public sealed class InstantReplayNode : Node
         {
             return;
         }
-        // Drawn after the physics node: the replay's balls take the table's place, and no cue is shown.
-        var balls = frame.Frame.Balls;
-        balls.Clear();
-        var previous = r.Previous;
-        var current = r.Current;
-        float alpha = (float)r.Alpha;
-        for (int i = 0; i < current.Length; i++)
-        {
-            balls.Add(PhysicsNode.Visual(r.Ids[i], previous[i], current[i], alpha, r.BallRadius));
-        }
-        frame.Frame.Cue = default;
+        // Drawn after the physics node: the replay's balls take the table's place.
+        PhysicsNode.DrawInstead(frame, r);
     }
 
     /// <summary>

@@ -99,7 +99,18 @@ public sealed class PhysicsNode : Node
     private long _stepsAtStrike;
 
     /// <summary>The last shot's simulation and its state at the strike (its instant replay starts there), or null before the first shot or for a simulation without snapshots.</summary>
-    public (Simulation Shot, SimulationSnapshot AtStrike)? LastStrike { get; private set; }
+    public (Simulation Shot, SimulationSnapshot AtStrike, ShotStepping Stepping)? LastStrike { get; private set; }
+
+    /// <summary>
+    /// Takes <paramref name="shot"/>, run elsewhere (a game record's shot, run to rest and shown by
+    /// its replay), as the last shot: the instant replay and the tracking lines show it.
+    /// </summary>
+    public void ShowStrike(Simulation shot, SimulationSnapshot atStrike, ShotStepping stepping)
+    {
+        ArgumentNullException.ThrowIfNull(shot);
+        ArgumentNullException.ThrowIfNull(atStrike);
+        LastStrike = (shot, atStrike, stepping);
+    }
 
     // Practice: the table before each shot, newest last (Undo takes them back one by one).
     private readonly List<(SimulationSnapshot Table, bool InHand, PlacementRegion Region, ShotSpec? Shot)> _beforeShots = [];
@@ -139,7 +150,7 @@ public sealed class PhysicsNode : Node
 
     private void CaptureStrike()
     {
-        LastStrike = !_simulation.KeepsSnapshots ? null : (_simulation, _simulation.CreateSnapshot());
+        LastStrike = !_simulation.KeepsSnapshots ? null : (_simulation, _simulation.CreateSnapshot(), ShotStepping.Ticks);
     }
 
     private void Swap(Simulation simulation)
@@ -389,6 +400,22 @@ public sealed class PhysicsNode : Node
         {
             frame.Frame.Balls.Add(Visual(_simulation.Ids[i], _previous[i], balls[i], alpha, BallRadius));
         }
+    }
+
+    /// <summary>A shot's replay drawn in the table's place (a node drawn after this one calls it): its balls at the replay's time, and no cue.</summary>
+    public static void DrawInstead(FrameBuilder frame, ShotReplay replay)
+    {
+        ArgumentNullException.ThrowIfNull(frame);
+        ArgumentNullException.ThrowIfNull(replay);
+        var balls = frame.Frame.Balls;
+        balls.Clear();
+        var previous = replay.Previous;
+        var current = replay.Current;
+        for (int i = 0; i < current.Length; i++)
+        {
+            balls.Add(Visual(replay.Ids[i], previous[i], current[i], (float)replay.Alpha, replay.BallRadius));
+        }
+        frame.Frame.Cue = default;
     }
 
     /// <summary>

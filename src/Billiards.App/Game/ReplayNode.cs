@@ -1,6 +1,7 @@
 using Billiards.App.Input;
 using Billiards.App.Nodes;
 using Billiards.App.Platform;
+using Billiards.Core.Physics;
 using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
 
@@ -9,14 +10,17 @@ namespace Billiards.App.Game;
 /// <summary>
 /// Plays a game record back in the window, shot by shot, on Core's <see cref="Match"/>: the shots
 /// before <see cref="FirstShot"/> are played at once, headless; from there each recorded shot is
-/// struck after <see cref="PauseSeconds"/> on the table the match keeps, runs in the physics node
-/// and is judged when the balls rest, with the option the record took. <see cref="NextShotKey"/>
-/// and <see cref="PreviousShotKey"/> go to the next and the previous shot at any time (the match
-/// is restored from its snapshot before that shot, or played on to it headless); the HUD shows
-/// the shot, its player and each shot's ruling. The instant replay (R) works on each shot, and the
-/// playback waits while it is shown.
+/// struck after <see cref="PauseSeconds"/> on the table the match keeps, run to rest and judged
+/// as the record's writer ran it (<see cref="Match.RunToRest"/>, with the option the record took),
+/// and shown by its replay (<see cref="ShotReplay"/>, run the same way, so the window shows the
+/// very shot the record holds, whatever the integrator), at the playback's speed.
+/// <see cref="NextShotKey"/> and <see cref="PreviousShotKey"/> go to the next and the previous
+/// shot at any time (the match is restored from its snapshot before that shot, or played on to it
+/// headless); the HUD shows the shot, its player and each shot's ruling once it has been seen. The
+/// instant replay (R) and the tracking lines (K) work on each shot; the playback waits while the
+/// instant replay is shown.
 /// </summary>
-public sealed class ReplayNode(GameRecord record, int firstShot) : Node
+public sealed class ReplayNode(GameRecord record, int firstShot, double timeScale = 1) : Node
 {
     /// <summary>Seconds the table stands still between two shots.</summary>
     public const double PauseSeconds = 1.0;
@@ -33,17 +37,24 @@ public sealed class ReplayNode(GameRecord record, int firstShot) : Node
     private Match? _match;
     private int _next;
     private double _wait;
+    private ShotReplay? _showing;
+    private (Simulation Shot, SimulationSnapshot AtStrike)? _shown;
+    private Ruling? _showingRuling;
+    private string? _lastRuling;
 
     /// <summary>The first shot shown in the window (0 the break).</summary>
     public int FirstShot { get; } = firstShot;
 
-    /// <summary>The rulings the window's shots got, in the order they were judged.</summary>
+    /// <summary>The rulings the window's shots got, in the order they were shown.</summary>
     public List<Ruling> Rulings { get; } = [];
 
     /// <summary>The shot shown now or next (0 the break).</summary>
     public int Shot => _next;
 
-    /// <summary>The HUD's line: the shot shown of the record's shots, its player, the last ruling's message and the keys.</summary>
+    /// <summary>True while a shot is shown rolling.</summary>
+    public bool IsShowing => _showing is not null;
+
+    /// <summary>The HUD's line: the shot shown of the record's shots, its player, the last ruling seen and the keys.</summary>
     public string? Status
     {
         get
@@ -53,20 +64,22 @@ public sealed class ReplayNode(GameRecord record, int firstShot) : Node
                 return null;
             }
             int n = record.Shots.Count;
-            string ruling = _match.Shots.Count > 0 ? $" Shot {_match.Shots.Count - 1}: {_match.LastRuling!.Message}" : "";
+            string ruling = _lastRuling is null ? "" : " " + _lastRuling;
             if (Finished)
             {
                 return $"Replay: all {n} shots.{ruling}  [PageUp previous shot]";
             }
-            string who = _match.State.ShooterName;
+            string who = _showing is not null ? _shownState!.ShooterName : _match.State.ShooterName;
             return $"Replay: shot {_next} of {n - 1} ({who}).{ruling}  [PageUp/PageDown shots]";
         }
     }
 
-    /// <summary>True once the last shot came to rest.</summary>
+    private GameState? _shownState;
+
+    /// <summary>True once the last shot has been shown.</summary>
     public bool Finished { get; private set; }
 
-    /// <summary>Signal: the referee ruled on a replayed shot; the argument is the shot's index.</summary>
+    /// <summary>Signal: a replayed shot has been shown and ruled on; the argument is the shot's index.</summary>
     public event Action<int, Ruling>? Ruled;
 
     /// <inheritdoc />
@@ -77,8 +90,6 @@ public sealed class ReplayNode(GameRecord record, int firstShot) : Node
         _physics.HandOnly = true;
         _match = new Match(record.Setup, _physics.CreateSimulation);
         PlayTo(Math.Min(FirstShot, record.Shots.Count));
-        _physics.StrikeThrough = _ => _match.Strike(record.Shots[_next]);
-        _physics.CameToRest += _ => OnRest();
         _physics.Load(_match.Layout());
         _wait = PauseSeconds;
         Finished = _next >= record.Shots.Count || _match.IsOver;
@@ -96,6 +107,7 @@ public sealed class ReplayNode(GameRecord record, int firstShot) : Node
         }
         int k = Math.Clamp(shot, 0, record.Shots.Count - 1);
         _instant?.Leave();
+        _showing = null;
         if (_starts.TryGetValue(k, out var start))
         {
             _match.Restore(start);
@@ -104,17 +116,9 @@ public sealed class ReplayNode(GameRecord record, int firstShot) : Node
         else
         {
             // Not reached yet: from the latest shot start known before it, played on headless.
-            int from = _starts.Keys.Where(s => s <= k).DefaultIfEmpty(-1).Max();
-            if (from >= 0)
-            {
-                _match.Restore(_starts[from]);
-                _next = from;
-            }
-            else
-            {
-                _match.Restore(_starts[0]);
-                _next = 0;
-            }
+            int from = _starts.Keys.Where(s => s <= k).DefaultIfEmpty(0).Max();
+            _match.Restore(_starts[from]);
+            _next = from;
             PlayTo(k);
         }
         _physics.Interrupt(_match.Layout());
@@ -149,8 +153,8 @@ public sealed class ReplayNode(GameRecord record, int firstShot) : Node
                 }
                 return true;
             case PreviousShotKey:
-                // While a shot rolls, back to its start; between shots (or at the end), the one before.
-                GoTo(_physics is { IsRolling: true } ? _next : _next - 1);
+                // While a shot is shown, back to its start; between shots (or at the end), the one before.
+                GoTo(_showing is not null ? _next : _next - 1);
                 return true;
             default:
                 return false;
@@ -160,31 +164,74 @@ public sealed class ReplayNode(GameRecord record, int firstShot) : Node
     /// <inheritdoc />
     protected override void Process(double dt)
     {
-        if (_physics is null || _match is null || Finished || _physics.IsRolling || _instant is { IsActive: true })
+        if (_physics is null || _match is null || Finished || _instant is { IsActive: true })
         {
+            return;
+        }
+        if (_showing is { } shown)
+        {
+            shown.Seek(shown.Time + (dt * timeScale));
+            if (shown.Time >= shown.Duration)
+            {
+                EndShot();
+            }
             return;
         }
         _wait -= dt;
         if (_wait <= 0)
         {
-            _starts.TryAdd(_next, _match.Snapshot());
-            _physics.Strike(record.Shots[_next].Shot);
+            Strike();
         }
     }
 
-    private void OnRest()
+    // The shot as the record's writer played it: struck, run to rest in one go and judged; its
+    // replay, run the same way, shows it.
+    private void Strike()
     {
-        var played = _match!.Judge(_physics!.Simulation);
-        if (_match.PendingOptions.Count > 0)
+        var match = _match!;
+        _starts.TryAdd(_next, match.Snapshot());
+        var input = record.Shots[_next];
+        _shownState = match.State;
+        var sim = match.Strike(input);
+        var atStrike = sim.CreateSnapshot();
+        var positions = ShotReplay.Positions(sim);
+        Match.RunToRest(sim);
+        _showing = new ShotReplay(sim.TableModel, sim.Ids, positions, sim.RefereeRules, atStrike, Match.MaxShotTime, ShotStepping.ToRest);
+        _shown = (sim, atStrike);
+        var played = match.Judge(sim);
+        if (match.PendingOptions.Count > 0)
         {
-            _match.Choose(record.Shots[_next].Choice ?? _match.PendingOptions[0]);
+            match.Choose(input.Choice ?? match.PendingOptions[0]);
         }
-        Rulings.Add(played.Ruling);
-        Ruled?.Invoke(_next, played.Ruling);
+        _showingRuling = played.Ruling;
+    }
+
+    private void EndShot()
+    {
+        var ruling = _showingRuling!;
+        _showing = null;
+        Rulings.Add(ruling);
+        _lastRuling = $"Shot {_next}: {ruling.Message}";
+        _physics!.Load(_match!.Layout());
+        if (_shown is { } shown)
+        {
+            _physics.ShowStrike(shown.Shot, shown.AtStrike, ShotStepping.ToRest);
+        }
+        Ruled?.Invoke(_next, ruling);
         _next++;
         _starts.TryAdd(_next, _match.Snapshot());
-        _physics.Load(_match.Layout());
         _wait = PauseSeconds;
         Finished = _next >= record.Shots.Count || _match.IsOver;
+    }
+
+    /// <inheritdoc />
+    protected override void Draw(FrameBuilder frame)
+    {
+        if (_showing is not { } shown || _instant is { IsActive: true })
+        {
+            return;
+        }
+        // Drawn after the table: the shot's balls take its place.
+        PhysicsNode.DrawInstead(frame, shown);
     }
 }
