@@ -107,7 +107,7 @@ public static class PlayCommand
         string? statsPath = options?.Stats is { } s ? OutputFiles.Check("--stats", s, ".json") : null;
         string? recordPath = options?.Record is { } r ? OutputFiles.Check("--record", r, ".json") : null;
         var match = MatchFor(scene, gameRules, options?.Players);
-        if (recordPath is not null && (match is null || !scene.Balls.Any(b => b.Id == Core.Balls.BallId.Cue)))
+        if (recordPath is not null && (match is null || !scene.Balls.Any(b => b.Id == scene.CueBall)))
         {
             throw new CliException($"--record {recordPath}: {path} has no match to record (it names no rules and no --rules was given, or it has no cue ball)");
         }
@@ -144,7 +144,7 @@ public static class PlayCommand
                 warm = true;
                 return;
             }
-            stats?.FrameStarted(now, Environment.CpuUsage.TotalTime.TotalSeconds, instantReplay is { IsActive: true });
+            stats?.FrameStarted(now, Platform.CpuClock.ProcessSeconds(), instantReplay is { IsActive: true });
             if (scripted is not null)
             {
                 scripted.Pump(now);
@@ -172,7 +172,7 @@ public static class PlayCommand
         }
         if (stats is not null && statsPath is not null)
         {
-            stats.Ended(gameClock.Now);
+            stats.Ended(gameClock.Now, Platform.CpuClock.ProcessSeconds());
             var (width, height) = platform.Window.FramebufferSize;
             OutputFiles.Write(statsPath, stats.ToJson(path, options?.Script, width, height, platform.GlRenderer));
         }

@@ -20,9 +20,10 @@ public sealed class FrameStats
     public const string Format = "billiards-play-stats/1";
 
     private readonly List<double> _starts = [];
-    // The process's processor time at each frame's start (s), and whether the instant replay was shown.
     private readonly List<double> _cpu = [];
+    // Whether the instant replay was shown in each frame.
     private readonly List<bool> _replaying = [];
+    private double _endCpu = double.NaN;
     private readonly List<(ScriptEvent Event, double Due, int Frame)> _inputs = [];
     private double? _zero;
     private double? _end;
@@ -30,26 +31,34 @@ public sealed class FrameStats
     /// <summary>Frames recorded.</summary>
     public int Frames => _starts.Count;
 
-    /// <summary>Records the start of a frame at clock time <paramref name="now"/> (s); the first sets time zero.</summary>
+    /// <summary>
+    /// Records the start of a frame at clock time <paramref name="now"/> (s); the first sets time
+    /// zero. <paramref name="cpu"/> is the process's processor time then (s,
+    /// <see cref="Platform.CpuClock"/>), or NaN when not measured.
+    /// </summary>
     /// <param name="now">The clock's time (s).</param>
-    /// <param name="processorSeconds">The process's processor time so far (s, every thread: the game's, the driver's, the computer's search), or null when not measured.</param>
+    /// <param name="cpu">The process's processor time (s), or NaN.</param>
     /// <param name="replaying">True while the instant replay is shown.</param>
-    public void FrameStarted(double now, double? processorSeconds = null, bool replaying = false)
+    public void FrameStarted(double now, double cpu = double.NaN, bool replaying = false)
     {
         _zero ??= now;
         _starts.Add(now - _zero.Value);
-        _cpu.Add(processorSeconds ?? double.NaN);
+        _cpu.Add(cpu);
         _replaying.Add(replaying);
     }
 
-    /// <summary>Records the end of the last frame (its swap finished) at clock time <paramref name="now"/> (s).</summary>
-    public void Ended(double now)
+    /// <summary>Records the end of the last frame (its swap finished) at clock time <paramref name="now"/> (s), with the processor time then (s) if measured.</summary>
+    public void Ended(double now, double cpu = double.NaN)
     {
         if (_zero is { } zero)
         {
             _end = now - zero;
+            _endCpu = cpu;
         }
     }
+
+    // The processor time frame k took (s), from its start to the next one's: NaN when not measured.
+    private double CpuOf(int k) => (k + 1 < _cpu.Count ? _cpu[k + 1] : k + 1 == _cpu.Count ? _endCpu : double.NaN) - _cpu[k];
 
     // When frame k was on screen: the next frame's start, or the end for the last frame.
     private double? Shown(int k) => k + 1 < _starts.Count ? _starts[k + 1] : k + 1 == _starts.Count ? _end : null;
@@ -68,9 +77,14 @@ public sealed class FrameStats
     /// <param name="P95">95th percentile (ms).</param>
     /// <param name="P99">99th percentile (ms).</param>
     /// <param name="Max">Longest frame (ms).</param>
-    /// <param name="CpuMsPerFrame">The process's processor time in the second over its frames (ms a frame), or NaN when not measured: the work a frame costs whatever the machine's load.</param>
+    /// <param name="CpuMs">
+    /// The processor time of those frames, every thread's, divided by their number (ms a frame),
+    /// or NaN when not measured: what a frame costs, which a busy machine does not inflate as it
+    /// does the frame times (on two cores, frames of 33 ms of processor time cannot come at 60 a
+    /// second; drawing threads overlap, so a frame's wall time can be less than its processor time).
+    /// </param>
     /// <param name="Replay">True when the instant replay was shown in every frame of the second.</param>
-    public sealed record SecondSample(int Second, int Frames, double P50, double P95, double P99, double Max, double CpuMsPerFrame = double.NaN, bool Replay = false);
+    public sealed record SecondSample(int Second, int Frames, double P50, double P95, double P99, double Max, double CpuMs = double.NaN, bool Replay = false);
 
     /// <summary>One input event's delay.</summary>
     /// <param name="Time">Its time in the script (s).</param>
@@ -92,22 +106,20 @@ public sealed class FrameStats
         for (int s = 0; s < whole; s++)
         {
             var times = new List<double>();
-            int first = -1, after = -1;
             bool replay = true;
+            double cpu = 0;
             for (int k = 0; k < _starts.Count; k++)
             {
                 if (_starts[k] >= s && _starts[k] < s + 1 && Shown(k) is { } shown)
                 {
                     times.Add((shown - _starts[k]) * 1000);
-                    first = first < 0 ? k : first;
-                    after = k + 1;
+                    cpu += CpuOf(k);
                     replay &= _replaying[k];
                 }
             }
-            // From the second's first frame to the start of the frame after its last.
-            double cpu = first >= 0 && after < _cpu.Count ? (_cpu[after] - _cpu[first]) * 1000 / (after - first) : double.NaN;
             times.Sort();
-            result.Add(new SecondSample(s, times.Count, Percentile(times, 0.5), Percentile(times, 0.95), Percentile(times, 0.99), times.Count > 0 ? times[^1] : 0, cpu, replay && times.Count > 0));
+            result.Add(new SecondSample(s, times.Count, Percentile(times, 0.5), Percentile(times, 0.95), Percentile(times, 0.99), times.Count > 0 ? times[^1] : 0,
+                times.Count > 0 ? 1000 * cpu / times.Count : double.NaN, replay && times.Count > 0));
         }
         return result;
     }
@@ -181,9 +193,9 @@ public sealed class FrameStats
                 w.WriteNumber("p99", Math.Round(s.P99, 3));
                 w.WriteNumber("max", Math.Round(s.Max, 3));
                 w.WriteEndObject();
-                if (double.IsFinite(s.CpuMsPerFrame))
+                if (double.IsFinite(s.CpuMs))
                 {
-                    w.WriteNumber("cpu_ms_per_frame", Math.Round(s.CpuMsPerFrame, 3));
+                    w.WriteNumber("cpu_ms_per_frame", Math.Round(s.CpuMs, 3));
                 }
                 if (s.Replay)
                 {
@@ -196,6 +208,26 @@ public sealed class FrameStats
             w.WriteNumber("min_fps", seconds.Count > 0 ? seconds.Min(s => s.Frames) : 0);
             w.WriteNumber("first_ten_fps", Math.Round(MeanFps(seconds.Take(10)), 3));
             w.WriteNumber("last_ten_fps", Math.Round(MeanFps(seconds.TakeLast(10)), 3));
+            var cpus = seconds.Where(s => double.IsFinite(s.CpuMs)).ToList();
+            if (cpus.Count > 0)
+            {
+                // All frames' processor time over their number, and the costliest second's.
+                w.WriteNumber("cpu_ms_per_frame", Math.Round(cpus.Sum(s => s.CpuMs * s.Frames) / Math.Max(1, cpus.Sum(s => s.Frames)), 3));
+                w.WriteNumber("cpu_ms_per_frame_max", Math.Round(cpus.Max(s => s.CpuMs), 3));
+            }
+            var replaySeconds = seconds.Where(s => s.Replay).ToList();
+            if (replaySeconds.Count > 0)
+            {
+                // The seconds spent wholly in the instant replay, on their own.
+                w.WriteNumber("replay_seconds", replaySeconds.Count);
+                w.WriteNumber("replay_min_fps", replaySeconds.Min(s => s.Frames));
+                w.WriteNumber("replay_mean_fps", Math.Round(MeanFps(replaySeconds), 3));
+                var replayCpu = replaySeconds.Where(s => double.IsFinite(s.CpuMs)).ToList();
+                if (replayCpu.Count > 0)
+                {
+                    w.WriteNumber("replay_cpu_ms_per_frame", Math.Round(replayCpu.Sum(s => s.CpuMs * s.Frames) / Math.Max(1, replayCpu.Sum(s => s.Frames)), 3));
+                }
+            }
             var delays = inputs.Select(i => (double)i.DelayFrames).Order().ToList();
             var ms = inputs.Select(i => i.DelayMs).Order().ToList();
             w.WriteNumber("inputs", inputs.Count);
@@ -203,24 +235,6 @@ public sealed class FrameStats
             w.WriteNumber("input_delay_max_frames", delays.Count > 0 ? delays[^1] : 0);
             w.WriteNumber("input_delay_median_ms", Math.Round(Percentile(ms, 0.5), 3));
             w.WriteNumber("input_delay_max_ms", Math.Round(ms.Count > 0 ? ms[^1] : 0, 3));
-            var cpus = seconds.Where(x => double.IsFinite(x.CpuMsPerFrame)).Select(x => x.CpuMsPerFrame).Order().ToList();
-            if (cpus.Count > 0)
-            {
-                w.WriteNumber("cpu_ms_per_frame_median", Math.Round(Percentile(cpus, 0.5), 3));
-            }
-            var replay = seconds.Where(x => x.Replay).ToList();
-            if (replay.Count > 0)
-            {
-                // The seconds spent wholly in the instant replay, on their own.
-                w.WriteNumber("replay_seconds", replay.Count);
-                w.WriteNumber("replay_min_fps", replay.Min(x => x.Frames));
-                w.WriteNumber("replay_mean_fps", Math.Round(MeanFps(replay), 3));
-                var replayCpu = replay.Where(x => double.IsFinite(x.CpuMsPerFrame)).Select(x => x.CpuMsPerFrame).Order().ToList();
-                if (replayCpu.Count > 0)
-                {
-                    w.WriteNumber("replay_cpu_ms_per_frame_median", Math.Round(Percentile(replayCpu, 0.5), 3));
-                }
-            }
             w.WriteEndObject();
             w.WriteStartArray("inputs");
             foreach (var i in inputs)

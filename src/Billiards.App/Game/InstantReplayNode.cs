@@ -358,6 +358,6 @@ public sealed class InstantReplayNode : Node
     public static Vector4 TrackColour(BallId ball)
     {
         int n = ball.Value;
-        return ball.IsCue || n <= 0 ? BallColours[0] : BallColours[((n - 1) % 8) + 1];
+        return BallSet.Pool.IsCueBall(ball) || n <= 0 ? BallColours[0] : BallColours[((n - 1) % 8) + 1];
     }
 }

@@ -90,6 +90,7 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
         _physics.HandOnly = true;
         _match = new Match(record.Setup, _physics.CreateSimulation);
         PlayTo(Math.Min(FirstShot, record.Shots.Count));
+        _physics.CueBall = _match.Ruleset.CueBall(_match.State);
         _physics.Load(_match.Layout());
         _wait = PauseSeconds;
         Finished = _next >= record.Shots.Count || _match.IsOver;
@@ -121,6 +122,7 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
             _next = from;
             PlayTo(k);
         }
+        _physics.CueBall = _match.Ruleset.CueBall(_match.State);
         _physics.Interrupt(_match.Layout());
         _wait = PauseSeconds;
         Finished = _next >= record.Shots.Count || _match.IsOver;
@@ -212,7 +214,9 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
         _showing = null;
         Rulings.Add(ruling);
         _lastRuling = $"Shot {_next}: {ruling.Message}";
-        _physics!.Load(_match!.Layout());
+        // The next shooter's cue ball (a game may have one per player).
+        _physics!.CueBall = _match!.Ruleset.CueBall(_match.State);
+        _physics.Load(_match.Layout());
         if (_shown is { } shown)
         {
             _physics.ShowStrike(shown.Shot, shown.AtStrike, ShotStepping.ToRest);

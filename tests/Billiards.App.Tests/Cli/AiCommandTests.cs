@@ -64,7 +64,7 @@ public sealed class AiCommandTests : IDisposable
         sim.AdvanceTo(120);
         var record = ShotRecord.LastShot(sim, shot);
         Assert.True(record.IsPocketedAfter(new BallId(9)));
-        Assert.False(record.IsPocketedAfter(BallId.Cue));
+        Assert.False(record.IsPocketedAfter(PoolBalls.Cue));
     }
 
     [Fact]
@@ -83,7 +83,7 @@ public sealed class AiCommandTests : IDisposable
         using var doc = JsonDocument.Parse(stdout);
         var shot = ShotOf(doc.RootElement);
         var loaded = SceneLoader.Load(scene);
-        var cue = loaded.Balls.Single(b => b.Id.IsCue).Position with { Z = loaded.BallRadius };
+        var cue = loaded.Balls.Single(b => PoolBalls.IsCue(b.Id)).Position with { Z = loaded.BallRadius };
         double a = shot.AimDeg * Math.PI / 180;
         var aim = new Billiards.Core.Mathematics.Vec3(Math.Cos(a), Math.Sin(a), 0);
         double rail = CueClearance.RailElevationDegrees(cue, aim, loaded.Table, loaded.BallRadius, shot.TipHeight);

@@ -101,7 +101,7 @@ public class ShotReplayTests
         var first = replay.Marks[0];
         Assert.Equal(EventKind.BallBall, first.Kind);
         replay.Seek(first.Time);
-        var cue = replay.Current[replay.Ids.ToList().IndexOf(BallId.Cue)].Position;
+        var cue = replay.Current[replay.Ids.ToList().IndexOf(PoolBalls.Cue)].Position;
         Assert.InRange((first.Position - cue).LengthXY, replay.BallRadius * 0.9, replay.BallRadius * 1.2);
 
         // Each path starts where the ball was at the strike, ends where it rests, and its times increase.
@@ -119,7 +119,7 @@ public class ShotReplayTests
             }
         }
         // The cue ball moved, and its path is a few straight runs, not a point per step.
-        var cuePath = replay.Paths[replay.Ids.ToList().IndexOf(BallId.Cue)];
+        var cuePath = replay.Paths[replay.Ids.ToList().IndexOf(PoolBalls.Cue)];
         Assert.InRange(cuePath.Count, 3, steps.Count / 4);
     }
 

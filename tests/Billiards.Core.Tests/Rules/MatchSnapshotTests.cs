@@ -14,7 +14,7 @@ public class MatchSnapshotTests
     private static readonly PerPlayer<string> Players = new("Anna", "Ben");
 
     private static bool IsTarget(Match game, BallId ball) =>
-        game.Ruleset.LegalTargets(game.State, game.Balls.Keys.Where(b => !b.IsCue)).Contains(ball);
+        game.Ruleset.LegalTargets(game.State, game.Balls.Keys.Where(b => !PoolBalls.IsCue(b))).Contains(ball);
 
     private static GameShot NextShot(Match game) => Aimer.Next(game, b => IsTarget(game, b), callShots: true);
 
