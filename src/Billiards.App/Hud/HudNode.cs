@@ -69,7 +69,8 @@ public sealed class HudNode : Node
     protected override void Draw(FrameBuilder frame)
     {
         BuildLines();
-        bool replaying = _instant is { IsActive: true };
+        // A game file's shot rolling on its replay is shown as the instant replay is: no aim.
+        bool replaying = _instant is { IsActive: true } || _replay is { IsShowing: true };
         // The tracking lines lie on the cloth, under the aim line; the replay shows no aim.
         var aids = new List<AidShape>(_instant?.Shapes(frame.Frame) ?? []);
         if (!replaying)
