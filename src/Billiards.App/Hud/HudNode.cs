@@ -48,7 +48,10 @@ public sealed class HudNode : Node
         _aimLine = FindInTree<AimLineNode>();
         _instant = FindInTree<InstantReplayNode>();
         _takeBack = FindInTree<TakeBackNode>();
+        _help = HelpText.For(_match is not null, FindInTree<PracticeNode>() is not null);
     }
+
+    private IReadOnlyList<string> _help = HelpText.Lines;
 
     /// <summary>How long the meter keeps showing a shot's speed after the strike (s).</summary>
     public const double ShotShownSeconds = 2;
@@ -92,7 +95,7 @@ public sealed class HudNode : Node
         {
             board = board with { Message = refusal };
         }
-        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, HelpText.Lines, Meter(), aids, _icons.ToArray())
+        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, _help, Meter(), aids, _icons.ToArray())
         {
             Board = board,
             Developer = _keys?.ShowDeveloper ?? false,

@@ -53,6 +53,12 @@ public sealed class MenuNode : Node
     /// <summary>Signal: the start menu asks for a new game of these rules between these players.</summary>
     public event Action<GameRules, MatchPlayer[]>? StartRequested;
 
+    /// <summary>Signal: the start menu asks for practice: free (null) or the drill of this name.</summary>
+    public event Action<string?>? PracticeRequested;
+
+    /// <summary>The drills the start menu offers: (name, title), set by the host (none by default).</summary>
+    public IReadOnlyList<(string Name, string Title)> Drills { get; set; } = [];
+
     /// <summary>The start menu's game.</summary>
     public GameRules StartGame { get; private set; } = GameRules.EightBall;
 
@@ -192,6 +198,10 @@ public sealed class MenuNode : Node
         {
             _match.Restart();
         }
+        else if (FindInTree<PracticeNode>() is { } practice)
+        {
+            practice.Restart();
+        }
         else
         {
             _physics?.Restart();
@@ -227,7 +237,9 @@ public sealed class MenuNode : Node
         switch (Page)
         {
             case MenuPage.Start:
-                title = "New game: the game, the opponent (a person or the computer's level), the physics (cushion, cloth), take-backs, Start";
+                title = Drills.Count > 0
+                    ? "New game: the game, the opponent, the physics (cushion, cloth), Start; or practice, or a drill"
+                    : "New game: the game, the opponent (a person or the computer's level), the physics (cushion, cloth), take-backs, Start";
                 foreach (var game in Ruleset.All.Select(r => r.Game))
                 {
                     items.Add((Mark(game.ToName(), StartGame == game), () => StartGame = game));
@@ -244,8 +256,14 @@ public sealed class MenuNode : Node
                 rows.Add([(Mark("Take-backs off", !StartSettings.TakeBacks), () => StartSettings = StartSettings with { TakeBacks = false }),
                     (Mark("Take-backs allowed (Z)", StartSettings.TakeBacks), () => StartSettings = StartSettings with { TakeBacks = true })]);
                 rows.Add([("Start [Enter]", Begin)]);
+                rows.Add([("Practice (no referee)", () => RequestPractice(null))]);
+                // The drills by their titles, four to a row so that the rows fit a small window.
+                for (int i = 0; i < Drills.Count; i += 4)
+                {
+                    rows.Add([.. Drills.Skip(i).Take(4).Select(d => (Label: d.Title, Act: (Action)(() => RequestPractice(d.Name))))]);
+                }
                 // Below the HUD panel, whose lines reach about 0.4 of the height at the start.
-                y = height * 0.5f;
+                y = height * (Drills.Count > 0 ? 0.4f : 0.5f);
                 break;
             case MenuPage.Pause:
                 title = "Paused";
@@ -297,6 +315,12 @@ public sealed class MenuNode : Node
             y += buttonHeight + gap;
         }
         return title;
+    }
+
+    private void RequestPractice(string? drill)
+    {
+        Resume();
+        PracticeRequested?.Invoke(drill);
     }
 
     private static string Mark(string label, bool chosen) => chosen ? $"> {label} <" : label;
