@@ -38,13 +38,15 @@ public static class PlayCommand
         var drill = new Option<string?>("--drill") { Description = "Play a drill: a name of assets/drills (e.g. stop-shot) or a drill file." };
         var data = new Option<string?>("--data") { Description = $"The folder for drill results and saved positions (default ${DataFolder.Variable}, else the user's data folder)." };
         var save = new Option<string?>("--save") { Description = "Where practice saves its position (F5) and loads it from (F9); default practice/position.json in the data folder." };
-        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record, cap, fast, practice, drill, data, save };
+        var takeBacks = new Option<bool>("--take-backs") { Description = $"The players allow take-backs: {TakeBackNode.UndoKey} puts the game back before the last shot (off by default; practice always allows them)." };
+        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record, cap, fast, practice, drill, data, save, takeBacks };
         command.SetAction(parse => Play(parse.GetValue(scene), title => PlatformWiring.Open(title, FrameCap(parse.GetValue(cap))), options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))
         {
             Rules = parse.GetValue(rules),
             Players = parse.GetValue(players),
             Record = parse.GetValue(record),
             FastComputer = parse.GetValue(fast),
+            TakeBacks = parse.GetValue(takeBacks),
             Practice = parse.GetValue(practice),
             Drill = parse.GetValue(drill),
             DataFolder = parse.GetValue(data),
@@ -121,6 +123,10 @@ public static class PlayCommand
         bool startMenu = options?.StartMenu == true && options.Script is null && options.Stats is null && options.Record is null;
         string settingsPath = options?.SettingsPath ?? GameSettings.DefaultPath();
         var settings = startMenu ? GameSettings.Load(settingsPath, Console.Error) : GameSettings.Default;
+        if (options?.TakeBacks == true)
+        {
+            settings = settings with { TakeBacks = true };
+        }
         if (startMenu)
         {
             scene = settings.Apply(scene);
@@ -140,9 +146,10 @@ public static class PlayCommand
         using var audio = openAudio?.Invoke() ?? new SilentAudio();
         using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, match, practiceSetup);
         host.Tree.Root.AddChild(new AudioNode(audio));
-        options?.Started?.Invoke(host);
         bool fastComputer = options?.FastComputer == true;
         Pace(host, fastComputer || settings.FastComputer);
+        AllowTakeBacks(host, settings.TakeBacks);
+        options?.Started?.Invoke(host);
         if (scripted is not null)
         {
             host.TimeScale = script!.Speed;
@@ -154,6 +161,7 @@ public static class PlayCommand
             }
         }
         var stats = statsPath is null ? null : new FrameStats();
+        var instantReplay = host.Tree.Root.FindInTree<InstantReplayNode>();
         bool warm = false;
         host.FrameStarting += now =>
         {
@@ -164,7 +172,7 @@ public static class PlayCommand
                 warm = true;
                 return;
             }
-            stats?.FrameStarted(now, Platform.CpuClock.ProcessSeconds());
+            stats?.FrameStarted(now, Platform.CpuClock.ProcessSeconds(), instantReplay is { IsActive: true });
             if (scripted is not null)
             {
                 scripted.Pump(now);
@@ -202,6 +210,14 @@ public static class PlayCommand
             OutputFiles.Write(recordPath, GameRecordFile.ToUtf8(matchNode.Game!));
         }
         return 0;
+    }
+
+    private static void AllowTakeBacks(GameHost host, bool allowed)
+    {
+        if (host.Tree.Root.FindInTree<MatchNode>() is { } match)
+        {
+            match.TakeBacks = allowed;
+        }
     }
 
     private static GameHost Pace(GameHost host, bool fast)
@@ -252,6 +268,7 @@ public static class PlayCommand
                     var setup = next.Rules is { } rules ? new MatchSetup(rules, next.Players!) : null;
                     var practice = setup is null ? PracticeFor(chosen, drill, Path.Combine(dataFolder, "practice", "position.json"), dataFolder) : null;
                     current = create((chosen with { Shot = practice is null ? chosen.Shot : null }, setup, practice), next.Settings.FastComputer);
+                    AllowTakeBacks(current, next.Settings.TakeBacks);
                     platform.SetTitle?.Invoke(practice is not null ? PracticeTitle(practice) : TitleFor(chosen, setup));
                     current.Tree.Root.AddChild(new AudioNode(audio));
                     current.World.Menu.StartSettings = current.World.Menu.PlayedSettings = next.Settings;
@@ -319,6 +336,9 @@ public static class PlayCommand
 
         /// <summary>The computer plays fast (<c>--fast-computer</c>).</summary>
         public bool FastComputer { get; init; }
+
+        /// <summary>The players allow take-backs (<c>--take-backs</c>); the start menu's setting otherwise.</summary>
+        public bool TakeBacks { get; init; }
 
         /// <summary>Practice on the scene (<c>--practice</c>): no match.</summary>
         public bool Practice { get; init; }

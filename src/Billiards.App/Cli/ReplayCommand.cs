@@ -15,7 +15,8 @@ namespace Billiards.App.Cli;
 /// <c>replay GAME.json --verify</c>: re-simulates every shot of a game record (billiards-game/1)
 /// and compares each ruling and the balls at rest with the recorded ones (scene-format.md); a
 /// file of several records, one per line, is verified record by record. <c>replay GAME.json
-/// [--shot K] [--speed X]</c>: plays the record back in the window.
+/// [--shot K] [--speed X] [--game N]</c>: plays the record back in the window (game N of a file
+/// of several, the first by default), with the next and previous shot keys and each ruling shown.
 /// </summary>
 public static class ReplayCommand
 {
@@ -31,27 +32,26 @@ public static class ReplayCommand
         var verify = new Option<bool>("--verify") { Description = "Re-simulate every shot headless and compare with the record; prints the comparison." };
         var shot = new Option<int?>("--shot") { Description = "Playback: the first shot to show (0 the break; earlier shots are played at once)." };
         var speed = new Option<double?>("--speed") { Description = "Playback: how fast time runs (1 real time, default 1)." };
-        var command = new Command("replay", "Verify a recorded game, or play it back in the window.") { file, verify, shot, speed };
+        var game = new Option<int?>("--game") { Description = "Playback of a file of several records (selfplay --out): the game to show, 1 the first (default 1)." };
+        var command = new Command("replay", "Verify a recorded game, or play it back in the window (PageUp/PageDown: previous/next shot; R: instant replay).") { file, verify, shot, speed, game };
         command.SetAction(parse =>
         {
             string path = parse.GetValue(file)!;
             var records = Load(path);
             if (parse.GetValue(verify))
             {
-                if (parse.GetValue(shot) is not null || parse.GetValue(speed) is not null)
+                if (parse.GetValue(shot) is not null || parse.GetValue(speed) is not null || parse.GetValue(game) is not null)
                 {
-                    throw new CliException("--verify replays every shot headless: --shot and --speed are for playback");
+                    throw new CliException("--verify replays every shot of every game headless: --shot, --speed and --game are for playback");
                 }
                 return Verify(records, stdout);
             }
-            if (records.Count != 1)
-            {
-                throw new CliException($"{path}: holds {records.Count} records; playback shows one (verify them with --verify)");
-            }
+            int chosen = parse.GetValue(game) ?? 1;
+            var record = Pick(records, chosen, path);
             int first = parse.GetValue(shot) ?? 0;
-            if (first < 0 || first >= records[0].Shots.Count)
+            if (first < 0 || first >= record.Shots.Count)
             {
-                throw new CliException($"--shot {first}: the record has shots 0 to {records[0].Shots.Count - 1}");
+                throw new CliException($"--shot {first}: the record has shots 0 to {record.Shots.Count - 1}");
             }
             double timeScale = parse.GetValue(speed) ?? 1;
             if (!double.IsFinite(timeScale) || timeScale <= 0 || timeScale > 100)
@@ -59,7 +59,7 @@ public static class ReplayCommand
                 throw new CliException($"--speed {timeScale.ToString(CultureInfo.InvariantCulture)}: expected a number above 0, at most 100");
             }
             PlayCommand.RequireDisplay();
-            return Play(records[0], path, first, timeScale, openPlatform ?? PlatformWiring.Open);
+            return Play(record, records.Count > 1 ? $"{path} game {chosen}" : path, first, timeScale, openPlatform ?? PlatformWiring.Open);
         });
         return command;
     }
@@ -85,6 +85,21 @@ public static class ReplayCommand
             return [GameRecordFile.Parse(text, path)];
         }
         return [.. lines.Select((l, i) => GameRecordFile.Parse(l, string.Create(CultureInfo.InvariantCulture, $"{path} line {i + 1}")))];
+    }
+
+    /// <summary>Game <paramref name="game"/> (1 the first) of a file's records, for playback.</summary>
+    /// <exception cref="CliException">When the file has no such game, or it has no shots.</exception>
+    public static GameRecord Pick(IReadOnlyList<GameRecord> records, int game, string path)
+    {
+        ArgumentNullException.ThrowIfNull(records);
+        if (game < 1 || game > records.Count)
+        {
+            throw new CliException(records.Count == 1
+                ? $"--game {game}: {path} holds one game (--game 1)"
+                : $"--game {game}: {path} holds games 1 to {records.Count}");
+        }
+        var record = records[game - 1];
+        return record.Shots.Count > 0 ? record : throw new CliException($"{path}: game {game} has no shots to play back");
     }
 
     private static bool IsJson(string line)
@@ -156,7 +171,8 @@ public static class ReplayCommand
     /// <param name="openPlatform">Opens the window.</param>
     /// <param name="clock">The clock; the real one by default.</param>
     /// <param name="ruled">Told each shot's index and ruling as the window judges it.</param>
-    public static int Play(GameRecord record, string path, int first, double timeScale, Func<string, GamePlatform> openPlatform, IClock? clock = null, Action<int, Ruling>? ruled = null)
+    /// <param name="started">Told the game once it is built (tests watch it).</param>
+    public static int Play(GameRecord record, string path, int first, double timeScale, Func<string, GamePlatform> openPlatform, IClock? clock = null, Action<int, Ruling>? ruled = null, Action<GameHost>? started = null)
     {
         ArgumentNullException.ThrowIfNull(record);
         ArgumentNullException.ThrowIfNull(openPlatform);
@@ -166,11 +182,12 @@ public static class ReplayCommand
         var scene = new Scene(path, "replay", setup.Table, setup.Physics, null, balls, null, null);
         using var platform = openPlatform($"{PlatformWiring.WindowTitle}: replay of {Path.GetFileName(path)}");
         using var host = new GameHost(scene, SimulationFactory.Create, platform.Window, clock ?? new StopwatchClock()) { TimeScale = timeScale };
-        var replay = host.Tree.Root.AddChild(new ReplayNode(record, first));
+        var replay = host.Tree.Root.AddChild(new ReplayNode(record, first, timeScale));
         if (ruled is not null)
         {
             replay.Ruled += ruled;
         }
+        started?.Invoke(host);
         double? closeAt = null;
         host.FrameStarting += now =>
         {
@@ -181,6 +198,10 @@ public static class ReplayCommand
                 {
                     platform.Window.Close();
                 }
+            }
+            else
+            {
+                closeAt = null; // gone back to an earlier shot
             }
         };
         host.Run(platform.Loop, platform.Renderer);

@@ -43,6 +43,7 @@ public sealed class ComputerPlayerNode : Node
     private MatchNode? _match;
     private PhysicsNode? _physics;
     private SystemKeysNode? _keys;
+    private InstantReplayNode? _replay;
     private ShotPlanner? _planner;
     private Task<Decision>? _thinking;
     private Task<RefereeOption>? _choosing;
@@ -88,7 +89,17 @@ public sealed class ComputerPlayerNode : Node
         _match = GetInTree<MatchNode>();
         _physics = GetInTree<PhysicsNode>();
         _keys = FindInTree<SystemKeysNode>();
+        _replay = FindInTree<InstantReplayNode>();
         _planner = new ShotPlanner(_physics.Table, _physics.Params, _physics.Models);
+        // A take-back: the search and the aim were for a table that is gone (their tasks end unread).
+        _match.TookBack += () =>
+        {
+            _thinking = null;
+            _choosing = null;
+            _hinting = null;
+            _decision = null;
+            Status = null;
+        };
     }
 
     /// <inheritdoc />
@@ -138,9 +149,9 @@ public sealed class ComputerPlayerNode : Node
         {
             return;
         }
-        if (_keys is { Loop.Paused: true })
+        if (_keys is { Loop.Paused: true } || _replay is { IsActive: true })
         {
-            // Paused (P, or the menu): the computer waits too; its search may finish meanwhile.
+            // Paused (P, or the menu), or an instant replay watched: the computer waits too; its search may finish meanwhile.
             return;
         }
         FinishHint();

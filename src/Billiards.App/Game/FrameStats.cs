@@ -21,6 +21,8 @@ public sealed class FrameStats
 
     private readonly List<double> _starts = [];
     private readonly List<double> _cpu = [];
+    // Whether the instant replay was shown in each frame.
+    private readonly List<bool> _replaying = [];
     private double _endCpu = double.NaN;
     private readonly List<(ScriptEvent Event, double Due, int Frame)> _inputs = [];
     private double? _zero;
@@ -34,11 +36,15 @@ public sealed class FrameStats
     /// zero. <paramref name="cpu"/> is the process's processor time then (s,
     /// <see cref="Platform.CpuClock"/>), or NaN when not measured.
     /// </summary>
-    public void FrameStarted(double now, double cpu = double.NaN)
+    /// <param name="now">The clock's time (s).</param>
+    /// <param name="cpu">The process's processor time (s), or NaN.</param>
+    /// <param name="replaying">True while the instant replay is shown.</param>
+    public void FrameStarted(double now, double cpu = double.NaN, bool replaying = false)
     {
         _zero ??= now;
         _starts.Add(now - _zero.Value);
         _cpu.Add(cpu);
+        _replaying.Add(replaying);
     }
 
     /// <summary>Records the end of the last frame (its swap finished) at clock time <paramref name="now"/> (s), with the processor time then (s) if measured.</summary>
@@ -77,7 +83,8 @@ public sealed class FrameStats
     /// does the frame times (on two cores, frames of 33 ms of processor time cannot come at 60 a
     /// second; drawing threads overlap, so a frame's wall time can be less than its processor time).
     /// </param>
-    public sealed record SecondSample(int Second, int Frames, double P50, double P95, double P99, double Max, double CpuMs = double.NaN);
+    /// <param name="Replay">True when the instant replay was shown in every frame of the second.</param>
+    public sealed record SecondSample(int Second, int Frames, double P50, double P95, double P99, double Max, double CpuMs = double.NaN, bool Replay = false);
 
     /// <summary>One input event's delay.</summary>
     /// <param name="Time">Its time in the script (s).</param>
@@ -99,6 +106,7 @@ public sealed class FrameStats
         for (int s = 0; s < whole; s++)
         {
             var times = new List<double>();
+            bool replay = true;
             double cpu = 0;
             for (int k = 0; k < _starts.Count; k++)
             {
@@ -106,11 +114,12 @@ public sealed class FrameStats
                 {
                     times.Add((shown - _starts[k]) * 1000);
                     cpu += CpuOf(k);
+                    replay &= _replaying[k];
                 }
             }
             times.Sort();
             result.Add(new SecondSample(s, times.Count, Percentile(times, 0.5), Percentile(times, 0.95), Percentile(times, 0.99), times.Count > 0 ? times[^1] : 0,
-                times.Count > 0 ? 1000 * cpu / times.Count : double.NaN));
+                times.Count > 0 ? 1000 * cpu / times.Count : double.NaN, replay && times.Count > 0));
         }
         return result;
     }
@@ -188,6 +197,10 @@ public sealed class FrameStats
                 {
                     w.WriteNumber("cpu_ms_per_frame", Math.Round(s.CpuMs, 3));
                 }
+                if (s.Replay)
+                {
+                    w.WriteBoolean("replay", true);
+                }
                 w.WriteEndObject();
             }
             w.WriteEndArray();
@@ -201,6 +214,19 @@ public sealed class FrameStats
                 // All frames' processor time over their number, and the costliest second's.
                 w.WriteNumber("cpu_ms_per_frame", Math.Round(cpus.Sum(s => s.CpuMs * s.Frames) / Math.Max(1, cpus.Sum(s => s.Frames)), 3));
                 w.WriteNumber("cpu_ms_per_frame_max", Math.Round(cpus.Max(s => s.CpuMs), 3));
+            }
+            var replaySeconds = seconds.Where(s => s.Replay).ToList();
+            if (replaySeconds.Count > 0)
+            {
+                // The seconds spent wholly in the instant replay, on their own.
+                w.WriteNumber("replay_seconds", replaySeconds.Count);
+                w.WriteNumber("replay_min_fps", replaySeconds.Min(s => s.Frames));
+                w.WriteNumber("replay_mean_fps", Math.Round(MeanFps(replaySeconds), 3));
+                var replayCpu = replaySeconds.Where(s => double.IsFinite(s.CpuMs)).ToList();
+                if (replayCpu.Count > 0)
+                {
+                    w.WriteNumber("replay_cpu_ms_per_frame", Math.Round(replayCpu.Sum(s => s.CpuMs * s.Frames) / Math.Max(1, replayCpu.Sum(s => s.Frames)), 3));
+                }
             }
             var delays = inputs.Select(i => (double)i.DelayFrames).Order().ToList();
             var ms = inputs.Select(i => i.DelayMs).Order().ToList();

@@ -24,7 +24,7 @@ public sealed record MatchSetup(Billiards.Core.Rules.GameRules Rules, IReadOnlyL
 
 /// <summary>
 /// Builds the node tree a scene asks for: a scene loads only what it declares. Always: table,
-/// physics, camera, control modes, system keys and HUD. Only with a cue ball: the cue (without it
+/// physics, camera, control modes, system keys, the take-back and the instant replay, and HUD. Only with a cue ball: the cue (without it
 /// there is nothing to shoot, and only view mode works). Only with a match (the scene's rules, or a chosen game): the match, the computer player, the call picker and the view that turns to the next legal ball.
 /// </summary>
 public static class GameSceneBuilder
@@ -56,6 +56,10 @@ public static class GameSceneBuilder
         }
         // Added after the modes: input runs from the last child back, so these keys come first.
         var keys = root.AddChild(new SystemKeysNode(loop));
+        // After the physics node (the replay draws its balls over the table's) and before the
+        // system keys in input (P and N pause and step the replay while it is shown).
+        root.AddChild(new TakeBackNode());
+        root.AddChild(new InstantReplayNode());
         root.AddChild(new HudNode());
         if (practice is not null && match is null && scene.Balls.Any(b => b.Id == scene.CueBall))
         {

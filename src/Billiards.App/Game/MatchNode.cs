@@ -163,7 +163,63 @@ public sealed class MatchNode : Node
     public bool IsComputerActing => !IsOver && !Players[State.Shooter].IsHuman;
 
     /// <summary>The seed of the planner's search and of the computer's error for the shot to come: the same game, the same decisions.</summary>
-    public ulong ShotSeed(long stream) => Billiards.Core.Ai.PlannerRandom.Derive(MatchSeed, (_games * 10_000L) + State.Shot, stream);
+    /// <remarks>A shot taken back and played again draws new seeds (the computer plays it anew, with an error of its own).</remarks>
+    public ulong ShotSeed(long stream) => Billiards.Core.Ai.PlannerRandom.Derive(MatchSeed, (_games * 10_000L) + State.Shot, stream + (TakeBackCount * 16L));
+
+    /// <summary>
+    /// True when the players allow take-backs (the start menu's setting, <c>play --take-backs</c>;
+    /// off by default): <see cref="TakeBack"/> then puts the game back before the last shot.
+    /// </summary>
+    public bool TakeBacks { get; set; }
+
+    /// <summary>Shots taken back in this match.</summary>
+    public int TakeBackCount { get; private set; }
+
+    /// <summary>Signal: a shot was taken back (a computer at work drops what it was doing).</summary>
+    public event Action? TookBack;
+
+    // The game before each shot of this game, newest last.
+    private readonly List<(MatchSnapshot Game, GameState State, PerPlayer<int> GamesWon)> _beforeShots = [];
+
+    /// <summary>True when <see cref="TakeBack"/> can act now: take-backs allowed, a shot of this game played, the balls at rest.</summary>
+    public bool CanTakeBack => TakeBacks && _beforeShots.Count > 0 && _physics is { IsRolling: false };
+
+    /// <summary>
+    /// Takes the last shot back (whoever played it): the balls bit for bit where they were before it,
+    /// the whole game state (Core's <see cref="Match.Restore"/>), the rulings and the games won as
+    /// they stood; the shooter plays again. Against the computer it works both ways: a shot the
+    /// computer played is taken back too, and the computer plays it again. False when take-backs
+    /// are off, nothing is left to take back, or balls roll.
+    /// </summary>
+    public bool TakeBack()
+    {
+        if (!CanTakeBack || _match is null)
+        {
+            return false;
+        }
+        var (game, state, won) = _beforeShots[^1];
+        _beforeShots.RemoveAt(_beforeShots.Count - 1);
+        _match.Restore(game);
+        int shots = game.Shots.Count;
+        _rulings.RemoveRange(shots, _rulings.Count - shots);
+        _shots.RemoveRange(shots, _shots.Count - shots);
+        State = state with { Call = null, Placement = null };
+        GamesWon = won;
+        PendingOptions = [];
+        IsOver = false;
+        Winner = null;
+        RematchIn = null;
+        _calledBall = null;
+        _calledPocket = null;
+        _hasAdoptedCall = false;
+        _adoptedCall = null;
+        TakeBackCount++;
+        _physics!.Load(_match.Layout());
+        GiveHand(_match.BallInHand);
+        Say($"Take-back: {State.ShooterName} plays again.");
+        TookBack?.Invoke();
+        return true;
+    }
 
     /// <summary>The match's seed for the computer player (default 1).</summary>
     public ulong MatchSeed { get; init; } = 1;
@@ -446,6 +502,7 @@ public sealed class MatchNode : Node
         PendingOptions = [];
         _calledBall = null;
         _calledPocket = null;
+        _beforeShots.Clear();
         State = new GameState(_rules) { Players = _opening.Players, Shooter = breaker, Target = _opening.Target };
         // Game g racks with the scene's seed + g.
         _match = new Match(_firstGame! with { Seed = _firstGame.Seed + _games, Start = State, Position = null }, _physics!.CreateSimulation);
@@ -458,7 +515,8 @@ public sealed class MatchNode : Node
     // with the cue ball where the player placed it (ball in hand, the break from the kitchen).
     private Simulation OnStrike(ShotSpec shot)
     {
-        bool inHand = _match!.BallInHand != BallInHand.None;
+        _beforeShots.Add((_match!.Snapshot(), State, GamesWon));
+        bool inHand = _match.BallInHand != BallInHand.None;
         var call = _hasAdoptedCall ? _adoptedCall : NeedsCall ? CurrentCall : null;
         var sim = _match.Strike(new GameShot(shot, call, inHand ? _physics!.CueBallPosition : null, State.PushOut));
         _shots.Add((_match.RunningShotState!, shot));

@@ -75,6 +75,18 @@ public sealed class PhysicsNode : Node
     }
 
     /// <summary>
+    /// Shows <paramref name="simulation"/> at once, even while balls roll (a replay jumping to
+    /// another shot): the shot running is dropped without coming to rest.
+    /// </summary>
+    public void Interrupt(Simulation simulation)
+    {
+        ArgumentNullException.ThrowIfNull(simulation);
+        IsRolling = false;
+        EndBallInHand();
+        Load(simulation);
+    }
+
+    /// <summary>
     /// Runs <paramref name="struck"/> instead of the shot just struck, before any step of it (a
     /// match takes over a scene's opening shot). The strike's events were published already.
     /// </summary>
@@ -88,9 +100,65 @@ public sealed class PhysicsNode : Node
         }
         Swap(struck);
         _eventsSeen = struck.Events.Count;
+        CaptureStrike();
     }
 
     private long _stepsAtStrike;
+
+    /// <summary>The last shot's simulation and its state at the strike (its instant replay starts there), or null before the first shot or for a simulation without snapshots.</summary>
+    public (Simulation Shot, SimulationSnapshot AtStrike, ShotStepping Stepping)? LastStrike { get; private set; }
+
+    /// <summary>
+    /// Takes <paramref name="shot"/>, run elsewhere (a game record's shot, run to rest and shown by
+    /// its replay), as the last shot: the instant replay and the tracking lines show it.
+    /// </summary>
+    public void ShowStrike(Simulation shot, SimulationSnapshot atStrike, ShotStepping stepping)
+    {
+        ArgumentNullException.ThrowIfNull(shot);
+        ArgumentNullException.ThrowIfNull(atStrike);
+        LastStrike = (shot, atStrike, stepping);
+    }
+
+    // Practice: the table before each shot, newest last (Undo takes them back one by one).
+    private readonly List<(SimulationSnapshot Table, bool InHand, PlacementRegion Region, ShotSpec? Shot)> _beforeShots = [];
+
+    /// <summary>The most shots practice can take back one after another.</summary>
+    public const int MaxTakeBacks = 50;
+
+    /// <summary>True when practice can take a shot back (<see cref="Undo"/>): a shot was played and the balls rest.</summary>
+    public bool CanUndo => !IsRolling && StrikeThrough is null && _beforeShots.Count > 0;
+
+    /// <summary>
+    /// Practice: puts the table back as it was before the last shot (every ball bit for bit, the
+    /// clock, the events and the cue ball in hand as they were); false when there is none to take
+    /// back or balls roll. A match takes back through its own state (<see cref="MatchNode.TakeBack"/>).
+    /// </summary>
+    public bool Undo()
+    {
+        if (!CanUndo)
+        {
+            return false;
+        }
+        var (table, inHand, region, shot) = _beforeShots[^1];
+        _beforeShots.RemoveAt(_beforeShots.Count - 1);
+        _simulation.Restore(table);
+        _simulation.Balls.CopyTo(_previous);
+        _eventsSeen = _simulation.Events.Count;
+        BallInHand = inHand;
+        HandRegion = region;
+        LastShot = shot;
+        LastStrike = null;
+        Undone?.Invoke();
+        return true;
+    }
+
+    /// <summary>Signal: practice took a shot back.</summary>
+    public event Action? Undone;
+
+    private void CaptureStrike()
+    {
+        LastStrike = !_simulation.KeepsSnapshots ? null : (_simulation, _simulation.CreateSnapshot(), ShotStepping.Ticks);
+    }
 
     private void Swap(Simulation simulation)
     {
@@ -239,6 +307,8 @@ public sealed class PhysicsNode : Node
     {
         _simulation.Reset();
         _simulation.Balls.CopyTo(_previous);
+        _beforeShots.Clear();
+        LastStrike = null;
         _eventsSeen = 0;
         IsRolling = false;
         LastShot = null;
@@ -268,9 +338,18 @@ public sealed class PhysicsNode : Node
         }
         else
         {
+            if (_simulation.KeepsSnapshots)
+            {
+                _beforeShots.Add((_simulation.CreateSnapshot(), BallInHand, HandRegion, LastShot));
+                if (_beforeShots.Count > MaxTakeBacks)
+                {
+                    _beforeShots.RemoveAt(0);
+                }
+            }
             EndBallInHand();
             _simulation.Strike(shot, CueBall);
         }
+        CaptureStrike();
         LastShot = shot;
         IsRolling = true;
         _stepsAtStrike = _simulation.StepCount;
@@ -327,26 +406,49 @@ public sealed class PhysicsNode : Node
         float alpha = (float)frame.Alpha;
         for (int i = 0; i < balls.Length; i++)
         {
-            ref readonly var current = ref balls[i];
-            ref readonly var previous = ref _previous[i];
-            var position = Vector3.Lerp(previous.Position.ToVector3(), current.Position.ToVector3(), alpha);
-            // A ball at rest is drawn exactly where it is (interpolating between equal states still
-            // rounds differently with every alpha), so a still table stays bit for bit the same
-            // and the renderer can keep it.
-            var orientation = previous.Orientation == current.Orientation
-                ? Valid(current.Orientation)
-                : Quaternion.Slerp(Valid(previous.Orientation), Valid(current.Orientation), alpha);
-            if (previous.Position == current.Position)
-            {
-                position = current.Position.ToVector3();
-            }
-            frame.Frame.Balls.Add(new BallVisual(_simulation.Ids[i], position, orientation, IsVisible(current)));
+            frame.Frame.Balls.Add(Visual(_simulation.Ids[i], _previous[i], balls[i], alpha, BallRadius));
         }
     }
 
-    private bool IsVisible(in BallState ball) =>
+    /// <summary>A shot's replay drawn in the table's place (a node drawn after this one calls it): its balls at the replay's time, and no cue.</summary>
+    public static void DrawInstead(FrameBuilder frame, ShotReplay replay)
+    {
+        ArgumentNullException.ThrowIfNull(frame);
+        ArgumentNullException.ThrowIfNull(replay);
+        var balls = frame.Frame.Balls;
+        balls.Clear();
+        var previous = replay.Previous;
+        var current = replay.Current;
+        for (int i = 0; i < current.Length; i++)
+        {
+            balls.Add(Visual(replay.Ids[i], previous[i], current[i], (float)replay.Alpha, replay.BallRadius));
+        }
+        frame.Frame.Cue = default;
+    }
+
+    /// <summary>
+    /// How a ball is drawn between two states of it: its position and turn interpolated by
+    /// <paramref name="alpha"/>, shown unless it is pocketed and has dropped out of sight.
+    /// </summary>
+    public static BallVisual Visual(BallId id, in BallState previous, in BallState current, float alpha, double radius)
+    {
+        var position = Vector3.Lerp(previous.Position.ToVector3(), current.Position.ToVector3(), alpha);
+        // A ball at rest is drawn exactly where it is (interpolating between equal states still
+        // rounds differently with every alpha), so a still table stays bit for bit the same
+        // and the renderer can keep it.
+        var orientation = previous.Orientation == current.Orientation
+            ? Valid(current.Orientation)
+            : Quaternion.Slerp(Valid(previous.Orientation), Valid(current.Orientation), alpha);
+        if (previous.Position == current.Position)
+        {
+            position = current.Position.ToVector3();
+        }
+        return new BallVisual(id, position, orientation, IsVisible(current, radius));
+    }
+
+    private static bool IsVisible(in BallState ball, double radius) =>
         // A pocketed ball is drawn only while it drops (seed 4.3.5); one resting at the pocket is not.
-        !ball.IsPocketed || (ball.Position.Z < BallRadius - 1e-6 && ball.Position.Z > DropOutOfSightZ);
+        !ball.IsPocketed || (ball.Position.Z < radius - 1e-6 && ball.Position.Z > DropOutOfSightZ);
 
     // A simulation that does not track orientation leaves default (all-zero) quaternions.
     private static Quaternion Valid(Quaternion q) => q.LengthSquared() > 1e-12f ? q : Quaternion.Identity;

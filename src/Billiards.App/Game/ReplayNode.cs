@@ -1,4 +1,7 @@
+using Billiards.App.Input;
 using Billiards.App.Nodes;
+using Billiards.App.Platform;
+using Billiards.Core.Physics;
 using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
 
@@ -7,81 +10,232 @@ namespace Billiards.App.Game;
 /// <summary>
 /// Plays a game record back in the window, shot by shot, on Core's <see cref="Match"/>: the shots
 /// before <see cref="FirstShot"/> are played at once, headless; from there each recorded shot is
-/// struck after <see cref="PauseSeconds"/> on the table the match keeps, runs in the physics node
-/// and is judged when the balls rest, with the option the record took.
+/// struck after <see cref="PauseSeconds"/> on the table the match keeps, run to rest and judged
+/// as the record's writer ran it (<see cref="Match.RunToRest"/>, with the option the record took),
+/// and shown by its replay (<see cref="ShotReplay"/>, run the same way, so the window shows the
+/// very shot the record holds, whatever the integrator), at the playback's speed.
+/// <see cref="NextShotKey"/> and <see cref="PreviousShotKey"/> go to the next and the previous
+/// shot at any time (the match is restored from its snapshot before that shot, or played on to it
+/// headless); the HUD shows the shot, its player and each shot's ruling once it has been seen. The
+/// instant replay (R) and the tracking lines (K) work on each shot; the playback waits while the
+/// instant replay is shown.
 /// </summary>
-public sealed class ReplayNode(GameRecord record, int firstShot) : Node
+public sealed class ReplayNode(GameRecord record, int firstShot, double timeScale = 1) : Node
 {
     /// <summary>Seconds the table stands still between two shots.</summary>
     public const double PauseSeconds = 1.0;
 
+    /// <summary>The key that goes to the next shot.</summary>
+    public const Key NextShotKey = Key.PageDown;
+
+    /// <summary>The key that goes back to the previous shot.</summary>
+    public const Key PreviousShotKey = Key.PageUp;
+
+    private readonly Dictionary<int, MatchSnapshot> _starts = [];
     private PhysicsNode? _physics;
+    private InstantReplayNode? _instant;
     private Match? _match;
     private int _next;
     private double _wait;
+    private ShotReplay? _showing;
+    private (Simulation Shot, SimulationSnapshot AtStrike)? _shown;
+    private Ruling? _showingRuling;
+    private string? _lastRuling;
 
     /// <summary>The first shot shown in the window (0 the break).</summary>
     public int FirstShot { get; } = firstShot;
 
-    /// <summary>The rulings the window's shots got, in order.</summary>
+    /// <summary>The rulings the window's shots got, in the order they were shown.</summary>
     public List<Ruling> Rulings { get; } = [];
 
-    /// <summary>The HUD's line: the shot shown of the record's shots and the last ruling's message.</summary>
-    public string? Status => _match is null ? null
-        : Finished ? $"Replay: all {record.Shots.Count} shots. {_match.LastRuling?.Message}"
-        : $"Replay: shot {_next + 1} of {record.Shots.Count}.{(_match.LastRuling is { } r ? " " + r.Message : "")}";
+    /// <summary>The shot shown now or next (0 the break).</summary>
+    public int Shot => _next;
 
-    /// <summary>True once the last shot came to rest.</summary>
+    /// <summary>True while a shot is shown rolling.</summary>
+    public bool IsShowing => _showing is not null;
+
+    /// <summary>The HUD's line: the shot shown of the record's shots, its player, the last ruling seen and the keys.</summary>
+    public string? Status
+    {
+        get
+        {
+            if (_match is null)
+            {
+                return null;
+            }
+            int n = record.Shots.Count;
+            string ruling = _lastRuling is null ? "" : " " + _lastRuling;
+            if (Finished)
+            {
+                return $"Replay: all {n} shots.{ruling}  [PageUp previous shot]";
+            }
+            string who = _showing is not null ? _shownState!.ShooterName : _match.State.ShooterName;
+            return $"Replay: shot {_next} of {n - 1} ({who}).{ruling}  [PageUp/PageDown shots]";
+        }
+    }
+
+    private GameState? _shownState;
+
+    /// <summary>True once the last shot has been shown.</summary>
     public bool Finished { get; private set; }
 
-    /// <summary>Signal: the referee ruled on a replayed shot; the argument is the shot's index.</summary>
+    /// <summary>Signal: a replayed shot has been shown and ruled on; the argument is the shot's index.</summary>
     public event Action<int, Ruling>? Ruled;
 
     /// <inheritdoc />
     protected override void Ready()
     {
         _physics = GetInTree<PhysicsNode>();
+        _instant = FindInTree<InstantReplayNode>();
         _physics.HandOnly = true;
         _match = new Match(record.Setup, _physics.CreateSimulation);
-        for (_next = 0; _next < Math.Min(FirstShot, record.Shots.Count); _next++)
-        {
-            _match.Play(record.Shots[_next]);
-        }
-        _physics.StrikeThrough = _ => _match.Strike(record.Shots[_next]);
-        _physics.CameToRest += _ => OnRest();
+        PlayTo(Math.Min(FirstShot, record.Shots.Count));
         _physics.CueBall = _match.Ruleset.CueBall(_match.State);
         _physics.Load(_match.Layout());
         _wait = PauseSeconds;
         Finished = _next >= record.Shots.Count || _match.IsOver;
+    }
+
+    /// <summary>
+    /// Shows shot <paramref name="shot"/> next (clamped to the record): the table as it stood before
+    /// it, whether it lies before or after the one shown; it is struck after <see cref="PauseSeconds"/>.
+    /// </summary>
+    public void GoTo(int shot)
+    {
+        if (_physics is null || _match is null)
+        {
+            return;
+        }
+        int k = Math.Clamp(shot, 0, record.Shots.Count - 1);
+        _instant?.Leave();
+        _showing = null;
+        if (_starts.TryGetValue(k, out var start))
+        {
+            _match.Restore(start);
+            _next = k;
+        }
+        else
+        {
+            // Not reached yet: from the latest shot start known before it, played on headless.
+            int from = _starts.Keys.Where(s => s <= k).DefaultIfEmpty(0).Max();
+            _match.Restore(_starts[from]);
+            _next = from;
+            PlayTo(k);
+        }
+        _physics.CueBall = _match.Ruleset.CueBall(_match.State);
+        _physics.Interrupt(_match.Layout());
+        _wait = PauseSeconds;
+        Finished = _next >= record.Shots.Count || _match.IsOver;
+    }
+
+    // Plays the record's shots headless up to (not including) shot k, keeping each shot's start.
+    private void PlayTo(int k)
+    {
+        _starts.TryAdd(_next, _match!.Snapshot());
+        for (; _next < k && !_match.IsOver; _next++)
+        {
+            _match.Play(record.Shots[_next]);
+            _starts.TryAdd(_next + 1, _match.Snapshot());
+        }
+    }
+
+    /// <inheritdoc />
+    protected override bool Input(InputEvent e)
+    {
+        if (e is not KeyInput { Pressed: true } key || _match is null)
+        {
+            return false;
+        }
+        switch (key.Key)
+        {
+            case NextShotKey:
+                if (_next + 1 < record.Shots.Count)
+                {
+                    GoTo(_next + 1);
+                }
+                return true;
+            case PreviousShotKey:
+                // While a shot is shown, back to its start; between shots (or at the end), the one before.
+                GoTo(_showing is not null ? _next : _next - 1);
+                return true;
+            default:
+                return false;
+        }
     }
 
     /// <inheritdoc />
     protected override void Process(double dt)
     {
-        if (_physics is null || _match is null || Finished || _physics.IsRolling)
+        if (_physics is null || _match is null || Finished || _instant is { IsActive: true })
         {
+            return;
+        }
+        if (_showing is { } shown)
+        {
+            shown.Seek(shown.Time + (dt * timeScale));
+            if (shown.Time >= shown.Duration)
+            {
+                EndShot();
+            }
             return;
         }
         _wait -= dt;
         if (_wait <= 0)
         {
-            _physics.Strike(record.Shots[_next].Shot);
+            Strike();
         }
     }
 
-    private void OnRest()
+    // The shot as the record's writer played it: struck, run to rest in one go and judged; its
+    // replay, run the same way, shows it.
+    private void Strike()
     {
-        var played = _match!.Judge(_physics!.Simulation);
-        if (_match.PendingOptions.Count > 0)
+        var match = _match!;
+        _starts.TryAdd(_next, match.Snapshot());
+        var input = record.Shots[_next];
+        _shownState = match.State;
+        var sim = match.Strike(input);
+        var atStrike = sim.CreateSnapshot();
+        var positions = ShotReplay.Positions(sim);
+        Match.RunToRest(sim);
+        _showing = new ShotReplay(sim.TableModel, sim.Ids, positions, sim.RefereeRules, atStrike, Match.MaxShotTime, ShotStepping.ToRest);
+        _shown = (sim, atStrike);
+        var played = match.Judge(sim);
+        if (match.PendingOptions.Count > 0)
         {
-            _match.Choose(record.Shots[_next].Choice ?? _match.PendingOptions[0]);
+            match.Choose(input.Choice ?? match.PendingOptions[0]);
         }
-        Rulings.Add(played.Ruling);
-        Ruled?.Invoke(_next, played.Ruling);
-        _next++;
-        _physics.CueBall = _match.Ruleset.CueBall(_match.State);
+        _showingRuling = played.Ruling;
+    }
+
+    private void EndShot()
+    {
+        var ruling = _showingRuling!;
+        _showing = null;
+        Rulings.Add(ruling);
+        _lastRuling = $"Shot {_next}: {ruling.Message}";
+        // The next shooter's cue ball (a game may have one per player).
+        _physics!.CueBall = _match!.Ruleset.CueBall(_match.State);
         _physics.Load(_match.Layout());
+        if (_shown is { } shown)
+        {
+            _physics.ShowStrike(shown.Shot, shown.AtStrike, ShotStepping.ToRest);
+        }
+        Ruled?.Invoke(_next, ruling);
+        _next++;
+        _starts.TryAdd(_next, _match.Snapshot());
         _wait = PauseSeconds;
         Finished = _next >= record.Shots.Count || _match.IsOver;
+    }
+
+    /// <inheritdoc />
+    protected override void Draw(FrameBuilder frame)
+    {
+        if (_showing is not { } shown || _instant is { IsActive: true })
+        {
+            return;
+        }
+        // Drawn after the table: the shot's balls take its place.
+        PhysicsNode.DrawInstead(frame, shown);
     }
 }

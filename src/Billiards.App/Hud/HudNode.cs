@@ -25,6 +25,8 @@ public sealed class HudNode : Node
     private Game.ReplayNode? _replay;
     private ComputerPlayerNode? _computer;
     private AimLineNode? _aimLine;
+    private InstantReplayNode? _instant;
+    private TakeBackNode? _takeBack;
     private Audio.AudioNode? _audio;
 
     /// <summary>The frame-rate meter, fed every frame.</summary>
@@ -44,6 +46,8 @@ public sealed class HudNode : Node
         _match = FindInTree<MatchNode>();
         _computer = FindInTree<ComputerPlayerNode>();
         _aimLine = FindInTree<AimLineNode>();
+        _instant = FindInTree<InstantReplayNode>();
+        _takeBack = FindInTree<TakeBackNode>();
         _help = HelpText.For(_match is not null, FindInTree<PracticeNode>() is not null);
     }
 
@@ -68,18 +72,35 @@ public sealed class HudNode : Node
     protected override void Draw(FrameBuilder frame)
     {
         BuildLines();
-        var aids = new List<AidShape>(_aimLine?.Shapes(frame.Frame) ?? []);
-        if (_aimLine?.CallShapes(frame.Frame) is { } call)
+        // A game file's shot rolling on its replay is shown as the instant replay is: no aim.
+        bool replaying = _instant is { IsActive: true } || _replay is { IsShowing: true };
+        // The tracking lines lie on the cloth, under the aim line; the replay shows no aim.
+        var aids = new List<AidShape>(_instant?.Shapes(frame.Frame) ?? []);
+        if (!replaying)
         {
-            aids.AddRange(call);
+            aids.AddRange(_aimLine?.Shapes(frame.Frame) ?? []);
+            if (_aimLine?.CallShapes(frame.Frame) is { } call)
+            {
+                aids.AddRange(call);
+            }
         }
         bool paused = _keys is { Loop.Paused: true };
+        var board = _match is not null && _physics is not null ? ScoreboardBuilder.Of(_match, _physics, _computer?.Status, paused, _audio?.StatusLine) : null;
+        if (board is not null && _instant?.Status is { } replayLine)
+        {
+            // The scoreboard's status line tells the replay's time, speed and keys while it is shown.
+            board = board with { Status = replayLine, Message = InstantReplayNode.KeysLine };
+        }
+        if (board is not null && _takeBack?.Refusal is { } refusal)
+        {
+            board = board with { Message = refusal };
+        }
         frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, _help, Meter(), aids, _icons.ToArray())
         {
-            Board = _match is not null && _physics is not null ? ScoreboardBuilder.Of(_match, _physics, _computer?.Status, paused, _audio?.StatusLine) : null,
+            Board = board,
             Developer = _keys?.ShowDeveloper ?? false,
             // Not at game over; the person's power not on the computer's turn.
-            Gauges = _cue is { IsVisible: true } cue && _match is not { IsOver: true }
+            Gauges = _cue is { IsVisible: true } cue && _match is not { IsOver: true } && !replaying
                 ? new CueGauges(cue.Tip.Fractions, GaugeDegrees(cue.EffectiveElevationDegrees), _match is null or { IsComputerActing: true } ? null : (float)(_match.Power / MatchNode.MaxPower))
                 : null,
             Result = _match is null ? null : ScoreboardBuilder.Result(_match),
@@ -150,6 +171,15 @@ public sealed class HudNode : Node
         if (_replay?.Status is { } replay)
         {
             _lines.Add(replay);
+        }
+        if (_instant?.Status is { } instant)
+        {
+            _lines.Add(instant);
+            _lines.Add(InstantReplayNode.KeysLine);
+        }
+        if (_takeBack?.Refusal is { } refusal && _match is null)
+        {
+            _lines.Add(refusal);
         }
         if (_match is not null && _physics is not null)
         {

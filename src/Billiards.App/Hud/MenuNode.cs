@@ -37,6 +37,7 @@ public sealed class MenuNode : Node
     private SystemKeysNode? _keys;
     private MatchNode? _match;
     private PhysicsNode? _physics;
+    private InstantReplayNode? _replay;
     private bool _wasPaused;
     private (int Width, int Height) _size = (1280, 720);
 
@@ -94,11 +95,12 @@ public sealed class MenuNode : Node
         }
         if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings.Physics == PlayedSettings.Physics)
         {
-            // The game behind the menu is the one chosen; a new pace takes effect in it at once.
+            // The game behind the menu is the one chosen; a new pace or take-back setting takes effect in it at once.
             if (FindInTree<ComputerPlayerNode>() is { } computer)
             {
                 computer.Fast = StartSettings.FastComputer;
             }
+            _match.TakeBacks = StartSettings.TakeBacks;
             PlayedSettings = StartSettings;
             return;
         }
@@ -112,6 +114,7 @@ public sealed class MenuNode : Node
         _keys = GetInTree<SystemKeysNode>();
         _match = FindInTree<MatchNode>();
         _physics = GetInTree<PhysicsNode>();
+        _replay = FindInTree<InstantReplayNode>();
     }
 
     /// <inheritdoc />
@@ -146,6 +149,8 @@ public sealed class MenuNode : Node
         }
         switch (Page)
         {
+            case MenuPage.None when key == Key.Escape && _replay is { IsActive: true }:
+                return false; // Escape leaves the instant replay first
             case MenuPage.None when key == Key.Escape:
                 Open();
                 return true;
@@ -247,8 +252,8 @@ public sealed class MenuNode : Node
         {
             case MenuPage.Start:
                 title = Drills.Count > 0
-                    ? "New game: game, opponent, physics, pace, Start; or practice, a drill"
-                    : "New game: the game, the opponent, the physics, the computer's pace";
+                    ? "New game: game, opponent, physics, pace, take-backs, Start; or practice, a drill"
+                    : "New game: the game, the opponent, the physics, the computer's pace, take-backs";
                 foreach (var game in Ruleset.All.Select(r => r.Game))
                 {
                     items.Add((Mark(game.ToName(), StartGame == game), () => StartGame = game));
@@ -262,9 +267,11 @@ public sealed class MenuNode : Node
                 rows.Add(opponents);
                 rows.Add([.. ModelRegistry.BallCushionModels.Select(m => (Mark($"Physics: {m.Name}", StartSettings.Cushion == m), (Action)(() => StartSettings = StartSettings with { Cushion = m })))]);
                 rows.Add([.. Cloth.All.Select(c => (Mark($"{c.Name} cloth", StartSettings.Cloth == c), (Action)(() => StartSettings = StartSettings with { Cloth = c })))]);
-                // The computer's pace beside Start, one button that switches it (a row of its own
-                // would push the drills off a 720-line window).
-                rows.Add([("Start [Enter]", Begin), (StartSettings.FastComputer ? "computer: fast" : "computer: watchable", () => StartSettings = StartSettings with { FastComputer = !StartSettings.FastComputer })]);
+                // The computer's pace and take-backs beside Start, each one button that switches it (a
+                // row of their own would push the drills off a 720-line window).
+                rows.Add([("Start [Enter]", Begin),
+                    (StartSettings.FastComputer ? "computer: fast" : "computer: watchable", () => StartSettings = StartSettings with { FastComputer = !StartSettings.FastComputer }),
+                    (StartSettings.TakeBacks ? "take-backs: allowed (Z)" : "take-backs: off", () => StartSettings = StartSettings with { TakeBacks = !StartSettings.TakeBacks })]);
                 rows.Add([("Practice (no referee)", () => RequestPractice(null))]);
                 // The drills by their titles, four to a row so that the rows fit a small window.
                 for (int i = 0; i < Drills.Count; i += 4)

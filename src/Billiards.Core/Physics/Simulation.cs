@@ -105,6 +105,16 @@ public abstract partial class Simulation
     }
 
     /// <summary>
+    /// Resolves the next event at or before <paramref name="time"/> (s) as one
+    /// <see cref="AdvanceTo"/> to that time would on its way, and stops there without bringing the
+    /// other balls to a time of their own: events taken one by one (a snapshot may be taken between
+    /// them) and then <c>AdvanceTo(time)</c> end bit for bit as that one call alone would. True when
+    /// an event was resolved, false when none is left before the time (or all rests), null for
+    /// an integrator that takes fixed steps (its <see cref="AdvanceTo"/> is those steps anyway).
+    /// </summary>
+    public virtual bool? AdvanceOneEvent(double time) => null;
+
+    /// <summary>
     /// Restores the scene's initial state (t = 0, before any shot): balls, time, step count and
     /// events. Allocates nothing, so a benchmark or a replay can rerun a shot.
     /// </summary>
@@ -148,6 +158,9 @@ public abstract partial class Simulation
     /// Simulations that do not support snapshots (test doubles) throw <see cref="NotSupportedException"/>.
     /// </summary>
     public virtual TableModel TableModel => throw new NotSupportedException(Unsupported);
+
+    /// <summary>True when the simulation keeps snapshots (<see cref="CreateSnapshot"/>, <see cref="Restore"/>): every model's does, test doubles may not.</summary>
+    public virtual bool KeepsSnapshots => false;
 
     /// <summary>A new snapshot holding this simulation's current state (allocates; reuse it with <see cref="Capture"/>).</summary>
     public SimulationSnapshot CreateSnapshot()

@@ -294,6 +294,43 @@ public sealed class Match
         Apply(last.Ruling, Ruleset.Choose(last.Ruling, option), sim);
     }
 
+    /// <summary>
+    /// The match's whole state between shots (the balls at rest, the game state, the shots played,
+    /// the reracks so far), for a take-back and for retrying a shot: <see cref="Restore"/> puts the
+    /// match back there bit for bit, and the game then goes on as it would have from there.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">While a shot runs or an option is pending (no shot can start then either).</exception>
+    public MatchSnapshot Snapshot()
+    {
+        if (_struck is not null || _judged is not null)
+        {
+            throw new InvalidOperationException(_struck is not null ? "a shot is still running" : "an option must be chosen first");
+        }
+        return new MatchSnapshot(Setup, State, [.. Ordered(_balls)], [.. _shots], _racks);
+    }
+
+    /// <summary>
+    /// Puts the match back in the state of <paramref name="snapshot"/>: the balls bit for bit, the
+    /// game state, the shots played (later ones are dropped) and the reracks. A running shot or a
+    /// pending option is abandoned.
+    /// </summary>
+    /// <exception cref="ArgumentException">The snapshot is of another game (another setup).</exception>
+    public void Restore(MatchSnapshot snapshot)
+    {
+        ArgumentNullException.ThrowIfNull(snapshot);
+        if (!Equals(snapshot.Setup, Setup))
+        {
+            throw new ArgumentException("the snapshot was taken from another game", nameof(snapshot));
+        }
+        _struck = null;
+        _judged = null;
+        State = snapshot.State;
+        _balls = snapshot.Balls.ToDictionary(b => b.Id, b => b.Position);
+        _shots.Clear();
+        _shots.AddRange(snapshot.Shots);
+        _racks = snapshot.Racks;
+    }
+
     private void Apply(Ruling ruling, OptionOutcome outcome, Simulation sim)
     {
         if (outcome.Replace)
@@ -363,4 +400,35 @@ public sealed class Match
     private Scene SceneOf(IReadOnlyDictionary<BallId, Vec3> balls, ShotSpec? shot) =>
         new("game", null, Setup.Table, Setup.Physics, null,
             [.. Ordered(balls).Select(b => new BallSetup(b.Id, b.Position, Vec3.Zero, Vec3.Zero))], shot, Ruleset.Name) { BallSet = Ruleset.BallSet };
+}
+
+/// <summary>
+/// A match's state between two shots (<see cref="Match.Snapshot"/>), immutable: restoring it
+/// (<see cref="Match.Restore"/>) any number of times gives the same position and game state.
+/// </summary>
+public sealed class MatchSnapshot
+{
+    internal MatchSnapshot(GameSetup setup, GameState state, IReadOnlyList<(BallId Id, Vec3 Position)> balls, IReadOnlyList<MatchShot> shots, int racks)
+    {
+        Setup = setup;
+        State = state;
+        Balls = balls;
+        Shots = shots;
+        Racks = racks;
+    }
+
+    /// <summary>The game the snapshot belongs to.</summary>
+    public GameSetup Setup { get; }
+
+    /// <summary>The game state before the next shot.</summary>
+    public GameState State { get; }
+
+    /// <summary>The balls at rest on the table (m, z = R), in the ball set's order; a cue ball in hand is absent.</summary>
+    public IReadOnlyList<(BallId Id, Vec3 Position)> Balls { get; }
+
+    /// <summary>The shots played before the snapshot.</summary>
+    public IReadOnlyList<MatchShot> Shots { get; }
+
+    /// <summary>Reracks so far (rack k racks with the setup's seed + k).</summary>
+    internal int Racks { get; }
 }

@@ -197,6 +197,27 @@ public sealed class EventEngine
         }
     }
 
+    /// <summary>
+    /// One turn of <see cref="AdvanceTo"/>'s loop: resolves the earliest prediction when it falls at
+    /// or before <paramref name="time"/> (s), and nothing more (no ball is brought to a time of its
+    /// own), so that turns taken one by one and then <c>AdvanceTo(time, true)</c> end bit for bit as
+    /// that one call alone. False when nothing moves or the next prediction is later.
+    /// </summary>
+    public bool ResolveNextBy(double time)
+    {
+        if (ActiveCount == 0)
+        {
+            return false;
+        }
+        int top = _queue.Top;
+        if (_queue.TimeOf(top) > time)
+        {
+            return false;
+        }
+        Process(top);
+        return true;
+    }
+
     /// <summary>Moves the clock of a table at rest to <paramref name="time"/> (s); nothing else changes.</summary>
     public void IdleTo(double time)
     {

@@ -27,6 +27,13 @@ internal interface IStepper
     /// </summary>
     bool TryAdvanceTo(double time, bool trackOrientation, ref double now, ref long steps);
 
+    /// <summary>
+    /// Resolves the next event at or before <paramref name="time"/> (s) as <see cref="TryAdvanceTo"/>
+    /// would on its way there, without ending at a time of its own; true when one was resolved,
+    /// false when none is left, null when the integrator only takes steps.
+    /// </summary>
+    bool? AdvanceOneEvent(double time, bool trackOrientation, ref double now, ref long steps);
+
     /// <summary>Starts over at t = 0 from the balls' current (restored) state.</summary>
     void Restart();
 
@@ -131,6 +138,16 @@ internal sealed class EventIntegrator : StandardIntegrator
             steps += Engine.EventCount - before;
             return true;
         }
+
+        public override bool? AdvanceOneEvent(double time, bool trackOrientation, ref double now, ref long steps)
+        {
+            Engine.TrackOrientation = trackOrientation;
+            long before = Engine.EventCount;
+            bool resolved = Engine.ResolveNextBy(Math.Max(time, now));
+            now = Math.Max(now, Engine.Time);
+            steps += Engine.EventCount - before;
+            return resolved;
+        }
     }
 }
 
@@ -171,6 +188,8 @@ internal sealed class EulerIntegrator : StandardIntegrator
 
         public bool TryAdvanceTo(double time, bool trackOrientation, ref double now, ref long steps) => false;
 
+        public bool? AdvanceOneEvent(double time, bool trackOrientation, ref double now, ref long steps) => null;
+
         public void Restart() => euler.Restart();
 
         public void BallChanged(int index) => euler.BallChanged(index);
@@ -202,6 +221,8 @@ internal abstract class EngineStepper(EventEngine engine) : IStepper
     public abstract double Step(double time, double dt, bool trackOrientation);
 
     public abstract bool TryAdvanceTo(double time, bool trackOrientation, ref double now, ref long steps);
+
+    public virtual bool? AdvanceOneEvent(double time, bool trackOrientation, ref double now, ref long steps) => null;
 
     public void Restart() => Engine.Restart();
 

@@ -54,6 +54,9 @@ public sealed partial class StandardSimulation : Simulation
     public override TableModel TableModel => _model;
 
     /// <inheritdoc />
+    public override bool KeepsSnapshots => true;
+
+    /// <inheritdoc />
     public override InteractionModels Models => _model.Physics.Models;
 
     /// <summary>The model parameters.</summary>
@@ -103,6 +106,21 @@ public sealed partial class StandardSimulation : Simulation
             return;
         }
         base.AdvanceTo(time);
+    }
+
+    /// <inheritdoc />
+    public override bool? AdvanceOneEvent(double time)
+    {
+        double now = Time;
+        long steps = StepCount;
+        bool? resolved = _stepper.AdvanceOneEvent(time, TrackOrientation, ref now, ref steps);
+        if (resolved is not null)
+        {
+            Time = now;
+            StepCount = steps;
+            EventCapHits = _stepper.EventCapHits;
+        }
+        return resolved;
     }
 
     /// <inheritdoc />

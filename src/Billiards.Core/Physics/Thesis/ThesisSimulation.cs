@@ -70,6 +70,9 @@ public sealed partial class ThesisSimulation : Simulation
     /// <inheritdoc />
     public override TableModel TableModel => _model;
 
+    /// <inheritdoc />
+    public override bool KeepsSnapshots => true;
+
     /// <summary>The engine, in the seed's units, for the game and for tests.</summary>
     public PhysicsEngine Engine { get; }
 

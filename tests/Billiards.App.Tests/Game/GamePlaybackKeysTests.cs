@@ -1,0 +1,97 @@
+using Billiards.App.Cli;
+using Billiards.App.Game;
+using Billiards.App.Platform;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Tests.Game;
+
+/// <summary>
+/// <c>replay GAME.json</c> in the window: the next and previous shot keys, each shot's ruling on
+/// the HUD, and a game picked from a file of several (<c>selfplay --out</c>, <c>--game N</c>).
+/// </summary>
+public sealed class GamePlaybackKeysTests : IDisposable
+{
+    private readonly string _dir = Directory.CreateTempSubdirectory("billiards-playback-").FullName;
+
+    public void Dispose() => Directory.Delete(_dir, recursive: true);
+
+    private string SelfplayRecords()
+    {
+        string output = Path.Combine(_dir, "g.jsonl");
+        var (code, _, stderr) = Billiards.App.Tests.Cli.CliRun.Run("selfplay", "--rules", "nine-ball", "--games", "2", "--levels", "3,2", "--seed", "41", "--out", output);
+        Assert.True(code == 0, stderr);
+        return output;
+    }
+
+    /// <summary>Runs frames on a manual clock and, before frame k, does what <paramref name="at"/> says.</summary>
+    private sealed class KeyedLoop(ManualClock clock, FakeWindow window, IReadOnlyDictionary<int, Action> at) : IFrameLoop
+    {
+        public void Run(Action frame)
+        {
+            for (int i = 0; i < 200_000 && !window.Closed; i++)
+            {
+                if (at.TryGetValue(i, out var act))
+                {
+                    act();
+                }
+                clock.Advance(1.0 / 30);
+                frame();
+            }
+        }
+    }
+
+    [Fact]
+    public void The_shot_keys_go_forwards_and_back_and_every_shot_shown_gets_its_recorded_ruling()
+    {
+        string path = SelfplayRecords();
+        var records = ReplayCommand.Load(path);
+        var record = ReplayCommand.Pick(records, 2, path);
+        Assert.Same(records[1], record);
+        Assert.True(record.Shots.Count >= 4, $"{record.Shots.Count} shots");
+
+        var clock = new ManualClock();
+        var window = new FakeWindow { FramebufferSize = (1280, 720) };
+        ReplayNode? node = null;
+        var seen = new List<(int Frame, int Shot, string? Status)>();
+        void Look(int frame) => seen.Add((frame, node!.Shot, node.Status));
+        var at = new Dictionary<int, Action>
+        {
+            // Before shot 0 is struck (the table stands a second first): on to shot 1, then 2.
+            [5] = () => window.Press(ReplayNode.NextShotKey),
+            [8] = () => { Look(8); window.Press(ReplayNode.NextShotKey); },
+            [11] = () => { Look(11); window.Press(ReplayNode.PreviousShotKey); },
+            [14] = () => Look(14),
+        };
+        var rulings = new List<(int Shot, Ruling Ruling)>();
+        int code = ReplayCommand.Play(record, path, 0, 8, _ => new GamePlatform(window, new KeyedLoop(clock, window, at), new WatchingRenderer(_ => { })), clock,
+            (k, r) => rulings.Add((k, r)), host => node = host.Tree.Root.GetInTree<ReplayNode>());
+        Assert.Equal(0, code);
+        Assert.True(window.Closed, "the playback never ended");
+
+        Assert.True(rulings.Count > 20, $"shot {node!.Shot} of {record.Shots.Count}: {node.Status}; rulings {rulings.Count}; clock {clock.Now}; {rulings[^1].Ruling.Message} / {record.Rulings[rulings[^1].Shot]}");
+        Assert.Equal([(8, 1), (11, 2), (14, 1)], seen.Select(s => (s.Frame, s.Shot)));
+        Assert.Contains("shot 2 of", seen[1].Status, StringComparison.Ordinal);
+        // Shot 0 was skipped before it was struck; from shot 1 every shot played and was judged as recorded.
+        Assert.Equal(Enumerable.Range(1, record.Shots.Count - 1), rulings.Select(r => r.Shot));
+        foreach (var (shot, ruling) in rulings)
+        {
+            Assert.Equal(record.Rulings[shot], System.Text.Encoding.UTF8.GetString(GameBlockWriter.RulingToUtf8(ruling)));
+        }
+        // The HUD's line names the last shot's ruling.
+        Assert.Contains(rulings[^1].Ruling.Message, node!.Status, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void A_game_number_outside_the_file_is_one_line_and_exit_two()
+    {
+        string path = SelfplayRecords();
+        var (code, stdout, stderr) = Billiards.App.Tests.Cli.CliRun.Run("replay", path, "--game", "3");
+        Assert.Equal(2, code);
+        Assert.Equal("", stdout);
+        Assert.Equal($"billiards: --game 3: {path} holds games 1 to 2", stderr.TrimEnd('\n'));
+        var (verify, _, error) = Billiards.App.Tests.Cli.CliRun.Run("replay", path, "--verify", "--game", "1");
+        Assert.Equal(2, verify);
+        Assert.Contains("--game", error, StringComparison.Ordinal);
+    }
+}
