@@ -74,7 +74,7 @@ public sealed class ReplayNode(GameRecord record, int firstShot) : Node
         var played = _match!.Judge(_physics!.Simulation);
         if (_match.PendingOptions.Count > 0)
         {
-            _match.Choose(record.Shots[_next].Choice ?? _match.PendingOptions[0]);
+            _match.Choose(record.ChoiceAfter(_next, played.Ruling) ?? _match.PendingOptions[0]);
         }
         Rulings.Add(played.Ruling);
         Ruled?.Invoke(_next, played.Ruling);

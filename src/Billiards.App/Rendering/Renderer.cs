@@ -136,7 +136,7 @@ internal sealed class Renderer : IDisposable
 
         if (frame.Hud is { } hud)
         {
-            _hud.Draw(hud, frame.Width, frame.Height);
+            _hud.Draw(hud, frame.Width, frame.Height, frame.BallSet);
         }
         _gl.BindVertexArray(0);
     }

@@ -69,6 +69,16 @@ public class ScoreboardTests
         Assert.Empty(hud.Board!.Log);
         Assert.NotEqual(lastRuling, hud.Board.Message);
         Assert.DoesNotContain(hud.Lines, l => l.Contains(lastRuling, StringComparison.Ordinal));
+
+        // The session's record keeps the first game; the rematch joins it once it has a shot, a line each.
+        Assert.Equal(2, match.Games.Count);
+        Assert.Equal([match.Games[0]], match.RecordedGames);
+        LoseOnTheEight(game);
+        Assert.Equal(match.Games, match.RecordedGames);
+        string[] lines = System.Text.Encoding.UTF8.GetString(GameRecordFile.ToJsonLines(match.RecordedGames)).Split('\n', StringSplitOptions.RemoveEmptyEntries);
+        Assert.Equal(2, lines.Length);
+        Assert.All(lines, l => Assert.Single(GameRecordFile.Parse(l, "session.json").Shots));
+        Assert.NotEqual(GameRecordFile.Parse(lines[0], "session.json").Setup.Seed, GameRecordFile.Parse(lines[1], "session.json").Setup.Seed);
     }
 
     [Fact]

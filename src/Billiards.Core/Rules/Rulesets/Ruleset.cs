@@ -35,6 +35,12 @@ public abstract class Ruleset
     /// <summary>The game's name in files, e.g. "eight-ball".</summary>
     public string Name => Game.ToName();
 
+    /// <summary>The game's short name for people, e.g. "8-ball" (the scoreboard's).</summary>
+    public abstract string ShortName { get; }
+
+    /// <summary>The game's name for people in a title, e.g. "14.1 straight pool" (the window's).</summary>
+    public virtual string Title => ShortName;
+
     /// <summary>The ball set the game is played with.</summary>
     public virtual BallSet BallSet => BallSet.Pool;
 
