@@ -31,7 +31,7 @@ public sealed class AiCommandTests : IDisposable
     public void SuggestReturnsTheStraightInPotAndItsShotPotsTheBall()
     {
         string scene = Write("straight.json", StraightIn);
-        var (code, stdout, stderr) = CliRun.Run("suggest", scene, "--level", "5");
+        var (code, stdout, stderr) = CliRun.Run("suggest", scene, "--level", "5", "--budget-ms", "600000");
 
         Assert.True(code == 0, stderr);
         using var doc = JsonDocument.Parse(stdout);
@@ -77,7 +77,8 @@ public sealed class AiCommandTests : IDisposable
               "balls": [ { "id": "cue", "position": [0.77, -0.606425] }, { "id": "9", "position": [1.045, 0.0764] } ],
               "rules": "nine-ball" }
             """);
-        var (code, stdout, stderr) = CliRun.Run("suggest", scene, "--level", "5");
+        // The search, not the wall-clock cap, must end the decision on a loaded machine, or the choice is not reproducible.
+        var (code, stdout, stderr) = CliRun.Run("suggest", scene, "--level", "5", "--budget-ms", "600000");
 
         Assert.True(code == 0, stderr);
         using var doc = JsonDocument.Parse(stdout);
