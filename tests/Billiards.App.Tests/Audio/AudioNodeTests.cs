@@ -122,8 +122,8 @@ public sealed class AudioNodeTests
     [Fact]
     public void TheHelpOverlayNamesTheSoundKeys()
     {
-        Assert.Contains(Hud.HelpText.Lines, l => l.Contains("volume", StringComparison.Ordinal) && l.Contains('+'));
-        Assert.Contains(Hud.HelpText.Lines, l => l.TrimStart().StartsWith('U') && l.Contains("mute", StringComparison.Ordinal));
+        Assert.Contains(Billiards.App.Hud.HelpText.Lines, l => l.Contains("volume", StringComparison.Ordinal) && l.Contains('+'));
+        Assert.Contains(Billiards.App.Hud.HelpText.Lines, l => l.TrimStart().StartsWith('U') && l.Contains("mute", StringComparison.Ordinal));
     }
 }
 

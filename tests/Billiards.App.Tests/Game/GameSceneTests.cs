@@ -150,7 +150,7 @@ public class SystemKeysAndHudTests
         Assert.Equal(1, game.Window.FullscreenToggles);
         var menu = game.World.Menu;
         game.Window.Press(Key.Escape);
-        Assert.Equal(Hud.MenuPage.Pause, menu.Page);
+        Assert.Equal(Billiards.App.Hud.MenuPage.Pause, menu.Page);
         Assert.True(game.World.Loop.Paused);
         var frame = game.Frame();
         Assert.Equal(["Resume [Esc]", "Restart [R]", "Quit [Q]"], frame.Hud!.Buttons!.Select(b => b.Label));
@@ -159,11 +159,11 @@ public class SystemKeysAndHudTests
         game.Window.Press(Key.M);
         Assert.Equal(InputMode.View, game.World.InputModes.Mode);
         game.Window.Press(Key.Q);
-        Assert.Equal(Hud.MenuPage.ConfirmQuit, menu.Page);
+        Assert.Equal(Billiards.App.Hud.MenuPage.ConfirmQuit, menu.Page);
         game.Window.Press(Key.N);
-        Assert.Equal(Hud.MenuPage.Pause, menu.Page);
+        Assert.Equal(Billiards.App.Hud.MenuPage.Pause, menu.Page);
         game.Window.Press(Key.Escape);
-        Assert.Equal(Hud.MenuPage.None, menu.Page);
+        Assert.Equal(Billiards.App.Hud.MenuPage.None, menu.Page);
         Assert.False(game.World.Loop.Paused);
         Assert.Null(game.Frame().Hud!.Buttons);
         Assert.False(game.Window.Closed);
@@ -171,7 +171,7 @@ public class SystemKeysAndHudTests
         game.Window.Press(Key.Escape);
         game.Frame();
         Click(game, menu.CentreOf("Quit")!.Value);
-        Assert.Equal(Hud.MenuPage.ConfirmQuit, menu.Page);
+        Assert.Equal(Billiards.App.Hud.MenuPage.ConfirmQuit, menu.Page);
         Assert.False(game.Window.Closed);
         Click(game, menu.CentreOf("Yes")!.Value);
         Assert.True(game.Window.Closed);
@@ -189,7 +189,7 @@ public class SystemKeysAndHudTests
         game.Window.Press(Key.Escape);
         game.Window.Press(Key.R);
         Assert.Equal(start, game.World.Physics.CueBallPosition);
-        Assert.Equal(Hud.MenuPage.None, game.World.Menu.Page);
+        Assert.Equal(Billiards.App.Hud.MenuPage.None, game.World.Menu.Page);
     }
 
     internal static void Click(TestGame game, System.Numerics.Vector2 at)

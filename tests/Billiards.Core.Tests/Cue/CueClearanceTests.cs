@@ -2,7 +2,7 @@ using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Table;
 
-namespace Billiards.Core.Tests;
+namespace Billiards.Core.Tests.Cue;
 
 public class CueClearanceTests
 {

@@ -1,6 +1,6 @@
 using Billiards.Core.Cue;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Cue;
 
 /// <summary>Formel 31 (stroke speed) and the reset of the cue.</summary>
 public class ThesisCueTests

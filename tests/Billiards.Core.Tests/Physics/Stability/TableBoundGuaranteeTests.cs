@@ -6,7 +6,7 @@ using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
 using Billiards.Core.Table;
 
-namespace Billiards.Core.Tests.Stability;
+namespace Billiards.Core.Tests.Physics.Stability;
 
 /// <summary>
 /// The table-bound guarantee: a scene whose ball radius the table cannot hold is refused at load

@@ -1,8 +1,8 @@
 using System.Numerics;
 using Billiards.Core.Physics;
-using static Billiards.Core.Tests.Thesis.ThesisKit;
+using static Billiards.Core.Tests.Physics.Thesis.ThesisKit;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>Formel 11-19 (seed 4.3.3): ball-ball overlap, separation, velocity swap, follow and draw.</summary>
 public class BallCollisionTests

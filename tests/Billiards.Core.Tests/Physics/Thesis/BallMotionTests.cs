@@ -1,8 +1,8 @@
 using System.Numerics;
 using Billiards.Core.Physics.Thesis;
-using static Billiards.Core.Tests.Thesis.ThesisKit;
+using static Billiards.Core.Tests.Physics.Thesis.ThesisKit;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>Step 1 (p += v dt), Formel 5 (damping) and Formel 6-10 with Listing 1 (orientation).</summary>
 public class BallMotionTests

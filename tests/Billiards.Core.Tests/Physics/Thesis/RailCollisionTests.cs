@@ -4,9 +4,9 @@ using Billiards.Core.Physics;
 using Billiards.Core.Physics.Thesis;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
-using static Billiards.Core.Tests.Thesis.ThesisKit;
+using static Billiards.Core.Tests.Physics.Thesis.ThesisKit;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>Formel 20-29 with Listings 2-3 (seed 4.3.4), and the rails they run against.</summary>
 public class RailCollisionTests

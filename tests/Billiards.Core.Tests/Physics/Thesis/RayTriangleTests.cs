@@ -1,7 +1,7 @@
 using System.Numerics;
 using Billiards.Core.Physics.Thesis;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>Listing 2 (Formel 20): the seed's Moller-Trumbore test and its kinds of miss.</summary>
 public class RayTriangleTests

@@ -1,9 +1,9 @@
 using System.Numerics;
 using Billiards.Core.Physics;
 using Billiards.Core.Physics.Thesis;
-using static Billiards.Core.Tests.Thesis.ThesisKit;
+using static Billiards.Core.Tests.Physics.Thesis.ThesisKit;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>Seed 4.3.1: the stop rule and the end-of-shot rules (cue ball respot, game reset).</summary>
 public class ShotEndTests

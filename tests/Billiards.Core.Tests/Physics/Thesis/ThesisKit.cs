@@ -5,7 +5,7 @@ using Billiards.Core.Physics.Thesis;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>Builds small thesis-model set-ups in the seed's units (cm, Y up, bed height y = 2.86).</summary>
 internal static class ThesisKit

@@ -4,7 +4,7 @@ using Billiards.Core.Physics;
 using Billiards.Core.Physics.Thesis;
 using Billiards.Core.Scenes;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>The thesis model behind the Simulation API: frames, strikes, events, whole breaks.</summary>
 public class ThesisSimulationTests

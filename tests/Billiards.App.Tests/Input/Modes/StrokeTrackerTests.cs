@@ -1,6 +1,6 @@
 using Billiards.App.Input.Modes;
 
-namespace Billiards.App.Tests.Input;
+namespace Billiards.App.Tests.Input.Modes;
 
 /// <summary>Formel 31, s = d / t * 250 (d pixels, t ms, s cm/s capped at 800), worked by hand per case.</summary>
 public class StrokeTrackerTests

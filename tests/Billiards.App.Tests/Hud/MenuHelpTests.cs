@@ -1,7 +1,8 @@
 using Billiards.App.Hud;
 using Billiards.App.Platform;
+using Billiards.App.Tests.Game;
 
-namespace Billiards.App.Tests.Game;
+namespace Billiards.App.Tests.Hud;
 
 /// <summary>The HUD offers "H or F1: help" under every menu, and the keys open it there.</summary>
 public class MenuHelpTests

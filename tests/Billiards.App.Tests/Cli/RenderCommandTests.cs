@@ -1,6 +1,7 @@
 using Billiards.App.Cli;
+using Billiards.App.Tests.Rendering;
 
-namespace Billiards.App.Tests.Rendering;
+namespace Billiards.App.Tests.Cli;
 
 [Collection("GL")]
 public class RenderCommandTests : IDisposable

@@ -5,7 +5,7 @@ using Billiards.App.Rendering;
 using Billiards.App.Tests.Game;
 using Billiards.Core.Balls;
 
-namespace Billiards.App.Tests.Input;
+namespace Billiards.App.Tests.Input.Modes;
 
 /// <summary>The control modes driven through a fake window and a manual clock.</summary>
 public class InputModeNodeTests

@@ -1,8 +1,9 @@
 using Billiards.App.Cli;
 using Billiards.App.Game;
+using Billiards.App.Tests.Game;
 using Billiards.Core.Scenes;
 
-namespace Billiards.App.Tests.Game;
+namespace Billiards.App.Tests.Cli;
 
 public class PlayCommandTests
 {

@@ -1,8 +1,9 @@
 using Billiards.App.Platform;
 using Billiards.App.Rendering;
+using Billiards.App.Tests.Rendering;
 using Billiards.Core.Table;
 
-namespace Billiards.App.Tests.Rendering;
+namespace Billiards.App.Tests.Platform;
 
 [Collection("GL")]
 public class GlfwWindowTests

@@ -1,11 +1,12 @@
 using Billiards.App.Game;
 using Billiards.App.Hud;
 using Billiards.App.Platform;
+using Billiards.App.Tests.Game;
 using Billiards.Core.Balls;
 using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
 
-namespace Billiards.App.Tests.Game;
+namespace Billiards.App.Tests.Hud;
 
 public class ScoreboardTests
 {
