@@ -34,7 +34,7 @@ public class RenderCommandTests : IDisposable
     }
 
     [Fact]
-    public void Render_WritesAPngOfTheRequestedSize()
+    public void RenderWritesAPngOfTheRequestedSize()
     {
         string scene = Scene(EightBall);
         string png = Path.Combine(_folder, "shot.png");
@@ -47,7 +47,7 @@ public class RenderCommandTests : IDisposable
     }
 
     [Fact]
-    public void Render_AcceptsACamera()
+    public void RenderAcceptsACamera()
     {
         string scene = Scene(EightBall);
         string png = Path.Combine(_folder, "top.png");
@@ -66,7 +66,7 @@ public class RenderCommandTests : IDisposable
     [InlineData("--camera", "1,2,3")]
     [InlineData("--camera", "1,2,x,0,0,0")]
     [InlineData("--camera", "0,0,1,0,0,1")]
-    public void Render_RejectsBadArgumentsWithOneLineAndNoFile(string option, string value)
+    public void RenderRejectsBadArgumentsWithOneLineAndNoFile(string option, string value)
     {
         string scene = Scene(EightBall);
         string png = Path.Combine(_folder, "bad.png");
@@ -77,7 +77,7 @@ public class RenderCommandTests : IDisposable
     }
 
     [Fact]
-    public void Render_RejectsABadSceneWithOneLineAndNoFile()
+    public void RenderRejectsABadSceneWithOneLineAndNoFile()
     {
         string scene = Scene("""{ "format": "billiards-scene/1", "table": { "preset": "pool-99ft" } }""");
         string png = Path.Combine(_folder, "bad.png");
@@ -89,7 +89,7 @@ public class RenderCommandTests : IDisposable
     }
 
     [Fact]
-    public void Render_AtALaterTimeDrawsTheSimulationOrSaysItCannot()
+    public void RenderAtALaterTimeDrawsTheSimulationOrSaysItCannot()
     {
         // The physics models are written elsewhere: until they simulate, --at > 0 must fail cleanly.
         string scene = Scene(EightBall);
@@ -109,7 +109,7 @@ public class RenderCommandTests : IDisposable
     }
 
     [Fact]
-    public void Render_RejectsAMissingOutputFolder()
+    public void RenderRejectsAMissingOutputFolder()
     {
         string scene = Scene(EightBall);
         var (code, _, err) = Run("render", scene, "--out", Path.Combine(_folder, "no", "such", "x.png"));

@@ -72,7 +72,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void The_computer_holds_its_aim_about_one_and_a_half_seconds_before_the_stroke_and_a_quarter_of_that_when_fast()
+    public void TheComputerHoldsItsAimAboutOneAndAHalfSecondsBeforeTheStrokeAndAQuarterOfThatWhenFast()
     {
         const double Frame = 1.0 / 30;
         double normal = AimToStroke(fast: false);
@@ -104,7 +104,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void The_computer_chooses_its_option_then_plays_its_shot_and_the_same_game_plays_it_the_same_way()
+    public void TheComputerChoosesItsOptionThenPlaysItsShotAndTheSameGamePlaysItTheSameWay()
     {
         var first = ComputerTurnAfterASoftBreak();
         var second = ComputerTurnAfterASoftBreak();
@@ -134,7 +134,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void Two_computers_start_the_next_game_by_themselves_a_few_seconds_after_one_ends()
+    public void TwoComputersStartTheNextGameByThemselvesAFewSecondsAfterOneEnds()
     {
         var (host, match, frame) = GameWonByTheScenesShot(new MatchPlayer("Computer A", 1), new MatchPlayer("Computer B", 1));
         using (host)
@@ -158,7 +158,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void With_a_person_at_the_table_the_next_game_waits_for_Enter()
+    public void WithAPersonAtTheTableTheNextGameWaitsForEnter()
     {
         var (host, match, frame) = GameWonByTheScenesShot(new MatchPlayer("Anna"), new MatchPlayer("Computer", 1));
         using (host)
@@ -173,7 +173,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void A_paused_game_holds_the_computer_until_it_resumes()
+    public void APausedGameHoldsTheComputerUntilItResumes()
     {
         using var game = new Game(new MatchPlayer("Anna"), new MatchPlayer("Computer L1", 1));
         game.Press(Key.Q, 8);
@@ -192,7 +192,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void The_hint_key_asks_the_planner_and_takes_its_aim_power_spin_elevation_and_call()
+    public void TheHintKeyAsksThePlannerAndTakesItsAimPowerSpinElevationAndCall()
     {
         using var game = new Game(new MatchPlayer("Anna"), new MatchPlayer("Ben"));
         game.Frame();

@@ -10,7 +10,7 @@ public class MenuHelpTests
     [Theory]
     [InlineData(Key.H)]
     [InlineData(Key.F1)]
-    public void The_help_keys_open_and_close_the_help_over_the_start_menu(Key help)
+    public void TheHelpKeysOpenAndCloseTheHelpOverTheStartMenu(Key help)
     {
         using var game = new TestGame();
         game.World.Menu.ShowStart();
@@ -31,7 +31,7 @@ public class MenuHelpTests
     }
 
     [Fact]
-    public void The_help_opens_over_the_pause_menu_too_and_other_keys_stay_with_the_menu()
+    public void TheHelpOpensOverThePauseMenuTooAndOtherKeysStayWithTheMenu()
     {
         using var game = new TestGame();
         game.Window.Press(Key.Escape);

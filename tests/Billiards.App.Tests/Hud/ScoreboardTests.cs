@@ -34,7 +34,7 @@ public class ScoreboardTests
     }
 
     [Fact]
-    public void The_result_panel_counts_each_players_game_and_Rematch_clears_the_last_games_rulings()
+    public void TheResultPanelCountsEachPlayersGameAndRematchClearsTheLastGamesRulings()
     {
         using var game = Start(new GameState(GameRules.EightBall) { Shot = 1, Players = new PerPlayer<string>("Anna", "Ben") });
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
@@ -83,7 +83,7 @@ public class ScoreboardTests
     }
 
     [Fact]
-    public void Eight_ball_shows_no_fouls_in_a_row_and_nine_ball_shows_three_after_the_third()
+    public void EightBallShowsNoFoulsInARowAndNineBallShowsThreeAfterTheThird()
     {
         using (var eight = Start(new GameState(GameRules.EightBall) { Shot = 3, FoulsInRow = new PerPlayer<int>(2, 0), Players = new PerPlayer<string>("Anna", "Ben") }))
         {

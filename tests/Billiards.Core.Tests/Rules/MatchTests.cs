@@ -254,7 +254,7 @@ public class MatchTests
     }
 
     [Fact]
-    public void A_record_holds_only_the_contracts_fields_and_the_option_taken_is_the_one_that_leads_to_the_next_shot()
+    public void ARecordHoldsOnlyTheContractsFieldsAndTheOptionTakenIsTheOneThatLeadsToTheNextShot()
     {
         // A bad break (seed 375811699, found with selfplay): the incoming player may accept or rerack.
         var game = new Match(GameSetup.Of(GameRules.EightBall, 375811699, Players));
@@ -287,7 +287,7 @@ public class MatchTests
     }
 
     [Fact]
-    public void Several_games_are_one_record_a_line_each_replaying_on_its_own()
+    public void SeveralGamesAreOneRecordALineEachReplayingOnItsOwn()
     {
         var first = PlayOut(GameSetup.Of(GameRules.NineBall, 1, Players), maxShots: 6);
         var second = PlayOut(GameSetup.Of(GameRules.NineBall, 2, Players), maxShots: 4);

@@ -22,7 +22,7 @@ public class TableBoundGuaranteeTests
         """;
 
     [Fact]
-    public void A_hard_break_with_R_0_005_is_refused_because_the_cushions_cannot_hold_it()
+    public void AHardBreakWithR0005IsRefusedBecauseTheCushionsCannotHoldIt()
     {
         var e = Assert.Throws<SceneException>(() => SceneLoader.Parse(Scene("""{ "params": { "R": 0.005 } }"""), "r.json"));
         Assert.Equal("$.physics.params.R", e.JsonPath);
@@ -31,7 +31,7 @@ public class TableBoundGuaranteeTests
     }
 
     [Fact]
-    public void A_small_ball_under_low_cushions_is_refused_because_it_could_pass_the_capture_circle()
+    public void ASmallBallUnderLowCushionsIsRefusedBecauseItCouldPassTheCaptureCircle()
     {
         var e = Assert.Throws<SceneException>(() => SceneLoader.Parse(
             Scene("""{ "params": { "R": 0.005 } }""", """{ "preset": "pool-9ft", "cushion_height": 0.007 }"""), "r.json"));
@@ -39,7 +39,7 @@ public class TableBoundGuaranteeTests
     }
 
     [Fact]
-    public void A_ball_wider_than_the_mouths_is_refused()
+    public void ABallWiderThanTheMouthsIsRefused()
     {
         var e = Assert.Throws<SceneException>(() => SceneLoader.Parse(
             Scene("""{ "params": { "R": 0.06 } }""", """{ "preset": "pool-9ft", "cushion_height": 0.08 }"""), "r.json"));
@@ -52,7 +52,7 @@ public class TableBoundGuaranteeTests
     [InlineData("pool-7ft")]
     [InlineData("thesis")]
     [InlineData("pocketless")]
-    public void The_regulation_ball_is_held_by_every_preset(string preset)
+    public void TheRegulationBallIsHeldByEveryPreset(string preset)
     {
         Assert.Null(RadiusLimits.Problem(TableSpec.FromPreset(preset), PhysicsParams.DefaultRadius));
     }
@@ -63,7 +63,7 @@ public class TableBoundGuaranteeTests
     [Theory]
     [InlineData(0.028575, true)]
     [InlineData(0.025, false)]
-    public void The_capture_circle_spans_the_jaws_only_for_large_enough_balls(double radius, bool spans)
+    public void TheCaptureCircleSpansTheJawsOnlyForLargeEnoughBalls(double radius, bool spans)
     {
         Assert.Equal(spans, RadiusLimits.CaptureSpansJaws(TableSpec.FromPreset("pool-9ft"), radius));
     }
@@ -77,7 +77,7 @@ public class TableBoundGuaranteeTests
     [InlineData("exact")]
     [InlineData("event")]
     [InlineData("euler")]
-    public void Shots_into_every_pocket_end_on_the_table_or_pocketed(string integrator)
+    public void ShotsIntoEveryPocketEndOnTheTableOrPocketed(string integrator)
     {
         var table = TableSpec.FromPreset("pool-9ft");
         double smallest = Enumerable.Range(0, 200).Select(i => 0.02 + i * 1e-4).First(r => RadiusLimits.Problem(table, r) is null);
@@ -109,7 +109,7 @@ public class TableBoundGuaranteeTests
     [Theory]
     [InlineData(0.1)]
     [InlineData(1.0 / 30)]
-    public void Euler_drops_a_ball_that_a_long_step_carried_past_the_jaws(double dt)
+    public void EulerDropsABallThatALongStepCarriedPastTheJaws(double dt)
     {
         var table = TableSpec.FromPreset("pool-9ft");
         double r = PhysicsParams.DefaultRadius;
@@ -144,7 +144,7 @@ public class TableBoundGuaranteeTests
     }
 
     [Fact]
-    public void The_debug_checker_finds_a_ball_off_the_table_an_overlap_and_a_NaN()
+    public void TheDebugCheckerFindsABallOffTheTableAnOverlapAndANaN()
     {
         var table = TableSpec.FromPreset("pool-9ft");
         double r = PhysicsParams.DefaultRadius;
@@ -162,7 +162,7 @@ public class TableBoundGuaranteeTests
     }
 
     [Fact]
-    public void Balls_in_a_pocket_mouth_are_on_the_table_and_far_outside_are_not()
+    public void BallsInAPocketMouthAreOnTheTableAndFarOutsideAreNot()
     {
         var table = TableSpec.FromPreset("pool-9ft");
         double r = PhysicsParams.DefaultRadius;
