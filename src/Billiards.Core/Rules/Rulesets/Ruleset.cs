@@ -120,6 +120,12 @@ public abstract class Ruleset
     /// <summary>True when the computer player (<see cref="Ai.ShotPlanner"/>) plays the game.</summary>
     public virtual bool HasComputerPlayer => true;
 
+    /// <summary>
+    /// True when the game has a ball on and scores each shot (snooker): its game blocks carry
+    /// ball_on, free_ball and misses_in_row, its rulings points, penalty, foul_and_miss and free_ball.
+    /// </summary>
+    public virtual bool HasBallOn => false;
+
     /// <summary>True when the game keeps a score with a target (14.1).</summary>
     public virtual bool HasScore => false;
 

@@ -29,6 +29,9 @@ public sealed class SnookerRuleset : Ruleset
     public override string ShortName => "snooker";
 
     /// <inheritdoc />
+    public override bool HasBallOn => true;
+
+    /// <inheritdoc />
     public override BallSet BallSet => BallSet.Snooker;
 
     /// <inheritdoc />
