@@ -155,6 +155,12 @@ public static class GameRecordFile
                 w.WriteNull("call");
             }
             WriteShot(w, "shot", input.Shot);
+            // The option taken, where the ruling offered some: the next shot's block cannot tell
+            // snooker's "replace" (the balls go back) from its "put-back" (they stay).
+            if (input.Choice is { } choice)
+            {
+                w.WriteString("choice", choice.ToName());
+            }
             w.WritePropertyName("ruling");
             GameBlockWriter.WriteRuling(w, played.Ruling);
             // replay --verify compares "the balls at rest with the recorded ones" (scene-format.md):
@@ -347,7 +353,7 @@ public static class GameRecordFile
                 tip.ValueKind == JsonValueKind.Array ? tip[0].GetDouble() : 0,
                 tip.ValueKind == JsonValueKind.Array ? tip[1].GetDouble() : 0,
                 shot.TryGetProperty("elevation_deg", out var el) ? el.GetDouble() : 0);
-            // Earlier writers named the option taken ("choice"); it is still read.
+            // The option taken after the shot, where the ruling offered some.
             RefereeOption? choice = null;
             if (s.TryGetProperty("choice", out var c) && c.ValueKind == JsonValueKind.String)
             {

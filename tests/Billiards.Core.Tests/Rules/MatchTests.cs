@@ -274,12 +274,16 @@ public class MatchTests
             Assert.Equal(["format", "table", "physics", "rack", "shots"], doc.RootElement.EnumerateObject().Select(p => p.Name));
             foreach (var shot in doc.RootElement.GetProperty("shots").EnumerateArray())
             {
-                // The contract's fields, and the balls at rest that replay --verify compares.
-                Assert.Equal(["game", "place", "call", "shot", "ruling", "balls"], shot.EnumerateObject().Select(p => p.Name));
+                // The contract's fields, the option taken where one was offered, and the balls at rest that replay --verify compares.
+                Assert.Equal(shot.GetProperty("ruling").GetProperty("options").GetArrayLength() > 0
+                    ? ["game", "place", "call", "shot", "choice", "ruling", "balls"]
+                    : ["game", "place", "call", "shot", "ruling", "balls"], shot.EnumerateObject().Select(p => p.Name));
             }
         }
         var record = GameRecordFile.Parse(json, "rerack.json");
         Assert.Equal(RefereeOption.Rerack, record.ChoiceAfter(0, ruling));
+        // Without the named choice, the next shot's block tells it.
+        Assert.Equal(RefereeOption.Rerack, (record with { Shots = [.. record.Shots.Select(x => x with { Choice = null })] }).ChoiceAfter(0, ruling));
         var report = GameRecordFile.Verify(record, out var replayed);
         Assert.Null(report.FirstDifference);
         Assert.Equal(2, report.Same);
