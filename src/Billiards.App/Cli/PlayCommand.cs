@@ -69,14 +69,7 @@ public static class PlayCommand
         ArgumentNullException.ThrowIfNull(scene);
         if (match is { } m)
         {
-            string game = m.Rules switch
-            {
-                GameRules.EightBall => "8-ball",
-                GameRules.NineBall => "9-ball",
-                GameRules.TenBall => "10-ball",
-                GameRules.StraightPool => "14.1 straight pool",
-                _ => m.Rules.ToName(),
-            };
+            string game = Ruleset.For(m.Rules).Title;
             return $"{PlatformWiring.WindowTitle}: {game}, {m.Players[0].Name} vs {m.Players[1].Name}";
         }
         return scene.Name is { } name ? $"{PlatformWiring.WindowTitle}: {name}" : PlatformWiring.WindowTitle;
@@ -207,7 +200,8 @@ public static class PlayCommand
         if (recordPath is not null)
         {
             var matchNode = host.Tree.Root.GetInTree<MatchNode>();
-            OutputFiles.Write(recordPath, GameRecordFile.ToUtf8(matchNode.Game!));
+            // One record per game of the session, one per line, as self-play writes them.
+            OutputFiles.Write(recordPath, GameRecordFile.ToJsonLines(matchNode.RecordedGames));
         }
         return 0;
     }

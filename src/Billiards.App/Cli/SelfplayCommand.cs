@@ -117,12 +117,7 @@ public static class SelfplayCommand
             var files = new List<(string Path, byte[] Bytes)>();
             if (outPath is not null)
             {
-                using var lines = new MemoryStream();
-                foreach (var p in played)
-                {
-                    OneLine(GameRecordFile.ToUtf8(p.Record), lines);
-                }
-                files.Add((outPath, lines.ToArray()));
+                files.Add((outPath, GameRecordFile.ToJsonLines(played.Select(p => p.Record))));
             }
             var result = SelfPlaySummary.Of(game, seedValue, pair, points, count, part, played, clock.Elapsed.TotalMilliseconds);
             Emit(stdout, summaryPath, result.ToUtf8(), files);
@@ -186,13 +181,4 @@ public static class SelfplayCommand
     }
 
     // The record as GameRecordFile writes it, on one line (numbers keep their text).
-    private static void OneLine(byte[] record, Stream output)
-    {
-        using var doc = JsonDocument.Parse(record);
-        using (var w = new Utf8JsonWriter(output))
-        {
-            doc.RootElement.WriteTo(w);
-        }
-        output.WriteByte((byte)'\n');
-    }
 }

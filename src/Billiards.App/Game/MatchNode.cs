@@ -84,6 +84,7 @@ public sealed class MatchNode : Node
     private bool _hasAdoptedCall;
     private PocketId? _calledPocket;
     private int _games;
+    private readonly List<Match> _sessionGames = [];
 
     /// <summary>Creates a match of <paramref name="rules"/> between two players from <paramref name="opening"/>.</summary>
     public MatchNode(GameRules rules, IReadOnlyList<MatchPlayer> players, GameState? opening = null)
@@ -101,6 +102,17 @@ public sealed class MatchNode : Node
 
     /// <summary>The game now being played (Core's state machine; its record is the game record), or null before the node is ready.</summary>
     public Match? Game => _match;
+
+    /// <summary>Every game of this session in play order, the current one last (a rematch or a new game from the menu adds one).</summary>
+    public IReadOnlyList<Match> Games => _sessionGames;
+
+    /// <summary>
+    /// The games a record of the session holds (<c>play --record</c>): every game with a shot, in
+    /// play order; a game begun but not played (the window closed on a rematch's rack) is left
+    /// out, unless no game has a shot.
+    /// </summary>
+    public IReadOnlyList<Match> RecordedGames =>
+        _sessionGames.Any(g => g.Shots.Count > 0) ? [.. _sessionGames.Where(g => g.Shots.Count > 0)] : [.. _sessionGames.Take(1)];
 
     /// <summary>The game's ruleset.</summary>
     public Ruleset Ruleset => _ruleset;
@@ -352,6 +364,7 @@ public sealed class MatchNode : Node
         _physics.CameToRest += _ => OnRest();
         _firstGame = FirstGame(_physics);
         _match = new Match(_firstGame, _physics.CreateSimulation);
+        _sessionGames.Add(_match);
         if (_physics.IsRolling && _physics.LastShot is { } opening)
         {
             // The scene's own shot is already on its way: the match plays it from the scene's
@@ -506,6 +519,7 @@ public sealed class MatchNode : Node
         State = new GameState(_rules) { Players = _opening.Players, Shooter = breaker, Target = _opening.Target };
         // Game g racks with the scene's seed + g.
         _match = new Match(_firstGame! with { Seed = _firstGame.Seed + _games, Start = State, Position = null }, _physics!.CreateSimulation);
+        _sessionGames.Add(_match);
         LoadLayout(_match);
         GiveHand(_match.BallInHand);
         Say($"{what}: {State.ShooterName} breaks.");

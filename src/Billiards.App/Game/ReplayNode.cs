@@ -203,7 +203,7 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
         var played = match.Judge(sim);
         if (match.PendingOptions.Count > 0)
         {
-            match.Choose(input.Choice ?? match.PendingOptions[0]);
+            match.Choose(record.ChoiceAfter(_next, played.Ruling) ?? match.PendingOptions[0]);
         }
         _showingRuling = played.Ruling;
     }

@@ -70,7 +70,7 @@ public static class MatchLines
             string push = state.PushOut ? "  PUSH-OUT" : "";
             string pushKey = match.Ruleset.MayPushOut(state) ? "  O: push-out" : "";
             // Only a shot the rules call shows a call.
-            string call = !match.NeedsCall ? "" : match.CurrentCall is { } c ? $"Call: {c.Ball} in {c.Pocket.ToName()} (B ball, C pocket)  " : "Call: none (B ball, C pocket)  ";
+            string call = !match.NeedsCall ? "" : match.CurrentCall is { } c ? $"Call: {physics.Simulation.BallSet.NameOf(c.Ball)} in {c.Pocket.ToName()} (B ball, C pocket)  " : "Call: none (B ball, C pocket)  ";
             lines.Add(string.Create(CultureInfo.InvariantCulture, $"{call}Power {match.Power:0.00} m/s (Q/W, Space shoots, G hint){push}{pushKey}"));
         }
         // This game's: a rematch starts without the last game's ruling.

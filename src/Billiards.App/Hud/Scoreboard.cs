@@ -141,14 +141,7 @@ public static class ScoreboardBuilder
     }
 
     /// <summary>The game's short name.</summary>
-    public static string GameName(GameRules rules) => rules switch
-    {
-        GameRules.EightBall => "8-ball",
-        GameRules.NineBall => "9-ball",
-        GameRules.TenBall => "10-ball",
-        GameRules.StraightPool => "14.1",
-        _ => rules.ToName(),
-    };
+    public static string GameName(GameRules rules) => Ruleset.For(rules).ShortName;
 
     // Fouls in a row as they stand after the last shot: a game that ended on a third foul shows
     // three, not the two its state had before that shot.
@@ -192,7 +185,7 @@ public static class ScoreboardBuilder
         var parts = new List<string>();
         if (match.NeedsCall)
         {
-            parts.Add(match.CurrentCall is { } c ? $"Call: {c.Ball} in {c.Pocket.ToName()} (B, C)" : "Call: none (B, C)");
+            parts.Add(match.CurrentCall is { } c ? $"Call: {physics.Simulation.BallSet.NameOf(c.Ball)} in {c.Pocket.ToName()} (B, C)" : "Call: none (B, C)");
         }
         if (physics.BallInHand)
         {

@@ -92,8 +92,10 @@ internal sealed class HudRenderer : IDisposable
     /// <summary>Text scale (pixels per font pixel) for a framebuffer height.</summary>
     public static int Scale(int height) => Math.Max(1, height / 360);
 
-    public void Draw(HudInfo hud, int width, int height)
+    public void Draw(HudInfo hud, int width, int height, Billiards.Core.Balls.BallSet balls)
     {
+        ArgumentNullException.ThrowIfNull(balls);
+        _balls = balls;
         _width = width;
         _height = height;
         _vertices.Clear();
@@ -495,15 +497,22 @@ internal sealed class HudRenderer : IDisposable
         Vertex(a.X - n.X, a.Y - n.Y, 0, 0, c, 0);
     }
 
-    // A pool ball seen from above: its colour (a white disc with a coloured band for a stripe), a
-    // white spot and the number in ink.
+    // The set whose looks the icons are drawn with (the frame's).
+    private Billiards.Core.Balls.BallSet _balls = Billiards.Core.Balls.BallSet.Pool;
+
+    // A ball of the set seen from above, as its look says: its colour (a white disc with a
+    // coloured band for a stripe) and, for a numbered ball, a white spot with its name in ink.
     private void BallIcon(Vector2 centre, float radius, int number, int scale)
     {
-        var set = Billiards.Core.Balls.BallSet.Pool;
         var id = new Billiards.Core.Balls.BallId(number);
-        var colour = BallTextures.BaseColor(set, id);
+        if (!_balls.Contains(id))
+        {
+            return;
+        }
+        var kind = _balls.Kind(id);
+        var colour = BallTextures.BaseColor(_balls, id);
         var c = new Vector4(colour, 1);
-        if (set.Kind(id).Look.Striped)
+        if (kind.Look.Striped)
         {
             Disc(centre, radius, new Vector4(0.97f, 0.96f, 0.92f, 1), 2);
             Quad(centre.X - radius, centre.Y - (radius * 0.55f), 2 * radius, radius * 1.1f, 0, 0, 0, 0, c, 0);
@@ -512,9 +521,13 @@ internal sealed class HudRenderer : IDisposable
         {
             Disc(centre, radius, c, 2);
         }
+        if (!kind.Look.Numbered)
+        {
+            return;
+        }
         Disc(centre, radius * 0.6f, new Vector4(0.97f, 0.96f, 0.92f, 1), 2);
         int small = Math.Max(1, scale - 1);
-        string text = number.ToString(System.Globalization.CultureInfo.InvariantCulture);
+        string text = kind.Name;
         float tw = text.Length * HudFont.Advance * small;
         Text(text, centre.X - (tw / 2), centre.Y - (HudFont.LineHeight * small / 2f), small, new Vector4(0.05f, 0.05f, 0.05f, 1), shadow: false);
     }

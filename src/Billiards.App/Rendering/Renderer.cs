@@ -155,7 +155,7 @@ internal sealed class Renderer : IDisposable
 
         if (frame.Hud is { } hud)
         {
-            _hud.Draw(hud, frame.Width, frame.Height);
+            _hud.Draw(hud, frame.Width, frame.Height, frame.BallSet);
             Profile?.Mark("hud");
         }
         _gl.BindVertexArray(0);

@@ -163,7 +163,7 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
             w.WriteNumberValue(Levels.First);
             w.WriteNumberValue(Levels.Second);
             w.WriteEndArray();
-            if (Rules == GameRules.StraightPool)
+            if (Ruleset.For(Rules).HasScore)
             {
                 w.WriteNumber("target", Target);
             }

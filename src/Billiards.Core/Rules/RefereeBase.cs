@@ -13,6 +13,9 @@ internal abstract class RefereeBase(GameRules rules, TableSpec table, double bal
 {
     public GameRules Rules { get; } = rules;
 
+    /// <summary>The ruleset of the game judged.</summary>
+    protected Ruleset Ruleset => Ruleset.For(Rules);
+
     public TableSpec Table { get; } = table;
 
     public double BallRadius { get; } = ballRadius;
@@ -71,7 +74,6 @@ internal abstract class RefereeBase(GameRules rules, TableSpec table, double bal
         }
     }
 
-    protected static string The(BallId ball) => "the " + ball.ToString();
 }
 
 /// <summary>Collects a ruling while a referee works through a shot; <see cref="Build"/> makes it.</summary>

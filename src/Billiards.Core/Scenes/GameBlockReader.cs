@@ -156,7 +156,7 @@ public static class GameBlockReader
             }
             state = state with { BallInHand = bih };
         }
-        bool snooker = rules == GameRules.Snooker;
+        bool snooker = Ruleset.For(rules).HasBallOn;
         if (f.TryGetValue("ball_on", out var ballOn) && ballOn.ValueKind != JsonValueKind.Null)
         {
             string name = Text(ballOn, $"{path}.ball_on");
@@ -219,7 +219,7 @@ public static class GameBlockReader
         {
             throw error($"{path}.{name}", "unknown field (expected \"ball\" and \"pocket\", or \"safety\" alone)");
         }
-        if (rules == GameRules.Snooker)
+        if (Ruleset.For(rules).HasBallOn)
         {
             return Nomination(e, path, error);
         }

@@ -54,7 +54,7 @@ public static class GameBlockWriter
         {
             w.WriteString("ball_in_hand", state.BallInHand.ToName());
         }
-        if (state.Rules == GameRules.Snooker)
+        if (Ruleset.For(state.Rules).HasBallOn)
         {
             w.WriteString("ball_on", SnookerRuleset.BallOnOf(state));
             w.WriteBoolean("free_ball", state.FreeBall);
@@ -117,7 +117,7 @@ public static class GameBlockWriter
             w.WriteNull("winner");
         }
         w.WriteString("message", ruling.Message);
-        if (ruling.Next.Rules == GameRules.Snooker)
+        if (Ruleset.For(ruling.Next.Rules).HasBallOn)
         {
             w.WriteNumber("points", ruling.Points);
             w.WriteNumber("penalty", ruling.Penalty);

@@ -10,9 +10,39 @@ namespace Billiards.Core.Scenes;
 /// <summary>A game record as read from a file: the setup, each shot's input and what was recorded of it.</summary>
 /// <param name="Setup">Table, physics, rack seed, the start state and the first position when it is not the rack.</param>
 /// <param name="Shots">What the players did, shot by shot.</param>
+/// <param name="Before">Each shot's game block as recorded: the state before it.</param>
 /// <param name="Rulings">Each shot's ruling as recorded (JSON, as <see cref="GameBlockWriter.RulingToUtf8"/> writes it).</param>
-/// <param name="Balls">Each shot's balls at rest as recorded (JSON, as the record writes them), or null when the record has none.</param>
-public sealed record GameRecord(GameSetup Setup, IReadOnlyList<GameShot> Shots, IReadOnlyList<string> Rulings, IReadOnlyList<string?> Balls);
+/// <param name="Balls">Each shot's balls at rest as recorded (JSON, as the record writes them), or null where the record has none.</param>
+public sealed record GameRecord(GameSetup Setup, IReadOnlyList<GameShot> Shots, IReadOnlyList<GameState> Before, IReadOnlyList<string> Rulings, IReadOnlyList<string?> Balls)
+{
+    /// <summary>
+    /// The option the incoming player took after shot <paramref name="shot"/>, whose ruling (as
+    /// replayed) is <paramref name="ruling"/>: the one the shot names (older records), else the
+    /// offered option whose outcome is the next shot's recorded game block; null when no shot
+    /// follows or none fits.
+    /// </summary>
+    public RefereeOption? ChoiceAfter(int shot, Ruling ruling)
+    {
+        ArgumentNullException.ThrowIfNull(ruling);
+        if (Shots[shot].Choice is { } named)
+        {
+            return named;
+        }
+        if (shot + 1 >= Before.Count)
+        {
+            return null;
+        }
+        string next = GameRecordFile.StateText(Before[shot + 1]);
+        foreach (var option in ruling.Options)
+        {
+            if (GameRecordFile.StateText(ruling.Choose(option).Next) == next)
+            {
+                return option;
+            }
+        }
+        return null;
+    }
+}
 
 /// <summary>The first difference between a record and its replay.</summary>
 /// <param name="Shot">The shot's index in the record (0 the first).</param>
@@ -30,24 +60,60 @@ public sealed record ReplayReport(int Shots, int Same, ReplayDifference? FirstDi
 /// <summary>
 /// Writes and reads "billiards-game/1" (scene-format.md): the table, the physics, the rack (game
 /// and seed), then per shot the game block before it, the cue-ball placement, the call, the shot
-/// and the ruling; "choice" names the option the next shooter took when the ruling offered some.
+/// and the ruling, with the balls at rest after it ("balls", as a scene lists its balls), which
+/// <c>replay --verify</c> compares with the replayed ones (scene-format.md); a game that starts
+/// from a scene's position rather than its rack lists that position the same way, in a top-level
+/// "balls". The option the incoming
+/// player took after a ruling that offered some is the one that leads to the next shot's game
+/// block (<see cref="GameRecord.ChoiceAfter"/>). Several games (a session's rematches, a
+/// self-play run) are one record per line (<see cref="ToJsonLines"/>).
 /// </summary>
 public static class GameRecordFile
 {
     /// <summary>The format tag of a game record.</summary>
     public const string Format = "billiards-game/1";
 
-    /// <summary>The record of a played game as indented UTF-8 JSON.</summary>
-    public static byte[] ToUtf8(Match game)
+    /// <summary>The record of a played game as UTF-8 JSON, indented or on one line, ending in a newline.</summary>
+    public static byte[] ToUtf8(Match game, bool indented = true)
     {
         ArgumentNullException.ThrowIfNull(game);
         using var stream = new MemoryStream();
-        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
+        Write(stream, game, indented);
+        return stream.ToArray();
+    }
+
+    /// <summary>The records of several games, one per line in play order (JSON lines, as <c>replay</c> reads them).</summary>
+    public static byte[] ToJsonLines(IEnumerable<Match> games)
+    {
+        ArgumentNullException.ThrowIfNull(games);
+        using var stream = new MemoryStream();
+        foreach (var game in games)
+        {
+            Write(stream, game, indented: false);
+        }
+        return stream.ToArray();
+    }
+
+    private static void Write(Stream stream, Match game, bool indented)
+    {
+        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = indented }))
         {
             Write(w, game);
         }
         stream.WriteByte((byte)'\n');
-        return stream.ToArray();
+    }
+
+    /// <summary>A game state as a game block's JSON on one line, to compare states as the record writes them.</summary>
+    public static string StateText(GameState state)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        using var stream = new MemoryStream();
+        using (var w = new Utf8JsonWriter(stream))
+        {
+            // What a shot adds to the state before it (its call, a push-out) is not part of the state it follows from.
+            GameBlockWriter.WriteGame(w, state with { Call = null, PushOut = false, Placement = null });
+        }
+        return System.Text.Encoding.UTF8.GetString(stream.ToArray());
     }
 
     private static void Write(Utf8JsonWriter w, Match game)
@@ -67,8 +133,6 @@ public static class GameRecordFile
         w.WriteString("game", setup.Rules.ToName());
         w.WriteNumber("seed", setup.Seed);
         w.WriteEndObject();
-        w.WritePropertyName("game");
-        GameBlockWriter.WriteGame(w, setup.Start);
         if (setup.Position is { } position)
         {
             // A game from a scene's position rather than its rack.
@@ -91,16 +155,16 @@ public static class GameRecordFile
                 w.WriteNull("call");
             }
             WriteShot(w, "shot", input.Shot);
+            // The option taken, where the ruling offered some: the next shot's block cannot tell
+            // snooker's "replace" (the balls go back) from its "put-back" (they stay).
             if (input.Choice is { } choice)
             {
                 w.WriteString("choice", choice.ToName());
             }
-            else
-            {
-                w.WriteNull("choice");
-            }
             w.WritePropertyName("ruling");
             GameBlockWriter.WriteRuling(w, played.Ruling);
+            // replay --verify compares "the balls at rest with the recorded ones" (scene-format.md):
+            // the record keeps them, as a scene lists its balls.
             WriteBalls(w, "balls", played.After, setup.Ruleset.BallSet);
             w.WriteEndObject();
         }
@@ -240,9 +304,25 @@ public static class GameRecordFile
         {
             throw Error("$.rack.seed", "expected a whole number (a 32-bit integer)");
         }
-        var start = GameBlockReader.Read(Get(root, "game", "$"), scene.Table.Pockets, file, "$.game");
         string rackGame = Get(rack, "game", "$.rack").GetString() ?? "";
-        if (rackGame != start.Rules.ToName())
+        if (!RuleNames.TryParseGame(rackGame, out var rules))
+        {
+            throw Error("$.rack.game", $"unknown game \"{rackGame}\" (expected one of {string.Join(", ", RuleNames.GameNames.Select(n => $"\"{n}\""))})");
+        }
+        var shotElements = Get(root, "shots", "$");
+        if (shotElements.ValueKind != JsonValueKind.Array)
+        {
+            throw Error("$.shots", "expected an array of shots");
+        }
+        var blocks = shotElements.EnumerateArray()
+            .Select((s, k) => GameBlockReader.Read(Get(s, "game", At(k)), scene.Table.Pockets, file, At(k) + ".game"))
+            .ToList();
+        // The game's start is its first shot's block without what the shot added (records of
+        // earlier writers have it in a top-level "game"); a record without shots starts a game.
+        var start = root.TryGetProperty("game", out var startBlock)
+            ? GameBlockReader.Read(startBlock, scene.Table.Pockets, file, "$.game")
+            : blocks.Count > 0 ? blocks[0] with { Call = null, PushOut = false, Placement = null } : new GameState(rules);
+        if (start.Rules != rules)
         {
             throw Error("$.rack.game", $"the rack \"{rackGame}\" does not match the game's rules \"{start.Rules.ToName()}\"");
         }
@@ -256,10 +336,10 @@ public static class GameRecordFile
         var rulings = new List<string>();
         var balls = new List<string?>();
         int i = 0;
-        foreach (var s in Get(root, "shots", "$").EnumerateArray())
+        foreach (var s in shotElements.EnumerateArray())
         {
-            string at = string.Create(CultureInfo.InvariantCulture, $"$.shots[{i++}]");
-            var before = GameBlockReader.Read(Get(s, "game", at), scene.Table.Pockets, file, at + ".game");
+            string at = At(i);
+            var before = blocks[i++];
             Vec3? place = null;
             if (s.TryGetProperty("place", out var pl) && pl.ValueKind == JsonValueKind.Array)
             {
@@ -273,6 +353,7 @@ public static class GameRecordFile
                 tip.ValueKind == JsonValueKind.Array ? tip[0].GetDouble() : 0,
                 tip.ValueKind == JsonValueKind.Array ? tip[1].GetDouble() : 0,
                 shot.TryGetProperty("elevation_deg", out var el) ? el.GetDouble() : 0);
+            // The option taken after the shot, where the ruling offered some.
             RefereeOption? choice = null;
             if (s.TryGetProperty("choice", out var c) && c.ValueKind == JsonValueKind.String)
             {
@@ -290,7 +371,9 @@ public static class GameRecordFile
                 balls.Add(null);
             }
         }
-        return new GameRecord(setup, shots, rulings, balls);
+        return new GameRecord(setup, shots, blocks, rulings, balls);
+
+        static string At(int k) => string.Create(CultureInfo.InvariantCulture, $"$.shots[{k}]");
     }
 
     private static List<(Balls.BallId Id, Vec3 Position)> ReadBalls(JsonElement e, GameSetup setup, string file, string at)
@@ -355,12 +438,18 @@ public static class GameRecordFile
             MatchShot played;
             try
             {
-                played = replayed.Play(record.Shots[k]);
+                var sim = replayed.Strike(record.Shots[k]);
+                Match.RunToRest(sim);
+                played = replayed.Judge(sim);
+                if (replayed.PendingOptions.Count > 0 && record.ChoiceAfter(k, played.Ruling) is { } choice)
+                {
+                    replayed.Choose(choice);
+                }
             }
             catch (Exception e) when (e is InvalidOperationException or ArgumentException)
             {
                 // The replayed game went elsewhere: the shot cannot be played as recorded (the game
-                // is over, no ball in hand for its placement, its option not offered).
+                // is over, no ball in hand for its placement, an option to choose that none fits).
                 return new ReplayReport(record.Shots.Count, k, new ReplayDifference(k, "shot", "\"played\"", JsonString(e.Message)));
             }
             if (FirstDifference(record.Rulings[k], GameBlockWriter.RulingToUtf8(played.Ruling)) is { } field)

@@ -114,7 +114,7 @@ public static partial class Initializer
             ball.Pocket = -1;
             ball.IsPocketed = false;
             ball.RandomizeOrientation(random);
-            if (ball.IsCue)
+            if (ball.IsCueBall)
             {
                 cueStart = startPositions[i];
             }

@@ -122,8 +122,8 @@ public sealed class AudioNodeTests
     [Fact]
     public void TheHelpOverlayNamesTheSoundKeys()
     {
-        Assert.Contains(Hud.HelpText.Lines, l => l.Contains("volume", StringComparison.Ordinal) && l.Contains('+'));
-        Assert.Contains(Hud.HelpText.Lines, l => l.TrimStart().StartsWith('U') && l.Contains("mute", StringComparison.Ordinal));
+        Assert.Contains(Billiards.App.Hud.HelpText.Lines, l => l.Contains("volume", StringComparison.Ordinal) && l.Contains('+'));
+        Assert.Contains(Billiards.App.Hud.HelpText.Lines, l => l.TrimStart().StartsWith('U') && l.Contains("mute", StringComparison.Ordinal));
     }
 }
 
@@ -133,7 +133,7 @@ public sealed class SoundStateTests
         game.Frame().Hud!.Lines.SingleOrDefault(l => l.StartsWith("Sound: ", StringComparison.Ordinal));
 
     [Fact]
-    public void Without_a_device_the_hud_says_so_and_shows_the_volume_keys_effect_for_a_moment()
+    public void WithoutADeviceTheHudSaysSoAndShowsTheVolumeKeysEffectForAMoment()
     {
         using var game = new Billiards.App.Tests.Game.TestGame();
         game.World.Tree.Root.AddChild(new AudioNode(new SilentAudio()));
@@ -148,7 +148,7 @@ public sealed class SoundStateTests
     }
 
     [Fact]
-    public void With_a_device_mute_and_volume_show_for_a_moment_and_then_the_line_goes()
+    public void WithADeviceMuteAndVolumeShowForAMomentAndThenTheLineGoes()
     {
         using var game = new Billiards.App.Tests.Game.TestGame();
         game.World.Tree.Root.AddChild(new AudioNode(new RecordingAudio()));

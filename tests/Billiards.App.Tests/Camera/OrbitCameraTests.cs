@@ -9,7 +9,7 @@ public class OrbitCameraTests
     private const int Digits = 12;
 
     [Fact]
-    public void Eye_is_centre_plus_distance_times_the_z_up_polar_direction()
+    public void EyeIsCentrePlusDistanceTimesTheZUpPolarDirection()
     {
         // θ = π/4, φ = 0, distance 2: eye = c + 2 (sin 45°, 0, cos 45°) = c + (√2, 0, √2).
         var camera = new OrbitCamera(new Vec3(1, 2, 0.03), Math.PI / 4, 0, 2);
@@ -19,7 +19,7 @@ public class OrbitCameraTests
     }
 
     [Fact]
-    public void Orbit_follows_listing_5()
+    public void OrbitFollowsListing5()
     {
         // θ -= 0.01 * 20 = 1.0 - 0.2 = 0.8; φ += 0.01 * 10 = 0.5 + 0.1 = 0.6.
         var camera = new OrbitCamera(Vec3.Zero, 1.0, 0.5, 1.0);
@@ -34,7 +34,7 @@ public class OrbitCameraTests
     }
 
     [Fact]
-    public void Orbit_scales_with_the_sensitivity()
+    public void OrbitScalesWithTheSensitivity()
     {
         var camera = new OrbitCamera(Vec3.Zero, 1.0, 0.5, 1.0) { Sensitivity = 2 };
         camera.Orbit(10, 20);
@@ -45,7 +45,7 @@ public class OrbitCameraTests
     [Theory]
     [InlineData(-1000, Math.PI / 2 - 0.01)] // mouse far up: θ grows to the clamp, camera near the bed
     [InlineData(1000, 0.01)]                // mouse far down: θ shrinks to the clamp, camera near the top
-    public void Theta_is_clamped_to_listing_5s_limits(double dy, double expected)
+    public void ThetaIsClampedToListing5sLimits(double dy, double expected)
     {
         var camera = new OrbitCamera(Vec3.Zero, 1.0, 0, 1.0);
         camera.Orbit(0, dy);
@@ -54,7 +54,7 @@ public class OrbitCameraTests
     }
 
     [Fact]
-    public void Phi_wraps_below_zero_by_adding_two_pi()
+    public void PhiWrapsBelowZeroByAddingTwoPi()
     {
         var camera = new OrbitCamera(Vec3.Zero, 1.0, 0.05, 1.0);
         camera.Orbit(-10, 0); // 0.05 - 0.1 = -0.05 -> -0.05 + 2π
@@ -62,7 +62,7 @@ public class OrbitCameraTests
     }
 
     [Fact]
-    public void Phi_wraps_above_two_pi_by_subtracting_it()
+    public void PhiWrapsAboveTwoPiBySubtractingIt()
     {
         var camera = new OrbitCamera(Vec3.Zero, 1.0, 6.2, 1.0);
         camera.Orbit(10, 0); // 6.2 + 0.1 = 6.3 -> 6.3 - 2π
@@ -70,7 +70,7 @@ public class OrbitCameraTests
     }
 
     [Fact]
-    public void Phi_of_exactly_two_pi_wraps_to_zero()
+    public void PhiOfExactlyTwoPiWrapsToZero()
     {
         Assert.Equal(0, OrbitCamera.WrapPhi(2 * Math.PI));
         Assert.Equal(0, new OrbitCamera(Vec3.Zero, 1, 2 * Math.PI, 1).Phi);
@@ -82,7 +82,7 @@ public class OrbitCameraTests
     [InlineData(3.0, -50, 4.0)]  // 4.5 m clamped to Listing 6's 400 cm = 4 m
     [InlineData(0.12, 50, 0.1)]  // 0.06 m clamped to Listing 6's 10 cm = 0.1 m
     [InlineData(1.0, 500, 0.1)]  // a 500 px jump: Listing 6's scale would be -4; the camera does not flip
-    public void Zoom_follows_listing_6_with_its_clamps(double distance, double dy, double expected)
+    public void ZoomFollowsListing6WithItsClamps(double distance, double dy, double expected)
     {
         var camera = new OrbitCamera(new Vec3(0.5, 0.2, 0.03), 1.1, 2.0, distance);
         var before = (camera.Eye - camera.Centre) / camera.Distance;
@@ -97,7 +97,7 @@ public class OrbitCameraTests
     }
 
     [Fact]
-    public void Zoom_scales_with_the_sensitivity()
+    public void ZoomScalesWithTheSensitivity()
     {
         var camera = new OrbitCamera(Vec3.Zero, 1, 0, 1.0) { Sensitivity = 0.5 };
         camera.Zoom(20); // (100 - 10) / 100
@@ -105,7 +105,7 @@ public class OrbitCameraTests
     }
 
     [Fact]
-    public void Translate_moves_centre_and_eye_together()
+    public void TranslateMovesCentreAndEyeTogether()
     {
         var camera = new OrbitCamera(new Vec3(0, 0, 0.03), 1.0, 1.0, 1.0);
         var eye = camera.Eye;
@@ -121,7 +121,7 @@ public class OrbitCameraTests
 public class ViewMathTests
 {
     [Fact]
-    public void Bed_forward_ignores_height_and_right_is_clockwise_from_above()
+    public void BedForwardIgnoresHeightAndRightIsClockwiseFromAbove()
     {
         var f = ViewMath.BedForward(new Vec3(-1, 0, 0.7), new Vec3(0, 0, 0.03));
         Assert.Equal(new Vec3(1, 0, 0), f);
@@ -133,11 +133,11 @@ public class ViewMathTests
     [InlineData(0, 1, 90)]
     [InlineData(-1, 0, 180)]
     [InlineData(0, -1, -90)]
-    public void Aim_degrees_are_from_plus_x_counter_clockwise(double x, double y, double degrees) =>
+    public void AimDegreesAreFromPlusXCounterClockwise(double x, double y, double degrees) =>
         Assert.Equal(degrees, ViewMath.AimDegrees(new Vec3(x, y, 0)), 12);
 
     [Fact]
-    public void View_matrix_puts_the_target_straight_ahead()
+    public void ViewMatrixPutsTheTargetStraightAhead()
     {
         var eye = new Vector3(-2, 0, 1);
         var target = new Vector3(0, 0, 0);

@@ -40,7 +40,7 @@ public sealed class AssetLocationTests : IDisposable
     }
 
     [Fact]
-    public void RenderAndSimulate_RunFromAFolderWithoutAssets()
+    public void RenderAndSimulateRunFromAFolderWithoutAssets()
     {
         Assert.False(Directory.Exists(Path.Combine(_dir, "assets")));
         File.Copy(AssetFolder.Scene("eight-ball-break.json"), Path.Combine(_dir, "break.json"));
@@ -60,7 +60,7 @@ public sealed class AssetLocationTests : IDisposable
     }
 
     [Fact]
-    public void ShippedScenes_AreFoundBesideTheExecutable()
+    public void ShippedScenesAreFoundBesideTheExecutable()
     {
         Assert.Equal(Path.Combine(AppContext.BaseDirectory, "assets", "scenes", "eight-ball.json"), PlayCommand.FindDefaultScene());
         Assert.Equal(Path.Combine(AppContext.BaseDirectory, "assets", "scenes", "nine-ball.json"), PlayCommand.FindRulesScene(Core.Rules.GameRules.NineBall));
@@ -71,7 +71,7 @@ public sealed class AssetLocationTests : IDisposable
     }
 
     [Fact]
-    public void AMissingAsset_IsOneLineNamingItAsMissing()
+    public void AMissingAssetIsOneLineNamingItAsMissing()
     {
         string path = Path.Combine(_dir, "fonts", "DejaVuSans-Bold.ttf");
         var e = Assert.Throws<AssetException>(() => FontFile.Open(path));
@@ -82,7 +82,7 @@ public sealed class AssetLocationTests : IDisposable
     }
 
     [Fact]
-    public void AnUnreadableAsset_IsOneLineNamingItAsUnreadable()
+    public void AnUnreadableAssetIsOneLineNamingItAsUnreadable()
     {
         string path = Path.Combine(_dir, "DejaVuSans-Bold.ttf");
         File.WriteAllText(path, "not a font");

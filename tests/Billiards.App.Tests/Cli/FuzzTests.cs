@@ -30,7 +30,7 @@ public sealed class FuzzTests : IDisposable
     public void Dispose() => Directory.Delete(_dir, recursive: true);
 
     [Fact]
-    public void Every_mutated_scene_and_command_line_is_a_clean_refusal_or_a_valid_result()
+    public void EveryMutatedSceneAndCommandLineIsACleanRefusalOrAValidResult()
     {
         var outcomes = new Dictionary<int, int>();
         for (int i = 0; i < Cases; i++)

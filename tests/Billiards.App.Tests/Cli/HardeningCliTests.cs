@@ -56,7 +56,7 @@ public sealed class HardeningCliTests : IDisposable
     [Theory]
     [InlineData("simulate")]
     [InlineData("render")]
-    public void An_empty_out_is_bad_input(string verb)
+    public void AnEmptyOutIsBadInput(string verb)
     {
         string scene = Write("a.json", Shot);
         AssertRefused(CommandLine.BadInput, Run(verb, scene, "--out", ""), "billiards: --out: the path is empty");
@@ -64,7 +64,7 @@ public sealed class HardeningCliTests : IDisposable
     }
 
     [Fact]
-    public void An_empty_report_out_is_bad_input()
+    public void AnEmptyReportOutIsBadInput()
     {
         AssertRefused(CommandLine.BadInput, Run("report", "accuracy", "--out", ""), "billiards: --out: the path is empty");
     }
@@ -76,7 +76,7 @@ public sealed class HardeningCliTests : IDisposable
     [InlineData("render", "sub")]
     [InlineData("render", "sub/")]
     [InlineData("render", ".")]
-    public void An_out_naming_a_folder_is_refused_and_leaves_no_temporary_file(string verb, string output)
+    public void AnOutNamingAFolderIsRefusedAndLeavesNoTemporaryFile(string verb, string output)
     {
         string scene = Write("a.json", Shot);
         Directory.CreateDirectory(Path.Combine(_dir, "sub"));
@@ -86,7 +86,7 @@ public sealed class HardeningCliTests : IDisposable
     }
 
     [Fact]
-    public void A_report_whose_csv_name_is_a_folder_writes_nothing()
+    public void AReportWhoseCsvNameIsAFolderWritesNothing()
     {
         string scenes = Path.Combine(_dir, "scenes");
         Write("scenes/one.json", Shot);
@@ -97,7 +97,7 @@ public sealed class HardeningCliTests : IDisposable
     }
 
     [Fact]
-    public void A_report_whose_out_is_a_file_is_refused_before_measuring()
+    public void AReportWhoseOutIsAFileIsRefusedBeforeMeasuring()
     {
         string scenes = Path.Combine(_dir, "scenes");
         Write("scenes/one.json", Shot);
@@ -107,7 +107,7 @@ public sealed class HardeningCliTests : IDisposable
     }
 
     [Fact]
-    public void A_report_scene_without_a_shot_is_one_line_before_measuring()
+    public void AReportSceneWithoutAShotIsOneLineBeforeMeasuring()
     {
         string scenes = Path.Combine(_dir, "scenes");
         Write("scenes/a.json", Shot);
@@ -120,7 +120,7 @@ public sealed class HardeningCliTests : IDisposable
     [Theory]
     [InlineData("""{ "format": "billiards-scene/1", "balls": [ { "id": "cue", "position": [0, "x"] } ], "shot": { "speed": 1, "aim_deg": 0 } }""", "$.balls[0].position[1]: expected a number")]
     [InlineData("""{ "format": "billiards-scene/1", "physics": { "model": "thesis", "integrator": "exact" }, "balls": [ { "id": "cue", "position": [0, 0] } ], "shot": { "speed": 1, "aim_deg": 0 } }""", "$.physics.integrator: unknown value \"exact\"")]
-    public void A_bad_report_scene_late_in_the_suite_is_refused_before_measuring(string json, string expected)
+    public void ABadReportSceneLateInTheSuiteIsRefusedBeforeMeasuring(string json, string expected)
     {
         string scenes = Path.Combine(_dir, "scenes");
         Write("scenes/a.json", Shot);
@@ -129,7 +129,7 @@ public sealed class HardeningCliTests : IDisposable
     }
 
     [Fact]
-    public void A_frictionless_table_with_until_ends_at_until_and_without_at_the_time_bound()
+    public void AFrictionlessTableWithUntilEndsAtUntilAndWithoutAtTheTimeBound()
     {
         string scene = Write("frictionless.json", Frictionless);
         var (code, stdout, _) = Run("simulate", scene, "--until", "3600");
@@ -150,7 +150,7 @@ public sealed class HardeningCliTests : IDisposable
     }
 
     [Fact]
-    public void An_until_beyond_the_cap_is_refused_with_the_cap()
+    public void AnUntilBeyondTheCapIsRefusedWithTheCap()
     {
         string scene = Write("frictionless.json", Frictionless);
         AssertRefused(CommandLine.BadInput, Run("simulate", scene, "--until", "1e308"), "--until 1E+308: expected a time from 0 to 3600 s");
@@ -159,7 +159,7 @@ public sealed class HardeningCliTests : IDisposable
     }
 
     [Fact]
-    public void The_event_bound_stops_a_run_and_says_so()
+    public void TheEventBoundStopsARunAndSaysSo()
     {
         var scene = SceneLoader.Parse(Frictionless, "frictionless.json");
         var outcome = SimulationRunner.Run(scene, new RunOptions(Until: 3600, MaxEvents: 50));
@@ -172,7 +172,7 @@ public sealed class HardeningCliTests : IDisposable
     }
 
     [Fact]
-    public void A_folder_that_cannot_be_written_is_an_environment_problem()
+    public void AFolderThatCannotBeWrittenIsAnEnvironmentProblem()
     {
         if (!OperatingSystem.IsLinux())
         {
@@ -184,7 +184,7 @@ public sealed class HardeningCliTests : IDisposable
     }
 
     [Fact]
-    public void An_unexpected_exception_is_one_line_with_exit_code_1()
+    public void AnUnexpectedExceptionIsOneLineWithExitCode1()
     {
         var (message, code) = CommandLine.Classify(new NullReferenceException("boom\nsecond line"));
         Assert.Equal(CommandLine.Failure, code);
@@ -192,7 +192,7 @@ public sealed class HardeningCliTests : IDisposable
     }
 
     [Fact]
-    public void A_failed_write_leaves_neither_the_target_nor_a_temporary_file()
+    public void AFailedWriteLeavesNeitherTheTargetNorATemporaryFile()
     {
         string good = Path.Combine(_dir, "good.txt");
         string bad = Path.Combine(_dir, "missing", "bad.txt");
@@ -201,7 +201,7 @@ public sealed class HardeningCliTests : IDisposable
     }
 
     [Fact]
-    public void Play_without_a_display_is_one_line_and_exit_code_1()
+    public void PlayWithoutADisplayIsOneLineAndExitCode1()
     {
         if (!OperatingSystem.IsLinux())
         {

@@ -11,7 +11,7 @@ namespace Billiards.App.Tests.Game;
 public class AimLineTests
 {
     [Fact]
-    public void The_line_runs_to_the_ghost_ball_draws_its_ring_and_the_object_balls_direction_and_L_hides_it()
+    public void TheLineRunsToTheGhostBallDrawsItsRingAndTheObjectBallsDirectionAndLHidesIt()
     {
         using var game = new TestGame(); // practice: the line starts on
         var frame = game.Frame();
@@ -42,7 +42,7 @@ public class AimLineTests
     }
 
     [Fact]
-    public void A_path_that_meets_no_ball_stops_at_the_cushion_and_shows_its_mirror_bank()
+    public void APathThatMeetsNoBallStopsAtTheCushionAndShowsItsMirrorBank()
     {
         using var game = new TestGame(); // cue ball (-0.635, 0), the 1 on (0.635, 0)
         var camera = game.World.Tree.Find<Billiards.App.Camera.CameraNode>()!;
@@ -69,7 +69,7 @@ public class AimLineTests
     }
 
     [Fact]
-    public void The_object_balls_line_stops_where_the_ball_reaches_the_cushion()
+    public void TheObjectBallsLineStopsWhereTheBallReachesTheCushion()
     {
         string json = """
             { "format": "billiards-scene/1", "table": { "preset": "pool-9ft" }, "physics": { "dt": 0.00390625 },
@@ -86,7 +86,7 @@ public class AimLineTests
     }
 
     [Fact]
-    public void Nothing_is_drawn_while_the_balls_roll()
+    public void NothingIsDrawnWhileTheBallsRoll()
     {
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
         Assert.Empty(game.Frame().Hud!.Aids!);
@@ -97,7 +97,7 @@ public class AimLineTests
     [InlineData("Anna", "cpu:3", false)]
     [InlineData("Anna", "cpu:2", true)]
     [InlineData("computer:1", "Ben", true)]
-    public void In_a_match_it_starts_on_only_against_a_computer_of_level_two_or_less(string a, string b, bool on)
+    public void InAMatchItStartsOnOnlyAgainstAComputerOfLevelTwoOrLess(string a, string b, bool on)
     {
         var players = new[] { MatchPlayer.Parse(a, 0)!, MatchPlayer.Parse(b, 1)! };
         var scene = TestScenes.TwoBalls(rules: "eight-ball");
@@ -114,7 +114,7 @@ public class CallLineTests
     [InlineData("eight-ball", GameRules.EightBall, 0, false)]
     [InlineData("eight-ball", GameRules.EightBall, 3, true)]
     [InlineData("ten-ball", GameRules.TenBall, 3, true)]
-    public void The_hud_shows_a_call_only_where_the_rules_call_the_shot(string name, GameRules rules, int shot, bool shown)
+    public void TheHudShowsACallOnlyWhereTheRulesCallTheShot(string name, GameRules rules, int shot, bool shown)
     {
         var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
         // A scene's game block sets the shot number.
@@ -130,7 +130,7 @@ public class CallLineTests
 public class CallPickerTests
 {
     [Fact]
-    public void A_click_on_a_ball_calls_it_and_a_click_on_a_pocket_calls_that_pocket_a_drag_calls_nothing()
+    public void AClickOnABallCallsItAndAClickOnAPocketCallsThatPocketADragCallsNothing()
     {
         var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
         var scene = TestScenes.TwoBalls(rules: "eight-ball") with { Game = new GameState(GameRules.EightBall) { Shot = 3, Players = new PerPlayer<string>("Anna", "Ben") } };
@@ -178,7 +178,7 @@ public class CallPickerTests
     }
 
     [Fact]
-    public void A_click_on_the_dark_hole_of_a_pocket_calls_it_not_only_a_click_in_its_mouth()
+    public void AClickOnTheDarkHoleOfAPocketCallsItNotOnlyAClickInItsMouth()
     {
         var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
         var scene = TestScenes.TwoBalls(rules: "eight-ball") with { Game = new GameState(GameRules.EightBall) { Shot = 3, Players = new PerPlayer<string>("Anna", "Ben") } };

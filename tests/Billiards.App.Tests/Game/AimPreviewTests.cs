@@ -20,7 +20,7 @@ public class AimPreviewTests
     private static BallState At(double x, double y) => new() { Position = new Vec3(x, y, R) };
 
     [Fact]
-    public void The_ghost_ball_touches_the_first_ball_on_the_path_and_the_object_ball_leaves_along_the_line_of_centres()
+    public void TheGhostBallTouchesTheFirstBallOnThePathAndTheObjectBallLeavesAlongTheLineOfCentres()
     {
         // Cue at the origin aimed along +x; the 1 ball offset sideways by R (a half-ball hit), the 2 farther on.
         BallState[] balls = [At(0, 0), At(0.5, R), At(0.9, 0)];
@@ -35,7 +35,7 @@ public class AimPreviewTests
     }
 
     [Fact]
-    public void The_easiest_pocket_is_the_one_the_object_ball_heads_for_and_a_clear_path_has_no_ball()
+    public void TheEasiestPocketIsTheOneTheObjectBallHeadsForAndAClearPathHasNoBall()
     {
         var heading = new Vec3(1, 1, 0).Normalized();
         Assert.Equal(PoolPockets.FootLeft, AimPreview.EasiestPocket(new Vec3(1.0, 0.365, 0), heading, Pockets, PoolPockets.Set));
@@ -51,7 +51,7 @@ public class AimPreviewTests
     [InlineData("human", null)]
     [InlineData("computer:1", 1)]
     [InlineData("Computer:5", 5)]
-    public void Players_parse_as_the_contract_names_them(string text, int? level)
+    public void PlayersParseAsTheContractNamesThem(string text, int? level)
     {
         var player = MatchPlayer.Parse(text, 0);
         Assert.NotNull(player);
@@ -63,5 +63,5 @@ public class AimPreviewTests
     [InlineData("computer:0")]
     [InlineData("computer:6")]
     [InlineData("computer:")]
-    public void Other_players_are_refused(string text) => Assert.Null(MatchPlayer.Parse(text, 1));
+    public void OtherPlayersAreRefused(string text) => Assert.Null(MatchPlayer.Parse(text, 1));
 }

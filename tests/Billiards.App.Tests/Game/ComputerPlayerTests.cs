@@ -72,7 +72,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void While_it_aims_the_computer_says_which_ball_it_plays_into_which_pocket()
+    public void WhileItAimsTheComputerSaysWhichBallItPlaysIntoWhichPocket()
     {
         var shot = new Billiards.Core.Cue.ShotSpec(2.5, 10);
         Decision Planned(Billiards.Core.Ai.ShotKind kind) => new(shot, null, null, false, kind, new Billiards.Core.Balls.BallId(9), new Billiards.Core.Table.PocketId(1, "head-right"), 0.8, 0.8, 100, 5);
@@ -82,7 +82,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void The_computer_holds_its_aim_about_one_and_a_half_seconds_before_the_stroke_and_a_quarter_of_that_when_fast()
+    public void TheComputerHoldsItsAimAboutOneAndAHalfSecondsBeforeTheStrokeAndAQuarterOfThatWhenFast()
     {
         const double Frame = 1.0 / 30;
         double normal = AimToStroke(fast: false);
@@ -114,7 +114,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void The_computer_chooses_its_option_then_plays_its_shot_and_the_same_game_plays_it_the_same_way()
+    public void TheComputerChoosesItsOptionThenPlaysItsShotAndTheSameGamePlaysItTheSameWay()
     {
         var first = ComputerTurnAfterASoftBreak();
         var second = ComputerTurnAfterASoftBreak();
@@ -144,7 +144,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void Two_computers_start_the_next_game_by_themselves_a_few_seconds_after_one_ends()
+    public void TwoComputersStartTheNextGameByThemselvesAFewSecondsAfterOneEnds()
     {
         var (host, match, frame) = GameWonByTheScenesShot(new MatchPlayer("Computer A", 1), new MatchPlayer("Computer B", 1));
         using (host)
@@ -168,7 +168,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void With_a_person_at_the_table_the_next_game_waits_for_Enter()
+    public void WithAPersonAtTheTableTheNextGameWaitsForEnter()
     {
         var (host, match, frame) = GameWonByTheScenesShot(new MatchPlayer("Anna"), new MatchPlayer("Computer", 1));
         using (host)
@@ -183,7 +183,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void A_paused_game_holds_the_computer_until_it_resumes()
+    public void APausedGameHoldsTheComputerUntilItResumes()
     {
         using var game = new Game(new MatchPlayer("Anna"), new MatchPlayer("Computer L1", 1));
         game.Press(Key.Q, 8);
@@ -202,7 +202,7 @@ public class ComputerPlayerTests
     }
 
     [Fact]
-    public void The_hint_key_asks_the_planner_and_takes_its_aim_power_spin_elevation_and_call()
+    public void TheHintKeyAsksThePlannerAndTakesItsAimPowerSpinElevationAndCall()
     {
         using var game = new Game(new MatchPlayer("Anna"), new MatchPlayer("Ben"));
         game.Frame();

@@ -27,7 +27,7 @@ public class DefaultCallTests
     }
 
     [Fact]
-    public void On_solids_the_default_call_is_a_solid_even_when_the_cue_aims_at_a_stripe()
+    public void OnSolidsTheDefaultCallIsASolidEvenWhenTheCueAimsAtAStripe()
     {
         var (game, match) = Start(0, new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes));
         using var _ = game;
@@ -41,7 +41,7 @@ public class DefaultCallTests
     }
 
     [Fact]
-    public void On_stripes_the_aimed_stripe_is_the_default_call()
+    public void OnStripesTheAimedStripeIsTheDefaultCall()
     {
         var (game, match) = Start(0, new PerPlayer<BallGroup>(BallGroup.Stripes, BallGroup.Solids));
         using var _ = game;

@@ -7,7 +7,7 @@ public class FixedStepLoopTests
     private const double Dt = 1.0 / 250; // the seed's rate, not exact in binary on purpose
 
     [Fact]
-    public void A_frame_runs_the_whole_steps_it_owes_and_keeps_the_rest()
+    public void AFrameRunsTheWholeStepsItOwesAndKeepsTheRest()
     {
         var loop = new FixedStepLoop(Dt);
         int steps = 0;
@@ -20,7 +20,7 @@ public class FixedStepLoopTests
     }
 
     [Fact]
-    public void Rounding_does_not_lose_a_step()
+    public void RoundingDoesNotLoseAStep()
     {
         var loop = new FixedStepLoop(Dt);
         Assert.Equal(5, loop.Advance(0.020, () => { })); // 0.02 - 4 * 0.004 is a hair under 0.004 in binary
@@ -28,7 +28,7 @@ public class FixedStepLoopTests
     }
 
     [Fact]
-    public void Frame_time_is_clamped_at_500_ms()
+    public void FrameTimeIsClampedAt500Ms()
     {
         var loop = new FixedStepLoop(Dt);
         Assert.Equal(125, loop.Advance(3.0, () => { })); // a 3 s stall counts as 0.5 s = 125 steps
@@ -37,7 +37,7 @@ public class FixedStepLoopTests
     }
 
     [Fact]
-    public void Negative_frame_time_runs_nothing()
+    public void NegativeFrameTimeRunsNothing()
     {
         var loop = new FixedStepLoop(Dt);
         Assert.Equal(0, loop.Advance(-1, () => { }));
@@ -45,7 +45,7 @@ public class FixedStepLoopTests
     }
 
     [Fact]
-    public void Pause_freezes_the_accumulator_and_single_step_runs_exactly_one()
+    public void PauseFreezesTheAccumulatorAndSingleStepRunsExactlyOne()
     {
         var loop = new FixedStepLoop(Dt);
         loop.Advance(0.006, () => { });            // 1 step, 2 ms left: alpha 0.5
@@ -63,14 +63,14 @@ public class FixedStepLoopTests
     }
 
     [Fact]
-    public void The_step_must_be_positive() =>
+    public void TheStepMustBePositive() =>
         Assert.Throws<ArgumentOutOfRangeException>(() => new FixedStepLoop(0));
 }
 
 public class FrameInterpolationTests
 {
     [Fact]
-    public void Balls_are_drawn_between_the_previous_and_the_current_step_by_alpha()
+    public void BallsAreDrawnBetweenThePreviousAndTheCurrentStepByAlpha()
     {
         // The scene's opening shot sends the cue ball along +x at 2 m/s; the fake keeps that speed.
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
@@ -86,7 +86,7 @@ public class FrameInterpolationTests
     }
 
     [Fact]
-    public void At_rest_the_drawn_position_is_the_simulated_one()
+    public void AtRestTheDrawnPositionIsTheSimulatedOne()
     {
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
         game.RunUntilRest();

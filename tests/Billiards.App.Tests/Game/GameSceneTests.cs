@@ -12,7 +12,7 @@ namespace Billiards.App.Tests.Game;
 public class GameSceneTests
 {
     [Fact]
-    public void A_scene_with_rules_and_a_cue_ball_gets_every_node()
+    public void ASceneWithRulesAndACueBallGetsEveryNode()
     {
         using var game = new TestGame(TestScenes.TwoBalls(rules: "eight-ball"));
         var tree = game.World.Tree;
@@ -26,7 +26,7 @@ public class GameSceneTests
     }
 
     [Fact]
-    public void A_scene_without_a_cue_ball_has_no_cue()
+    public void ASceneWithoutACueBallHasNoCue()
     {
         using var noCue = new TestGame(TestScenes.TwoBalls(withCue: false));
         Assert.Null(noCue.World.Tree.Find<CueNode>());
@@ -34,7 +34,7 @@ public class GameSceneTests
     }
 
     [Fact]
-    public void A_scene_with_a_shot_plays_it_when_the_game_starts()
+    public void ASceneWithAShotPlaysItWhenTheGameStarts()
     {
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
         var shot = Assert.Single(game.Simulation.Strikes);
@@ -46,7 +46,7 @@ public class GameSceneTests
     }
 
     [Fact]
-    public void The_camera_moves_with_the_cue_ball_when_the_balls_rest()
+    public void TheCameraMovesWithTheCueBallWhenTheBallsRest()
     {
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
         var camera = game.World.Tree.Find<CameraNode>()!.Camera;
@@ -60,7 +60,7 @@ public class GameSceneTests
     }
 
     [Fact]
-    public void Pocketed_balls_vanish()
+    public void PocketedBallsVanish()
     {
         using var game = new TestGame(TestScenes.TwoBalls(rules: "eight-ball", withShot: true));
         game.Frame();
@@ -73,7 +73,7 @@ public class GameSceneTests
     }
 
     [Fact]
-    public void A_scratched_cue_ball_comes_back_in_hand_on_the_head_spot_and_the_game_goes_on()
+    public void AScratchedCueBallComesBackInHandOnTheHeadSpotAndTheGameGoesOn()
     {
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
         game.Frame();
@@ -105,7 +105,7 @@ public class GameSceneTests
     }
 
     [Fact]
-    public void In_a_match_the_physics_leaves_a_scratched_cue_ball_to_the_referee()
+    public void InAMatchThePhysicsLeavesAScratchedCueBallToTheReferee()
     {
         // HandOnly: a match is driving; the physics node does not put the cue ball in hand itself.
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
@@ -122,7 +122,7 @@ public class GameSceneTests
     }
 
     [Fact]
-    public void The_frame_carries_table_camera_cue_and_hud()
+    public void TheFrameCarriesTableCameraCueAndHud()
     {
         using var game = new TestGame();
         game.Window.FramebufferSize = (1024, 768);
@@ -143,14 +143,14 @@ public class GameSceneTests
 public class SystemKeysAndHudTests
 {
     [Fact]
-    public void Escape_opens_the_menu_whose_quit_asks_first_and_F11_toggles_fullscreen()
+    public void EscapeOpensTheMenuWhoseQuitAsksFirstAndF11TogglesFullscreen()
     {
         using var game = new TestGame();
         game.Window.Press(Key.F11);
         Assert.Equal(1, game.Window.FullscreenToggles);
         var menu = game.World.Menu;
         game.Window.Press(Key.Escape);
-        Assert.Equal(Hud.MenuPage.Pause, menu.Page);
+        Assert.Equal(Billiards.App.Hud.MenuPage.Pause, menu.Page);
         Assert.True(game.World.Loop.Paused);
         var frame = game.Frame();
         Assert.Equal(["Resume [Esc]", "Restart [R]", "Quit [Q]"], frame.Hud!.Buttons!.Select(b => b.Label));
@@ -159,11 +159,11 @@ public class SystemKeysAndHudTests
         game.Window.Press(Key.M);
         Assert.Equal(InputMode.View, game.World.InputModes.Mode);
         game.Window.Press(Key.Q);
-        Assert.Equal(Hud.MenuPage.ConfirmQuit, menu.Page);
+        Assert.Equal(Billiards.App.Hud.MenuPage.ConfirmQuit, menu.Page);
         game.Window.Press(Key.N);
-        Assert.Equal(Hud.MenuPage.Pause, menu.Page);
+        Assert.Equal(Billiards.App.Hud.MenuPage.Pause, menu.Page);
         game.Window.Press(Key.Escape);
-        Assert.Equal(Hud.MenuPage.None, menu.Page);
+        Assert.Equal(Billiards.App.Hud.MenuPage.None, menu.Page);
         Assert.False(game.World.Loop.Paused);
         Assert.Null(game.Frame().Hud!.Buttons);
         Assert.False(game.Window.Closed);
@@ -171,14 +171,14 @@ public class SystemKeysAndHudTests
         game.Window.Press(Key.Escape);
         game.Frame();
         Click(game, menu.CentreOf("Quit")!.Value);
-        Assert.Equal(Hud.MenuPage.ConfirmQuit, menu.Page);
+        Assert.Equal(Billiards.App.Hud.MenuPage.ConfirmQuit, menu.Page);
         Assert.False(game.Window.Closed);
         Click(game, menu.CentreOf("Yes")!.Value);
         Assert.True(game.Window.Closed);
     }
 
     [Fact]
-    public void Restart_puts_the_practice_balls_back()
+    public void RestartPutsThePracticeBallsBack()
     {
         using var game = new TestGame();
         game.Frame();
@@ -189,7 +189,7 @@ public class SystemKeysAndHudTests
         game.Window.Press(Key.Escape);
         game.Window.Press(Key.R);
         Assert.Equal(start, game.World.Physics.CueBallPosition);
-        Assert.Equal(Hud.MenuPage.None, game.World.Menu.Page);
+        Assert.Equal(Billiards.App.Hud.MenuPage.None, game.World.Menu.Page);
     }
 
     internal static void Click(TestGame game, System.Numerics.Vector2 at)
@@ -200,7 +200,7 @@ public class SystemKeysAndHudTests
     }
 
     [Fact]
-    public void F3_toggles_the_collision_geometry()
+    public void F3TogglesTheCollisionGeometry()
     {
         using var game = new TestGame();
         Assert.False(game.Frame().ShowCollisionGeometry);
@@ -213,7 +213,7 @@ public class SystemKeysAndHudTests
     }
 
     [Fact]
-    public void H_and_F1_toggle_the_help_which_lists_every_key()
+    public void HAndF1ToggleTheHelpWhichListsEveryKey()
     {
         using var game = new TestGame();
         Assert.False(game.Frame().Hud!.ShowHelp);
@@ -229,7 +229,7 @@ public class SystemKeysAndHudTests
     }
 
     [Fact]
-    public void P_pauses_and_N_steps_once()
+    public void PPausesAndNStepsOnce()
     {
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
         game.Window.Press(Key.P);
@@ -246,7 +246,7 @@ public class SystemKeysAndHudTests
     }
 
     [Fact]
-    public void The_hud_shows_mode_last_shot_spin_elevation_and_frame_rate()
+    public void TheHudShowsModeLastShotSpinElevationAndFrameRate()
     {
         using var game = new TestGame();
         for (int i = 0; i < 5; i++)
@@ -275,7 +275,7 @@ public class SystemKeysAndHudTests
     }
 
     [Fact]
-    public void The_hud_shows_the_last_shot_and_the_lock()
+    public void TheHudShowsTheLastShotAndTheLock()
     {
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
         var lines = game.Frame().Hud!.Lines;
@@ -284,7 +284,7 @@ public class SystemKeysAndHudTests
     }
 
     [Fact]
-    public void Formel_4_frame_rate_is_1000_over_the_frame_time_in_ms_counted_over_half_a_second()
+    public void Formel4FrameRateIs1000OverTheFrameTimeInMsCountedOverHalfASecond()
     {
         var meter = new FrameRateMeter();
         meter.AddFrame(20);                        // 1000 / 20 = 50
@@ -298,7 +298,7 @@ public class SystemKeysAndHudTests
     }
 
     [Fact]
-    public void Frame_rate_shows_a_slow_rate_within_one_window_after_many_fast_frames()
+    public void FrameRateShowsASlowRateWithinOneWindowAfterManyFastFrames()
     {
         // 600 frames of 1 ms, then 2 FPS: an average over frames would still show hundreds.
         var meter = new FrameRateMeter();

@@ -7,7 +7,7 @@ namespace Billiards.App.Tests.Game;
 public class InputScriptTests
 {
     [Fact]
-    public void A_script_parses_every_action()
+    public void AScriptParsesEveryAction()
     {
         var script = InputScript.Parse("""
             { "format": "billiards-input-script/1", "duration": 5, "events": [
@@ -24,7 +24,7 @@ public class InputScriptTests
     }
 
     [Fact]
-    public void The_duration_defaults_to_a_second_after_the_last_event()
+    public void TheDurationDefaultsToASecondAfterTheLastEvent()
     {
         var script = InputScript.Parse("""{ "format": "billiards-input-script/1", "events": [ { "t": 2.5, "key_down": "P" } ] }""", "s.json");
         Assert.Equal(3.5, script.Duration);
@@ -44,7 +44,7 @@ public class InputScriptTests
     [InlineData("""{ "format": "billiards-input-script/1", "events": [ { "t": 1, "wait": "keys" } ] }""", "s.json: $.events[0].wait: expected \"rest\"")]
     [InlineData("""{ "format": "billiards-input-script/1", "speed": 0, "events": [] }""", "s.json: $.speed: expected a number above 0, at most 64")]
     [InlineData("""{ "format": "billiards-input-script/1", "speed": 65, "events": [] }""", "s.json: $.speed: expected a number above 0, at most 64")]
-    public void A_bad_script_names_the_file_the_path_and_the_problem(string json, string expected)
+    public void ABadScriptNamesTheFileThePathAndTheProblem(string json, string expected)
     {
         var e = Assert.Throws<CliException>(() => InputScript.Parse(json, "s.json"));
         Assert.StartsWith(expected, e.Message, StringComparison.Ordinal);
@@ -52,7 +52,7 @@ public class InputScriptTests
     }
 
     [Fact]
-    public void A_wait_holds_the_scripts_clock_until_the_game_rests_and_the_events_after_it_keep_their_spacing()
+    public void AWaitHoldsTheScriptsClockUntilTheGameRestsAndTheEventsAfterItKeepTheirSpacing()
     {
         var script = InputScript.Parse("""
             { "format": "billiards-input-script/1", "speed": 8, "duration": 1.5, "events": [
@@ -90,7 +90,7 @@ public class InputScriptTests
     }
 
     [Fact]
-    public void Scripted_events_are_raised_at_the_first_frame_at_or_after_their_time_stamped_with_their_own_time()
+    public void ScriptedEventsAreRaisedAtTheFirstFrameAtOrAfterTheirTimeStampedWithTheirOwnTime()
     {
         var script = InputScript.Parse("""
             { "format": "billiards-input-script/1", "duration": 1, "events": [
@@ -117,7 +117,7 @@ public class InputScriptTests
     }
 
     [Fact]
-    public void Stats_count_frames_per_second_and_the_delay_of_each_input_to_the_frame_that_shows_it()
+    public void StatsCountFramesPerSecondAndTheDelayOfEachInputToTheFrameThatShowsIt()
     {
         var stats = new FrameStats();
         // Frames every 10 ms for 2.5 s; an input at 0.505 s is raised in the frame started at 0.51.
@@ -175,7 +175,7 @@ public class InputScriptTests
 public class PlayDisplayTests
 {
     [Fact]
-    public void Play_without_a_display_is_an_environment_problem_named_in_one_line()
+    public void PlayWithoutADisplayIsAnEnvironmentProblemNamedInOneLine()
     {
         if (OperatingSystem.IsWindows() || OperatingSystem.IsMacOS())
         {

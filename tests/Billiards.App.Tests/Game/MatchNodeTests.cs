@@ -60,7 +60,7 @@ public class MatchNodeTests
     }
 
     [Fact]
-    public void A_scene_s_own_shot_is_judged_as_simulate_judges_it_and_the_game_replays_from_the_scene()
+    public void ASceneSOwnShotIsJudgedAsSimulateJudgesItAndTheGameReplaysFromTheScene()
     {
         string path = AssetFolder.Scene(Path.Combine("rules", "nine-ball-push-out.json"));
         using var game = new RealGame(path, GameRules.NineBall);
@@ -84,7 +84,7 @@ public class MatchNodeTests
     }
 
     [Fact]
-    public void A_soft_break_is_a_foul_whose_options_are_chosen_by_number_and_the_turn_passes()
+    public void ASoftBreakIsAFoulWhoseOptionsAreChosenByNumberAndTheTurnPasses()
     {
         using var game = new RealGame(AssetFolder.Scene("eight-ball.json"), GameRules.EightBall);
         Assert.True(game.Host.World.Physics.BallInHand);
@@ -111,7 +111,7 @@ public class MatchNodeTests
 public class MatchHudTests
 {
     [Fact]
-    public void The_options_are_buttons_a_click_takes_and_the_hud_shows_each_players_balls_as_icons()
+    public void TheOptionsAreButtonsAClickTakesAndTheHudShowsEachPlayersBallsAsIcons()
     {
         var scene = SceneLoader.Load(AssetFolder.Scene("eight-ball.json"));
         var window = new FakeWindow { FramebufferSize = (1280, 720) };
@@ -170,7 +170,7 @@ public class MatchPlayerTests
     [InlineData("computer:3", 0, "Computer L3", 3)]
     [InlineData("cpu:1", 1, "Computer L1", 1)]
     [InlineData("CPU:5", 0, "Computer L5", 5)]
-    public void A_seat_is_a_person_by_name_or_the_computer_at_a_level(string text, int seat, string name, int? level)
+    public void ASeatIsAPersonByNameOrTheComputerAtALevel(string text, int seat, string name, int? level)
     {
         var player = MatchPlayer.Parse(text, seat)!;
         Assert.Equal(name, player.Name);
@@ -186,5 +186,5 @@ public class MatchPlayerTests
     [InlineData("cpu:x")]
     [InlineData("a name far longer than twenty-four characters")]
     [InlineData("tab\there")]
-    public void Anything_else_is_refused(string text) => Assert.Null(MatchPlayer.Parse(text, 0));
+    public void AnythingElseIsRefused(string text) => Assert.Null(MatchPlayer.Parse(text, 0));
 }

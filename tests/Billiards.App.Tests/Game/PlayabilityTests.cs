@@ -14,7 +14,7 @@ namespace Billiards.App.Tests.Game;
 public class CameraTests
 {
     [Fact]
-    public void Dragging_up_in_view_mode_stops_above_the_rail_and_the_cue_and_looks_down_ten_degrees_at_least()
+    public void DraggingUpInViewModeStopsAboveTheRailAndTheCueAndLooksDownTenDegreesAtLeast()
     {
         using var game = new TestGame();
         var camera = game.World.Tree.Find<CameraNode>()!;
@@ -39,7 +39,7 @@ public class CameraTests
     }
 
     [Fact]
-    public void The_camera_follows_the_balls_while_they_roll_looks_down_on_the_table_on_its_key_and_is_back_behind_the_cue_ball_after()
+    public void TheCameraFollowsTheBallsWhileTheyRollLooksDownOnTheTableOnItsKeyAndIsBackBehindTheCueBallAfter()
     {
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
         var camera = game.World.Tree.Find<CameraNode>()!;
@@ -80,7 +80,7 @@ public class CameraTests
     [InlineData(1280, 720)]
     [InlineData(1920, 1080)]
     [InlineData(1024, 768)]
-    public void The_overhead_view_frames_the_whole_table_below_the_hud_band(int width, int height)
+    public void TheOverheadViewFramesTheWholeTableBelowTheHudBand(int width, int height)
     {
         var table = TableSpec.FromPreset("pool-9ft");
         var (eye, target) = CameraNode.OverheadView(table, width, height, CameraNode.FovYDegrees);
@@ -99,7 +99,7 @@ public class CameraTests
 public class CueRailTests
 {
     [Fact]
-    public void The_cue_is_lifted_over_a_ball_behind_the_cue_ball_drawn_so_and_struck_so()
+    public void TheCueIsLiftedOverABallBehindTheCueBallDrawnSoAndStruckSo()
     {
         // The 2 lies 2.2 R behind the cue ball on the aim line (the cue points along +x at the start).
         string json = """
@@ -120,7 +120,7 @@ public class CueRailTests
     }
 
     [Fact]
-    public void The_raised_elevation_is_drawn_and_fed_into_the_strike()
+    public void TheRaisedElevationIsDrawnAndFedIntoTheStrike()
     {
         string json = """
             { "format": "billiards-scene/1", "table": { "preset": "pool-9ft" }, "physics": { "dt": 0.00390625 },
@@ -141,7 +141,7 @@ public class CueRailTests
 public class PowerTests
 {
     [Fact]
-    public void A_push_polled_in_one_frame_is_timed_over_that_frame_not_as_instant()
+    public void APushPolledInOneFrameIsTimedOverThatFrameNotAsInstant()
     {
         var tracker = new StrokeTracker { MinimumInterval = 0.050 };
         tracker.Begin(300, 1.0);
@@ -153,7 +153,7 @@ public class PowerTests
     }
 
     [Fact]
-    public void Pushes_of_different_speeds_give_the_speeds_between_the_extremes()
+    public void PushesOfDifferentSpeedsGiveTheSpeedsBetweenTheExtremes()
     {
         var speeds = new List<double>();
         foreach (double seconds in new[] { 0.4, 0.2, 0.1, 0.05, 0.025 })
@@ -170,7 +170,7 @@ public class PowerTests
     }
 
     [Fact]
-    public void The_hud_shows_a_power_meter_while_stroking_and_the_shot_after()
+    public void TheHudShowsAPowerMeterWhileStrokingAndTheShotAfter()
     {
         using var game = new TestGame();
         game.Frame();
@@ -203,7 +203,7 @@ public class PowerTests
 public class HelpOverlayTests
 {
     [Fact]
-    public void Long_help_lines_wrap_at_spaces_and_keep_their_indentation()
+    public void LongHelpLinesWrapAtSpacesAndKeepTheirIndentation()
     {
         var lines = HudRenderer.Wrap(["  S   shot: hold the left button and push", "short"], 20);
         Assert.All(lines, l => Assert.True(l.Length <= 20, l));

@@ -44,7 +44,7 @@ public sealed class PracticeTests : IDisposable
     }
 
     [Fact]
-    public void A_scripted_drill_is_attempted_twice_and_both_attempts_are_counted_in_the_results_file()
+    public void AScriptedDrillIsAttemptedTwiceAndBothAttemptsAreCountedInTheResultsFile()
     {
         PracticeNode? practice = null;
         var outcomes = new List<DrillOutcome>();
@@ -82,7 +82,7 @@ public sealed class PracticeTests : IDisposable
     }
 
     [Fact]
-    public void A_saved_practice_position_loads_into_simulate_and_plays_the_window_s_shot_bit_for_bit()
+    public void ASavedPracticePositionLoadsIntoSimulateAndPlaysTheWindowSShotBitForBit()
     {
         Directory.CreateDirectory(_folder);
         string saved = Path.Combine(_folder, "position.json");
@@ -148,7 +148,7 @@ public sealed class PracticeTests : IDisposable
     private static Vec3 Ball(TestGame game, int number) => game.World.Physics.Simulation.Balls[game.World.Physics.Simulation.IndexOf(new BallId(number))].Position;
 
     [Fact]
-    public void In_move_mode_any_ball_follows_the_cursor_on_the_bed_and_Insert_and_Delete_add_and_remove_balls()
+    public void InMoveModeAnyBallFollowsTheCursorOnTheBedAndInsertAndDeleteAddAndRemoveBalls()
     {
         using var game = Practice();
         var frame = game.Frame();
@@ -180,7 +180,7 @@ public sealed class PracticeTests : IDisposable
     }
 
     [Fact]
-    public void Backspace_retries_the_last_shot_the_balls_restored_bit_for_bit_and_the_cue_set_to_the_same_shot()
+    public void BackspaceRetriesTheLastShotTheBallsRestoredBitForBitAndTheCueSetToTheSameShot()
     {
         using var game = Practice();
         game.Frame();
@@ -207,7 +207,7 @@ public sealed class PracticeTests : IDisposable
     }
 
     [Fact]
-    public void The_sensitivity_view_shows_how_often_the_shot_pots_and_draws_every_sample_s_ending()
+    public void TheSensitivityViewShowsHowOftenTheShotPotsAndDrawsEverySampleSEnding()
     {
         var drill = DrillLibrary.Load("straight-in");
         using var game = Practice(drill.Scene, drill);
@@ -238,7 +238,7 @@ public sealed class PracticeTests : IDisposable
     }
 
     [Fact]
-    public void A_drill_fixes_its_position_and_draws_its_zone_on_the_cloth()
+    public void ADrillFixesItsPositionAndDrawsItsZoneOnTheCloth()
     {
         var drill = DrillLibrary.Load("stop-shot");
         using var game = Practice(drill.Scene, drill);
@@ -256,7 +256,7 @@ public sealed class PracticeTests : IDisposable
     }
 
     [Fact]
-    public void The_start_menu_offers_practice_and_every_drill()
+    public void TheStartMenuOffersPracticeAndEveryDrill()
     {
         using var game = new TestGame();
         string? asked = "none";
@@ -287,7 +287,7 @@ public sealed class PracticeTests : IDisposable
     [InlineData(new[] { "play", "--drill", "no-such-drill" }, "--drill no-such-drill: no such drill")]
     [InlineData(new[] { "play", "--practice", "--rules", "eight-ball" }, "practice has no match")]
     [InlineData(new[] { "play", "--drill", "stop-shot", "x.json" }, "a drill brings its own position")]
-    public void Bad_practice_arguments_are_one_line_and_exit_2(string[] args, string message)
+    public void BadPracticeArgumentsAreOneLineAndExit2(string[] args, string message)
     {
         var (code, _, error) = CliRun.Run(args);
         Assert.Equal(2, code);
@@ -296,7 +296,7 @@ public sealed class PracticeTests : IDisposable
     }
 
     [Fact]
-    public void The_data_folder_is_the_variable_s_else_XDG_DATA_HOME_s_else_under_home()
+    public void TheDataFolderIsTheVariableSElseXDGDATAHOMESElseUnderHome()
     {
         Assert.Equal(Path.GetFullPath("/tmp/x"), DataFolder.Path(v => v == DataFolder.Variable ? "/tmp/x" : null));
         if (OperatingSystem.IsLinux())
@@ -307,7 +307,7 @@ public sealed class PracticeTests : IDisposable
     }
 
     [Fact]
-    public void A_broken_results_file_is_one_warning_and_a_fresh_start_and_is_replaced_whole()
+    public void ABrokenResultsFileIsOneWarningAndAFreshStartAndIsReplacedWhole()
     {
         Directory.CreateDirectory(_folder);
         string path = Path.Combine(_folder, DrillRecords.FileName);
@@ -333,7 +333,7 @@ internal sealed class NullFrameRenderer : IFrameRenderer
 public class PracticeHelpTests
 {
     [Fact]
-    public void The_help_shows_practice_s_keys_in_practice_and_the_match_s_in_a_match_and_fits_a_720_line_window()
+    public void TheHelpShowsPracticeSKeysInPracticeAndTheMatchSInAMatchAndFitsA720LineWindow()
     {
         var practice = HelpText.For(match: false, practice: true);
         var match = HelpText.For(match: true, practice: false);

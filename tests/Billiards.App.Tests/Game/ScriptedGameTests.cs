@@ -48,7 +48,7 @@ public class ScriptedGameTests
     }
 
     [Fact]
-    public void The_scripted_game_is_the_same_game_at_60_fps_and_at_3_fps()
+    public void TheScriptedGameIsTheSameGameAt60FpsAndAt3Fps()
     {
         using var fast = PlayHeadless(1.0 / 60);
         using var slow = PlayHeadless(0.3); // 0.3 s frames at speed 16: up to 8 s of play per frame
@@ -60,7 +60,7 @@ public class ScriptedGameTests
     }
 
     [Fact]
-    public void The_scripted_game_s_record_replays_shot_for_shot()
+    public void TheScriptedGameSRecordReplaysShotForShot()
     {
         string text = PlayHeadlessText(1.0 / 60);
         var record = GameRecordFile.Parse(text, "w.json");
@@ -71,7 +71,7 @@ public class ScriptedGameTests
     }
 
     [Fact]
-    public void The_scripted_game_plays_back_in_the_window_from_its_record_with_every_ruling()
+    public void TheScriptedGamePlaysBackInTheWindowFromItsRecordWithEveryRuling()
     {
         string text = PlayHeadlessText(1.0 / 60);
         var record = GameRecordFile.Parse(text, "w.json");
@@ -151,7 +151,7 @@ public class ScriptedGameTests
 public class ScriptedGameWindowTests
 {
     [Fact]
-    public void The_scripted_game_plays_in_a_window_to_a_winner_the_referee_declares()
+    public void TheScriptedGamePlaysInAWindowToAWinnerTheRefereeDeclares()
     {
         TestDisplay.Ensure();
         string record = Path.Combine(Path.GetTempPath(), $"record-{Guid.NewGuid():N}.json");

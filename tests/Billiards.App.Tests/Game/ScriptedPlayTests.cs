@@ -16,7 +16,7 @@ namespace Billiards.App.Tests.Game;
 public class ScriptedPlayTests
 {
     [Fact]
-    public void A_short_break_script_plays_in_a_window_and_its_stats_show_every_input_on_the_next_frame()
+    public void AShortBreakScriptPlaysInAWindowAndItsStatsShowEveryInputOnTheNextFrame()
     {
         TestDisplay.Ensure();
         string script = Path.Combine(AssetFolder.Assets, "scripts", "break-short.json");

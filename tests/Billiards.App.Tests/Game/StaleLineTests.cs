@@ -17,7 +17,7 @@ public class StaleLineTests
     [InlineData(GameRules.NineBall, "Anna", "cpu:3", "Billiards: 9-ball, Anna vs Computer L3")]
     [InlineData(GameRules.StraightPool, "human", "human", "Billiards: 14.1 straight pool, Player 1 vs Player 2")]
     [InlineData(GameRules.EightBall, "computer:2", "Ben", "Billiards: 8-ball, Computer L2 vs Ben")]
-    public void The_window_title_names_the_game_and_players_not_the_scenes_name(GameRules rules, string a, string b, string expected)
+    public void TheWindowTitleNamesTheGameAndPlayersNotTheScenesName(GameRules rules, string a, string b, string expected)
     {
         var scene = SceneLoader.Load(AssetFolder.Scene("eight-ball.json"));
         Assert.Equal("8-ball for two players", scene.Name);
@@ -27,7 +27,7 @@ public class StaleLineTests
     }
 
     [Fact]
-    public void The_help_speaks_the_players_language_not_the_thesis_sections()
+    public void TheHelpSpeaksThePlayersLanguageNotTheThesisSections()
     {
         Assert.DoesNotContain(HelpText.Lines, l => l.Contains("seed", StringComparison.OrdinalIgnoreCase));
         Assert.DoesNotContain(HelpText.Lines, l => l.Contains("effet", StringComparison.OrdinalIgnoreCase));
@@ -38,7 +38,7 @@ public class StaleLineTests
         new(new ShotSpec(2.5, 10), null, call, false, kind, new BallId(3), pocket, pot, 0.4, 100, 5);
 
     [Fact]
-    public void A_safety_hint_gives_no_pot_rate_and_a_pot_hint_does()
+    public void ASafetyHintGivesNoPotRateAndAPotHintDoes()
     {
         string safety = ComputerPlayerNode.HintLine(Hint(ShotKind.Safety, PocketId.None, 0, Call.Safety));
         Assert.Equal("Hint: a safety at 2.5 m/s; Space shoots.", safety);
@@ -47,7 +47,7 @@ public class StaleLineTests
     }
 
     [Fact]
-    public void The_spin_and_elevation_are_not_shown_while_the_balls_roll()
+    public void TheSpinAndElevationAreNotShownWhileTheBallsRoll()
     {
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
         var rolling = game.Frame().Hud!.Lines;

@@ -23,7 +23,7 @@ public class TargetViewTests
     }
 
     [Fact]
-    public void The_view_turns_to_the_nearest_legal_ball_at_the_start_and_after_every_shot()
+    public void TheViewTurnsToTheNearestLegalBallAtTheStartAndAfterEveryShot()
     {
         // After the break (shot 1), so that a miss is a foul and not a bad break with options.
         var scene = SceneLoader.Parse(Json, "t.json") with { Game = new GameState(GameRules.EightBall) { Shot = 1, Players = new PerPlayer<string>("Anna", "Ben") } };
@@ -52,7 +52,7 @@ public class TargetViewTests
     }
 
     [Fact]
-    public void On_a_rematch_the_view_turns_to_the_new_racks_nearest_legal_ball()
+    public void OnARematchTheViewTurnsToTheNewRacksNearestLegalBall()
     {
         var scene = SceneLoader.Parse(Json, "t.json") with { Game = new GameState(GameRules.EightBall) { Shot = 1, Players = new PerPlayer<string>("Anna", "Ben") } };
         using var game = new TestGame(scene, new MatchSetup(GameRules.EightBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));

@@ -25,7 +25,7 @@ public class KeyRepeatTests
     }
 
     [Fact]
-    public void A_held_key_repeats_after_the_delay_and_speeds_up_to_the_top_rate()
+    public void AHeldKeyRepeatsAfterTheDelayAndSpeedsUpToTheTopRate()
     {
         var times = Repeats(Key.Left, 3, 1.0 / 60);
         Assert.Equal(KeyRepeat.Delay, times[0], 12);
@@ -39,7 +39,7 @@ public class KeyRepeatTests
     }
 
     [Fact]
-    public void The_repeats_fall_at_the_same_times_at_any_frame_rate()
+    public void TheRepeatsFallAtTheSameTimesAtAnyFrameRate()
     {
         var at60 = Repeats(Key.W, 2, 1.0 / 60);
         Assert.Equal(at60, Repeats(Key.W, 2, 1.0 / 144));
@@ -47,7 +47,7 @@ public class KeyRepeatTests
     }
 
     [Fact]
-    public void Keys_that_do_not_step_a_value_never_repeat_and_a_released_key_stops()
+    public void KeysThatDoNotStepAValueNeverRepeatAndAReleasedKeyStops()
     {
         Assert.Empty(Repeats(Key.Space, 3, 0.1));
         Assert.Empty(Repeats(Key.G, 3, 0.1));
@@ -69,7 +69,7 @@ public class HeldKeyTests
         new(TestScenes.TwoBalls(), new MatchSetup(Billiards.Core.Rules.GameRules.EightBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
 
     [Fact]
-    public void Holding_the_aim_key_turns_the_cue_once_then_by_every_repeat()
+    public void HoldingTheAimKeyTurnsTheCueOnceThenByEveryRepeat()
     {
         using var game = Game();
         var match = Match(game);
@@ -98,7 +98,7 @@ public class HeldKeyTests
     }
 
     [Fact]
-    public void Holding_power_up_goes_from_3_to_8_metres_a_second_in_under_two_seconds()
+    public void HoldingPowerUpGoesFrom3To8MetresASecondInUnderTwoSeconds()
     {
         using var game = Game();
         var match = Match(game);
@@ -117,7 +117,7 @@ public class HeldKeyTests
     }
 
     [Fact]
-    public void Shift_makes_the_arrow_keys_and_the_mouse_orbit_fine()
+    public void ShiftMakesTheArrowKeysAndTheMouseOrbitFine()
     {
         using var game = Game();
         var match = Match(game);

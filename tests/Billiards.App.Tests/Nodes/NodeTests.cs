@@ -41,7 +41,7 @@ public class NodeTests
     }
 
     [Fact]
-    public void Ready_runs_children_before_parents()
+    public void ReadyRunsChildrenBeforeParents()
     {
         var (tree, log) = Tree();
         tree.Start();
@@ -50,7 +50,7 @@ public class NodeTests
     }
 
     [Fact]
-    public void Process_physics_and_draw_run_parents_first_in_child_order()
+    public void ProcessPhysicsAndDrawRunParentsFirstInChildOrder()
     {
         var (tree, log) = Tree();
         tree.Start();
@@ -65,7 +65,7 @@ public class NodeTests
     }
 
     [Fact]
-    public void Input_runs_from_the_last_child_back_and_stops_where_handled()
+    public void InputRunsFromTheLastChildBackAndStopsWhereHandled()
     {
         var (tree, log) = Tree();
         tree.Start();
@@ -81,7 +81,7 @@ public class NodeTests
     }
 
     [Fact]
-    public void A_child_added_to_a_started_tree_gets_ready_at_once_and_signals_it()
+    public void AChildAddedToAStartedTreeGetsReadyAtOnceAndSignalsIt()
     {
         var (tree, log) = Tree();
         tree.Start();
@@ -96,7 +96,7 @@ public class NodeTests
     }
 
     [Fact]
-    public void Children_can_be_removed_and_found_and_cycles_are_refused()
+    public void ChildrenCanBeRemovedAndFoundAndCyclesAreRefused()
     {
         var (tree, _) = Tree();
         var a = tree.Root.Children[0];

@@ -5,7 +5,7 @@ namespace Billiards.App.Tests.Platform;
 public class FramePacerTests
 {
     [Fact]
-    public void Frames_start_one_period_apart_whatever_each_took()
+    public void FramesStartOnePeriodApartWhateverEachTook()
     {
         var pacer = new FramePacer(50);   // 20 ms
         double now = 0;
@@ -25,7 +25,7 @@ public class FramePacerTests
     }
 
     [Fact]
-    public void A_frame_that_runs_over_does_not_make_the_next_ones_hurry()
+    public void AFrameThatRunsOverDoesNotMakeTheNextOnesHurry()
     {
         var pacer = new FramePacer(60);
         Assert.Equal(0, pacer.WaitAfter(1.0));
@@ -35,7 +35,7 @@ public class FramePacerTests
     }
 
     [Fact]
-    public void No_cap_never_waits()
+    public void NoCapNeverWaits()
     {
         var pacer = new FramePacer(0);
         Assert.Equal(0, pacer.WaitAfter(0));

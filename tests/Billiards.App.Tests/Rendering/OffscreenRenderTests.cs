@@ -36,7 +36,7 @@ public class OffscreenRenderTests(GlFixture gl, ITestOutputHelper output)
     }
 
     [Fact]
-    public void Render_DrawsEachBallInItsColourOnGreenCloth()
+    public void RenderDrawsEachBallInItsColourOnGreenCloth()
     {
         var frame = KnownFrame();
         byte[] pixels = gl.Renderer.Render(frame);
@@ -65,7 +65,7 @@ public class OffscreenRenderTests(GlFixture gl, ITestOutputHelper output)
     }
 
     [Fact]
-    public void Render_HidesInvisibleBallsAndDrawsTheCue()
+    public void RenderHidesInvisibleBallsAndDrawsTheCue()
     {
         var frame = KnownFrame();
         var vp = RenderMath.ViewProjection(frame);
@@ -85,7 +85,7 @@ public class OffscreenRenderTests(GlFixture gl, ITestOutputHelper output)
     }
 
     [Fact]
-    public void The_scoreboard_stays_in_a_band_along_the_top_edge_and_the_developer_lines_wait_for_their_key()
+    public void TheScoreboardStaysInABandAlongTheTopEdgeAndTheDeveloperLinesWaitForTheirKey()
     {
         var frame = KnownFrame();
         byte[] plain = gl.Renderer.Render(frame);
@@ -125,7 +125,7 @@ public class OffscreenRenderTests(GlFixture gl, ITestOutputHelper output)
     }
 
     [Fact]
-    public void Render_DrawsTheHudAndTheCollisionDebugLines()
+    public void RenderDrawsTheHudAndTheCollisionDebugLines()
     {
         var frame = KnownFrame();
         byte[] plain = gl.Renderer.Render(frame);
@@ -192,7 +192,7 @@ public class OffscreenRenderTests(GlFixture gl, ITestOutputHelper output)
     }
 
     [Fact]
-    public void Render_TheClothIsTexturedNotOneFlatColour()
+    public void RenderTheClothIsTexturedNotOneFlatColour()
     {
         // The lamps' light varies smoothly over the bed (a few levels over hundreds of pixels); the
         // cloth's weave and mottle change from one pixel to the next. Mean absolute difference of
@@ -224,7 +224,7 @@ public class OffscreenRenderTests(GlFixture gl, ITestOutputHelper output)
     }
 
     [Fact]
-    public void Render_ABallCastsAShadowOnTheClothAwayFromTheLamps()
+    public void RenderABallCastsAShadowOnTheClothAwayFromTheLamps()
     {
         // A ball at y = 0.4 m: the lamps hang over the long axis (y = 0), so its shadow falls
         // outwards, towards +y, and at its foot. Both are darker than open cloth at the same

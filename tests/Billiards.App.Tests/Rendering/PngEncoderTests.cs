@@ -5,7 +5,7 @@ namespace Billiards.App.Tests.Rendering;
 public class PngEncoderTests
 {
     [Fact]
-    public void Crc32_MatchesTheKnownCheckValue()
+    public void Crc32MatchesTheKnownCheckValue()
     {
         // The standard check value of CRC-32 for "123456789".
         Assert.Equal(0xCBF43926u, PngEncoder.Crc32("123456789"u8));
@@ -15,7 +15,7 @@ public class PngEncoderTests
     [InlineData(1, 1)]
     [InlineData(7, 3)]
     [InlineData(64, 48)]
-    public void Encode_RoundTripsEveryPixel(int width, int height)
+    public void EncodeRoundTripsEveryPixel(int width, int height)
     {
         var random = new Random(width * 1000 + height);
         var pixels = new byte[width * height * 4];
@@ -27,7 +27,7 @@ public class PngEncoderTests
     }
 
     [Fact]
-    public void Encode_RejectsAWrongPixelCount()
+    public void EncodeRejectsAWrongPixelCount()
     {
         Assert.Throws<ArgumentException>(() => PngEncoder.Encode(new byte[15], 2, 2));
     }

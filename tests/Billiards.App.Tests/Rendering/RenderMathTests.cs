@@ -7,7 +7,7 @@ namespace Billiards.App.Tests.Rendering;
 public class RenderMathTests
 {
     [Fact]
-    public void ToPixel_PutsTheTargetAtTheCentre()
+    public void ToPixelPutsTheTargetAtTheCentre()
     {
         var vp = RenderMath.View(new Vector3(-2, 0.5f, 1.5f), new Vector3(0.3f, -0.2f, 0)) * RenderMath.Projection(45, 16f / 9);
         var pixel = RenderMath.ToPixel(vp, new Vector3(0.3f, -0.2f, 0), 1280, 720);
@@ -17,7 +17,7 @@ public class RenderMathTests
     }
 
     [Fact]
-    public void ToPixel_ZUpIsUpAndTheRightIsRight()
+    public void ToPixelZUpIsUpAndTheRightIsRight()
     {
         // Looking along +x with z up: +z goes up the picture (smaller y), -y goes right.
         var vp = RenderMath.View(Vector3.Zero, Vector3.UnitX) * RenderMath.Projection(60, 1);
@@ -31,7 +31,7 @@ public class RenderMathTests
     }
 
     [Fact]
-    public void Projection_MapsNearAndFarToTheGlDepthRange()
+    public void ProjectionMapsNearAndFarToTheGlDepthRange()
     {
         var p = RenderMath.Projection(45, 1.5f, 0.1f, 10);
         var near = Vector4.Transform(new Vector4(0, 0, -0.1f, 1), p);
@@ -44,7 +44,7 @@ public class RenderMathTests
     }
 
     [Fact]
-    public void View_LookingStraightDownIsStillValid()
+    public void ViewLookingStraightDownIsStillValid()
     {
         var view = RenderMath.View(new Vector3(0, 0, 3), Vector3.Zero);
         Assert.False(float.IsNaN(view.M11));
@@ -56,7 +56,7 @@ public class RenderMathTests
     [InlineData("pool-9ft", 1280, 720)]
     [InlineData("pool-7ft", 800, 800)]
     [InlineData("thesis", 640, 1000)]
-    public void DefaultCamera_ShowsTheWholeTableFromBehindTheHeadRail(string preset, int width, int height)
+    public void DefaultCameraShowsTheWholeTableFromBehindTheHeadRail(string preset, int width, int height)
     {
         var table = TableSpec.FromPreset(preset);
         var (eye, target) = RenderMath.DefaultCamera(table, (float)width / height, 45);
@@ -73,7 +73,7 @@ public class RenderMathTests
     }
 
     [Fact]
-    public void CuePlacement_PutsTheTipPullBackBehindTheContactPoint()
+    public void CuePlacementPutsTheTipPullBackBehindTheContactPoint()
     {
         const float R = 0.028575f;
         var ball = new Vector3(0.2f, 0.1f, R);

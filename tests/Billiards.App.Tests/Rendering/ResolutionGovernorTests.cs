@@ -5,7 +5,7 @@ namespace Billiards.App.Tests.Rendering;
 public class ResolutionGovernorTests
 {
     [Fact]
-    public void Slow_frames_lower_the_scale_at_once_to_its_floor_and_quick_ones_raise_it_slowly_to_full()
+    public void SlowFramesLowerTheScaleAtOnceToItsFloorAndQuickOnesRaiseItSlowlyToFull()
     {
         var governor = new ResolutionGovernor();
         Assert.Equal(ResolutionGovernor.Start, governor.Scale);

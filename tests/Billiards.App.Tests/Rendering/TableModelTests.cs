@@ -13,11 +13,11 @@ public class TableModelTests
 
     /// <summary>
     /// The committed model matches the generator. To regenerate after changing the generator:
-    /// BILLIARDS_WRITE_MODELS=1 dotnet test --filter CommittedModel_MatchesTheGenerator
+    /// BILLIARDS_WRITE_MODELS=1 dotnet test --filter CommittedModelMatchesTheGenerator
     /// </summary>
     [Theory]
     [MemberData(nameof(Presets))]
-    public void CommittedModel_MatchesTheGenerator(string preset)
+    public void CommittedModelMatchesTheGenerator(string preset)
     {
         var spec = TableSpec.FromPreset(preset);
         if (Environment.GetEnvironmentVariable("BILLIARDS_WRITE_MODELS") == "1")
@@ -62,7 +62,7 @@ public class TableModelTests
     }
 
     [Fact]
-    public void PathFor_GeneratesAModelForAChangedTable()
+    public void PathForGeneratesAModelForAChangedTable()
     {
         var spec = TableSpec.FromPreset("pool-9ft") with { Length = 2.0, Width = 1.0 };
         string path = TableModels.PathFor(spec);
@@ -72,7 +72,7 @@ public class TableModelTests
     }
 
     [Fact]
-    public void Assimp_ImportsTheGeneratedModelWithItsMaterials()
+    public void AssimpImportsTheGeneratedModelWithItsMaterials()
     {
         var spec = TableSpec.FromPreset("pool-9ft");
         var generated = TableModelGenerator.Generate(spec);
@@ -90,7 +90,7 @@ public class TableModelTests
     }
 
     [Fact]
-    public void Each_pocket_cups_rim_lies_on_the_holes_outline_so_no_wall_stands_over_the_cloth_or_leaves_a_gap()
+    public void EachPocketCupsRimLiesOnTheHolesOutlineSoNoWallStandsOverTheClothOrLeavesAGap()
     {
         var spec = TableSpec.FromPreset("pool-9ft");
         var parts = TableModelGenerator.Generate(spec);
@@ -112,7 +112,7 @@ public class TableModelTests
     }
 
     [Fact]
-    public void Assimp_ReportsAnUnreadableFile()
+    public void AssimpReportsAnUnreadableFile()
     {
         string path = Path.Combine(Path.GetTempPath(), $"not-a-model-{Environment.ProcessId}.obj");
         File.WriteAllText(path, "this is not a model\n");
@@ -128,7 +128,7 @@ public class TableModelTests
 
     [Theory]
     [MemberData(nameof(Presets))]
-    public void Generate_CutsSixPocketsIntoTheBed(string preset)
+    public void GenerateCutsSixPocketsIntoTheBed(string preset)
     {
         var spec = TableSpec.FromPreset(preset);
         var cloth = TableModelGenerator.Generate(spec).Single(m => m.Material.Name == "cloth");

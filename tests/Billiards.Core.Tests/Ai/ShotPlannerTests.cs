@@ -48,7 +48,7 @@ public class ShotPlannerTests
     {
         var state = new GameState(GameRules.EightBall) { Shot = 0 };
         var position = TablePosition.Rack(new Billiards.Core.Setup.RackSpec(Billiards.Core.Setup.RackGame.EightBall, 5), Pool, Params.R, PoolBalls.Cue);
-        var broken = Simulate(position, new Cue.ShotSpec(7, 0.3, 0, -0.2));
+        var broken = Simulate(position, new Billiards.Core.Cue.ShotSpec(7, 0.3, 0, -0.2));
         var after = TablePosition.After(broken);
         var open = new GameState(GameRules.EightBall) { Shot = 1, BallInHand = after.Cue is null ? BallInHand.Table : BallInHand.None };
 

@@ -82,7 +82,7 @@ public class BallSetTests
     }
 
     [Fact]
-    public void A_set_with_two_cue_balls_plays_the_second_as_the_shots_cue_ball_and_files_name_it()
+    public void ASetWithTwoCueBallsPlaysTheSecondAsTheShotsCueBallAndFilesNameIt()
     {
         var look = new BallLook(1, 1, 1, false, false);
         var (white, yellow, red) = (new BallId(0), new BallId(1), new BallId(2));

@@ -2,7 +2,7 @@ using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Table;
 
-namespace Billiards.Core.Tests;
+namespace Billiards.Core.Tests.Cue;
 
 public class CueClearanceTests
 {
@@ -24,7 +24,7 @@ public class CueClearanceTests
     }
 
     [Fact]
-    public void A_cue_over_open_bed_needs_no_raise_and_near_a_rail_it_clears_the_rail_top()
+    public void ACueOverOpenBedNeedsNoRaiseAndNearARailItClearsTheRailTop()
     {
         // Far from the rail behind: 1 m of bed; the cue rising from the ball's centre is above the rail top after 1 m at 1 deg or so.
         var aim = new Vec3(1, 0, 0);
@@ -48,7 +48,7 @@ public class CueClearanceTests
     [InlineData(2.5, 0.01, 0.0, 0.0)]    // a little off the line
     [InlineData(3.0, 0.0, 0.0, -0.4)]    // draw: the axis starts lower
     [InlineData(4.0, -0.015, 0.3, 0.2)]  // side and follow
-    public void Over_a_ball_behind_the_cue_passes_it_by_the_gap(double behindRadii, double sideways, double tipSide, double tipHeight)
+    public void OverABallBehindTheCuePassesItByTheGap(double behindRadii, double sideways, double tipSide, double tipHeight)
     {
         var cueBall = new Vec3(0, 0, R);
         var aim = new Vec3(Math.Cos(0.3), Math.Sin(0.3), 0);
@@ -64,7 +64,7 @@ public class CueClearanceTests
     }
 
     [Fact]
-    public void Balls_in_front_beside_the_cue_or_beyond_its_butt_do_not_raise_it()
+    public void BallsInFrontBesideTheCueOrBeyondItsButtDoNotRaiseIt()
     {
         var cueBall = new Vec3(0, 0, R);
         var aim = new Vec3(1, 0, 0);
@@ -74,7 +74,7 @@ public class CueClearanceTests
     }
 
     [Fact]
-    public void A_playable_shot_is_raised_to_the_higher_of_the_rail_and_the_balls_and_never_lowered()
+    public void APlayableShotIsRaisedToTheHigherOfTheRailAndTheBallsAndNeverLowered()
     {
         var cueBall = new Vec3(0, 0, R);
         var behind = new Vec3(-2.2 * R, 0, R);

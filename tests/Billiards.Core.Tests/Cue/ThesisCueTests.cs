@@ -1,6 +1,6 @@
 using Billiards.Core.Cue;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Cue;
 
 /// <summary>Formel 31 (stroke speed) and the reset of the cue.</summary>
 public class ThesisCueTests
@@ -11,13 +11,13 @@ public class ThesisCueTests
     [InlineData(400f, 100f, 800f)]  // 1000, capped at 800
     [InlineData(10f, 0f, 800f)]     // no time at all: the cap
     [InlineData(0f, 10f, 0f)]       // no forward travel: no strike speed
-    public void Stroke_speed_is_distance_over_time_times_250_capped_at_800(float pixels, float ms, float expected)
+    public void StrokeSpeedIsDistanceOverTimeTimes250CappedAt800(float pixels, float ms, float expected)
     {
         Assert.Equal(expected, ThesisCue.StrokeSpeed(pixels, ms), 1e-4f);
     }
 
     [Fact]
-    public void Reset_centres_the_tip_and_levels_the_cue()
+    public void ResetCentresTheTipAndLevelsTheCue()
     {
         var queue = new ThesisCue { EX = 1, EY = 2, Grade = 10 };
         queue.Reset();

@@ -2,7 +2,7 @@ using Billiards.Core.Mathematics;
 
 // Not Billiards.Core.Tests.Mathematics: that namespace would hide Billiards.Core.Mathematics from
 // tests that write Mathematics.Vec3.
-namespace Billiards.Core.Tests.MathematicsTests;
+namespace Billiards.Core.Tests.Mathematics;
 
 /// <summary>SeededRandom draws exactly what System.Random with the same seed draws, and its state copies.</summary>
 public class SeededRandomTests

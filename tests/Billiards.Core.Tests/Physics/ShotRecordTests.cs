@@ -3,7 +3,7 @@ using Billiards.Core.Balls;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
 using Billiards.Core.Table;
-using static Billiards.Core.Tests.Standard.StandardTestKit;
+using static Billiards.Core.Tests.Physics.Standard.StandardTestKit;
 
 namespace Billiards.Core.Tests.Physics;
 

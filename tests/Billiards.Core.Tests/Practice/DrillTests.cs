@@ -29,7 +29,7 @@ public class DrillTests
     }
 
     [Fact]
-    public void At_least_twelve_drills_ship_with_the_classic_shots_among_them()
+    public void AtLeastTwelveDrillsShipWithTheClassicShotsAmongThem()
     {
         var names = DrillNames();
         Assert.True(names.Count >= 12, $"{names.Count} drills");
@@ -80,7 +80,7 @@ public class DrillTests
 
     [Theory]
     [MemberData(nameof(Names))]
-    public void Every_drill_is_achievable_its_reference_shots_meet_its_goal(string name)
+    public void EveryDrillIsAchievableItsReferenceShotsMeetItsGoal(string name)
     {
         var drill = Load(name);
         Assert.Equal(name, drill.Name);
@@ -108,7 +108,7 @@ public class DrillTests
     }
 
     [Fact]
-    public void The_technique_drills_need_their_technique_draw_below_centre_follow_above_and_the_kick_cannot_go_straight()
+    public void TheTechniqueDrillsNeedTheirTechniqueDrawBelowCentreFollowAboveAndTheKickCannotGoStraight()
     {
         Assert.All(Load("draw-shot").Reference, s => Assert.True(s.TipHeight < 0, "a draw is struck below centre"));
         Assert.All(Load("stop-shot").Reference, s => Assert.True(s.TipHeight < 0, "a stop shot is struck below centre"));
@@ -164,7 +164,7 @@ public class DrillTests
         [new BallId(1), new BallId(2)], zone, []) { Pockets = [Pocket("foot-left"), PocketId.None] };
 
     [Fact]
-    public void An_attempt_fails_on_a_scratch_a_wrong_ball_a_wrong_pocket_or_an_extra_ball_and_succeeds_only_in_order()
+    public void AnAttemptFailsOnAScratchAWrongBallAWrongPocketOrAnExtraBallAndSucceedsOnlyInOrder()
     {
         var one = new BallId(1);
         var two = new BallId(2);
@@ -195,7 +195,7 @@ public class DrillTests
     }
 
     [Fact]
-    public void A_zone_is_met_inside_its_radius_and_the_distance_from_its_centre_is_reported()
+    public void AZoneIsMetInsideItsRadiusAndTheDistanceFromItsCentreIsReported()
     {
         var zone = new DrillZone(new Vec3(0.2, 0.1, 0), 0.05);
         var one = new BallId(1);
@@ -218,7 +218,7 @@ public class DrillTests
     [InlineData("""{ "format": "billiards-drill/1", "title": "T", "goal": "G", "scene": { "format": "billiards-scene/1", "balls": [ { "id": "cue", "position": [0, 0] }, { "id": "1", "position": [0.5, 0] } ] }, "sequence": ["1"], "reference": [] }""", "$.reference")]
     [InlineData("""{ "format": "billiards-drill/1", "title": "T", "goal": "G", "scene": { "format": "billiards-scene/1", "balls": [ { "id": "cue", "position": [0, 0] }, { "id": "1", "position": [0.5, 0] } ] }, "sequence": ["1"], "zone": { "centre": [9, 0], "radius": 0.1 } }""", "$.zone")]
     [InlineData("""{ "format": "billiards-drill/1", "title": "T", "goal": "G", "scene": { "format": "billiards-scene/1", "balls": [ { "id": "cue", "position": [0, 0] }, { "id": "1", "position": [0.5, 0] } ] }, "sequence": ["1"], "extra": 1 }""", "$.extra")]
-    public void A_bad_drill_is_one_error_naming_the_field(string json, string at)
+    public void ABadDrillIsOneErrorNamingTheField(string json, string at)
     {
         var e = Assert.Throws<SceneException>(() => Drill.Parse(json, "bad.json"));
         Assert.Equal(at, e.JsonPath);

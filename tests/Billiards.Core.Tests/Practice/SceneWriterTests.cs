@@ -11,7 +11,7 @@ public class SceneWriterTests
     [InlineData("thesis-nine-ball-break.json")]
     [InlineData("masse.json")]
     [InlineData("bank.json")]
-    public void A_written_scene_reads_back_equal_and_plays_its_shot_bit_for_bit(string file)
+    public void AWrittenSceneReadsBackEqualAndPlaysItsShotBitForBit(string file)
     {
         var scene = SceneLoader.Load(AssetFolder.Scene(file));
         var text = System.Text.Encoding.UTF8.GetString(SceneWriter.ToUtf8(scene));

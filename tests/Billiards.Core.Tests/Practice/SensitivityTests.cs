@@ -26,7 +26,7 @@ public class SensitivityTests
     }
 
     [Fact]
-    public void The_same_shot_seed_and_level_give_the_same_endings_and_the_errors_are_the_level_s()
+    public void TheSameShotSeedAndLevelGiveTheSameEndingsAndTheErrorsAreTheLevelS()
     {
         var (position, shot) = Straight();
         var a = Planner.Sensitivity(position, shot, SkillLevel.Of(3), 24, 7, new BallId(1));
@@ -44,7 +44,7 @@ public class SensitivityTests
     }
 
     [Fact]
-    public void A_short_straight_pot_is_sure_at_level_5_and_a_long_thin_cut_pots_less_often_at_level_1()
+    public void AShortStraightPotIsSureAtLevel5AndALongThinCutPotsLessOftenAtLevel1()
     {
         var (position, shot) = Straight();
         var sure = Planner.Sensitivity(position, shot, SkillLevel.Of(5), 40, 1, new BallId(1));
@@ -74,7 +74,7 @@ public class SensitivityTests
     }
 
     [Fact]
-    public void The_sample_count_is_bounded()
+    public void TheSampleCountIsBounded()
     {
         var (position, shot) = Straight();
         Assert.Throws<ArgumentOutOfRangeException>(() => Planner.Sensitivity(position, shot, SkillLevel.Of(3), 0, 1));

@@ -240,29 +240,67 @@ public class MatchTests
     public void AReplayComparesTheBallsAtRestNotOnlyTheRuling()
     {
         var game = PlayOut(GameSetup.Of(GameRules.EightBall, 3, Players));
-        string text = Encoding.UTF8.GetString(GameRecordFile.ToUtf8(game));
-        // Shot 1's balls at rest, moved by a tenth of a millimetre: the ruling alone would not tell.
-        using var doc = System.Text.Json.JsonDocument.Parse(text);
-        var ball = doc.RootElement.GetProperty("shots")[1].GetProperty("balls")[0].GetProperty("position");
-        string x = ball[0].GetRawText();
+        var root = System.Text.Json.Nodes.JsonNode.Parse(GameRecordFile.ToUtf8(game))!;
         var invariant = System.Globalization.CultureInfo.InvariantCulture;
-        string bumped = (double.Parse(x, invariant) + 1e-4).ToString("R", invariant);
-        int xAt = text.IndexOf(x, IndexOfNth(text, "\"balls\"", 2), StringComparison.Ordinal);
-        string changed = string.Concat(text.AsSpan(0, xAt), bumped, text.AsSpan(xAt + x.Length));
-        var report = GameRecordFile.Verify(GameRecordFile.Parse(changed, "game.json"), out _);
+        string Balls(double bump) => "[" + string.Join(", ", game.Shots[1].After.Select((b, i) =>
+            string.Create(invariant, $$"""{ "id": "{{b.Id}}", "position": [{{(b.Position.X + (i == 0 ? bump : 0)).ToString("R", invariant)}}, {{b.Position.Y.ToString("R", invariant)}}] }"""))) + "]";
+        root["shots"]![1]!["balls"] = System.Text.Json.Nodes.JsonNode.Parse(Balls(0));
+        Assert.Null(GameRecordFile.Verify(GameRecordFile.Parse(root.ToJsonString(), "game.json"), out _).FirstDifference);
+        // Shot 1's balls at rest, moved by a tenth of a millimetre: the ruling alone would not tell.
+        root["shots"]![1]!["balls"] = System.Text.Json.Nodes.JsonNode.Parse(Balls(1e-4));
+        var report = GameRecordFile.Verify(GameRecordFile.Parse(root.ToJsonString(), "game.json"), out _);
         Assert.Equal(1, report.FirstDifference!.Shot);
         Assert.Equal("balls", report.FirstDifference.Field);
     }
 
-    // The n-th (1-based) occurrence of a string.
-    private static int IndexOfNth(string text, string value, int n)
+    [Fact]
+    public void ARecordHoldsOnlyTheContractsFieldsAndTheOptionTakenIsTheOneThatLeadsToTheNextShot()
     {
-        int at = -1;
-        for (int k = 0; k < n; k++)
+        // A bad break (seed 375811699, found with selfplay): the incoming player may accept or rerack.
+        var game = new Match(GameSetup.Of(GameRules.EightBall, 375811699, Players));
+        var breakShot = new GameShot(new Billiards.Core.Cue.ShotSpec(6.47982420001081, -0.0843483203892596, -0.06654588027415695, -0.25294621533079914, 3.2887587689229236), Place: new Vec3(-0.69215, 0, 0));
+        var sim = game.Strike(breakShot);
+        Match.RunToRest(sim);
+        var ruling = game.Judge(sim).Ruling;
+        Assert.Equal([RefereeOption.Accept, RefereeOption.Rerack], ruling.Options);
+        // Not the first option: a replay that took the first would break again from the wrong state.
+        game.Choose(RefereeOption.Rerack);
+        Assert.Equal(0, game.State.Shot);
+        game.Play(breakShot with { Place = new Vec3(-0.7, 0.1, 0) });
+
+        string json = Encoding.UTF8.GetString(GameRecordFile.ToUtf8(game));
+        using (var doc = System.Text.Json.JsonDocument.Parse(json))
         {
-            at = text.IndexOf(value, at + 1, StringComparison.Ordinal);
+            Assert.Equal(["format", "table", "physics", "rack", "shots"], doc.RootElement.EnumerateObject().Select(p => p.Name));
+            foreach (var shot in doc.RootElement.GetProperty("shots").EnumerateArray())
+            {
+                // The contract's fields, the option taken where one was offered, and the balls at rest that replay --verify compares.
+                Assert.Equal(shot.GetProperty("ruling").GetProperty("options").GetArrayLength() > 0
+                    ? ["game", "place", "call", "shot", "choice", "ruling", "balls"]
+                    : ["game", "place", "call", "shot", "ruling", "balls"], shot.EnumerateObject().Select(p => p.Name));
+            }
         }
-        return at;
+        var record = GameRecordFile.Parse(json, "rerack.json");
+        Assert.Equal(RefereeOption.Rerack, record.ChoiceAfter(0, ruling));
+        // Without the named choice, the next shot's block tells it.
+        Assert.Equal(RefereeOption.Rerack, (record with { Shots = [.. record.Shots.Select(x => x with { Choice = null })] }).ChoiceAfter(0, ruling));
+        var report = GameRecordFile.Verify(record, out var replayed);
+        Assert.Null(report.FirstDifference);
+        Assert.Equal(2, report.Same);
+        Assert.Equal(RefereeOption.Rerack, replayed.Shots[0].Input.Choice);
+    }
+
+    [Fact]
+    public void SeveralGamesAreOneRecordALineEachReplayingOnItsOwn()
+    {
+        var first = PlayOut(GameSetup.Of(GameRules.NineBall, 1, Players), maxShots: 6);
+        var second = PlayOut(GameSetup.Of(GameRules.NineBall, 2, Players), maxShots: 4);
+        string[] lines = Encoding.UTF8.GetString(GameRecordFile.ToJsonLines([first, second])).Split('\n', StringSplitOptions.RemoveEmptyEntries);
+        Assert.Equal(2, lines.Length);
+        Assert.Equal(first.Shots.Count, GameRecordFile.Parse(lines[0], "session.jsonl").Shots.Count);
+        var record = GameRecordFile.Parse(lines[1], "session.jsonl");
+        Assert.Equal(2, record.Setup.Seed);
+        Assert.Null(GameRecordFile.Verify(record, out _).FirstDifference);
     }
 }
 
@@ -296,4 +334,5 @@ public class GameRecordFileTests
             """, "g.json"));
         Assert.Equal("$.shots[0].game.shooter", e.JsonPath);
     }
+
 }

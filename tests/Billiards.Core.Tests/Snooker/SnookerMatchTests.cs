@@ -36,7 +36,7 @@ public class SnookerMatchTests
     [InlineData(7)]
     [InlineData(1234)]
     [InlineData(99)]
-    public void Random_shots_through_a_frame_apply_every_ruling_and_replay(int seed)
+    public void RandomShotsThroughAFrameApplyEveryRulingAndReplay(int seed)
     {
         var random = new Random(seed);
         var match = new Match(GameSetup.Of(GameRules.Snooker, 3));
@@ -74,7 +74,7 @@ public class SnookerMatchTests
     }
 
     [Fact]
-    public void A_snooker_frame_starts_from_its_rack_on_its_table_with_the_cue_ball_in_hand_in_the_D()
+    public void ASnookerFrameStartsFromItsRackOnItsTableWithTheCueBallInHandInTheD()
     {
         var match = new Match(GameSetup.Of(GameRules.Snooker, 1));
         Assert.Equal("snooker-12ft", match.Setup.Table.Preset);
@@ -85,7 +85,7 @@ public class SnookerMatchTests
     }
 
     [Fact]
-    public void Replace_after_a_foul_and_a_miss_puts_every_ball_back_and_the_offender_plays_again()
+    public void ReplaceAfterAFoulAndAMissPutsEveryBallBackAndTheOffenderPlaysAgain()
     {
         var match = Opening(RefereeOption.Replace);
         var miss = match.Shots[^1];
@@ -100,7 +100,7 @@ public class SnookerMatchTests
     }
 
     [Fact]
-    public void Play_after_a_foul_leaves_the_balls_where_they_lie_for_the_incoming_player()
+    public void PlayAfterAFoulLeavesTheBallsWhereTheyLieForTheIncomingPlayer()
     {
         var match = Opening(RefereeOption.Play);
         var lie = match.Shots[^1].After.ToDictionary(b => b.Id, b => b.Position);
@@ -123,7 +123,7 @@ public class SnookerMatchTests
     /// reads) replays shot for shot. To write it again: BILLIARDS_WRITE_RECORDS=1 dotnet test --filter The_committed_snooker_record.
     /// </summary>
     [Fact]
-    public void The_committed_snooker_record_replays_with_verify()
+    public void TheCommittedSnookerRecordReplaysWithVerify()
     {
         string path = AssetFolder.File("records/snooker-opening.json");
         if (Environment.GetEnvironmentVariable("BILLIARDS_WRITE_RECORDS") == "1")
@@ -142,7 +142,7 @@ public class SnookerMatchTests
     private static string SourceFolder([System.Runtime.CompilerServices.CallerFilePath] string file = "") => Path.GetDirectoryName(file)!;
 
     [Fact]
-    public void A_recorded_snooker_frame_replays_ruling_for_ruling()
+    public void ARecordedSnookerFrameReplaysRulingForRuling()
     {
         var match = Scripted();
         var text = System.Text.Encoding.UTF8.GetString(GameRecordFile.ToUtf8(match));

@@ -17,7 +17,7 @@ public class SnookerRefereeTests
     private static GameState OnColour(string nominated) => Frame with { BallOn = "colour", Call = Call.Nominate(Id(nominated)) };
 
     [Fact]
-    public void Values_red_1_yellow_2_green_3_brown_4_blue_5_pink_6_black_7()
+    public void ValuesRed1Yellow2Green3Brown4Blue5Pink6Black7()
     {
         Assert.Equal([1, 2, 3, 4, 5, 6, 7], new[] { "red-9", "yellow", "green", "brown", "blue", "pink", "black" }.Select(n => SnookerRuleset.ValueOf(Id(n))));
         // The value is what a potted ball on scores.
@@ -30,7 +30,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Ball_on_red_while_reds_remain_each_red_potted_scores_1_and_a_colour_is_on_next()
+    public void BallOnRedWhileRedsRemainEachRedPottedScores1AndAColourIsOnNext()
     {
         var ruling = new SnookerShot().Hit("red-3").Pot("red-3").Pot("red-7").Judge(OnRed);
         Assert.True(ruling.Legal && ruling.Continue);
@@ -41,7 +41,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Ball_on_colour_the_nominated_colour_potted_while_reds_remain_scores_and_is_respotted_and_a_red_is_on_next()
+    public void BallOnColourTheNominatedColourPottedWhileRedsRemainScoresAndIsRespottedAndARedIsOnNext()
     {
         var ruling = new SnookerShot().Gone("red-1").Hit("blue").Pot("blue").Judge(OnColour("blue"));
         Assert.True(ruling.Legal && ruling.Continue);
@@ -51,7 +51,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Ball_on_colour_a_colour_other_than_the_nominated_one_struck_first_is_a_foul()
+    public void BallOnColourAColourOtherThanTheNominatedOneStruckFirstIsAFoul()
     {
         var ruling = new SnookerShot().Hit("pink").Judge(OnColour("blue"));
         Assert.Equal([Foul.WrongBallFirst], ruling.Fouls);
@@ -59,7 +59,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Colours_phase_the_colours_in_ascending_order_stay_down_once_potted()
+    public void ColoursPhaseTheColoursInAscendingOrderStayDownOncePotted()
     {
         var ruling = new SnookerShot().Only("yellow", "green", "black").Hit("yellow").Pot("yellow").Judge(Frame with { BallOn = "yellow" });
         Assert.True(ruling.Legal && ruling.Continue);
@@ -72,7 +72,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Colours_phase_begins_after_the_colour_that_follows_the_last_red_which_is_respotted()
+    public void ColoursPhaseBeginsAfterTheColourThatFollowsTheLastRedWhichIsRespotted()
     {
         var ruling = new SnookerShot().Only("yellow", "green", "brown", "blue", "pink", "black").Hit("black").Pot("black").Judge(OnColour("black"));
         Assert.Equal([Id("black")], ruling.Spot);
@@ -80,7 +80,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Respotting_a_colour_goes_to_its_own_spot()
+    public void RespottingAColourGoesToItsOwnSpot()
     {
         var table = new Dictionary<BallId, Vec3>();
         SnookerRuleset.Respot(table, [Id("green")], SnookerShot.Table, R);
@@ -88,7 +88,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Respotting_when_the_own_spot_is_taken_uses_the_highest_value_free_spot()
+    public void RespottingWhenTheOwnSpotIsTakenUsesTheHighestValueFreeSpot()
     {
         var table = new Dictionary<BallId, Vec3> { [Id("red-1")] = SnookerTable.Spot(SnookerShot.Table, "pink", R) };
         SnookerRuleset.Respot(table, [Id("pink")], SnookerShot.Table, R);
@@ -99,7 +99,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Respotting_with_every_spot_taken_goes_as_near_its_own_spot_as_it_fits_towards_the_top_cushion()
+    public void RespottingWithEverySpotTakenGoesAsNearItsOwnSpotAsItFitsTowardsTheTopCushion()
     {
         var table = BallSet.Colours.Select((c, i) => (Id($"red-{i + 1}"), SnookerTable.Spot(SnookerShot.Table, c, R))).ToDictionary(b => b.Item1, b => b.Item2);
         SnookerRuleset.Respot(table, [Id("brown")], SnookerShot.Table, R);
@@ -114,7 +114,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Break_off_is_played_from_in_hand_in_the_D_with_a_red_on()
+    public void BreakOffIsPlayedFromInHandInTheDWithARedOn()
     {
         var inD = new SnookerShot().Hit("red-5").Judge(Frame with { Shot = 0, Placement = new Vec3(-1.2, 0.1, R) });
         Assert.True(inD.Legal);
@@ -126,7 +126,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Foul_penalty_is_at_least_4_awarded_to_the_opponent()
+    public void FoulPenaltyIsAtLeast4AwardedToTheOpponent()
     {
         var ruling = new SnookerShot().Judge(OnRed);
         Assert.Equal([Foul.NoContact], ruling.Fouls);
@@ -137,14 +137,14 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Foul_penalty_is_the_value_of_the_ball_on()
+    public void FoulPenaltyIsTheValueOfTheBallOn()
     {
         var ruling = new SnookerShot().Hit("red-2").Judge(OnColour("black"));
         Assert.Equal(7, ruling.Penalty);
     }
 
     [Fact]
-    public void Foul_penalty_is_the_value_of_the_ball_wrongly_struck_first()
+    public void FoulPenaltyIsTheValueOfTheBallWronglyStruckFirst()
     {
         var ruling = new SnookerShot().Hit("pink").Judge(OnRed);
         Assert.Equal([Foul.WrongBallFirst], ruling.Fouls);
@@ -152,7 +152,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Foul_penalty_is_the_value_of_a_ball_wrongly_potted()
+    public void FoulPenaltyIsTheValueOfABallWronglyPotted()
     {
         var ruling = new SnookerShot().Hit("red-4").Collide("red-4", "blue").Pot("blue").Judge(OnRed);
         Assert.Equal([Foul.WrongBallPotted], ruling.Fouls);
@@ -161,7 +161,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void In_off_is_a_foul_with_ball_in_hand_in_the_D_for_the_incoming_player()
+    public void InOffIsAFoulWithBallInHandInTheDForTheIncomingPlayer()
     {
         var ruling = new SnookerShot().Hit("red-4").Pot("cue").Judge(OnRed);
         Assert.Equal([Foul.CueBallPocketed], ruling.Fouls);
@@ -171,7 +171,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Ball_off_table_is_a_foul()
+    public void BallOffTableIsAFoul()
     {
         var ruling = new SnookerShot().Hit("red-4").Collide("red-4", "black").OffTable("black").Judge(OnRed);
         Assert.Equal([Foul.BallOffTable], ruling.Fouls);
@@ -180,7 +180,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Jump_shot_over_a_ball_before_the_first_contact_is_a_foul()
+    public void JumpShotOverABallBeforeTheFirstContactIsAFoul()
     {
         // The cue ball, in the air, passes over the pink to strike a red behind it; on the bed it would have hit the pink.
         var shot = new SnookerShot().At("cue", 0.5, 0).Aim(0).Airborne().Hit("red-1");
@@ -191,14 +191,14 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Bad_placement_outside_the_D_is_a_foul()
+    public void BadPlacementOutsideTheDIsAFoul()
     {
         var ruling = new SnookerShot().Hit("red-1").Judge(Frame with { BallInHand = BallInHand.D, Placement = new Vec3(-1.1, 0.35, R) });
         Assert.Contains(Foul.BadPlacement, ruling.Fouls);
     }
 
     [Fact]
-    public void Reds_potted_on_a_foul_stay_down_and_colours_are_respotted()
+    public void RedsPottedOnAFoulStayDownAndColoursAreRespotted()
     {
         var ruling = new SnookerShot().Hit("red-4").Pot("red-4").Pot("yellow").Pot("cue").Judge(OnRed);
         Assert.False(ruling.Legal);
@@ -207,7 +207,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void There_is_no_rail_rule()
+    public void ThereIsNoRailRule()
     {
         var ruling = new SnookerShot().Hit("red-4").Judge(OnRed);
         Assert.True(ruling.Legal);
@@ -216,7 +216,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void After_a_foul_the_incoming_player_chooses_play_or_put_back()
+    public void AfterAFoulTheIncomingPlayerChoosesPlayOrPutBack()
     {
         var ruling = new SnookerShot().Hit("red-4").Pot("cue").Judge(OnRed);
         Assert.Equal([RefereeOption.Play, RefereeOption.PutBack], ruling.Options);
@@ -229,7 +229,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Foul_and_a_miss_is_called_when_the_ball_on_is_not_struck_and_offers_replace()
+    public void FoulAndAMissIsCalledWhenTheBallOnIsNotStruckAndOffersReplace()
     {
         var ruling = new SnookerShot().Hit("blue").Judge(OnRed);
         Assert.True(ruling.FoulAndMiss);
@@ -244,14 +244,14 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Foul_and_a_miss_is_not_called_when_only_the_black_remains()
+    public void FoulAndAMissIsNotCalledWhenOnlyTheBlackRemains()
     {
         var ruling = new SnookerShot().Only("black").Judge(Frame with { BallOn = "black", Score = new(30, 20) });
         Assert.False(ruling.FoulAndMiss);
     }
 
     [Fact]
-    public void Foul_and_a_miss_is_not_called_when_a_player_needs_snookers()
+    public void FoulAndAMissIsNotCalledWhenAPlayerNeedsSnookers()
     {
         // Only pink and black: 13 points remain; 40 behind needs snookers.
         var ruling = new SnookerShot().Only("pink", "black").Hit("black").Judge(Frame with { BallOn = "pink", Score = new(10, 50) });
@@ -263,7 +263,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Foul_and_a_miss_is_not_called_when_the_striker_was_snookered_and_the_cue_ball_reached_the_ball_ons_distance()
+    public void FoulAndAMissIsNotCalledWhenTheStrikerWasSnookeredAndTheCueBallReachedTheBallOnsDistance()
     {
         // The pink stands between the cue ball and the last red: no part of the red can be struck.
         var snookered = new SnookerShot().Only("red-1", "pink", "black").At("cue", 0, 0.3).At("pink", 0.3, 0.3).At("red-1", 0.6, 0.3);
@@ -275,7 +275,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Three_misses_with_a_full_ball_view_lose_the_frame_and_the_referee_warns_after_the_second()
+    public void ThreeMissesWithAFullBallViewLoseTheFrameAndTheRefereeWarnsAfterTheSecond()
     {
         // A clear view of the last red (on the rack's apex) past the blue.
         var second = Clear().Hit("blue").Judge(OnRed with { MissesInRow = new(1, 0) });
@@ -294,7 +294,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Free_ball_is_offered_after_a_foul_when_the_incoming_player_is_snookered()
+    public void FreeBallIsOfferedAfterAFoulWhenTheIncomingPlayerIsSnookered()
     {
         var ruling = new SnookerShot().Only("red-1", "pink", "black").At("cue", 0, 0.3).At("pink", 0.3, 0.3).At("red-1", 0.6, 0.3)
             .Hit("black").Judge(OnRed with { Shooter = 1 });
@@ -306,7 +306,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Free_ball_nominated_and_potted_scores_as_the_ball_on_and_is_respotted()
+    public void FreeBallNominatedAndPottedScoresAsTheBallOnAndIsRespotted()
     {
         var state = OnRed with { FreeBall = true, Call = Call.Nominate(Id("pink")) };
         var ruling = new SnookerShot().Only("red-1", "pink", "black").Hit("pink").Pot("pink").Judge(state);
@@ -326,7 +326,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void Snookering_the_opponent_behind_the_free_ball_is_a_foul()
+    public void SnookeringTheOpponentBehindTheFreeBallIsAFoul()
     {
         // The free ball (pink) ends between the cue ball and the last red.
         var state = OnRed with { FreeBall = true, Call = Call.Nominate(Id("pink")) };
@@ -341,7 +341,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void End_of_frame_the_last_black_potted_gives_the_frame_to_the_higher_score()
+    public void EndOfFrameTheLastBlackPottedGivesTheFrameToTheHigherScore()
     {
         var ruling = new SnookerShot().Only("black").Hit("black").Pot("black").Judge(Frame with { BallOn = "black", Score = new(40, 44) });
         Assert.True(ruling.GameOver);
@@ -354,7 +354,7 @@ public class SnookerRefereeTests
     }
 
     [Fact]
-    public void End_of_frame_on_equal_scores_the_black_is_respotted_and_played_from_in_hand_in_the_D()
+    public void EndOfFrameOnEqualScoresTheBlackIsRespottedAndPlayedFromInHandInTheD()
     {
         var ruling = new SnookerShot().Only("black").Hit("black").Pot("black").Judge(Frame with { BallOn = "black", Score = new(40, 47) });
         Assert.False(ruling.GameOver);

@@ -15,7 +15,7 @@ public class SnookerTableTests
     private const double R = 0.02625;
 
     [Fact]
-    public void The_table_has_the_WPBSA_playing_area_and_snookers_tighter_rounded_pockets()
+    public void TheTableHasTheWPBSAPlayingAreaAndSnookersTighterRoundedPockets()
     {
         Assert.Equal(3.569, Table.Length);
         Assert.Equal(1.778, Table.Width);
@@ -28,14 +28,14 @@ public class SnookerTableTests
     }
 
     [Fact]
-    public void Snookers_balls_are_held_by_snookers_table()
+    public void SnookersBallsAreHeldBySnookersTable()
     {
         Assert.Null(RadiusLimits.Problem(Table, R));
         Assert.True(RadiusLimits.CaptureSpansJaws(Table, R));
     }
 
     [Fact]
-    public void The_baulk_line_the_D_and_the_six_spots_stand_where_the_rules_put_them()
+    public void TheBaulkLineTheDAndTheSixSpotsStandWhereTheRulesPutThem()
     {
         double baulk = -3.569 / 2 + 0.737;
         Assert.Equal(baulk, SnookerTable.BaulkLineX(Table), 12);
@@ -51,7 +51,7 @@ public class SnookerTableTests
     }
 
     [Fact]
-    public void The_ball_set_has_the_white_fifteen_reds_and_the_six_colours_with_their_values_without_numbers()
+    public void TheBallSetHasTheWhiteFifteenRedsAndTheSixColoursWithTheirValuesWithoutNumbers()
     {
         var set = BallSet.Snooker;
         Assert.Equal(22, set.Count);
@@ -73,7 +73,7 @@ public class SnookerTableTests
     [Theory]
     [InlineData(1)]
     [InlineData(99)]
-    public void The_rack_places_all_22_balls_the_colours_on_their_spots_the_reds_behind_the_pink_the_cue_ball_in_the_D(int seed)
+    public void TheRackPlacesAll22BallsTheColoursOnTheirSpotsTheRedsBehindThePinkTheCueBallInTheD(int seed)
     {
         var rack = Initializer.Rack(new RackSpec(RackGame.Snooker, seed), Table, R);
         Assert.Equal(BallSet.Snooker.Ids.Select(b => b.Value).Order(), rack.Select(b => b.Id.Value).Order());
@@ -93,7 +93,7 @@ public class SnookerTableTests
     }
 
     [Fact]
-    public void A_snooker_scene_racks_22_balls_of_52_5_mm_and_142_g_and_reads_snookers_ball_names()
+    public void ASnookerSceneRacks22BallsOf525MmAnd142GAndReadsSnookersBallNames()
     {
         var scene = SceneLoader.Parse("""
             { "format": "billiards-scene/1", "table": { "preset": "snooker-12ft" },
@@ -107,7 +107,7 @@ public class SnookerTableTests
     }
 
     [Fact]
-    public void A_pool_scene_refuses_a_snooker_ball_naming_pools_ids()
+    public void APoolSceneRefusesASnookerBallNamingPoolsIds()
     {
         var e = Assert.Throws<SceneException>(() => SceneLoader.Parse("""
             { "format": "billiards-scene/1", "table": { "preset": "pool-9ft" },
@@ -121,7 +121,7 @@ public class SnookerTableTests
     [Theory]
     [InlineData("exact")]
     [InlineData("event")]
-    public void Shots_into_every_snooker_pocket_end_on_the_table_or_pocketed(string integrator)
+    public void ShotsIntoEverySnookerPocketEndOnTheTableOrPocketed(string integrator)
     {
         var physics = PhysicsConfig.Default with { Integrator = ModelRegistry.FindIntegrator(ModelRegistry.Standard, integrator)!, Params = BallSet.Snooker.DefaultParams };
         for (int aim = -180; aim < 180; aim += 10)

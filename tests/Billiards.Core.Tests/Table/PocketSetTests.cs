@@ -34,7 +34,7 @@ public class PocketSetTests
     }
 
     [Fact]
-    public void The_pool_table_has_the_six_pockets_of_the_contract_in_index_order()
+    public void ThePoolTableHasTheSixPocketsOfTheContractInIndexOrder()
     {
         var pockets = TableSpec.FromPreset("pool-9ft").Pockets;
         Assert.Equal(["head-left", "head-right", "side-left", "side-right", "foot-left", "foot-right"], pockets.Select(p => p.Name));
@@ -44,7 +44,7 @@ public class PocketSetTests
     }
 
     [Fact]
-    public void A_set_parses_only_its_own_names_and_names_ids_by_index()
+    public void ASetParsesOnlyItsOwnNamesAndNamesIdsByIndex()
     {
         Assert.True(Corners.TryParse("foot-left", out var footLeft));
         Assert.Equal(new PocketId(2, "foot-left"), footLeft);
@@ -56,7 +56,7 @@ public class PocketSetTests
     }
 
     [Fact]
-    public void Two_pockets_in_one_place_or_of_one_name_are_refused()
+    public void TwoPocketsInOnePlaceOrOfOneNameAreRefused()
     {
         Assert.Throws<ArgumentException>(() => new PocketSet([new("a", 1, 1, 0.1, 140), new("b", 1, 1, 0.1, 140)]));
         Assert.Throws<ArgumentException>(() => new PocketSet([new("a", 1, 1, 0.1, 140), new("a", -1, 1, 0.1, 140)]));
@@ -64,7 +64,7 @@ public class PocketSetTests
     }
 
     [Fact]
-    public void The_geometry_of_a_table_of_four_pockets_has_their_circles_and_jaws_and_whole_long_rails()
+    public void TheGeometryOfATableOfFourPocketsHasTheirCirclesAndJawsAndWholeLongRails()
     {
         var geometry = TableGeometry.Build(FourPockets, PhysicsParams.DefaultRadius);
         Assert.Equal([0, 1, 2, 3], geometry.Pockets.ToArray().Select(p => p.Pocket));
@@ -82,7 +82,7 @@ public class PocketSetTests
     }
 
     [Fact]
-    public void A_ball_sent_at_the_middle_of_a_long_rail_bounces_where_a_pool_table_has_a_side_pocket()
+    public void ABallSentAtTheMiddleOfALongRailBouncesWhereAPoolTableHasASidePocket()
     {
         var sim = Roll(0, 0, 90);
         var ball = sim.Balls[0];
@@ -91,7 +91,7 @@ public class PocketSetTests
     }
 
     [Fact]
-    public void A_ball_sent_into_a_corner_drops_into_the_pocket_the_set_names()
+    public void ABallSentIntoACornerDropsIntoThePocketTheSetNames()
     {
         // From the centre straight at the foot-left corner's capture circle.
         var circle = TableGeometry.Build(FourPockets, PhysicsParams.DefaultRadius).Pockets[2];

@@ -30,7 +30,7 @@ public sealed class Ball
     public int Number { get; }
 
     /// <summary>True for a cue ball of the set, the only ball the effet acts on (seed 4.3.2).</summary>
-    public bool IsCue { get; init; }
+    public bool IsCueBall { get; init; }
 
     /// <summary>Centre of the ball (cm); y = 2.86 while it lies on the bed.</summary>
     public Vector3 Position { get; set; }

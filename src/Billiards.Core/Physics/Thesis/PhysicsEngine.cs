@@ -142,7 +142,7 @@ public sealed partial class PhysicsEngine
         for (int i = 0; i < balls.Length; i++)
         {
             _startPositions[i] = balls[i].Position;
-            if (balls[i].IsCue)
+            if (balls[i].IsCueBall)
             {
                 _cueShotStart = balls[i].Position;
             }
@@ -213,7 +213,7 @@ public sealed partial class PhysicsEngine
             ball.Velocity = velocities[i];
             ball.Pocket = -1;
             ball.IsPocketed = false;
-            if (ball.IsCue)
+            if (ball.IsCueBall)
             {
                 _cueShotStart = ball.Position;
             }
@@ -230,7 +230,7 @@ public sealed partial class PhysicsEngine
     {
         foreach (var ball in _balls)
         {
-            if (ball.IsCue)
+            if (ball.IsCueBall)
             {
                 ball.Velocity = velocity;
                 _cueShotStart = ball.Position;
@@ -335,11 +335,11 @@ public sealed partial class PhysicsEngine
         float vd2 = Vector3.Dot(v2, dn), vn2 = Vector3.Dot(v2, n);                       // 14, 15
         var after1 = (vd2 * dn + vn1 * n) * BallBallKeep;                                // 16
         var after2 = (vd1 * dn + vn2 * n) * BallBallKeep;                                // 17
-        if (first.IsCue)
+        if (first.IsCueBall)
         {
             after1 = FollowOrDraw(after1, v1);
         }
-        else if (second.IsCue)
+        else if (second.IsCueBall)
         {
             after2 = FollowOrDraw(after2, v2);
         }
@@ -395,7 +395,7 @@ public sealed partial class PhysicsEngine
             return -1;
         }
         float approach = -Vector3.Dot(ball.Velocity, rail.Normal);
-        ball.Velocity = Rebound(ball.Velocity, rail.Normal, rail.IsBouncing, ball.IsCue ? Queue : null);
+        ball.Velocity = Rebound(ball.Velocity, rail.Normal, rail.IsBouncing, ball.IsCueBall ? Queue : null);
         ball.Position = point;
         Log(EventKind.BallCushion, ball, ball, rail.Feature, MathF.Max(0, approach));
         return nearest;
@@ -580,7 +580,7 @@ public sealed partial class PhysicsEngine
         int cue = -1, eight = -1;
         for (int i = 0; i < _balls.Length; i++)
         {
-            if (_balls[i].IsCue)
+            if (_balls[i].IsCueBall)
             {
                 cue = i;
             }

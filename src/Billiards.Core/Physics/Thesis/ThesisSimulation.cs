@@ -48,7 +48,7 @@ public sealed partial class ThesisSimulation : Simulation
         for (int i = 0; i < balls.Length; i++)
         {
             var setup = scene.Balls[i];
-            balls[i] = new Ball(setup.Id.Value, SeedFrame.FromSi(setup.Position)) { Velocity = SeedFrame.FromSi(setup.Velocity), IsCue = scene.BallSet.IsCueBall(setup.Id) };
+            balls[i] = new Ball(setup.Id.Value, SeedFrame.FromSi(setup.Position)) { Velocity = SeedFrame.FromSi(setup.Velocity), IsCueBall = scene.BallSet.IsCueBall(setup.Id) };
             balls[i].RandomizeOrientation(random);
         }
         Queue = new ThesisCue();

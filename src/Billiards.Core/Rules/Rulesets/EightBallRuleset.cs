@@ -14,6 +14,9 @@ public sealed class EightBallRuleset : Ruleset
     public override GameRules Game => GameRules.EightBall;
 
     /// <inheritdoc />
+    public override string ShortName => "8-ball";
+
+    /// <inheritdoc />
     public override IReadOnlyList<BallId> Balls => BallSet.Ids;
 
     /// <inheritdoc />

@@ -41,6 +41,9 @@ public sealed class NineBallRuleset : RotationRuleset
     public override GameRules Game => GameRules.NineBall;
 
     /// <inheritdoc />
+    public override string ShortName => "9-ball";
+
+    /// <inheritdoc />
     public override BallId Money => new(9);
 
     /// <inheritdoc />
@@ -55,6 +58,9 @@ public sealed class TenBallRuleset : RotationRuleset
 {
     /// <inheritdoc />
     public override GameRules Game => GameRules.TenBall;
+
+    /// <inheritdoc />
+    public override string ShortName => "10-ball";
 
     /// <inheritdoc />
     public override BallId Money => new(10);

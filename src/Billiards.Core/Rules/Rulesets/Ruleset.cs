@@ -35,6 +35,12 @@ public abstract class Ruleset
     /// <summary>The game's name in files, e.g. "eight-ball".</summary>
     public string Name => Game.ToName();
 
+    /// <summary>The game's short name for people, e.g. "8-ball" (the scoreboard's).</summary>
+    public abstract string ShortName { get; }
+
+    /// <summary>The game's name for people in a title, e.g. "14.1 straight pool" (the window's).</summary>
+    public virtual string Title => ShortName;
+
     /// <summary>The ball set the game is played with.</summary>
     public virtual BallSet BallSet => BallSet.Pool;
 
@@ -113,6 +119,12 @@ public abstract class Ruleset
 
     /// <summary>True when the computer player (<see cref="Ai.ShotPlanner"/>) plays the game.</summary>
     public virtual bool HasComputerPlayer => true;
+
+    /// <summary>
+    /// True when the game has a ball on and scores each shot (snooker): its game blocks carry
+    /// ball_on, free_ball and misses_in_row, its rulings points, penalty, foul_and_miss and free_ball.
+    /// </summary>
+    public virtual bool HasBallOn => false;
 
     /// <summary>True when the game keeps a score with a target (14.1).</summary>
     public virtual bool HasScore => false;

@@ -26,6 +26,12 @@ public sealed class SnookerRuleset : Ruleset
     public override GameRules Game => GameRules.Snooker;
 
     /// <inheritdoc />
+    public override string ShortName => "snooker";
+
+    /// <inheritdoc />
+    public override bool HasBallOn => true;
+
+    /// <inheritdoc />
     public override BallSet BallSet => BallSet.Snooker;
 
     /// <inheritdoc />

@@ -100,9 +100,10 @@ internal sealed class StraightPoolReferee(TableSpec table, double ballRadius) : 
         }
         if (scores && facts.OnTableAfter.Count <= 1)
         {
-            foreach (var n in Enumerable.Range(1, BallSet.Pool.HighestNumber).Where(n => !facts.OnTableAfter.Contains(n)))
+            var set = Ruleset.BallSet;
+            foreach (var ball in Ruleset.Balls.Where(b => !set.IsCueBall(b) && !facts.OnTableAfter.Contains(b.Value)))
             {
-                ruling.Rerack.Add(new BallId(n));
+                ruling.Rerack.Add(ball);
             }
             ruling.Outcome = $"{before.ShooterName} scores and goes on after a rerack of {ruling.Rerack.Count}.";
         }

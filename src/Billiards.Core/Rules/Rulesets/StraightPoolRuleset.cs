@@ -12,6 +12,12 @@ public sealed class StraightPoolRuleset : Ruleset
     public override GameRules Game => GameRules.StraightPool;
 
     /// <inheritdoc />
+    public override string ShortName => "14.1";
+
+    /// <inheritdoc />
+    public override string Title => "14.1 straight pool";
+
+    /// <inheritdoc />
     public override IReadOnlyList<BallId> Balls => BallSet.Ids;
 
     /// <inheritdoc />

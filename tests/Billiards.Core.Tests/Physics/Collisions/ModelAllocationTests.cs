@@ -36,7 +36,7 @@ public class ModelAllocationTests
     [MemberData(nameof(BallBalls))]
     public void ABallBallCollisionAllocatesNothing(string name)
     {
-        var model = BallBall(name);
+        var model = CollisionKit.BallBall(name);
         var a0 = Incoming(2, 0, 1, 0.5);
         var b0 = new BallState { Position = new Vec3(2 * R * 0.8, 2 * R * 0.6, R) };
         var (a, b) = (a0, b0);

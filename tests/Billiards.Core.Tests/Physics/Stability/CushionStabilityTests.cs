@@ -1,7 +1,7 @@
 using Billiards.Core.Physics;
-using static Billiards.Core.Tests.Stability.StabilityKit;
+using static Billiards.Core.Tests.Physics.Stability.StabilityKit;
 
-namespace Billiards.Core.Tests.Stability;
+namespace Billiards.Core.Tests.Physics.Stability;
 
 /// <summary>
 /// Balls frozen to a cushion (centre exactly R from the nose) and a ball into a corner, on the

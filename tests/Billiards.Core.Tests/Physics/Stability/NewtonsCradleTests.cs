@@ -1,7 +1,7 @@
 using Billiards.Core.Physics;
-using static Billiards.Core.Tests.Stability.StabilityKit;
+using static Billiards.Core.Tests.Physics.Stability.StabilityKit;
 
-namespace Billiards.Core.Tests.Stability;
+namespace Billiards.Core.Tests.Physics.Stability;
 
 /// <summary>
 /// Newton's cradle on the bed: five balls in a line along x, each exactly 2R from the next

@@ -6,7 +6,7 @@ using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
 using Billiards.Core.Table;
 
-namespace Billiards.Core.Tests.Stability;
+namespace Billiards.Core.Tests.Physics.Stability;
 
 /// <summary>
 /// The table-bound guarantee: a scene whose ball radius the table cannot hold is refused at load
@@ -22,7 +22,7 @@ public class TableBoundGuaranteeTests
         """;
 
     [Fact]
-    public void A_hard_break_with_R_0_005_is_refused_because_the_cushions_cannot_hold_it()
+    public void AHardBreakWithR0005IsRefusedBecauseTheCushionsCannotHoldIt()
     {
         var e = Assert.Throws<SceneException>(() => SceneLoader.Parse(Scene("""{ "params": { "R": 0.005 } }"""), "r.json"));
         Assert.Equal("$.physics.params.R", e.JsonPath);
@@ -31,7 +31,7 @@ public class TableBoundGuaranteeTests
     }
 
     [Fact]
-    public void A_small_ball_under_low_cushions_is_held_because_the_capture_circle_widens_to_the_jaws()
+    public void ASmallBallUnderLowCushionsIsHeldBecauseTheCaptureCircleWidensToTheJaws()
     {
         var scene = SceneLoader.Parse(Scene("""{ "params": { "R": 0.005 } }""", """{ "preset": "pool-9ft", "cushion_height": 0.007 }"""), "r.json");
         Assert.True(RadiusLimits.CaptureSpansJaws(scene.Table, 0.005));
@@ -40,7 +40,7 @@ public class TableBoundGuaranteeTests
     }
 
     [Fact]
-    public void A_ball_wider_than_the_mouths_is_refused()
+    public void ABallWiderThanTheMouthsIsRefused()
     {
         var e = Assert.Throws<SceneException>(() => SceneLoader.Parse(
             Scene("""{ "params": { "R": 0.06 } }""", """{ "preset": "pool-9ft", "cushion_height": 0.08 }"""), "r.json"));
@@ -53,7 +53,7 @@ public class TableBoundGuaranteeTests
     [InlineData("pool-7ft")]
     [InlineData("thesis")]
     [InlineData("pocketless")]
-    public void The_regulation_ball_is_held_by_every_preset(string preset)
+    public void TheRegulationBallIsHeldByEveryPreset(string preset)
     {
         Assert.Null(RadiusLimits.Problem(TableSpec.FromPreset(preset), PhysicsParams.DefaultRadius));
     }
@@ -64,7 +64,7 @@ public class TableBoundGuaranteeTests
     [Theory]
     [InlineData(0.028575, 0.028575)]
     [InlineData(0.025, 0.0297)]
-    public void The_capture_circle_spans_the_jaws_widening_past_R_for_small_balls(double radius, double expected)
+    public void TheCaptureCircleSpansTheJawsWideningPastRForSmallBalls(double radius, double expected)
     {
         var table = TableSpec.FromPreset("pool-9ft");
         Assert.True(RadiusLimits.CaptureSpansJaws(table, radius));
@@ -80,7 +80,7 @@ public class TableBoundGuaranteeTests
     [InlineData("exact")]
     [InlineData("event")]
     [InlineData("euler")]
-    public void Shots_into_every_pocket_end_on_the_table_or_pocketed(string integrator)
+    public void ShotsIntoEveryPocketEndOnTheTableOrPocketed(string integrator)
     {
         var table = TableSpec.FromPreset("pool-9ft");
         double smallest = Enumerable.Range(0, 200).Select(i => 0.02 + i * 1e-4).First(r => RadiusLimits.Problem(table, r) is null);
@@ -112,7 +112,7 @@ public class TableBoundGuaranteeTests
     [Theory]
     [InlineData(0.1)]
     [InlineData(1.0 / 30)]
-    public void Euler_drops_a_ball_that_a_long_step_carried_past_the_jaws(double dt)
+    public void EulerDropsABallThatALongStepCarriedPastTheJaws(double dt)
     {
         var table = TableSpec.FromPreset("pool-9ft");
         double r = PhysicsParams.DefaultRadius;
@@ -147,7 +147,7 @@ public class TableBoundGuaranteeTests
     }
 
     [Fact]
-    public void The_debug_checker_finds_a_ball_off_the_table_an_overlap_and_a_NaN()
+    public void TheDebugCheckerFindsABallOffTheTableAnOverlapAndANaN()
     {
         var table = TableSpec.FromPreset("pool-9ft");
         double r = PhysicsParams.DefaultRadius;
@@ -165,7 +165,7 @@ public class TableBoundGuaranteeTests
     }
 
     [Fact]
-    public void Balls_in_a_pocket_mouth_are_on_the_table_and_far_outside_are_not()
+    public void BallsInAPocketMouthAreOnTheTableAndFarOutsideAreNot()
     {
         var table = TableSpec.FromPreset("pool-9ft");
         double r = PhysicsParams.DefaultRadius;

@@ -3,9 +3,9 @@ using Billiards.Core.Cue;
 using Billiards.Core.Physics;
 using Billiards.Core.Physics.Standard;
 using Xunit.Abstractions;
-using static Billiards.Core.Tests.Standard.StandardTestKit;
+using static Billiards.Core.Tests.Physics.Standard.StandardTestKit;
 
-namespace Billiards.Core.Tests.Standard;
+namespace Billiards.Core.Tests.Physics.Standard;
 
 /// <summary>
 /// The analytic checks of physics-standard-model.md, at several fixed steps: the exact integrator

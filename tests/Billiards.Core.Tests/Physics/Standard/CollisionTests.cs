@@ -3,9 +3,9 @@ using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Physics.Collisions.BallBall;
 using Billiards.Core.Physics.Collisions.BallCushion;
-using static Billiards.Core.Tests.Standard.StandardTestKit;
+using static Billiards.Core.Tests.Physics.Standard.StandardTestKit;
 
-namespace Billiards.Core.Tests.Standard;
+namespace Billiards.Core.Tests.Physics.Standard;
 
 /// <summary>Invariants of the collision models: energy, momentum, restitution, symmetry, throw.</summary>
 public class CollisionTests

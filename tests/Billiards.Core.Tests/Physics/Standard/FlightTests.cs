@@ -2,9 +2,9 @@ using Billiards.Core.Balls;
 using Billiards.Core.Physics;
 using Billiards.Core.Physics.Standard;
 using Billiards.Core.Scenes;
-using static Billiards.Core.Tests.Standard.StandardTestKit;
+using static Billiards.Core.Tests.Physics.Standard.StandardTestKit;
 
-namespace Billiards.Core.Tests.Standard;
+namespace Billiards.Core.Tests.Physics.Standard;
 
 /// <summary>Balls in the air (physics-standard-model.md, "Flight"): parabolas, landings, bounces, against the analytic figures.</summary>
 public class FlightTests

@@ -3,9 +3,9 @@ using Billiards.Core.Cue;
 using Billiards.Core.Physics;
 using Billiards.Core.Physics.Standard;
 using Billiards.Core.Scenes;
-using static Billiards.Core.Tests.Standard.StandardTestKit;
+using static Billiards.Core.Tests.Physics.Standard.StandardTestKit;
 
-namespace Billiards.Core.Tests.Standard;
+namespace Billiards.Core.Tests.Physics.Standard;
 
 /// <summary>The elevated cue drives the cue ball into the slate, which returns it with e_t: steep, fast strokes jump.</summary>
 public class JumpShotTests

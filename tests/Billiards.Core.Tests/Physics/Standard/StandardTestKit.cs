@@ -4,7 +4,7 @@ using Billiards.Core.Mathematics;
 using Billiards.Core.Physics.Standard;
 using Billiards.Core.Scenes;
 
-namespace Billiards.Core.Tests.Standard;
+namespace Billiards.Core.Tests.Physics.Standard;
 
 /// <summary>Builds standard-model simulations from small inline scenes.</summary>
 internal static class StandardTestKit

@@ -1,15 +1,15 @@
 using System.Numerics;
 using Billiards.Core.Physics;
-using static Billiards.Core.Tests.Thesis.ThesisKit;
+using static Billiards.Core.Tests.Physics.Thesis.ThesisKit;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>Formel 11-19 (seed 4.3.3): ball-ball overlap, separation, velocity swap, follow and draw.</summary>
 public class BallCollisionTests
 {
     // Centres 5 cm apart along (4, 0, 3): d_n = (0.8, 0, 0.6), n = normalize((0,1,0) x d) = (3, 0, -4) / 5.
     [Fact]
-    public void Overlapping_balls_are_separated_along_the_line_of_centres()
+    public void OverlappingBallsAreSeparatedAlongTheLineOfCentres()
     {
         var first = At(1, 0, 0);
         var second = At(2, 4, 3);
@@ -21,7 +21,7 @@ public class BallCollisionTests
     }
 
     [Fact]
-    public void The_line_of_centres_parts_are_swapped_and_both_keep_95_percent()
+    public void TheLineOfCentresPartsAreSwappedAndBothKeep95Percent()
     {
         var first = At(1, 0, 0, vx: 100);
         var second = At(2, 4, 3);
@@ -35,7 +35,7 @@ public class BallCollisionTests
     }
 
     [Fact]
-    public void A_head_on_collision_of_two_moving_balls_swaps_their_speeds_and_logs_the_approach()
+    public void AHeadOnCollisionOfTwoMovingBallsSwapsTheirSpeedsAndLogsTheApproach()
     {
         var first = At(3, 0, 0, vx: 100);
         var second = At(4, 5, 0, vx: -50);
@@ -52,7 +52,7 @@ public class BallCollisionTests
     }
 
     [Fact]
-    public void Balls_exactly_touching_do_not_collide()
+    public void BallsExactlyTouchingDoNotCollide()
     {
         var first = At(1, 0, 0, vx: 100);
         var second = At(2, 5.72f, 0);
@@ -68,7 +68,7 @@ public class BallCollisionTests
     [InlineData(-2f, 100f, -50f, 0.4f)]    // draw: f = 25, -50; e_y -2 * 0.2 = -0.4, inverted to 0.4
     [InlineData(1f, 800f, 100f, 0.2f)]     // f = 200 capped at 100
     [InlineData(0f, 100f, 0f, 0f)]         // no effet: the cue ball stops
-    public void The_cue_ball_gets_follow_or_draw_and_its_effet_decays(float ey, float speed, float expectedVx, float expectedEy)
+    public void TheCueBallGetsFollowOrDrawAndItsEffetDecays(float ey, float speed, float expectedVx, float expectedEy)
     {
         var cue = At(0, 0, 0, vx: speed);
         var ball = At(1, 5, 0);
@@ -81,7 +81,7 @@ public class BallCollisionTests
     }
 
     [Fact]
-    public void Draw_turns_to_follow_at_the_second_contact()
+    public void DrawTurnsToFollowAtTheSecondContact()
     {
         // After a draw contact e_y = +0.4 (see above); a second head-on contact at 100 cm/s adds
         // 0.4 * 25 = +10 cm/s forward, and e_y becomes 0.08.
@@ -99,7 +99,7 @@ public class BallCollisionTests
     }
 
     [Fact]
-    public void The_cue_ball_gets_its_effet_also_as_the_second_ball_of_the_pair()
+    public void TheCueBallGetsItsEffetAlsoAsTheSecondBallOfThePair()
     {
         var ball = At(1, 0, 0);
         var cue = At(0, 5, 0, vx: -100);
@@ -114,7 +114,7 @@ public class BallCollisionTests
     }
 
     [Fact]
-    public void Object_balls_ignore_the_cue_effet()
+    public void ObjectBallsIgnoreTheCueEffet()
     {
         var first = At(1, 0, 0, vx: 100);
         var second = At(2, 5, 0);

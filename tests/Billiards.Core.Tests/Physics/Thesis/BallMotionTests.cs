@@ -1,14 +1,14 @@
 using System.Numerics;
 using Billiards.Core.Physics.Thesis;
-using static Billiards.Core.Tests.Thesis.ThesisKit;
+using static Billiards.Core.Tests.Physics.Thesis.ThesisKit;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>Step 1 (p += v dt), Formel 5 (damping) and Formel 6-10 with Listing 1 (orientation).</summary>
 public class BallMotionTests
 {
     [Fact]
-    public void One_step_moves_by_the_old_velocity_then_damps_it_by_0_9965()
+    public void OneStepMovesByTheOldVelocityThenDampsItBy09965()
     {
         var ball = At(1, 0, 0, vx: 100);
         var engine = Engine("thesis", ball);
@@ -22,7 +22,7 @@ public class BallMotionTests
     [InlineData(250)]   // the seed's step
     [InlineData(50)]
     [InlineData(1000)]
-    public void Damping_per_second_is_the_seeds_whatever_the_step(int stepsPerSecond)
+    public void DampingPerSecondIsTheSeedsWhateverTheStep(int stepsPerSecond)
     {
         var ball = At(1, 0, 0, vx: 100);
         var engine = Engine("thesis", 1.0 / stepsPerSecond, ball);
@@ -37,7 +37,7 @@ public class BallMotionTests
     }
 
     [Fact]
-    public void A_quarter_roll_along_x_turns_the_top_forward()
+    public void AQuarterRollAlongXTurnsTheTopForward()
     {
         // d = (pi r / 2, 0, 0): angle = |d| / r = pi/2 (Formel 6), axis = y x x = -z (Formel 7),
         // q = (cos pi/4, sin pi/4 * (0, 0, -1)) (Formel 9); from identity the product is q.
@@ -53,7 +53,7 @@ public class BallMotionTests
     }
 
     [Fact]
-    public void Two_rolls_compose_newest_first_as_in_Formel_10()
+    public void TwoRollsComposeNewestFirstAsInFormel10()
     {
         float r = PhysicsEngine.BallRadius;
         var first = PhysicsEngine.Roll(Quaternion.Identity, new Vector3(MathF.PI * r / 2, 0, 0));
@@ -69,14 +69,14 @@ public class BallMotionTests
     }
 
     [Fact]
-    public void A_move_under_a_millionth_of_a_centimetre_leaves_the_orientation()
+    public void AMoveUnderAMillionthOfACentimetreLeavesTheOrientation()
     {
         var q = Quaternion.Normalize(new Quaternion(1, 2, 3, 4));
         Assert.Equal(q, PhysicsEngine.Roll(q, new Vector3(1e-7f, 0, 0)));
     }
 
     [Fact]
-    public void Orientation_is_only_integrated_when_tracked_and_never_changes_the_motion()
+    public void OrientationIsOnlyIntegratedWhenTrackedAndNeverChangesTheMotion()
     {
         var tracked = At(1, 0, 0, vx: 100, vz: 30);
         var untracked = At(1, 0, 0, vx: 100, vz: 30);
@@ -95,7 +95,7 @@ public class BallMotionTests
     }
 
     [Fact]
-    public void A_random_orientation_is_a_unit_quaternion_and_repeats_with_its_seed()
+    public void ARandomOrientationIsAUnitQuaternionAndRepeatsWithItsSeed()
     {
         var a = new Ball(1, Vector3.Zero);
         var b = new Ball(1, Vector3.Zero);

@@ -3,9 +3,9 @@ using Billiards.Core.Physics;
 using Billiards.Core.Physics.Thesis;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
-using static Billiards.Core.Tests.Thesis.ThesisKit;
+using static Billiards.Core.Tests.Physics.Thesis.ThesisKit;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>Formel 30 and Listing 4 (seed 4.3.5): the pocket test.</summary>
 public class PocketTests
@@ -13,7 +13,7 @@ public class PocketTests
     private static readonly ThesisTable Table = ThesisTable.From(TableSpec.FromPreset("thesis"));
 
     [Fact]
-    public void The_thesis_table_has_the_seeds_pocket_constants()
+    public void TheThesisTableHasTheSeedsPocketConstants()
     {
         Assert.Equal(new Vector3(124.5f, 0, 65.5f), Table.CornerPocket);
         Assert.Equal(new Vector3(0, 0, 69), Table.SidePocket);
@@ -32,7 +32,7 @@ public class PocketTests
     // |(0, 69) - (2, 66)| = sqrt(4 + 9) = 3.61 < 4.5.
     [InlineData(2f, 66f, "side-right")]
     [InlineData(-2f, -66f, "side-left")]
-    public void Near_a_pocket_centre_the_ball_is_pocketed(float x, float z, string pocket)
+    public void NearAPocketCentreTheBallIsPocketed(float x, float z, string pocket)
     {
         Assert.Equal(pocket, PoolPockets.Set.NameOf(Table.PocketAt(new Vector3(x, Y, z))));
     }
@@ -43,20 +43,20 @@ public class PocketTests
     [InlineData(0f, 64.4f)]     // 4.6 from the side pocket
     [InlineData(116.9f, 57.9f)] // inside the zone |x| <= 117, |z| <= 58: never tested
     [InlineData(0f, 0f)]
-    public void Elsewhere_the_ball_is_not(float x, float z)
+    public void ElsewhereTheBallIsNot(float x, float z)
     {
         Assert.Equal(-1, Table.PocketAt(new Vector3(x, Y, z)));
     }
 
     [Fact]
-    public void The_pocketless_table_has_no_pockets()
+    public void ThePocketlessTableHasNoPockets()
     {
         var pocketless = ThesisTable.From(TableSpec.FromPreset("pocketless"));
         Assert.Equal(-1, pocketless.PocketAt(new Vector3(124.5f, Y, 65.5f)));
     }
 
     [Fact]
-    public void A_pocketed_ball_falls_at_981_times_its_mass_and_is_logged_once()
+    public void APocketedBallFallsAt981TimesItsMassAndIsLoggedOnce()
     {
         var ball = At(5, 121.5f, 63.5f, vx: 10, vz: 10);
         var engine = Engine("thesis", ball);
@@ -71,7 +71,7 @@ public class PocketTests
     }
 
     [Fact]
-    public void A_dropping_ball_leaves_play_below_minus_20_cm()
+    public void ADroppingBallLeavesPlayBelowMinus20Cm()
     {
         var ball = At(5, 124.5f, 65.5f);
         var other = At(1, 0, 0, vx: 100); // keeps the shot going

@@ -4,9 +4,9 @@ using Billiards.Core.Physics;
 using Billiards.Core.Physics.Thesis;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
-using static Billiards.Core.Tests.Thesis.ThesisKit;
+using static Billiards.Core.Tests.Physics.Thesis.ThesisKit;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>Formel 20-29 with Listings 2-3 (seed 4.3.4), and the rails they run against.</summary>
 public class RailCollisionTests
@@ -18,7 +18,7 @@ public class RailCollisionTests
         new(MathF.Cos(degrees * MathF.PI / 180), 0, zSign * MathF.Sin(degrees * MathF.PI / 180));
 
     [Fact]
-    public void Without_effet_the_rebound_is_the_mirror_image_times_0_9()
+    public void WithoutEffetTheReboundIsTheMirrorImageTimes09()
     {
         // 200 cm/s at 30 deg to the normal: alpha = 30, h = y x n = (0, 0, 1), dir = n + h tan 30
         // = (-cos 30, 0, sin 30) normalised: the reflection of Formel 21; times 0.9 * 200 = 180.
@@ -27,7 +27,7 @@ public class RailCollisionTests
     }
 
     [Fact]
-    public void Side_effet_widens_the_angle_coming_from_one_side()
+    public void SideEffetWidensTheAngleComingFromOneSide()
     {
         var queue = new ThesisCue { EX = 1, EY = 1 };
         // c = v x n has c.y = -sin 30 < 0: alpha += e_x 0.3 f, f = 200 / 4 = 50: 30 + 15 = 45 deg.
@@ -38,7 +38,7 @@ public class RailCollisionTests
     }
 
     [Fact]
-    public void Side_effet_narrows_the_angle_coming_from_the_other_side()
+    public void SideEffetNarrowsTheAngleComingFromTheOtherSide()
     {
         var queue = new ThesisCue { EX = 1 };
         // v = 200 (cos 30, 0, -sin 30): c.y = +sin 30 > 0: alpha -= 15 -> 15 deg, h = n x y = (0, 0, -1).
@@ -47,7 +47,7 @@ public class RailCollisionTests
     }
 
     [Fact]
-    public void The_rebound_angle_is_capped_at_89_degrees()
+    public void TheReboundAngleIsCappedAt89Degrees()
     {
         var queue = new ThesisCue { EX = 2.86f };
         // |v| = 400: f = 100; alpha = 80 + 2.86 * 0.3 * 100 = 165.8 -> 89; dir = (-cos 89, 0, sin 89), * 360.
@@ -57,7 +57,7 @@ public class RailCollisionTests
     }
 
     [Fact]
-    public void A_large_opposite_effet_may_send_the_ball_across_the_normal()
+    public void ALargeOppositeEffetMaySendTheBallAcrossTheNormal()
     {
         // The listing caps alpha from above only: 30 + (-2.86) * 0.3 * 100 = -55.8 deg,
         // tan(-55.8 deg) < 0 flips h: the ball comes off on the other side of the normal.
@@ -69,14 +69,14 @@ public class RailCollisionTests
     }
 
     [Fact]
-    public void A_pocket_back_wall_keeps_a_hundredth_of_the_horizontal_speed()
+    public void APocketBackWallKeepsAHundredthOfTheHorizontalSpeed()
     {
         var v = PhysicsEngine.Rebound(200 * Dir(30, 1), FootNormal, false, null);
         AssertVector(1.8f * new Vector3(-Cos30, 0, 0.5f), v, 1e-4f);
     }
 
     [Fact]
-    public void A_ball_that_crossed_the_foot_cushion_is_put_back_on_it_and_rebounds()
+    public void ABallThatCrossedTheFootCushionIsPutBackOnItAndRebounds()
     {
         // The foot cushion's triangles lie at x = 122.5 - 2.86 = 119.64. The ball is 0.5 cm past,
         // moving (100, 0, 50): the line meets the plane at t = -0.005 s, at z = 10 - 0.25.
@@ -92,7 +92,7 @@ public class RailCollisionTests
     }
 
     [Fact]
-    public void A_ball_in_front_of_every_cushion_is_left_alone()
+    public void ABallInFrontOfEveryCushionIsLeftAlone()
     {
         var ball = At(0, 119, 10, vx: 100, vz: 50);
         var engine = Engine("thesis", ball);
@@ -115,7 +115,7 @@ public class RailCollisionTests
     }
 
     [Fact]
-    public void At_a_corner_pocket_the_nearest_of_several_crossings_wins()
+    public void AtACornerPocketTheNearestOfSeveralCrossingsWins()
     {
         var rails = Initializer.InitRails(TableSpec.FromPreset("thesis"));
         // Along z = 57 the line of motion crosses the foot-right jaw (3.83 cm ahead) and, far behind,
@@ -130,7 +130,7 @@ public class RailCollisionTests
     }
 
     [Fact]
-    public void A_ball_past_a_jaw_rebounds_off_the_jaw()
+    public void ABallPastAJawReboundsOffTheJaw()
     {
         var ball = At(1, 122, 57, vx: 100);
         var engine = Engine("thesis", ball);
@@ -148,7 +148,7 @@ public class RailCollisionTests
     [InlineData("pool-9ft", 72)]
     [InlineData("pool-8ft", 72)]
     [InlineData("pool-7ft", 72)]
-    public void Every_table_gets_its_triangles_with_horizontal_unit_normals(string preset, int count)
+    public void EveryTableGetsItsTrianglesWithHorizontalUnitNormals(string preset, int count)
     {
         var rails = Initializer.InitRails(TableSpec.FromPreset(preset));
         Assert.Equal(count, rails.Length);
@@ -163,7 +163,7 @@ public class RailCollisionTests
     [Theory]
     [InlineData("thesis", 122.5f, 63.5f)]
     [InlineData("pocketless", 127f, 63.5f)]
-    public void Cushions_lie_a_radius_inside_the_noses_facing_the_balls(string preset, float halfLength, float halfWidth)
+    public void CushionsLieARadiusInsideTheNosesFacingTheBalls(string preset, float halfLength, float halfWidth)
     {
         var rails = Initializer.InitRails(TableSpec.FromPreset(preset));
         foreach (var rail in rails.Where(r => r.Feature < 6))
@@ -186,7 +186,7 @@ public class RailCollisionTests
     [InlineData("pool-9ft")]
     [InlineData("pool-8ft")]
     [InlineData("pool-7ft")]
-    public void A_ball_stopped_by_a_back_wall_is_inside_that_pockets_test_circle(string preset)
+    public void ABallStoppedByABackWallIsInsideThatPocketsTestCircle(string preset)
     {
         var spec = TableSpec.FromPreset(preset);
         var table = ThesisTable.From(spec);

@@ -1,7 +1,7 @@
 using System.Numerics;
 using Billiards.Core.Physics.Thesis;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>Listing 2 (Formel 20): the seed's Moller-Trumbore test and its kinds of miss.</summary>
 public class RayTriangleTests
@@ -14,7 +14,7 @@ public class RayTriangleTests
         CollisionGeometry.Intersect(P1, P2, P3, new Vector3(x, y, -1), new Vector3(0, 0, 2), out t, out point);
 
     [Fact]
-    public void A_ray_through_the_inside_hits_at_the_crossing()
+    public void ARayThroughTheInsideHitsAtTheCrossing()
     {
         // From z = -1 with direction (0, 0, 2) the plane z = 0 is reached at t = 1/2.
         Assert.Equal(RayHit.Hit, Cast(0.25f, 0.25f, out float t, out var point));
@@ -23,7 +23,7 @@ public class RayTriangleTests
     }
 
     [Fact]
-    public void A_crossing_behind_the_origin_still_counts_with_negative_t()
+    public void ACrossingBehindTheOriginStillCountsWithNegativeT()
     {
         // The listing never rejects t < 0: a ball that has passed the triangle finds it behind.
         var hit = CollisionGeometry.Intersect(P1, P2, P3, new Vector3(0.25f, 0.25f, 1), new Vector3(0, 0, 2), out float t, out var point);
@@ -37,7 +37,7 @@ public class RayTriangleTests
     [InlineData(1.5f, 0.25f, RayHit.UAboveOne)]      // u = 1.5
     [InlineData(0.25f, -0.25f, RayHit.RBelowZero)]   // u = 0.25 fine, r = -0.25
     [InlineData(0.6f, 0.6f, RayHit.SumAboveOne)]     // u = r = 0.6, u + r = 1.2
-    public void Each_miss_is_told_apart(float x, float y, RayHit expected)
+    public void EachMissIsToldApart(float x, float y, RayHit expected)
     {
         Assert.Equal(expected, Cast(x, y, out float t, out var point));
         Assert.Equal(0, t);
@@ -45,7 +45,7 @@ public class RayTriangleTests
     }
 
     [Fact]
-    public void A_ray_in_the_plane_of_the_triangle_is_parallel()
+    public void ARayInThePlaneOfTheTriangleIsParallel()
     {
         // det = edge1 . (v x edge2) = x . (x x y) = x . z = 0.
         var hit = CollisionGeometry.Intersect(P1, P2, P3, new Vector3(-1, 0.25f, 0), Vector3.UnitX, out _, out _);
@@ -53,7 +53,7 @@ public class RayTriangleTests
     }
 
     [Fact]
-    public void The_edges_belong_to_the_triangle()
+    public void TheEdgesBelongToTheTriangle()
     {
         // u + r = 1 exactly (on the third edge) and u = 0 (on edge2) are hits: the listing uses <= and >=.
         Assert.Equal(RayHit.Hit, Cast(0.5f, 0.5f, out _, out _));
@@ -61,7 +61,7 @@ public class RayTriangleTests
     }
 
     [Fact]
-    public void The_normal_follows_the_corner_order()
+    public void TheNormalFollowsTheCornerOrder()
     {
         // (p2 - p1) x (p3 - p1) = x x y = z.
         var triangle = new CollisionGeometry(0, P1, P2, P3, true, 0);

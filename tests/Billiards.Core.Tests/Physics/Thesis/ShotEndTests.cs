@@ -1,9 +1,9 @@
 using System.Numerics;
 using Billiards.Core.Physics;
 using Billiards.Core.Physics.Thesis;
-using static Billiards.Core.Tests.Thesis.ThesisKit;
+using static Billiards.Core.Tests.Physics.Thesis.ThesisKit;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>Seed 4.3.1: the stop rule and the end-of-shot rules (cue ball respot, game reset).</summary>
 public class ShotEndTests
@@ -21,7 +21,7 @@ public class ShotEndTests
     }
 
     [Fact]
-    public void The_shot_ends_when_the_summed_speed_drops_below_half_a_centimetre_per_second()
+    public void TheShotEndsWhenTheSummedSpeedDropsBelowHalfACentimetrePerSecond()
     {
         var ball = At(1, 0, 0, vx: 10);
         var engine = Engine("thesis", ball);
@@ -36,12 +36,12 @@ public class ShotEndTests
     }
 
     [Fact]
-    public void A_pocketed_cue_ball_goes_back_to_its_start()
+    public void APocketedCueBallGoesBackToItsStart()
     {
         // Straight at the foot-right pocket centre (124.5, 65.5) along 45 deg: it meets the test
         // circle 3.5 cm inside both jaws' triangles, so nothing deflects it.
         var start = new Vector3(110, Y, 51);
-        var cue = new Ball(0, start) { IsCue = true, Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
+        var cue = new Ball(0, start) { IsCueBall = true, Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
         var other = At(1, -50, 0);
         var engine = Engine("thesis", cue, other);
         RunToRest(engine);
@@ -57,11 +57,11 @@ public class ShotEndTests
     }
 
     [Fact]
-    public void Without_the_seed_s_end_of_shot_rules_a_pocketed_cue_ball_stays_in_its_pocket()
+    public void WithoutTheSeedSEndOfShotRulesAPocketedCueBallStaysInItsPocket()
     {
         // The shot above, for a game whose referee decides: the engine leaves the ball where it dropped.
         var start = new Vector3(110, Y, 51);
-        var cue = new Ball(0, start) { IsCue = true, Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
+        var cue = new Ball(0, start) { IsCueBall = true, Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
         var other = At(1, -50, 0);
         var engine = Engine("thesis", cue, other);
         engine.SeedEndOfShotRules = false;
@@ -73,12 +73,12 @@ public class ShotEndTests
     }
 
     [Fact]
-    public void A_pocketed_cue_ball_goes_to_the_nearest_free_point_when_a_ball_lies_on_its_start()
+    public void APocketedCueBallGoesToTheNearestFreePointWhenABallLiesOnItsStart()
     {
         // As above, but once the cue ball is on its way another ball is put on its start: the
         // seed put the cue ball back onto it anyway, leaving them overlapping at rest.
         var start = new Vector3(110, Y, 51);
-        var cue = new Ball(0, start) { IsCue = true, Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
+        var cue = new Ball(0, start) { IsCueBall = true, Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
         var other = At(1, -50, 0);
         var engine = Engine("thesis", cue, other);
         for (int k = 0; k < 10; k++)
@@ -101,7 +101,7 @@ public class ShotEndTests
     }
 
     [Fact]
-    public void A_pocketed_8_ball_resets_the_game()
+    public void APocketed8BallResetsTheGame()
     {
         var cue = At(0, -60, 0);
         var one = At(1, 0, 20, vx: 40);

@@ -5,7 +5,7 @@ using Billiards.Core.Physics.Thesis;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>Builds small thesis-model set-ups in the seed's units (cm, Y up, bed height y = 2.86).</summary>
 internal static class ThesisKit
@@ -14,7 +14,7 @@ internal static class ThesisKit
 
     /// <summary>Pool's ball <paramref name="number"/> (0 the cue ball) at (x, z) cm.</summary>
     public static Ball At(int number, float x, float z, float vx = 0, float vz = 0) =>
-        new(number, new Vector3(x, Y, z)) { Velocity = new Vector3(vx, 0, vz), IsCue = PoolBalls.IsCue(new Billiards.Core.Balls.BallId(number)) };
+        new(number, new Vector3(x, Y, z)) { Velocity = new Vector3(vx, 0, vz), IsCueBall = PoolBalls.IsCue(new Billiards.Core.Balls.BallId(number)) };
 
     public static PhysicsEngine Engine(string preset, params Ball[] balls) => Engine(preset, 1.0 / 250, balls);
 

@@ -4,7 +4,7 @@ using Billiards.Core.Physics;
 using Billiards.Core.Physics.Thesis;
 using Billiards.Core.Scenes;
 
-namespace Billiards.Core.Tests.Thesis;
+namespace Billiards.Core.Tests.Physics.Thesis;
 
 /// <summary>The thesis model behind the Simulation API: frames, strikes, events, whole breaks.</summary>
 public class ThesisSimulationTests
@@ -13,7 +13,7 @@ public class ThesisSimulationTests
         SceneLoader.Load(AssetFolder.Scene(name));
 
     [Fact]
-    public void Balls_read_back_in_SI_where_the_scene_put_them()
+    public void BallsReadBackInSIWhereTheScenePutThem()
     {
         var scene = LoadScene("thesis-eight-ball-break.json");
         var sim = new ThesisSimulation(scene);
@@ -31,7 +31,7 @@ public class ThesisSimulationTests
     }
 
     [Fact]
-    public void A_strike_along_90_degrees_moves_the_cue_ball_towards_plus_y_at_the_capped_speed()
+    public void AStrikeAlong90DegreesMovesTheCueBallTowardsPlusYAtTheCappedSpeed()
     {
         var sim = new ThesisSimulation(LoadScene("thesis-eight-ball-break.json"));
         sim.Strike(new ShotSpec(10, 90, TipSide: 0.5, TipHeight: -0.3, ElevationDeg: 12));
@@ -55,7 +55,7 @@ public class ThesisSimulationTests
     }
 
     [Fact]
-    public void The_8_ball_break_comes_to_rest_on_the_bed_or_in_pockets()
+    public void The8BallBreakComesToRestOnTheBedOrInPockets()
     {
         var outcome = SimulationRunner.Run(LoadScene("thesis-eight-ball-break.json"), new RunOptions());
         var sim = outcome.Simulation;
@@ -101,7 +101,7 @@ public class ThesisSimulationTests
     [Theory]
     [InlineData("thesis-eight-ball-break.json")]
     [InlineData("thesis-nine-ball-break.json")]
-    public void A_break_repeats_bit_for_bit(string scene)
+    public void ABreakRepeatsBitForBit(string scene)
     {
         var a = SimulationRunner.Run(LoadScene(scene), new RunOptions()).Simulation;
         var b = SimulationRunner.Run(LoadScene(scene), new RunOptions()).Simulation;
@@ -112,7 +112,7 @@ public class ThesisSimulationTests
     }
 
     [Fact]
-    public void Feature_names_follow_the_result_format()
+    public void FeatureNamesFollowTheResultFormat()
     {
         var sim = new ThesisSimulation(LoadScene("thesis-eight-ball-break.json"));
         Assert.Equal("foot-left", sim.FeatureName(EventKind.BallPocket, 4));
@@ -122,7 +122,7 @@ public class ThesisSimulationTests
     }
 
     [Fact]
-    public void Steps_allocate_nothing()
+    public void StepsAllocateNothing()
     {
         var scene = LoadScene("thesis-eight-ball-break.json");
         // A whole break first, so that one-time costs (type initialisation, tiered JIT) are paid.

@@ -1,14 +1,15 @@
 using Billiards.App.Platform;
 using Billiards.App.Rendering;
+using Billiards.App.Tests.Rendering;
 using Billiards.Core.Table;
 
-namespace Billiards.App.Tests.Rendering;
+namespace Billiards.App.Tests.Platform;
 
 [Collection("GL")]
 public class GlfwWindowTests
 {
     [Fact]
-    public void Window_OpensDrawsFramesAndTogglesFullscreen()
+    public void WindowOpensDrawsFramesAndTogglesFullscreen()
     {
         TestDisplay.Ensure();
         using var window = new GlfwWindow("smoke", 640, 360);
@@ -37,7 +38,7 @@ public class GlfwWindowTests
     }
 
     [Fact]
-    public void The_window_loop_keeps_to_its_cap()
+    public void TheWindowLoopKeepsToItsCap()
     {
         TestDisplay.Ensure();
         using var window = new GlfwWindow("cap", 160, 90) { FrameCap = 50 };
@@ -54,7 +55,7 @@ public class GlfwWindowTests
         Assert.True(clock.Elapsed.TotalSeconds >= 0.2 - 0.002, $"{clock.Elapsed.TotalMilliseconds} ms");
     }
     [Fact]
-    public void Stroking_hides_the_cursor_rather_than_disabling_it_so_absolute_pointers_keep_their_positions()
+    public void StrokingHidesTheCursorRatherThanDisablingItSoAbsolutePointersKeepTheirPositions()
     {
         TestDisplay.Ensure();
         using var window = new GlfwWindow("cursor", 320, 200);
@@ -76,7 +77,7 @@ public class GlfwWindowTests
     [InlineData(340, Key.Shift)]
     [InlineData(344, Key.Shift)]
     [InlineData(999, Key.Unknown)]
-    public void MapKey_TranslatesGlfwKeyCodes(int glfwKey, Key expected)
+    public void MapKeyTranslatesGlfwKeyCodes(int glfwKey, Key expected)
     {
         Assert.Equal(expected, GlfwWindow.MapKey(glfwKey));
     }

@@ -1,12 +1,12 @@
 using Billiards.App.Input.Modes;
 
-namespace Billiards.App.Tests.Input;
+namespace Billiards.App.Tests.Input.Modes;
 
 /// <summary>Formel 31, s = d / t * 250 (d pixels, t ms, s cm/s capped at 800), worked by hand per case.</summary>
 public class StrokeTrackerTests
 {
     [Fact]
-    public void Pull_back_then_push_through_the_line_strikes_with_formel_31()
+    public void PullBackThenPushThroughTheLineStrikesWithFormel31()
     {
         var stroke = new StrokeTracker();
         stroke.Begin(300, 0.000);                 // start line y = 300
@@ -23,7 +23,7 @@ public class StrokeTrackerTests
     }
 
     [Fact]
-    public void A_backward_move_resets_distance_and_time()
+    public void ABackwardMoveResetsDistanceAndTime()
     {
         var stroke = new StrokeTracker();
         stroke.Begin(300, 0.000);
@@ -38,7 +38,7 @@ public class StrokeTrackerTests
     }
 
     [Fact]
-    public void Speed_is_capped_at_800()
+    public void SpeedIsCappedAt800()
     {
         var stroke = new StrokeTracker();
         stroke.Begin(100, 0);
@@ -48,7 +48,7 @@ public class StrokeTrackerTests
     }
 
     [Fact]
-    public void One_event_from_behind_to_past_the_line_is_measured_from_the_previous_event()
+    public void OneEventFromBehindToPastTheLineIsMeasuredFromThePreviousEvent()
     {
         var stroke = new StrokeTracker();
         stroke.Begin(300, 0.000);
@@ -58,7 +58,7 @@ public class StrokeTrackerTests
     }
 
     [Fact]
-    public void Pushing_without_a_backswing_moves_the_line_instead_of_striking()
+    public void PushingWithoutABackswingMovesTheLineInsteadOfStriking()
     {
         var stroke = new StrokeTracker();
         stroke.Begin(300, 0.000);
@@ -71,7 +71,7 @@ public class StrokeTrackerTests
     }
 
     [Fact]
-    public void Sideways_moves_change_nothing_and_an_inactive_tracker_ignores_moves()
+    public void SidewaysMovesChangeNothingAndAnInactiveTrackerIgnoresMoves()
     {
         var stroke = new StrokeTracker();
         Assert.Null(stroke.Move(10, 0));
@@ -88,7 +88,7 @@ public class StrokeTrackerTests
 public class TipOffsetTests
 {
     [Fact]
-    public void Formel_32_33_moves_right_with_dx_and_up_against_dy()
+    public void Formel3233MovesRightWithDxAndUpAgainstDy()
     {
         var tip = new TipOffset();
         tip.Move(100, -50);                       // e_x = 100 * 0.01 = 1 cm, e_y = -(-50) * 0.01 = 0.5 cm
@@ -99,7 +99,7 @@ public class TipOffsetTests
     }
 
     [Fact]
-    public void The_tip_is_clamped_radially_inside_the_ball()
+    public void TheTipIsClampedRadiallyInsideTheBall()
     {
         var tip = new TipOffset();
         tip.Move(300, -400);                      // (3, 4) cm, length 5 > 0.9 * 2.86 = 2.574

@@ -1,13 +1,14 @@
 using Billiards.App.Cli;
 using Billiards.App.Game;
+using Billiards.App.Tests.Game;
 using Billiards.Core.Scenes;
 
-namespace Billiards.App.Tests.Game;
+namespace Billiards.App.Tests.Cli;
 
 public class PlayCommandTests
 {
     [Fact]
-    public void Play_runs_the_scene_in_the_platform_until_its_loop_ends()
+    public void PlayRunsTheSceneInThePlatformUntilItsLoopEnds()
     {
         string path = Path.Combine(Path.GetTempPath(), $"play-{Guid.NewGuid():N}.json");
         File.WriteAllText(path, """
@@ -39,7 +40,7 @@ public class PlayCommandTests
     }
 
     [Fact]
-    public void A_bad_scene_is_one_line_and_a_non_zero_exit_before_any_window()
+    public void ABadSceneIsOneLineAndANonZeroExitBeforeAnyWindow()
     {
         var stdout = new StringWriter();
         var stderr = new StringWriter();
@@ -54,7 +55,7 @@ public class PlayCommandTests
     }
 
     [Fact]
-    public void Play_takes_at_most_one_scene()
+    public void PlayTakesAtMostOneScene()
     {
         var stderr = new StringWriter();
         Assert.Equal(CommandLine.BadInput, CommandLine.Run(["play", "a.json", "b.json"], new StringWriter(), stderr));
@@ -62,7 +63,7 @@ public class PlayCommandTests
     }
 
     [Fact]
-    public void The_default_scene_is_eight_ball()
+    public void TheDefaultSceneIsEightBall()
     {
         Assert.EndsWith(Path.Combine("assets", "scenes", "eight-ball.json"), PlayCommand.FindDefaultScene(), StringComparison.Ordinal);
     }
@@ -74,7 +75,7 @@ public class FrameCapOptionTests
     [InlineData(-1)]
     [InlineData(1001)]
     [InlineData(double.NaN)]
-    public void A_cap_out_of_range_is_refused_in_one_line(double value)
+    public void ACapOutOfRangeIsRefusedInOneLine(double value)
     {
         var e = Assert.Throws<CliException>(() => PlayCommand.FrameCap(value));
         Assert.StartsWith("--fps-cap ", e.Message, StringComparison.Ordinal);
@@ -82,7 +83,7 @@ public class FrameCapOptionTests
     }
 
     [Fact]
-    public void No_cap_zero_and_a_rate_pass()
+    public void NoCapZeroAndARatePass()
     {
         Assert.Null(PlayCommand.FrameCap(null));
         Assert.Equal(0, PlayCommand.FrameCap(0));
@@ -115,7 +116,7 @@ public class StartMenuTests
     }
 
     [Fact]
-    public void Plain_play_opens_the_start_menu_and_its_choice_starts_that_game()
+    public void PlainPlayOpensTheStartMenuAndItsChoiceStartsThatGame()
     {
         var clock = new ManualClock();
         var window = new FakeWindow { FramebufferSize = (1280, 720) };
@@ -137,7 +138,7 @@ public class StartMenuTests
     [Theory]
     [InlineData("Stop shot", "Drill: Stop shot")]
     [InlineData("Practice (no referee)", "Practice: M then drag any ball")]
-    public void The_start_menu_starts_practice_or_a_drill(string click, string line)
+    public void TheStartMenuStartsPracticeOrADrill(string click, string line)
     {
         var clock = new ManualClock();
         var window = new FakeWindow { FramebufferSize = (1280, 720) };
@@ -154,7 +155,7 @@ public class StartMenuTests
     }
 
     [Fact]
-    public void The_physics_choice_makes_the_game_and_is_remembered_after_a_restart()
+    public void ThePhysicsChoiceMakesTheGameAndIsRememberedAfterARestart()
     {
         using var settings = new TempSettings();
         var scenes = new List<Billiards.Core.Scenes.Scene>();

@@ -2,7 +2,7 @@ using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using static Billiards.Core.Tests.Physics.Collisions.CollisionKit;
 
-namespace Billiards.Core.Tests.Physics.Collisions;
+namespace Billiards.Core.Tests.Physics.Collisions.BallCushion;
 
 /// <summary>What every cushion model of the registry must do: lose energy, leave the cushion, mirror, restitute.</summary>
 public class CushionModelTests

@@ -1,7 +1,8 @@
 using Billiards.App.Hud;
 using Billiards.App.Platform;
+using Billiards.App.Tests.Game;
 
-namespace Billiards.App.Tests.Game;
+namespace Billiards.App.Tests.Hud;
 
 /// <summary>The HUD offers "H or F1: help" under every menu, and the keys open it there.</summary>
 public class MenuHelpTests
@@ -9,7 +10,7 @@ public class MenuHelpTests
     [Theory]
     [InlineData(Key.H)]
     [InlineData(Key.F1)]
-    public void The_help_keys_open_and_close_the_help_over_the_start_menu(Key help)
+    public void TheHelpKeysOpenAndCloseTheHelpOverTheStartMenu(Key help)
     {
         using var game = new TestGame();
         game.World.Menu.ShowStart();
@@ -30,7 +31,7 @@ public class MenuHelpTests
     }
 
     [Fact]
-    public void The_help_opens_over_the_pause_menu_too_and_other_keys_stay_with_the_menu()
+    public void TheHelpOpensOverThePauseMenuTooAndOtherKeysStayWithTheMenu()
     {
         using var game = new TestGame();
         game.Window.Press(Key.Escape);

@@ -1,11 +1,12 @@
 using System.Security.Cryptography;
 using Billiards.App.Audio;
 using Billiards.App.Cli;
+using Billiards.App.Tests.Audio;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
 using Xunit.Abstractions;
 
-namespace Billiards.App.Tests.Audio;
+namespace Billiards.App.Tests.Cli;
 
 public sealed class RenderAudioCommandTests(ITestOutputHelper output) : IDisposable
 {

@@ -4,7 +4,7 @@ using Billiards.Core.Physics.Collisions.BallCushion;
 using Billiards.Core.Scenes;
 using static Billiards.Core.Tests.Physics.Collisions.CollisionKit;
 
-namespace Billiards.Core.Tests.Physics.Collisions;
+namespace Billiards.Core.Tests.Physics.Collisions.BallCushion;
 
 /// <summary>Stronge's compliant impact: its regimes' limits and the bounds of omega_ratio.</summary>
 public class StrongeCompliantTests

@@ -4,7 +4,7 @@ using Billiards.Core.Physics;
 using Billiards.Core.Physics.Collisions.BallBall;
 using static Billiards.Core.Tests.Physics.Collisions.CollisionKit;
 
-namespace Billiards.Core.Tests.Physics.Collisions;
+namespace Billiards.Core.Tests.Physics.Collisions.BallBall;
 
 /// <summary>What every ball-ball model of the registry must do, and the Mathavan 2014 model's own limits.</summary>
 public class BallBallModelTests
@@ -27,7 +27,7 @@ public class BallBallModelTests
         foreach (double e in new[] { 0.5, 0.95 })
         {
             var (a, b) = Shot(2, 0);
-            BallBall(name).Resolve(ref a, ref b, P with { EB = e });
+            CollisionKit.BallBall(name).Resolve(ref a, ref b, P with { EB = e });
             AssertClose(new Vec3((1 - e), 0, 0), a.Velocity, 1e-12, $"{name} cue ball at e = {e}");
             AssertClose(new Vec3((1 + e), 0, 0), b.Velocity, 1e-12, $"{name} object ball at e = {e}");
             AssertClose(Vec3.Zero, a.Spin, 1e-12, $"{name} cue ball spin");
@@ -39,7 +39,7 @@ public class BallBallModelTests
     [MemberData(nameof(Models))]
     public void NoCollisionAddsEnergy(string name)
     {
-        var model = BallBall(name);
+        var model = CollisionKit.BallBall(name);
         foreach (double speed in new[] { 0.2, 1, 3, 8 })
         {
             for (double cut = 0; cut <= 85; cut += 5)
@@ -68,8 +68,8 @@ public class BallBallModelTests
         {
             var (a, b) = Shot(speed, cut, follow, side);
             var (ma, mb) = (Mirror(a), Mirror(b));
-            BallBall(name).Resolve(ref a, ref b, P);
-            BallBall(name).Resolve(ref ma, ref mb, P);
+            CollisionKit.BallBall(name).Resolve(ref a, ref b, P);
+            CollisionKit.BallBall(name).Resolve(ref ma, ref mb, P);
             AssertClose(Mirror(a).Velocity, ma.Velocity, 1e-12, $"{name} cue ball");
             AssertClose(Mirror(b).Velocity, mb.Velocity, 1e-12, $"{name} object ball");
             AssertClose(Mirror(a).Spin, ma.Spin, 1e-9, $"{name} cue ball spin");
@@ -84,7 +84,7 @@ public class BallBallModelTests
         // Cut-induced throw: friction drags the object ball towards the cue ball's direction, so it
         // leaves at less than the cut angle off the cue ball's line (TP A-14), by a few degrees.
         var (a, b) = Shot(1, 30);
-        BallBall(name).Resolve(ref a, ref b, P);
+        CollisionKit.BallBall(name).Resolve(ref a, ref b, P);
         double angle = Math.Atan2(b.Velocity.Y, b.Velocity.X) * 180 / Math.PI;
         Assert.InRange(angle, 30 - 6, 30 - 0.2);
     }

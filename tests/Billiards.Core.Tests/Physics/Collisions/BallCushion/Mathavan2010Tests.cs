@@ -4,7 +4,7 @@ using Billiards.Core.Physics;
 using Billiards.Core.Physics.Collisions.BallCushion;
 using static Billiards.Core.Tests.Physics.Collisions.CollisionKit;
 
-namespace Billiards.Core.Tests.Physics.Collisions;
+namespace Billiards.Core.Tests.Physics.Collisions.BallCushion;
 
 /// <summary>Mathavan, Jackson and Parkin (2010): the limits of its equations, its figures' shape and the error of its step.</summary>
 public class Mathavan2010Tests

@@ -5,7 +5,7 @@ using Billiards.App.Rendering;
 using Billiards.App.Tests.Game;
 using Billiards.Core.Balls;
 
-namespace Billiards.App.Tests.Input;
+namespace Billiards.App.Tests.Input.Modes;
 
 /// <summary>The control modes driven through a fake window and a manual clock.</summary>
 public class InputModeNodeTests
@@ -31,7 +31,7 @@ public class InputModeNodeTests
     }
 
     [Fact]
-    public void A_stroke_strikes_with_the_speed_of_formel_31_along_the_view()
+    public void AStrokeStrikesWithTheSpeedOfFormel31AlongTheView()
     {
         using var game = new TestGame();
         Stroke(game);
@@ -48,7 +48,7 @@ public class InputModeNodeTests
     }
 
     [Fact]
-    public void The_strike_goes_from_the_camera_to_the_ball_in_the_bed_plane()
+    public void TheStrikeGoesFromTheCameraToTheBallInTheBedPlane()
     {
         using var game = new TestGame();
         // Orbit: φ = π + 0.01 * 50 = π + 0.5; the eye is at -(cos 0.5, sin 0.5) from the ball, so the aim is 0.5 rad.
@@ -62,7 +62,7 @@ public class InputModeNodeTests
     }
 
     [Fact]
-    public void The_mouse_is_captured_while_stroking_and_released_at_the_strike()
+    public void TheMouseIsCapturedWhileStrokingAndReleasedAtTheStrike()
     {
         using var game = new TestGame();
         game.Window.Press(Key.S);
@@ -81,7 +81,7 @@ public class InputModeNodeTests
     }
 
     [Fact]
-    public void Everything_but_viewing_is_locked_while_balls_roll()
+    public void EverythingButViewingIsLockedWhileBallsRoll()
     {
         using var game = new TestGame();
         Stroke(game);
@@ -110,7 +110,7 @@ public class InputModeNodeTests
     }
 
     [Fact]
-    public void Mode_keys_switch_modes_and_a_switch_abandons_a_stroke()
+    public void ModeKeysSwitchModesAndASwitchAbandonsAStroke()
     {
         using var game = new TestGame();
         var seen = new List<InputMode>();
@@ -131,7 +131,7 @@ public class InputModeNodeTests
     }
 
     [Fact]
-    public void Effet_mode_moves_the_tip_and_the_strike_carries_tip_and_elevation()
+    public void EffetModeMovesTheTipAndTheStrikeCarriesTipAndElevation()
     {
         using var game = new TestGame();
         game.Window.Press(Key.E);
@@ -154,7 +154,7 @@ public class InputModeNodeTests
     }
 
     [Fact]
-    public void Elevation_is_clamped()
+    public void ElevationIsClamped()
     {
         using var game = new TestGame();
         game.Window.Press(Key.Down);
@@ -165,7 +165,7 @@ public class InputModeNodeTests
     }
 
     [Fact]
-    public void Moving_the_cue_ball_follows_formel_34_and_the_camera_follows_it()
+    public void MovingTheCueBallFollowsFormel34AndTheCameraFollowsIt()
     {
         using var game = new TestGame();
         var camera = game.World.Tree.Find<Billiards.App.Camera.CameraNode>()!.Camera;
@@ -203,7 +203,7 @@ public class InputModeNodeTests
     }
 
     [Fact]
-    public void From_above_the_cue_ball_follows_the_pointer_on_the_screen_not_the_cue()
+    public void FromAboveTheCueBallFollowsThePointerOnTheScreenNotTheCue()
     {
         using var game = new TestGame();
         var cameraNode = game.World.Tree.Find<Billiards.App.Camera.CameraNode>()!;
@@ -228,7 +228,7 @@ public class InputModeNodeTests
     }
 
     [Fact]
-    public void The_cue_ball_cannot_be_moved_onto_another_ball()
+    public void TheCueBallCannotBeMovedOntoAnotherBall()
     {
         using var game = new TestGame();
         var ball = game.World.Physics.CueBallPosition;
@@ -240,7 +240,7 @@ public class InputModeNodeTests
     }
 
     [Fact]
-    public void Without_a_cue_ball_only_view_mode_exists()
+    public void WithoutACueBallOnlyViewModeExists()
     {
         using var game = new TestGame(TestScenes.TwoBalls(withCue: false));
         Assert.Null(game.World.Tree.Find<CueNode>());
@@ -253,7 +253,7 @@ public class InputModeNodeTests
     }
 
     [Fact]
-    public void Right_drag_and_wheel_zoom_in_view_mode()
+    public void RightDragAndWheelZoomInViewMode()
     {
         using var game = new TestGame();
         var camera = game.World.Tree.Find<Billiards.App.Camera.CameraNode>()!.Camera;

@@ -3,9 +3,9 @@ using Billiards.Core.Physics;
 using Billiards.Core.Physics.Standard;
 using Billiards.Core.Scenes;
 using Billiards.Core.Table;
-using static Billiards.Core.Tests.Standard.StandardTestKit;
+using static Billiards.Core.Tests.Physics.Standard.StandardTestKit;
 
-namespace Billiards.Core.Tests.Standard;
+namespace Billiards.Core.Tests.Physics.Standard.Events;
 
 /// <summary>Contacts in the air: ball-ball in space, cushions at their height or passed over, pockets from the air, balls leaving the table.</summary>
 public class AirCollisionTests

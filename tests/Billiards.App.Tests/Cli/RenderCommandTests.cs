@@ -1,6 +1,7 @@
 using Billiards.App.Cli;
+using Billiards.App.Tests.Rendering;
 
-namespace Billiards.App.Tests.Rendering;
+namespace Billiards.App.Tests.Cli;
 
 [Collection("GL")]
 public class RenderCommandTests : IDisposable
@@ -33,7 +34,7 @@ public class RenderCommandTests : IDisposable
     }
 
     [Fact]
-    public void Render_WritesAPngOfTheRequestedSize()
+    public void RenderWritesAPngOfTheRequestedSize()
     {
         string scene = Scene(EightBall);
         string png = Path.Combine(_folder, "shot.png");
@@ -46,7 +47,7 @@ public class RenderCommandTests : IDisposable
     }
 
     [Fact]
-    public void Render_draws_a_position_practice_saved()
+    public void RenderDrawsAPositionPracticeSaved()
     {
         // What practice's save key writes: the practice scene's balls with a shot, every field explicit.
         var practice = Billiards.Core.Scenes.SceneLoader.Load(Billiards.Core.Scenes.AssetFolder.Scene("practice.json"));
@@ -61,7 +62,7 @@ public class RenderCommandTests : IDisposable
     }
 
     [Fact]
-    public void Render_AcceptsACamera()
+    public void RenderAcceptsACamera()
     {
         string scene = Scene(EightBall);
         string png = Path.Combine(_folder, "top.png");
@@ -80,7 +81,7 @@ public class RenderCommandTests : IDisposable
     [InlineData("--camera", "1,2,3")]
     [InlineData("--camera", "1,2,x,0,0,0")]
     [InlineData("--camera", "0,0,1,0,0,1")]
-    public void Render_RejectsBadArgumentsWithOneLineAndNoFile(string option, string value)
+    public void RenderRejectsBadArgumentsWithOneLineAndNoFile(string option, string value)
     {
         string scene = Scene(EightBall);
         string png = Path.Combine(_folder, "bad.png");
@@ -91,7 +92,7 @@ public class RenderCommandTests : IDisposable
     }
 
     [Fact]
-    public void Render_RejectsABadSceneWithOneLineAndNoFile()
+    public void RenderRejectsABadSceneWithOneLineAndNoFile()
     {
         string scene = Scene("""{ "format": "billiards-scene/1", "table": { "preset": "pool-99ft" } }""");
         string png = Path.Combine(_folder, "bad.png");
@@ -103,7 +104,7 @@ public class RenderCommandTests : IDisposable
     }
 
     [Fact]
-    public void Render_AtALaterTimeDrawsTheSimulationOrSaysItCannot()
+    public void RenderAtALaterTimeDrawsTheSimulationOrSaysItCannot()
     {
         // The physics models are written elsewhere: until they simulate, --at > 0 must fail cleanly.
         string scene = Scene(EightBall);
@@ -123,7 +124,7 @@ public class RenderCommandTests : IDisposable
     }
 
     [Fact]
-    public void Render_RejectsAMissingOutputFolder()
+    public void RenderRejectsAMissingOutputFolder()
     {
         string scene = Scene(EightBall);
         var (code, _, err) = Run("render", scene, "--out", Path.Combine(_folder, "no", "such", "x.png"));

@@ -1,11 +1,12 @@
 using Billiards.App.Game;
 using Billiards.App.Hud;
 using Billiards.App.Platform;
+using Billiards.App.Tests.Game;
 using Billiards.Core.Balls;
 using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
 
-namespace Billiards.App.Tests.Game;
+namespace Billiards.App.Tests.Hud;
 
 public class ScoreboardTests
 {
@@ -33,7 +34,7 @@ public class ScoreboardTests
     }
 
     [Fact]
-    public void The_result_panel_counts_each_players_game_and_Rematch_clears_the_last_games_rulings()
+    public void TheResultPanelCountsEachPlayersGameAndRematchClearsTheLastGamesRulings()
     {
         using var game = Start(new GameState(GameRules.EightBall) { Shot = 1, Players = new PerPlayer<string>("Anna", "Ben") });
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
@@ -69,10 +70,20 @@ public class ScoreboardTests
         Assert.Empty(hud.Board!.Log);
         Assert.NotEqual(lastRuling, hud.Board.Message);
         Assert.DoesNotContain(hud.Lines, l => l.Contains(lastRuling, StringComparison.Ordinal));
+
+        // The session's record keeps the first game; the rematch joins it once it has a shot, a line each.
+        Assert.Equal(2, match.Games.Count);
+        Assert.Equal([match.Games[0]], match.RecordedGames);
+        LoseOnTheEight(game);
+        Assert.Equal(match.Games, match.RecordedGames);
+        string[] lines = System.Text.Encoding.UTF8.GetString(GameRecordFile.ToJsonLines(match.RecordedGames)).Split('\n', StringSplitOptions.RemoveEmptyEntries);
+        Assert.Equal(2, lines.Length);
+        Assert.All(lines, l => Assert.Single(GameRecordFile.Parse(l, "session.json").Shots));
+        Assert.NotEqual(GameRecordFile.Parse(lines[0], "session.json").Setup.Seed, GameRecordFile.Parse(lines[1], "session.json").Setup.Seed);
     }
 
     [Fact]
-    public void Eight_ball_shows_no_fouls_in_a_row_and_nine_ball_shows_three_after_the_third()
+    public void EightBallShowsNoFoulsInARowAndNineBallShowsThreeAfterTheThird()
     {
         using (var eight = Start(new GameState(GameRules.EightBall) { Shot = 3, FoulsInRow = new PerPlayer<int>(2, 0), Players = new PerPlayer<string>("Anna", "Ben") }))
         {

@@ -1,7 +1,8 @@
 using Billiards.Core.Physics;
-using static Billiards.Core.Tests.Stability.StabilityKit;
+using Billiards.Core.Tests.Physics.Stability;
+using static Billiards.Core.Tests.Physics.Stability.StabilityKit;
 
-namespace Billiards.Core.Tests.Stability;
+namespace Billiards.Core.Tests.Physics.Standard.Events;
 
 /// <summary>
 /// A touching pair that is separating is not a collision: two balls exactly 2R apart, one
