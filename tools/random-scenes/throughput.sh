@@ -3,8 +3,8 @@
 #   tools/random-scenes/throughput.sh [COUNT] [ROUNDS] [--no-selfplay]
 # simulate --batch of COUNT seeded random scenes (default 8000, seed 2027) at 1 thread and at
 # every core, ROUNDS times each in turn (default 3), then self-play games per minute for the
-# README's 40-game run in one process, as one shard a core at once (deploy/run-local.sh), and as
-# one shard a core of one search thread each.
+# README's 40-game run in one process and as one shard a core at once (deploy/run-local.sh: the
+# manifest's pods, each searching on one thread).
 #
 # Two measures of the batch:
 # - shots per second, wall clock, the best round of each thread count (the least disturbed by
@@ -60,12 +60,6 @@ if [ "$selfplay" -eq 1 ]; then
   start=$(date +%s.%N)
   BILLIARDS=$billiards "$root/deploy/run-local.sh" --indexes "$cores" --data "$work/volume" > /dev/null 2>&1
   all=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.1f", 40 * 60 / (e - s) }')
-  start=$(date +%s.%N)
-  for ((k = 0; k < cores; k++)); do
-    "$billiards" "${game[@]}" --shard "$k/$cores" --threads 1 --summary "$work/single-$k.json" > /dev/null 2>&1 &
-  done
-  wait
-  single=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.1f", 40 * 60 / (e - s) }')
-  echo "${game[*]}: $one games/min in one process ($cpu processor s, $busy cores busy on average: its planner searches on every core), $all games/min as $cores shards at once (run-local.sh, each searching on every core), $single games/min as $cores shards of --threads 1 at once"
+  echo "${game[*]}: $one games/min in one process ($cpu processor s, $busy cores busy on average: its search runs on every core), $all games/min as $cores shards at once (run-local.sh: the manifest's pods, one search thread each)"
 fi
 echo "after: $(uptime)"
