@@ -481,9 +481,11 @@ internal sealed class HudRenderer : IDisposable
     // white spot and the number in ink.
     private void BallIcon(Vector2 centre, float radius, int number, int scale)
     {
-        var colour = BallTextures.BaseColor(new Billiards.Core.Balls.BallId(number));
+        var set = Billiards.Core.Balls.BallSet.Pool;
+        var id = new Billiards.Core.Balls.BallId(number);
+        var colour = BallTextures.BaseColor(set, id);
         var c = new Vector4(colour, 1);
-        if (number > 8)
+        if (set.Kind(id).Look.Striped)
         {
             Disc(centre, radius, new Vector4(0.97f, 0.96f, 0.92f, 1), 2);
             Quad(centre.X - radius, centre.Y - (radius * 0.55f), 2 * radius, radius * 1.1f, 0, 0, 0, 0, c, 0);

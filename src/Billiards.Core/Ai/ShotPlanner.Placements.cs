@@ -21,7 +21,7 @@ public sealed partial class ShotPlanner
                 region = BallInHand.Table;
             }
             var spots = state.Shot == 0 ? BreakSpots() : Placements(region);
-            return [.. spots.Select(p => new Root(position.With(BallId.Cue, p), p, p))];
+            return [.. spots.Select(p => new Root(position.With(position.CueBall, p), p, p))];
         }
 
         private List<Vec3> BreakSpots()
@@ -35,7 +35,7 @@ public sealed partial class ShotPlanner
                 spots.Add(new Vec3(x, 0.45 * t.HalfWidth, r));
                 spots.Add(new Vec3(x, -0.45 * t.HalfWidth, r));
             }
-            return [.. spots.Where(p => position.CanPlace(p, BallInHand.Kitchen, t, r, BallId.Cue))];
+            return [.. spots.Where(p => position.CanPlace(p, BallInHand.Kitchen, t, r, position.CueBall))];
         }
 
         private List<Vec3> Placements(BallInHand region)
@@ -43,7 +43,7 @@ public sealed partial class ShotPlanner
             var t = _table.Table;
             double r = _table.R;
             var scored = new List<(Vec3 P, double Ease)>();
-            var without = position.Without(BallId.Cue);
+            var without = position.Without(position.CueBall);
             foreach (var target in PlannerTable.LegalTargets(state, without))
             {
                 var o = without.Positions[without.IndexOf(target)];
@@ -63,9 +63,9 @@ public sealed partial class ShotPlanner
                         foreach (double distance in (ReadOnlySpan<double>)[0.15, 0.3, 0.55])
                         {
                             var p = (ghost - back * distance) with { Z = r };
-                            if (without.CanPlace(p, region, t, r, BallId.Cue))
+                            if (without.CanPlace(p, region, t, r, position.CueBall))
                             {
-                                double ease = _table.DirectEase(without.With(BallId.Cue, p), p, target, pocket);
+                                double ease = _table.DirectEase(without.With(position.CueBall, p), p, target, pocket);
                                 if (ease > 0)
                                 {
                                     scored.Add((p, ease - 0.02 * Math.Abs(cutDeg) / 15));
@@ -96,7 +96,7 @@ public sealed partial class ShotPlanner
                     for (double gy = -0.8; gy <= 0.8; gy += 0.2)
                     {
                         var p = new Vec3(gx * (t.HalfLength - r), gy * (t.HalfWidth - r), r);
-                        if (without.CanPlace(p, region, t, r, BallId.Cue))
+                        if (without.CanPlace(p, region, t, r, position.CueBall))
                         {
                             grid.Add(p);
                         }

@@ -88,15 +88,15 @@ public enum Foul
 /// The shooter's call: a ball and a pocket, or a safety (<see cref="Pocket"/> is
 /// <see cref="Table.PocketId.None"/>).
 /// </summary>
-/// <param name="Ball">The called ball (the cue ball for a safety).</param>
+/// <param name="Ball">The called ball (<see cref="Balls.BallId.None"/> for a safety).</param>
 /// <param name="Pocket">The called pocket, or <see cref="Table.PocketId.None"/> for a safety.</param>
 public sealed record Call(Balls.BallId Ball, Table.PocketId Pocket)
 {
     /// <summary>A declared safety: no ball is called.</summary>
-    public static Call Safety { get; } = new(Balls.BallId.Cue, Table.PocketId.None);
+    public static Call Safety { get; } = new(Balls.BallId.None, Table.PocketId.None);
 
     /// <summary>True for a declared safety.</summary>
-    public bool IsSafety => Pocket == Table.PocketId.None;
+    public bool IsSafety => !Pocket.IsPocket;
 }
 
 /// <summary>The names scene and result files use for the referee's enums (scene-format.md).</summary>
