@@ -48,6 +48,10 @@ public static class SuggestCommand
             var loaded = SceneLoader.Load(parse.GetValue(scene)!);
             var state = StateOf(loaded);
             var ruleset = Ruleset.For(state.Rules);
+            if (!ruleset.HasComputerPlayer)
+            {
+                throw new CliException($"{state.Rules.ToName()}: the computer player does not play it yet");
+            }
             var position = new TablePosition(loaded.Balls.Select(b => (b.Id, b.Position with { Z = loaded.BallRadius })), ruleset.CueBall(state));
             if (position.Count < 2 || !position.ObjectBalls.Any())
             {

@@ -27,11 +27,12 @@ public sealed class GameHost : IDisposable
     /// <param name="window">The window (input and switches).</param>
     /// <param name="clock">The clock for frame times and input timestamps.</param>
     /// <param name="match">The match to play, or null for practice.</param>
-    public GameHost(Scene scene, Func<Scene, Simulation> createSimulation, IGameWindow window, IClock clock, MatchSetup? match = null)
+    /// <param name="practice">Practice's tools and a drill, or null.</param>
+    public GameHost(Scene scene, Func<Scene, Simulation> createSimulation, IGameWindow window, IClock clock, MatchSetup? match = null, PracticeSetup? practice = null)
     {
         _window = window;
         _clock = clock;
-        _world = GameSceneBuilder.Build(scene, createSimulation, match);
+        _world = GameSceneBuilder.Build(scene, createSimulation, match, practice);
         _physicsStep = () => _world.Tree.PhysicsProcess(_world.Loop.Dt);
         _world.Menu.QuitConfirmed += window.Close;
         _world.SystemKeys.FullscreenRequested += window.ToggleFullscreen;

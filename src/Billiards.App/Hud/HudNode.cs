@@ -44,7 +44,10 @@ public sealed class HudNode : Node
         _match = FindInTree<MatchNode>();
         _computer = FindInTree<ComputerPlayerNode>();
         _aimLine = FindInTree<AimLineNode>();
+        _help = HelpText.For(_match is not null, FindInTree<PracticeNode>() is not null);
     }
+
+    private IReadOnlyList<string> _help = HelpText.Lines;
 
     /// <summary>How long the meter keeps showing a shot's speed after the strike (s).</summary>
     public const double ShotShownSeconds = 2;
@@ -71,7 +74,7 @@ public sealed class HudNode : Node
             aids.AddRange(call);
         }
         bool paused = _keys is { Loop.Paused: true };
-        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, HelpText.Lines, Meter(), aids, _icons.ToArray())
+        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, _help, Meter(), aids, _icons.ToArray())
         {
             Board = _match is not null && _physics is not null ? ScoreboardBuilder.Of(_match, _physics, _computer?.Status, paused, _audio?.StatusLine) : null,
             Developer = _keys?.ShowDeveloper ?? false,

@@ -52,6 +52,12 @@ public sealed class MenuNode : Node
     /// <summary>Signal: the start menu asks for a new game of these rules between these players.</summary>
     public event Action<GameRules, MatchPlayer[]>? StartRequested;
 
+    /// <summary>Signal: the start menu asks for practice: free (null) or the drill of this name.</summary>
+    public event Action<string?>? PracticeRequested;
+
+    /// <summary>The drills the start menu offers: (name, title), set by the host (none by default).</summary>
+    public IReadOnlyList<(string Name, string Title)> Drills { get; set; } = [];
+
     /// <summary>The start menu's game.</summary>
     public GameRules StartGame { get; private set; } = GameRules.EightBall;
 
@@ -188,6 +194,10 @@ public sealed class MenuNode : Node
         {
             _match.Restart();
         }
+        else if (FindInTree<PracticeNode>() is { } practice)
+        {
+            practice.Restart();
+        }
         else
         {
             _physics?.Restart();
@@ -223,7 +233,9 @@ public sealed class MenuNode : Node
         switch (Page)
         {
             case MenuPage.Start:
-                title = "New game: the game, the opponent (a person or the computer's level), the physics (cushion, cloth), Start";
+                title = Drills.Count > 0
+                    ? "New game: the game, the opponent, the physics (cushion, cloth), Start; or practice, or a drill"
+                    : "New game: the game, the opponent (a person or the computer's level), the physics (cushion, cloth), Start";
                 foreach (var game in Ruleset.All.Select(r => r.Game))
                 {
                     items.Add((Mark(game.ToName(), StartGame == game), () => StartGame = game));
@@ -238,8 +250,14 @@ public sealed class MenuNode : Node
                 rows.Add([.. ModelRegistry.BallCushionModels.Select(m => (Mark($"Physics: {m.Name}", StartSettings.Cushion == m), (Action)(() => StartSettings = StartSettings with { Cushion = m })))]);
                 rows.Add([.. Cloth.All.Select(c => (Mark($"{c.Name} cloth", StartSettings.Cloth == c), (Action)(() => StartSettings = StartSettings with { Cloth = c })))]);
                 rows.Add([("Start [Enter]", Begin)]);
+                rows.Add([("Practice (no referee)", () => RequestPractice(null))]);
+                // The drills by their titles, four to a row so that the rows fit a small window.
+                for (int i = 0; i < Drills.Count; i += 4)
+                {
+                    rows.Add([.. Drills.Skip(i).Take(4).Select(d => (Label: d.Title, Act: (Action)(() => RequestPractice(d.Name))))]);
+                }
                 // Below the HUD panel, whose lines reach about 0.4 of the height at the start.
-                y = height * 0.5f;
+                y = height * (Drills.Count > 0 ? 0.4f : 0.5f);
                 break;
             case MenuPage.Pause:
                 title = "Paused";
@@ -291,6 +309,12 @@ public sealed class MenuNode : Node
             y += buttonHeight + gap;
         }
         return title;
+    }
+
+    private void RequestPractice(string? drill)
+    {
+        Resume();
+        PracticeRequested?.Invoke(drill);
     }
 
     private static string Mark(string label, bool chosen) => chosen ? $"> {label} <" : label;

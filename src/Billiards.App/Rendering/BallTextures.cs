@@ -110,6 +110,11 @@ public static class BallTextures
             float band = Cover(MathF.Asin(StripeHalfHeight) - MathF.Abs(MathF.Asin(d.Z)), texel);
             surface = Vector3.Lerp(white, baseColor, band);
         }
+        if (number.Length == 0)
+        {
+            // A ball without a number (snooker's) is its colour all over.
+            return surface;
+        }
         // Number discs at +x and -x; read upright with z up.
         foreach (float side in s_sides)
         {

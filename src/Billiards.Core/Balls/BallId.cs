@@ -12,8 +12,9 @@ public readonly record struct BallId(int Value)
     public static BallId None { get; } = new(-1);
 
     /// <summary>
-    /// The id for messages: the ball's name in pool's set ("cue", "1", ...), else its number.
-    /// Files name balls through their own set (<see cref="BallSet.NameOf"/>).
+    /// The id for messages: the ball's name in the set that has it ("cue", "1", ..., "red-1", ...,
+    /// "black"; ids are unique across the sets), else its number. Files name balls through their
+    /// own set (<see cref="BallSet.NameOf"/>).
     /// </summary>
-    public override string ToString() => BallSet.Pool.NameOf(this);
+    public override string ToString() => BallSet.NameOfAny(this);
 }

@@ -70,6 +70,12 @@ public static class SceneLoader
         }
     }
 
+    /// <summary>Reads a scene object nested in another file (a drill's position); <paramref name="file"/> names that file in errors.</summary>
+    internal static Scene ReadScene(JsonElement e, string file) => new Reader(file).ReadScene(e, new SceneOverrides());
+
+    /// <summary>Reads a shot object (the scene's <c>shot</c> block) found at <paramref name="path"/> of another file.</summary>
+    internal static ShotSpec ReadShot(JsonElement e, string file, string path) => new Reader(file).ReadShot(e, path);
+
     private static string FirstSentence(string message)
     {
         int end = message.IndexOf(". ", StringComparison.Ordinal);
@@ -94,7 +100,8 @@ public static class SceneLoader
             }
             string? name = fields.TryGetValue("name", out var n) ? String(n, "$.name") : null;
 
-            var physics = fields.TryGetValue("physics", out var p) ? ReadPhysics(p, overrides) : ApplyOverrides(PhysicsConfig.Default, overrides, "$");
+            var set = SceneBallSet(fields);
+            var physics = fields.TryGetValue("physics", out var p) ? ReadPhysics(p, overrides, set) : ApplyOverrides(PhysicsConfig.Default with { Params = set.DefaultParams }, overrides, "$");
             var table = fields.TryGetValue("table", out var t)
                 ? ReadTable(t)
                 : TableSpec.FromPreset(physics.Model.DefaultTablePreset);
@@ -105,7 +112,6 @@ public static class SceneLoader
             }
 
             // The game names the ball set; the game block is read in full below, once the balls are.
-            var set = BallSetOf(fields);
             var cueBall = set.CueBalls[0];
             RackSpec? rack = fields.TryGetValue("rack", out var r) ? ReadRack(r) : null;
             var balls = new SortedDictionary<int, (BallSetup Ball, string Path)>();
@@ -117,7 +123,7 @@ public static class SceneLoader
                 }
                 if (!balls.ContainsKey(cueBall.Value))
                 {
-                    balls[cueBall.Value] = (new BallSetup(cueBall, Initializer.HeadSpot(table, radius), Vec3.Zero, Vec3.Zero), "$.rack");
+                    balls[cueBall.Value] = (new BallSetup(cueBall, Initializer.CueStart(rack.Game, table, radius), Vec3.Zero, Vec3.Zero), "$.rack");
                 }
             }
             if (fields.TryGetValue("balls", out var b))
@@ -153,8 +159,14 @@ public static class SceneLoader
 
         // The set of the scene's game (the game block's rules, else "rules"), pool's without one;
         // a bad name is refused where the field is read.
-        private static BallSet BallSetOf(Dictionary<string, JsonElement> fields)
+        // The balls a scene is played with, for its ball ids and the default radius and mass:
+        // snooker's when the scene names snooker (its rules, rack, game or table), else pool's.
+        // Read before the fields are validated, which happens as each is read.
+        private static BallSet SceneBallSet(Dictionary<string, JsonElement> fields)
         {
+            static bool Is(JsonElement e, string property, string value) =>
+                e.ValueKind == JsonValueKind.Object && e.TryGetProperty(property, out var v)
+                && v.ValueKind == JsonValueKind.String && v.GetString() == value;
             string? game = null;
             if (fields.TryGetValue("game", out var g) && g.ValueKind == JsonValueKind.Object && g.TryGetProperty("rules", out var gr) && gr.ValueKind == JsonValueKind.String)
             {
@@ -164,7 +176,13 @@ public static class SceneLoader
             {
                 game = ru.GetString();
             }
-            return Rules.RuleNames.TryParseGame(game, out var rules) ? Rules.Ruleset.For(rules).BallSet : BallSet.Pool;
+            if (Rules.RuleNames.TryParseGame(game, out var rules))
+            {
+                return Rules.Ruleset.For(rules).BallSet;
+            }
+            bool snooker = (fields.TryGetValue("rack", out var rack) && Is(rack, "game", "snooker"))
+                || (fields.TryGetValue("table", out var table) && Is(table, "preset", SnookerTable.Preset));
+            return snooker ? BallSet.Snooker : BallSet.Pool;
         }
 
         private void ValidatePlacement(List<(BallSetup Ball, string Path)> balls, TableSpec table, double radius)
@@ -212,10 +230,10 @@ public static class SceneLoader
             return table;
         }
 
-        private PhysicsConfig ReadPhysics(JsonElement e, SceneOverrides overrides)
+        private PhysicsConfig ReadPhysics(JsonElement e, SceneOverrides overrides, BallSet set)
         {
             var f = Object(e, "$.physics", "model", "integrator", "dt", "params", "models");
-            var config = PhysicsConfig.Default;
+            var config = PhysicsConfig.Default with { Params = set.DefaultParams };
             if (f.TryGetValue("model", out var m))
             {
                 var model = ModelRegistry.Get(OneOf(m, "$.physics.model", [.. ModelRegistry.Names]));
@@ -233,7 +251,7 @@ public static class SceneLoader
             }
             if (f.TryGetValue("params", out var p))
             {
-                config = config with { Params = ReadParams(p) };
+                config = config with { Params = ReadParams(p, set) };
             }
             config = ApplyOverrides(config, overrides, "$.physics");
             if (f.TryGetValue("models", out var ms))
@@ -292,10 +310,10 @@ public static class SceneLoader
             return config;
         }
 
-        private PhysicsParams ReadParams(JsonElement e)
+        private PhysicsParams ReadParams(JsonElement e, BallSet set)
         {
             var f = Object(e, "$.physics.params", [.. PhysicsParams.Symbols]);
-            var p = PhysicsParams.Default;
+            var p = set.DefaultParams;
             double Get(string key, double min, double max, double fallback) =>
                 f.TryGetValue(key, out var v) ? Number(v, $"$.physics.params.{key}", min, max) : fallback;
 
@@ -351,11 +369,12 @@ public static class SceneLoader
             {
                 throw Error("$.rack", "missing \"game\"");
             }
-            var game = OneOf(g, "$.rack.game", "eight-ball", "nine-ball", "ten-ball", "straight-pool") switch
+            var game = OneOf(g, "$.rack.game", "eight-ball", "nine-ball", "ten-ball", "straight-pool", "snooker") switch
             {
                 "eight-ball" => RackGame.EightBall,
                 "nine-ball" => RackGame.NineBall,
                 "ten-ball" => RackGame.TenBall,
+                "snooker" => RackGame.Snooker,
                 _ => RackGame.StraightPool,
             };
             int seed = 0;
@@ -404,24 +423,24 @@ public static class SceneLoader
             return new BallSetup(id, new Vec3(p[0], p[1], z), new Vec3(v[0], v[1], vz), new Vec3(w[0], w[1], w[2]));
         }
 
-        private ShotSpec ReadShot(JsonElement e)
+        public ShotSpec ReadShot(JsonElement e, string at = "$.shot")
         {
-            var f = Object(e, "$.shot", "speed", "aim_deg", "tip", "elevation_deg");
+            var f = Object(e, at, "speed", "aim_deg", "tip", "elevation_deg");
             if (!f.TryGetValue("speed", out var speed))
             {
-                throw Error("$.shot", "missing \"speed\"");
+                throw Error(at, "missing \"speed\"");
             }
             if (!f.TryGetValue("aim_deg", out var aim))
             {
-                throw Error("$.shot", "missing \"aim_deg\"");
+                throw Error(at, "missing \"aim_deg\"");
             }
-            double[] tip = f.TryGetValue("tip", out var t) ? Numbers(t, "$.shot.tip", 2, 1) : [0, 0];
+            double[] tip = f.TryGetValue("tip", out var t) ? Numbers(t, at + ".tip", 2, 1) : [0, 0];
             if (tip[0] * tip[0] + tip[1] * tip[1] >= 1)
             {
-                throw Error("$.shot.tip", "the tip offset must lie inside the ball (side^2 + height^2 < 1)");
+                throw Error(at + ".tip", "the tip offset must lie inside the ball (side^2 + height^2 < 1)");
             }
-            double elevation = f.TryGetValue("elevation_deg", out var el) ? Number(el, "$.shot.elevation_deg", 0, 90) : 0;
-            return new ShotSpec(Number(speed, "$.shot.speed", 0, MaxShotSpeed), Number(aim, "$.shot.aim_deg", -360, 360), tip[0], tip[1], elevation);
+            double elevation = f.TryGetValue("elevation_deg", out var el) ? Number(el, at + ".elevation_deg", 0, 90) : 0;
+            return new ShotSpec(Number(speed, at + ".speed", 0, MaxShotSpeed), Number(aim, at + ".aim_deg", -360, 360), tip[0], tip[1], elevation);
         }
 
         private Dictionary<string, JsonElement> Object(JsonElement e, string path, params string[] allowed)

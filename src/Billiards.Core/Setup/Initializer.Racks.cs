@@ -39,6 +39,10 @@ public static partial class Initializer
     public static IReadOnlyList<(BallId Id, Vec3 Position)> Rack(RackSpec rack, TableSpec table, double radius)
     {
         var random = new Random(rack.Seed);
+        if (rack.Game == RackGame.Snooker)
+        {
+            return SnookerRack(table, radius, random);
+        }
         int[] rowSizes = RowSizes(rack.Game);
         int[] numbers = rack.Game switch
         {

@@ -11,6 +11,8 @@ public enum RackGame
     TenBall,
     /// <summary>15 balls in a triangle in random order (14.1 continuous).</summary>
     StraightPool,
+    /// <summary>Snooker's 22: the reds in a triangle behind the pink, the colours on their spots, the cue ball in the D.</summary>
+    Snooker,
 }
 
 /// <summary>A rack placed by the Initializer, with the seed of its jitter.</summary>

@@ -10,11 +10,11 @@ namespace Billiards.Core.Table;
 /// <list type="bullet">
 /// <item>the cushion's contact point must lie at or below the top of the ball and at or above its
 /// equator (R &lt;= h &lt;= 2R), or the ball rides over the rail or slips under the nose;</item>
-/// <item>a ball must fit through the mouths (2R less than the narrower mouth);</item>
-/// <item>each pocket's capture circle (radius R, R behind the mouth's middle) must span the channel
-/// between the jaw faces that a ball's centre can reach; a smaller ball could roll past it between
-/// the jaws and off the end of the jaws.</item>
+/// <item>a ball must fit through the mouths (2R less than the narrower mouth).</item>
 /// </list>
+/// A small ball in wide jaws needs no refusal: the pocket's capture circle widens to span the
+/// channel between the jaws that its centre can reach (<see cref="TableGeometry.Build"/>), so it
+/// cannot roll past the circle and off the table (<see cref="CaptureSpansJaws"/> checks it).
 /// </summary>
 public static class RadiusLimits
 {
@@ -35,10 +35,6 @@ public static class RadiusLimits
         {
             return Format($"a ball of R = {radius} m does not fit through the pockets: its diameter is not less than the narrowest mouth, {mouth:0.####} m");
         }
-        if (!CaptureSpansJaws(table, radius))
-        {
-            return Format($"a ball of R = {radius} m is too small for this table's pockets: it could roll between the jaws past the pocket's capture circle and off the table; the smallest radius these pockets hold is {SmallestHeld(table):0.#####} m");
-        }
         return null;
     }
 
@@ -55,43 +51,20 @@ public static class RadiusLimits
             var across = (pocket.Centre - middle).Normalized();
             across = new Vec3(-across.Y, across.X, 0);
             string prefix = geometry.PocketName(pocket.Pocket) + "-jaw-";
-            double lo = double.PositiveInfinity, hi = double.NegativeInfinity;
+            var jaws = new List<CushionSegment>(2);
             foreach (var face in geometry.Segments)
             {
-                if (!geometry.CushionName(face.Feature).StartsWith(prefix, StringComparison.Ordinal))
+                if (geometry.CushionName(face.Feature).StartsWith(prefix, StringComparison.Ordinal))
                 {
-                    continue;
+                    jaws.Add(face);
                 }
-                // Where along the chord the centre is exactly R from this jaw face's line.
-                double s = (radius - Vec3.Dot(face.Normal, pocket.Centre - face.Start)) / Vec3.Dot(face.Normal, across);
-                lo = Math.Min(lo, s);
-                hi = Math.Max(hi, s);
             }
-            if (Math.Max(Math.Abs(lo), Math.Abs(hi)) > pocket.Radius)
+            if (TableGeometry.ChannelHalfWidth(jaws, pocket.Centre, across, radius) > pocket.Radius + 1e-12)
             {
                 return false;
             }
         }
         return true;
-    }
-
-    // The closure test is monotone in R over the range of interest: bisect for the message.
-    private static double SmallestHeld(TableSpec table)
-    {
-        double lo = 0.001, hi = table.Pockets.Min(p => p.Mouth) / 2;
-        for (int i = 0; i < 40; i++)
-        {
-            double mid = 0.5 * (lo + hi);
-            if (CaptureSpansJaws(table, mid))
-            {
-                hi = mid;
-            }
-            else
-            {
-                lo = mid;
-            }
-        }
-        return Math.Ceiling(hi * 1e5) / 1e5;
     }
 
     private static string Format(FormattableString s) => s.ToString(CultureInfo.InvariantCulture);

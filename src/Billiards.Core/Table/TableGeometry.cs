@@ -46,7 +46,8 @@ public readonly record struct PocketCircle(Vec3 Centre, double Radius, int Pocke
 /// Pockets (physics-standard-model.md, WPA): the mouth is measured between the points where the
 /// rail's nose line meets the jaw's face. Each jaw leaves the rail at the WPA jaw angle (142 deg
 /// corner, 104 deg side, measured through the cushion rubber), so the jaws converge towards the
-/// back of the pocket. The sharp corner is rounded by a nose of <see cref="NoseRadius"/>. The
+/// back of the pocket. The corner is rounded by a nose of <see cref="TableSpec.JawNoseRadius"/>
+/// (pool's sharp <see cref="NoseRadius"/>, snooker's rounder). The
 /// capture circle of radius R sits R behind the middle of the mouth line: a ball is pocketed once
 /// its centre is past the mouth line and more than half of it hangs over the hole, or it rattles
 /// off a jaw first.
@@ -176,6 +177,7 @@ public sealed class TableGeometry
             (5, false, 0, -1, "foot"), (5, true, 1, -1, "right"),
         };
         var trimmed = rails.Select(r => (r.A, r.B)).ToArray();
+        var jaws = Enumerable.Range(0, set.Count).Select(_ => new List<CushionSegment>(2)).ToArray();
         foreach (var (rail, atB, end, side, railWord) in ends)
         {
             int pocket = set.IndexAt(end, side);
@@ -196,14 +198,17 @@ public sealed class TableGeometry
             var jawNormal = leftHanded ? new Vec3(-jaw.Y, jaw.X, 0) : new Vec3(jaw.Y, -jaw.X, 0);
 
             // Round the corner with a nose tangent to both faces, inside the cushion body.
-            double tangent = NoseRadius / Math.Tan(angle / 2);
+            double nose = spec.JawNoseRadius;
+            double tangent = nose / Math.Tan(angle / 2);
             var bisector = (back + jaw).Normalized();
-            var noseCentre = tip + bisector * (NoseRadius / Math.Sin(angle / 2));
+            var noseCentre = tip + bisector * (nose / Math.Sin(angle / 2));
             int feature = names.Count;
             names.Add($"{set[pocket].Name}-jaw-{railWord}");
             ids.Add(CushionId.Jaw(set.Id(pocket)));
-            noses.Add(new CushionNose(noseCentre, NoseRadius, feature));
-            segments.Add(new CushionSegment(tip + jaw * tangent, tip + jaw * JawLength, jawNormal, feature));
+            noses.Add(new CushionNose(noseCentre, nose, feature));
+            var face = new CushionSegment(tip + jaw * tangent, tip + jaw * JawLength, jawNormal, feature);
+            segments.Add(face);
+            jaws[pocket].Add(face);
             var rt = trimmed[rail];
             trimmed[rail] = atB ? (rt.A, tip + back * tangent) : (tip + back * tangent, rt.B);
         }
@@ -212,11 +217,32 @@ public sealed class TableGeometry
             segments.Insert(i, new CushionSegment(trimmed[i].A, trimmed[i].B, rails[i].N, i));
         }
 
-        // Capture circles: R behind the middle of each mouth line, radius R.
+        // Capture circles: R behind the middle of each mouth line, radius R, or wider where the
+        // channel a ball's centre can reach between the jaws is wider than the circle there (a
+        // small ball in wide jaws): the circle then spans the channel, so no ball can roll past
+        // it between the jaws and off the table.
         for (int i = 0; i < set.Count; i++)
         {
-            pockets.Add(new PocketCircle(set[i].MouthMiddle(spec) + set[i].Outward * ballRadius, ballRadius, i));
+            var outward = set[i].Outward;
+            var centre = set[i].MouthMiddle(spec) + outward * ballRadius;
+            var across = new Vec3(-outward.Y, outward.X, 0);
+            pockets.Add(new PocketCircle(centre, Math.Max(ballRadius, ChannelHalfWidth(jaws[i], centre, across, ballRadius)), i));
         }
         return new TableGeometry(spec, ballRadius, segments, noses, pockets, names, ids);
+    }
+
+    /// <summary>
+    /// How far from <paramref name="centre"/>, along the line <paramref name="across"/> the
+    /// pocket's mouth, a ball's centre can be while at least R from both jaw faces' lines (m).
+    /// </summary>
+    internal static double ChannelHalfWidth(IReadOnlyList<CushionSegment> jaws, Vec3 centre, Vec3 across, double radius)
+    {
+        double widest = 0;
+        foreach (var face in jaws)
+        {
+            // Where along the chord the centre is exactly R from this jaw face's line.
+            widest = Math.Max(widest, Math.Abs((radius - Vec3.Dot(face.Normal, centre - face.Start)) / Vec3.Dot(face.Normal, across)));
+        }
+        return widest;
     }
 }

@@ -18,6 +18,10 @@ namespace Billiards.Core.Table;
 /// Height of the top of the rails above the bed (m): a ball in the air whose bottom is above it
 /// passes over the cushions. Default <see cref="DefaultRailHeight"/>.
 /// </param>
+/// <param name="JawNoseRadius">
+/// Radius of the rounded tips where a rail turns into a pocket's jaw (m): pool's sharp 5 mm
+/// (<see cref="TableGeometry.NoseRadius"/>), snooker's rounded pockets more.
+/// </param>
 public sealed record TableSpec(
     string Preset,
     double Length,
@@ -25,7 +29,8 @@ public sealed record TableSpec(
     double CushionHeight,
     PocketSet Pockets,
     double SightOffset,
-    double RailHeight = TableSpec.DefaultRailHeight)
+    double RailHeight = TableSpec.DefaultRailHeight,
+    double JawNoseRadius = TableGeometry.NoseRadius)
 {
     /// <summary>
     /// Default top of the rails: 1.75 in (44.45 mm) above the bed, every preset's (ours: the WPA
@@ -41,13 +46,14 @@ public sealed record TableSpec(
     public const double DefaultCushionHeight = 0.64 * 2 * 0.028575;
 
     /// <summary>The names accepted by <see cref="FromPreset"/>.</summary>
-    public static IReadOnlyList<string> PresetNames { get; } = ["pool-9ft", "pool-8ft", "pool-7ft", "thesis", "pocketless"];
+    public static IReadOnlyList<string> PresetNames { get; } = ["pool-9ft", "pool-8ft", "pool-7ft", "snooker-12ft", "thesis", "pocketless"];
 
     private const double Inch = 0.0254;
 
     /// <summary>
-    /// A table preset: WPA 9, 8 and 7 ft pool tables, the thesis table (245 x 127 cm nose to
-    /// nose, pockets of 11.2 cm, seed 3.1), and a pocketless 9 ft rectangle.
+    /// A table preset: WPA 9, 8 and 7 ft pool tables, the WPBSA's 12 ft snooker table
+    /// (<see cref="SnookerTable"/>), the thesis table (245 x 127 cm nose to nose, pockets of
+    /// 11.2 cm, seed 3.1), and a pocketless 9 ft rectangle.
     /// </summary>
     /// <exception cref="ArgumentException">For an unknown preset name.</exception>
     public static TableSpec FromPreset(string preset) => preset switch
@@ -55,6 +61,7 @@ public sealed record TableSpec(
         "pool-9ft" => Pool(preset, 100 * Inch, 50 * Inch),
         "pool-8ft" => Pool(preset, 92 * Inch, 46 * Inch),
         "pool-7ft" => Pool(preset, 78 * Inch, 39 * Inch),
+        SnookerTable.Preset => SnookerTable.Spec,
         // The seed's table (seed 3.1): bed 258 x 140 less two 6.5 cm rails; pockets are cylinders of 11.2 cm.
         // The seed's cushion faces are 60 deg to the bed; its jaws 35 deg (corner) and 70 deg (side) to the rail.
         "thesis" => new TableSpec(preset, 2.45, 1.27, DefaultCushionHeight, PocketSet.Six(0.112, 0.112, 142, 104), 0.0937),

@@ -134,6 +134,25 @@ public class StartMenuTests
         Assert.Contains(last.Lines, l => l.Contains("Player 2: on the 1", StringComparison.Ordinal));
     }
 
+    [Theory]
+    [InlineData("Stop shot", "Drill: Stop shot")]
+    [InlineData("Practice (no referee)", "Practice: M then drag any ball")]
+    public void The_start_menu_starts_practice_or_a_drill(string click, string line)
+    {
+        var clock = new ManualClock();
+        var window = new FakeWindow { FramebufferSize = (1280, 720) };
+        var renderer = new RecordingRenderer();
+        var loop = new ClickingLoop(clock, window, renderer, [click]);
+        using var settings = new TempSettings();
+        string data = Path.Combine(Path.GetTempPath(), $"data-{Guid.NewGuid():N}");
+        int code = PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), TestScenes.Create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true, SettingsPath = settings.Path, DataFolder = data });
+        Assert.Equal(0, code);
+        var last = renderer.Frames[^1].Hud!;
+        Assert.Null(last.Board); // no match: no scoreboard
+        Assert.Contains(last.Lines, l => l.StartsWith(line, StringComparison.Ordinal));
+        Assert.False(Directory.Exists(data), "nothing is written before an attempt ends");
+    }
+
     [Fact]
     public void The_physics_choice_makes_the_game_and_is_remembered_after_a_restart()
     {

@@ -53,7 +53,7 @@ public class GameBlockTests
 
     [Theory]
     [InlineData("""{ "players": ["A", "B"] }""", "$.game", "missing \"rules\"")]
-    [InlineData("""{ "rules": "snooker" }""", "$.game.rules", "unknown rules \"snooker\"")]
+    [InlineData("""{ "rules": "carom" }""", "$.game.rules", "unknown rules \"carom\"")]
     [InlineData("""{ "rules": "nine-ball", "shooter": 2 }""", "$.game.shooter", "player index 2 is out of range")]
     [InlineData("""{ "rules": "nine-ball", "shooter": -1 }""", "$.game.shooter", "player index -1 is out of range")]
     [InlineData("""{ "rules": "nine-ball", "groups": ["solids", "stripes"] }""", "$.game.groups", "nine-ball has no groups")]

@@ -108,7 +108,7 @@ public class SceneLoaderTests
     [InlineData("""{ §, "physics": { "params": { "mu_b": "pooltool" } } }""", "$.physics.params.mu_b", "unknown value \"pooltool\"")]
     [InlineData("""{ §, "physics": { "params": { "mu_s": "NaN" } } }""", "$.physics.params.mu_s", "expected a number, found the string \"NaN\"")]
     [InlineData("""{ §, "physics": { "params": { "mu_s": 1e999 } } }""", "$.physics.params.mu_s", "not finite")]
-    [InlineData("""{ §, "rack": { "game": "snooker" } }""", "$.rack.game", "unknown value \"snooker\"")]
+    [InlineData("""{ §, "rack": { "game": "carom" } }""", "$.rack.game", "unknown value \"carom\"")]
     [InlineData("""{ §, "rack": { "game": "nine-ball", "seed": 1.5 } }""", "$.rack.seed", "whole number")]
     [InlineData("""{ §, "balls": { } }""", "$.balls", "expected an array")]
     [InlineData("""{ §, "balls": [ { "id": "16", "position": [0, 0] } ] }""", "$.balls[0].id", "unknown ball id \"16\"")]
@@ -126,7 +126,7 @@ public class SceneLoaderTests
     [InlineData("""{ §, "balls": [ { "id": "cue", "position": [0, 0] } ], "shot": { "speed": 99, "aim_deg": 0 } }""", "$.shot.speed", "out of range")]
     [InlineData("""{ §, "balls": [ { "id": "cue", "position": [0, 0] } ], "shot": { "speed": 2, "aim_deg": 0, "tip": [0.8, 0.8] } }""", "$.shot.tip", "inside the ball")]
     [InlineData("""{ §, "balls": [ { "id": "cue", "position": [0, 0] } ], "shot": { "speed": 2, "aim_deg": 0, "elevation_deg": 95 } }""", "$.shot.elevation_deg", "out of range")]
-    [InlineData("""{ §, "rules": "snooker" }""", "$.rules", "unknown value \"snooker\"")]
+    [InlineData("""{ §, "rules": "carom" }""", "$.rules", "unknown value \"carom\"")]
     [InlineData("""{ §, "name": "a", "name": "b" }""", "$.name", "field appears twice")]
     public void MalformedScenesAreRefusedWithTheFileThePathAndTheProblem(string json, string path, string problem)
     {

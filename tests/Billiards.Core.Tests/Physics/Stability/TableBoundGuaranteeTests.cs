@@ -31,11 +31,12 @@ public class TableBoundGuaranteeTests
     }
 
     [Fact]
-    public void A_small_ball_under_low_cushions_is_refused_because_it_could_pass_the_capture_circle()
+    public void A_small_ball_under_low_cushions_is_held_because_the_capture_circle_widens_to_the_jaws()
     {
-        var e = Assert.Throws<SceneException>(() => SceneLoader.Parse(
-            Scene("""{ "params": { "R": 0.005 } }""", """{ "preset": "pool-9ft", "cushion_height": 0.007 }"""), "r.json"));
-        Assert.Contains("too small for this table's pockets", e.Problem, StringComparison.Ordinal);
+        var scene = SceneLoader.Parse(Scene("""{ "params": { "R": 0.005 } }""", """{ "preset": "pool-9ft", "cushion_height": 0.007 }"""), "r.json");
+        Assert.True(RadiusLimits.CaptureSpansJaws(scene.Table, 0.005));
+        // The circle spans the channel a centre can reach: wider than R there.
+        Assert.All(TableGeometry.Build(scene.Table, 0.005).Pockets.ToArray(), p => Assert.True(p.Radius > 0.005));
     }
 
     [Fact]
@@ -58,14 +59,16 @@ public class TableBoundGuaranteeTests
     }
 
     // The capture chord across the jaws, worked by hand for the 9 ft corner pocket at the default
-    // radius: the centre's channel is 2 x 25.6 mm wide where the circle (R = 28.6 mm) lies; at
-    // R = 25 mm the channel is 2 x 29.7 mm against a circle of 25 mm, so that ball could pass.
+    // radius: the centre's channel is 2 x 25.6 mm wide where the circle (R = 28.6 mm) lies, so the
+    // circle keeps R; at R = 25 mm the channel is 2 x 29.7 mm, and the circle widens to 29.7 mm.
     [Theory]
-    [InlineData(0.028575, true)]
-    [InlineData(0.025, false)]
-    public void The_capture_circle_spans_the_jaws_only_for_large_enough_balls(double radius, bool spans)
+    [InlineData(0.028575, 0.028575)]
+    [InlineData(0.025, 0.0297)]
+    public void The_capture_circle_spans_the_jaws_widening_past_R_for_small_balls(double radius, double expected)
     {
-        Assert.Equal(spans, RadiusLimits.CaptureSpansJaws(TableSpec.FromPreset("pool-9ft"), radius));
+        var table = TableSpec.FromPreset("pool-9ft");
+        Assert.True(RadiusLimits.CaptureSpansJaws(table, radius));
+        Assert.Equal(expected, TableGeometry.Build(table, radius).Pockets[0].Radius, 4);
     }
 
     /// <summary>
