@@ -137,7 +137,7 @@ public sealed class TableGeometry
         (a == b &&
          Bits(a.Length) == Bits(b.Length) && Bits(a.Width) == Bits(b.Width) &&
          Bits(a.CushionHeight) == Bits(b.CushionHeight) && Bits(a.SightOffset) == Bits(b.SightOffset) &&
-         Bits(a.RailHeight) == Bits(b.RailHeight));
+         Bits(a.RailHeight) == Bits(b.RailHeight) && Bits(a.JawNoseRadius) == Bits(b.JawNoseRadius));
 
     private static long Bits(double x) => BitConverter.DoubleToInt64Bits(x);
 

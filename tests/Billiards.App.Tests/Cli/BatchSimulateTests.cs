@@ -196,8 +196,9 @@ public sealed partial class BatchSimulateTests : IDisposable
             total += Allocated(() => run.RunLine(line, "in.jsonl", 1, json, buffer));
         }
         // The scene's loading and run allocate (its objects, the simulation and its event log);
-        // the budget is what they took when it was set, about 41 KB a scene, and a little room.
-        Assert.InRange(total / scenes.Length, 1, 44 * 1024);
+        // the budget is what they took when it was set and a little room: 41.7 KB a scene, 48.4 KB
+        // once tables' pockets and ball sets became data.
+        Assert.InRange(total / scenes.Length, 1, 50 * 1024);
 
         // Writing the result allocates nothing once the writer and the buffer are warm.
         var scene = Billiards.Core.Scenes.SceneLoader.Parse(scenes[0], "in.jsonl:1");
