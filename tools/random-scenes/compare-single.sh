@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Checks that `simulate --batch` gives, line for line, what single `simulate` runs print:
-#   tools/random-scenes/compare-single.sh COUNT SEED [THREADS]
+#   [JOBS=J] tools/random-scenes/compare-single.sh COUNT SEED [THREADS]
 # COUNT seeded random scenes go through one batch run and through COUNT single runs (one process
 # each); every result is compared byte for byte once white space is taken out (the batch writes a
 # result on one line, a single run indents it) and stats.wall_ms (a measurement) is blanked.
@@ -11,13 +11,15 @@ billiards=${BILLIARDS:-$root/src/Billiards.App/bin/Release/net10.0/billiards}
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 dotnet run --project "$root/tools/random-scenes" -c Release -- "$count" "$seed" > "$work/in.jsonl"
 "$billiards" simulate --batch "$work/in.jsonl" --out "$work/batch.jsonl" --threads "$threads"
-mkdir "$work/single"
+mkdir "$work/scenes" "$work/single"
 k=0
 while IFS= read -r line; do
   k=$((k + 1))
-  printf '%s\n' "$line" > "$work/scene.json"
-  "$billiards" simulate "$work/scene.json" --out "$work/single/$k.json"
+  printf '%s\n' "$line" > "$work/scenes/$k.json"
 done < "$work/in.jsonl"
+# The single runs, one process each, a core's worth at a time (JOBS; a run's result does not
+# depend on what else runs).
+seq 1 "$count" | xargs -P "${JOBS:-$(nproc)}" -I{} "$billiards" simulate "$work/scenes/{}.json" --out "$work/single/{}.json"
 python3 - "$work" "$count" <<'PY'
 import re, sys
 work, count = sys.argv[1], int(sys.argv[2])

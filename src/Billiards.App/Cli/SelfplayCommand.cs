@@ -12,7 +12,7 @@ using Billiards.Core.Table;
 namespace Billiards.App.Cli;
 
 /// <summary>
-/// <c>selfplay --rules R --games N --levels A,B --seed S [--target P] [--shard K/N] [--out FILE.jsonl] [--summary FILE.json]</c>:
+/// <c>selfplay --rules R --games N --levels A,B --seed S [--target P] [--shard K/N] [--threads N] [--out FILE.jsonl] [--summary FILE.json]</c>:
 /// the computer against itself on a 9 ft table; prints one summary JSON (<see cref="SelfPlaySummary"/>)
 /// or writes it to <c>--summary</c>, writes one game record per line with <c>--out</c>
 /// (<see cref="GameRecordFile"/>'s record on one line, so each replays ruling for ruling), and
@@ -46,10 +46,11 @@ public static class SelfplayCommand
         var shard = new Option<string?>("--shard") { Description = "K/N: play only the games g of the run with g mod N = K (0 <= K < N), with the run's seeds." };
         var output = new Option<string?>("--out") { Description = "Write the game records (billiards-game/1, one per line) to FILE.jsonl." };
         var summary = new Option<string?>("--summary") { Description = "Write the summary JSON to FILE instead of standard output." };
+        var threads = new Option<int?>("--threads") { Description = "The threads each decision's search runs on (default: every core); the games are the same at any count." };
         var merge = new Option<string[]>("--merge") { Description = "Merge the summaries of every shard of one run into the run's summary.", AllowMultipleArgumentsPerToken = true, Arity = ArgumentArity.OneOrMore };
         var command = new Command("selfplay", "Play the computer against itself and print a summary JSON.")
         {
-            rules, games, levels, seed, target, shard, output, summary, merge,
+            rules, games, levels, seed, target, shard, output, summary, threads, merge,
         };
         command.SetAction(parse =>
         {
@@ -57,7 +58,7 @@ public static class SelfplayCommand
             if (parse.GetValue(merge) is { Length: > 0 } summaries)
             {
                 foreach (var (name, given) in new[] { ("--rules", parse.GetValue(rules) is not null), ("--games", parse.GetValue(games) is not null), ("--levels", parse.GetValue(levels) is not null),
-                    ("--seed", parse.GetValue(seed) is not null), ("--target", parse.GetValue(target) is not null), ("--shard", parse.GetValue(shard) is not null), ("--out", parse.GetValue(output) is not null) })
+                    ("--seed", parse.GetValue(seed) is not null), ("--target", parse.GetValue(target) is not null), ("--shard", parse.GetValue(shard) is not null), ("--out", parse.GetValue(output) is not null), ("--threads", parse.GetValue(threads) is not null) })
                 {
                     if (given)
                     {
@@ -93,6 +94,15 @@ public static class SelfplayCommand
             {
                 part = SelfPlayShard.TryParse(shardText, out string problem) ?? throw new CliException($"--shard {shardText}: {problem}");
             }
+            // A search reduces its samples in their order, whichever thread ran them, and the time
+            // cap is never reached: the thread count changes the speed only. One thread a shard
+            // fits shards that run side by side on the same cores.
+            int searchThreads = parse.GetValue(threads) ?? Environment.ProcessorCount;
+            if (searchThreads < 1 || searchThreads > BatchSimulation.MaxThreads)
+            {
+                throw new CliException($"--threads {searchThreads}: expected 1 to {BatchSimulation.MaxThreads}");
+            }
+            var budget = Budget with { Threads = searchThreads };
             string? outPath = parse.GetValue(output) is { } o ? OutputFiles.Check("--out", o) : null;
 
             var table = TableSpec.FromPreset("pool-9ft");
@@ -106,7 +116,7 @@ public static class SelfplayCommand
             foreach (int g in part.Games(count))
             {
                 // Game g has the same seed and breaker in every shard count: the shards play the run's games.
-                played.Add(selfPlay.Play(game, pair, g % 2, PlannerRandom.Derive((ulong)seedValue, g), Budget, points));
+                played.Add(selfPlay.Play(game, pair, g % 2, PlannerRandom.Derive((ulong)seedValue, g), budget, points));
                 if (clock.Elapsed - lastReport > TimeSpan.FromSeconds(5) || played.Count == mine)
                 {
                     lastReport = clock.Elapsed;

@@ -28,8 +28,15 @@ public static class ResultWriter
         return stream.ToArray();
     }
 
-    private static void Write(Utf8JsonWriter w, RunOutcome outcome)
+    /// <summary>
+    /// Writes the result object (without the final line break) to <paramref name="w"/>, which
+    /// decides the white space: what <see cref="ToUtf8"/> writes, for a caller that reuses its
+    /// writer and buffer from one result to the next (simulate --batch).
+    /// </summary>
+    public static void Write(Utf8JsonWriter w, RunOutcome outcome)
     {
+        ArgumentNullException.ThrowIfNull(w);
+        ArgumentNullException.ThrowIfNull(outcome);
         var sim = outcome.Simulation;
         w.WriteStartObject();
         w.WriteString("format", Format);

@@ -66,8 +66,9 @@ public sealed class TableGeometry
     private readonly string[] _cushionNames;
     private readonly CushionId[] _cushionIds;
 
-    private TableGeometry(TableSpec spec, List<CushionSegment> segments, List<CushionNose> noses, List<PocketCircle> pockets, List<string> names, List<CushionId> ids)
+    private TableGeometry(TableSpec spec, double ballRadius, List<CushionSegment> segments, List<CushionNose> noses, List<PocketCircle> pockets, List<string> names, List<CushionId> ids)
     {
+        _ballRadius = ballRadius;
         _cushionIds = [.. ids];
         Spec = spec;
         _segments = [.. segments];
@@ -103,8 +104,44 @@ public sealed class TableGeometry
     /// <summary>The name of a pocket of the table, or "?" for an unknown index.</summary>
     public string PocketName(int pocket) => Spec.Pockets.NameOf(pocket);
 
-    /// <summary>Builds the geometry of a table for balls of radius <paramref name="ballRadius"/> (m).</summary>
+    // The last geometry this thread built: loading and running one scene builds its table's
+    // geometry several times (the radius check, the placement check, the model), and a batch or
+    // a planner builds the same table scene after scene. A geometry never changes once built,
+    // and each thread keeps its own, so nothing is shared between threads.
+    [ThreadStatic]
+    private static TableGeometry? t_last;
+
+    private readonly double _ballRadius;
+
+    /// <summary>
+    /// The geometry of a table for balls of radius <paramref name="ballRadius"/> (m): built, or the
+    /// one this thread built last when the table and the radius are the same to the bit.
+    /// </summary>
     public static TableGeometry Build(TableSpec spec, double ballRadius)
+    {
+        ArgumentNullException.ThrowIfNull(spec);
+        if (t_last is { } last && SameBits(last.Spec, spec) && BitConverter.DoubleToInt64Bits(last._ballRadius) == BitConverter.DoubleToInt64Bits(ballRadius))
+        {
+            return last;
+        }
+        var built = BuildNew(spec, ballRadius);
+        t_last = built;
+        return built;
+    }
+
+    // Record equality (every field, a new one too, the pockets by value) takes 0 for -0, and the
+    // geometry keeps its spec: the bits of the table's own numbers decide as well (a pocket's
+    // mouth and jaw angle are never 0).
+    private static bool SameBits(TableSpec a, TableSpec b) =>
+        ReferenceEquals(a, b) ||
+        (a == b &&
+         Bits(a.Length) == Bits(b.Length) && Bits(a.Width) == Bits(b.Width) &&
+         Bits(a.CushionHeight) == Bits(b.CushionHeight) && Bits(a.SightOffset) == Bits(b.SightOffset) &&
+         Bits(a.RailHeight) == Bits(b.RailHeight) && Bits(a.JawNoseRadius) == Bits(b.JawNoseRadius));
+
+    private static long Bits(double x) => BitConverter.DoubleToInt64Bits(x);
+
+    private static TableGeometry BuildNew(TableSpec spec, double ballRadius)
     {
         double hx = spec.HalfLength;
         double hy = spec.HalfWidth;
@@ -191,7 +228,7 @@ public sealed class TableGeometry
             var across = new Vec3(-outward.Y, outward.X, 0);
             pockets.Add(new PocketCircle(centre, Math.Max(ballRadius, ChannelHalfWidth(jaws[i], centre, across, ballRadius)), i));
         }
-        return new TableGeometry(spec, segments, noses, pockets, names, ids);
+        return new TableGeometry(spec, ballRadius, segments, noses, pockets, names, ids);
     }
 
     /// <summary>

@@ -101,4 +101,24 @@ public sealed class SelfplayShardTests : IDisposable
         Assert.Equal(2, mixed.Code);
         Assert.Contains("--merge: --seed does not go with it", mixed.Err, StringComparison.Ordinal);
     }
+    [Fact]
+    public void TheSearchThreadsChangeNoGame()
+    {
+        string[] run = ["selfplay", "--rules", "eight-ball", "--games", "2", "--levels", "2,3", "--seed", "4"];
+        foreach (string threads in new[] { "1", "3" })
+        {
+            var r = CliRun.Run([.. run, "--threads", threads, "--out", P($"games-{threads}.jsonl"), "--summary", P($"summary-{threads}.json")]);
+            Assert.True(r.Code == 0, r.Err);
+        }
+        Assert.Equal(File.ReadAllText(P("games-1.jsonl")), File.ReadAllText(P("games-3.jsonl")));
+        Assert.Equal(Counts(File.ReadAllText(P("summary-1.json"))), Counts(File.ReadAllText(P("summary-3.json"))));
+        Assert.True(File.ReadAllLines(P("games-1.jsonl")).Length == 2);
+
+        var bad = CliRun.Run([.. run, "--threads", "0"]);
+        Assert.Equal(2, bad.Code);
+        Assert.Equal("billiards: --threads 0: expected 1 to 1024", bad.Err.TrimEnd('\n'));
+        var merge = CliRun.Run("selfplay", "--merge", P("summary-1.json"), "--threads", "2");
+        Assert.Equal(2, merge.Code);
+        Assert.Contains("--threads does not go with it", merge.Err, StringComparison.Ordinal);
+    }
 }

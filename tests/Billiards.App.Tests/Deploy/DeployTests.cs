@@ -106,6 +106,11 @@ public sealed partial class DeployTests : IDisposable
         // Every variable is the manifest's or the one Kubernetes sets for an Indexed Job.
         Assert.All(Variable().Matches(script).Select(m => m.Groups[1].Value), v => Assert.True(v == "JOB_COMPLETION_INDEX" || env.ContainsKey(v), v));
         OptionsAreTheVerbs(script);
+        // A pod searches on as many threads as the cores it requests (the default would be
+        // every core of the node it lands on).
+        var threads = System.Text.RegularExpressions.Regex.Match(script, @"--threads (\d+)");
+        Assert.True(threads.Success, script);
+        Assert.Equal(Text(container, "resources", "requests", "cpu"), threads.Groups[1].Value);
         // The values are a run the verb accepts (the one the README measures).
         Assert.Equal("eight-ball", env["RULES"]);
         Assert.Equal(new Core.Rules.PerPlayer<int>(3, 3), SelfplayCommand.ParseLevels(env["LEVELS"]));
