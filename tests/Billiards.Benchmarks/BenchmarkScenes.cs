@@ -9,6 +9,17 @@ namespace Billiards.Benchmarks;
 /// <summary>Seeded scenes for the benchmarks; the whole-shot ones come from assets/scenes.</summary>
 public static class BenchmarkScenes
 {
+    /// <summary>Reruns a whole shot: back to the scene's start, strike, run to rest; returns the time at rest (s).</summary>
+    public static double RunToRest(Simulation sim, Core.Cue.ShotSpec shot)
+    {
+        ArgumentNullException.ThrowIfNull(sim);
+        ArgumentNullException.ThrowIfNull(shot);
+        sim.Reset();
+        sim.Strike(shot);
+        sim.AdvanceTo(600);
+        return sim.Time;
+    }
+
     /// <summary>A shipped scene with the given model and integrator.</summary>
     public static Scene Load(string file, string model, string integrator) =>
         SceneLoader.Load(AssetFolder.Scene(file), new SceneOverrides(model, integrator));

@@ -34,17 +34,9 @@ public class BreakBenchmarks
 
     /// <summary>8-ball break to rest.</summary>
     [Benchmark]
-    public double EightBallBreak() => Run(_eight, _eightShot);
+    public double EightBallBreak() => BenchmarkScenes.RunToRest(_eight, _eightShot);
 
     /// <summary>9-ball break to rest.</summary>
     [Benchmark]
-    public double NineBallBreak() => Run(_nine, _nineShot);
-
-    private static double Run(Simulation sim, ShotSpec shot)
-    {
-        sim.Reset();
-        sim.Strike(shot);
-        sim.AdvanceTo(600);
-        return sim.Time;
-    }
+    public double NineBallBreak() => BenchmarkScenes.RunToRest(_nine, _nineShot);
 }

@@ -72,6 +72,10 @@ public static class SelfplayCommand
             {
                 throw new CliException($"--rules {rulesName}: expected one of {string.Join(", ", RuleNames.GameNames)}");
             }
+            if (!Ruleset.For(game).HasComputerPlayer)
+            {
+                throw new CliException($"--rules {rulesName}: the computer player does not play {rulesName} yet");
+            }
             int points = parse.GetValue(target) ?? GameState.DefaultTarget;
             if (points < 1 || points > MaxTarget)
             {

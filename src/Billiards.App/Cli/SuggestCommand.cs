@@ -47,6 +47,10 @@ public static class SuggestCommand
             }
             var loaded = SceneLoader.Load(parse.GetValue(scene)!);
             var state = StateOf(loaded);
+            if (!Ruleset.For(state.Rules).HasComputerPlayer)
+            {
+                throw new CliException($"{state.Rules.ToName()}: the computer player does not play it yet");
+            }
             var position = new TablePosition(loaded.Balls.Select(b => (b.Id, b.Position with { Z = loaded.BallRadius })));
             if (position.Count < 2 || position.Ids.All(b => b.IsCue))
             {

@@ -15,6 +15,7 @@ public sealed class ShotRecord
     private SimEvent[] _events = new SimEvent[64];
     private BallId[] _ids = [];
     private BallState[] _balls = [];
+    private BallState[] _before = [];
 
     /// <summary>The strike that opened the shot, or null for a shot without one (balls set moving by the scene).</summary>
     public ShotSpec? Shot { get; private set; }
@@ -36,6 +37,13 @@ public sealed class ShotRecord
 
     /// <summary>Every ball as it is after the shot (at <see cref="EndTime"/>), in SI.</summary>
     public ReadOnlySpan<BallState> BallsAfter => _balls;
+
+    /// <summary>
+    /// Every ball as it stood when the shot was struck, index-aligned with <see cref="Ids"/>; empty
+    /// when the record does not know (a shot without a strike, a hand-made record without them).
+    /// Snooker's referee reads from it whether the striker was snookered.
+    /// </summary>
+    public ReadOnlySpan<BallState> BallsBefore => _before;
 
     /// <summary>
     /// Takes the shot from a simulation: its events from index <paramref name="firstEvent"/> (the
@@ -64,6 +72,12 @@ public sealed class ShotRecord
             _ids = new BallId[balls.Length];
         }
         balls.CopyTo(_balls);
+        var before = shot is null ? [] : simulation.BallsAtStrike;
+        if (_before.Length != before.Length)
+        {
+            _before = new BallState[before.Length];
+        }
+        before.CopyTo(_before);
         for (int i = 0; i < _ids.Length; i++)
         {
             _ids[i] = simulation.Ids[i];
@@ -81,14 +95,19 @@ public sealed class ShotRecord
     /// <param name="ids">Ball ids, index-aligned with <paramref name="ballsAfter"/>.</param>
     /// <param name="ballsAfter">Every ball after the shot, in SI.</param>
     /// <param name="shot">The strike, or null.</param>
-    public static ShotRecord Of(ReadOnlySpan<SimEvent> events, IReadOnlyList<BallId> ids, ReadOnlySpan<BallState> ballsAfter, ShotSpec? shot = null)
+    /// <param name="ballsBefore">Every ball when the shot was struck, index-aligned with <paramref name="ids"/>, or empty.</param>
+    public static ShotRecord Of(ReadOnlySpan<SimEvent> events, IReadOnlyList<BallId> ids, ReadOnlySpan<BallState> ballsAfter, ShotSpec? shot = null, ReadOnlySpan<BallState> ballsBefore = default)
     {
+        if (ballsBefore.Length != 0 && ballsBefore.Length != ids.Count)
+        {
+            throw new ArgumentException($"{ids.Count} ids for {ballsBefore.Length} balls before the shot", nameof(ballsBefore));
+        }
         ArgumentNullException.ThrowIfNull(ids);
         if (ids.Count != ballsAfter.Length)
         {
             throw new ArgumentException($"{ids.Count} ids for {ballsAfter.Length} balls", nameof(ids));
         }
-        var record = new ShotRecord { _events = events.ToArray(), _ids = [.. ids], _balls = ballsAfter.ToArray() };
+        var record = new ShotRecord { _events = events.ToArray(), _ids = [.. ids], _balls = ballsAfter.ToArray(), _before = ballsBefore.ToArray() };
         record.EventCount = events.Length;
         record.Shot = shot;
         record.StartTime = events.Length > 0 ? events[0].Time : 0;

@@ -76,6 +76,11 @@ public abstract partial class Simulation
     /// <summary>The balls' state in SI units, index-aligned with <see cref="Ids"/>.</summary>
     public abstract ReadOnlySpan<BallState> Balls { get; }
 
+    private BallState[] _atStrike = [];
+
+    /// <summary>Every ball as it stood when the last shot was struck (index-aligned with <see cref="Ids"/>), empty before the first strike.</summary>
+    public ReadOnlySpan<BallState> BallsAtStrike => _atStrike;
+
     /// <summary>True when no ball moves or spins (pocketed balls count as at rest).</summary>
     public abstract bool IsAtRest { get; }
 
@@ -112,6 +117,12 @@ public abstract partial class Simulation
         {
             return;
         }
+        // Kept for the referee (was the striker snookered?): one buffer, filled again each strike.
+        if (_atStrike.Length != Balls.Length)
+        {
+            _atStrike = new BallState[Balls.Length];
+        }
+        Balls.CopyTo(_atStrike);
         Events.Add(new SimEvent(Time, EventKind.CueStrike, BallId.Cue, BallId.Cue, -1, shot.Speed));
         ApplyStrike(cue, shot);
     }

@@ -11,6 +11,8 @@ public enum GameRules
     TenBall,
     /// <summary>14.1 continuous (straight pool): called balls score a point each, reracks of 14.</summary>
     StraightPool,
+    /// <summary>Snooker (WPBSA): reds and colours, points, fouls worth at least 4, free ball and the miss.</summary>
+    Snooker,
 }
 
 /// <summary>A group of 8-ball.</summary>
@@ -38,6 +40,8 @@ public enum BallInHand
     Table,
     /// <summary>Behind the head string (x &lt; -L/4).</summary>
     Kitchen,
+    /// <summary>Snooker: in the D (<see cref="Table.SnookerTable.InD"/>).</summary>
+    D,
 }
 
 /// <summary>A choice the incoming player (the ruling's next shooter) may make after a shot.</summary>
@@ -53,6 +57,12 @@ public enum RefereeOption
     Shoot,
     /// <summary>Hand the table back to the player who pushed out.</summary>
     PassBack,
+    /// <summary>Snooker: take the table as it lies after a foul and play.</summary>
+    Play,
+    /// <summary>Snooker: the offender plays again from where the balls lie.</summary>
+    PutBack,
+    /// <summary>Snooker, after a foul and a miss: the balls go back to where they were before the shot and the offender plays again.</summary>
+    Replace,
 }
 
 /// <summary>The referee's codes for what went wrong on a shot (rules.md).</summary>
@@ -82,50 +92,65 @@ public enum Foul
     BallOffTable,
     /// <summary>8-ball: the 8 left the table (loss).</summary>
     EightBallOffTable,
+    /// <summary>Snooker: a ball not on was potted.</summary>
+    WrongBallPotted,
+    /// <summary>Snooker: the cue ball left the bed and passed over a ball before it first struck one.</summary>
+    JumpShot,
+    /// <summary>Snooker: the third foul and a miss in a row with a full ball view (loss of the frame).</summary>
+    ThreeMisses,
+    /// <summary>Snooker: the striker who played a free ball left the opponent snookered behind it (ours: the code's name).</summary>
+    SnookeredByFreeBall,
 }
 
 /// <summary>
-/// The shooter's call: a ball and a pocket, or a safety (<see cref="Pocket"/> is
-/// <see cref="Table.PocketId.None"/>).
+/// The shooter's call: a ball and a pocket, a safety (the cue ball and
+/// <see cref="Table.PocketId.None"/>), or snooker's nomination of a ball without a pocket.
 /// </summary>
 /// <param name="Ball">The called ball (the cue ball for a safety).</param>
-/// <param name="Pocket">The called pocket, or <see cref="Table.PocketId.None"/> for a safety.</param>
+/// <param name="Pocket">The called pocket, or <see cref="Table.PocketId.None"/> for a safety or a nomination.</param>
 public sealed record Call(Balls.BallId Ball, Table.PocketId Pocket)
 {
     /// <summary>A declared safety: no ball is called.</summary>
     public static Call Safety { get; } = new(Balls.BallId.Cue, Table.PocketId.None);
 
     /// <summary>True for a declared safety.</summary>
-    public bool IsSafety => Pocket == Table.PocketId.None;
+    public bool IsSafety => Pocket == Table.PocketId.None && Ball.IsCue;
+
+    /// <summary>Snooker: the striker nominates <paramref name="ball"/> (a colour after a red, or a free ball), no pocket.</summary>
+    public static Call Nominate(Balls.BallId ball) => new(ball, Table.PocketId.None);
+
+    /// <summary>True for snooker's nomination of a ball without a pocket.</summary>
+    public bool IsNomination => Pocket == Table.PocketId.None && !Ball.IsCue;
 }
 
 /// <summary>The names scene and result files use for the referee's enums (scene-format.md).</summary>
 public static class RuleNames
 {
-    private static readonly string[] Games = ["eight-ball", "nine-ball", "ten-ball", "straight-pool"];
+    private static readonly string[] Games = ["eight-ball", "nine-ball", "ten-ball", "straight-pool", "snooker"];
     private static readonly string[] Groups = ["solids", "stripes"];
-    private static readonly string[] Hands = ["none", "table", "kitchen"];
-    private static readonly string[] Options = ["accept", "rerack", "spot-eight", "shoot", "pass-back"];
+    private static readonly string[] Hands = ["none", "table", "kitchen", "d"];
+    private static readonly string[] Options = ["accept", "rerack", "spot-eight", "shoot", "pass-back", "play", "put-back", "replace"];
     private static readonly string[] Fouls =
     [
         "bad-placement", "cue-ball-pocketed", "no-contact", "wrong-ball-first", "no-rail", "bad-break",
         "eight-ball-early", "eight-ball-foul", "eight-ball-uncalled", "three-fouls",
         "ball-off-table", "eight-ball-off-table",
+        "wrong-ball-potted", "jump-shot", "three-misses", "snookered-by-free-ball",
     ];
 
     /// <summary>The game names in <see cref="GameRules"/> order.</summary>
     public static IReadOnlyList<string> GameNames => Games;
 
-    /// <summary>"eight-ball", "nine-ball", "ten-ball" or "straight-pool".</summary>
+    /// <summary>"eight-ball", "nine-ball", "ten-ball", "straight-pool" or "snooker".</summary>
     public static string ToName(this GameRules rules) => Games[(int)rules];
 
     /// <summary>"solids" or "stripes".</summary>
     public static string ToName(this BallGroup group) => Groups[(int)group];
 
-    /// <summary>"none", "table" or "kitchen" (results write null for none).</summary>
+    /// <summary>"none", "table", "kitchen" or "d" (results write null for none).</summary>
     public static string ToName(this BallInHand hand) => Hands[(int)hand];
 
-    /// <summary>"accept", "rerack", "spot-eight", "shoot" or "pass-back".</summary>
+    /// <summary>"accept", "rerack", "spot-eight", "shoot", "pass-back", "play", "put-back" or "replace".</summary>
     public static string ToName(this RefereeOption option) => Options[(int)option];
 
     /// <summary>The foul's code, e.g. "cue-ball-pocketed".</summary>
@@ -137,7 +162,7 @@ public static class RuleNames
     /// <summary>Parses a group name.</summary>
     public static bool TryParseGroup(string? name, out BallGroup group) => TryParse(Groups, name, out group);
 
-    /// <summary>Parses "table" or "kitchen" (not "none").</summary>
+    /// <summary>Parses "table", "kitchen" or "d" (not "none").</summary>
     public static bool TryParseBallInHand(string? name, out BallInHand hand) =>
         TryParse(Hands, name, out hand) && hand != BallInHand.None;
 

@@ -65,11 +65,24 @@ public sealed record GameState
     /// <summary>Consecutive fouls of each player.</summary>
     public PerPlayer<int> FoulsInRow { get; init; }
 
-    /// <summary>14.1: each player's points.</summary>
+    /// <summary>14.1 and snooker: each player's points.</summary>
     public PerPlayer<int> Score { get; init; }
 
     /// <summary>14.1: the points that win (default 100).</summary>
     public int Target { get; init; } = DefaultTarget;
+
+    /// <summary>
+    /// Snooker: the ball on, as files write it: "red", "colour" (after a potted red: the colour
+    /// nominated in <see cref="Call"/>) or a colour's name once the reds are gone; null for the
+    /// start of a frame ("red").
+    /// </summary>
+    public string? BallOn { get; init; }
+
+    /// <summary>Snooker: the shooter was awarded a free ball (and may nominate any ball in <see cref="Call"/> as the ball on).</summary>
+    public bool FreeBall { get; init; }
+
+    /// <summary>Snooker: consecutive fouls and misses of each player.</summary>
+    public PerPlayer<int> MissesInRow { get; init; }
 
     /// <summary>
     /// Where the shooter may place the cue ball before this shot (the previous ruling's

@@ -31,14 +31,21 @@ public sealed record GameSetup(TableSpec Table, PhysicsConfig Physics, int Seed,
     /// </summary>
     public IReadOnlyList<(BallId Id, Vec3 Position)>? Position { get; init; }
 
-    /// <summary>A game of <paramref name="rules"/> on a 9 ft table with the default physics.</summary>
-    public static GameSetup Of(GameRules rules, int seed, PerPlayer<string>? players = null, int target = GameState.DefaultTarget) =>
-        new(TableSpec.FromPreset("pool-9ft"), PhysicsConfig.Default, seed,
+    /// <summary>A game of <paramref name="rules"/> on its ruleset's table (pool's 9 ft, snooker's 12 ft) with the default physics for its balls.</summary>
+    public static GameSetup Of(GameRules rules, int seed, PerPlayer<string>? players = null, int target = GameState.DefaultTarget)
+    {
+        var ruleset = Ruleset.For(rules);
+        return new(TableSpec.FromPreset(ruleset.TablePreset), PhysicsConfig.Default with { Params = ruleset.BallSet.DefaultParams }, seed,
             new GameState(rules) { Players = players ?? GameState.DefaultPlayers, Target = target });
+    }
 
-    /// <summary>The rack of <paramref name="rack"/> (0 the first) with the cue ball on the head spot.</summary>
-    public IReadOnlyList<(BallId Id, Vec3 Position)> Racked(int rack) =>
-        [(Ruleset.CueBall(Start), Initializer.HeadSpot(Table, BallRadius)), .. Ruleset.Rack(Table, BallRadius, Seed + rack)];
+    /// <summary>The rack of <paramref name="rack"/> (0 the first) with the cue ball where the rack puts it (the head spot; snooker's D).</summary>
+    public IReadOnlyList<(BallId Id, Vec3 Position)> Racked(int rack)
+    {
+        var balls = Ruleset.Rack(Table, BallRadius, Seed + rack);
+        var cue = Ruleset.CueBall(Start);
+        return balls.Any(b => b.Id == cue) ? balls : [(cue, Ruleset.CueStart(Table, BallRadius)), .. balls];
+    }
 }
 
 /// <summary>What a player does on one shot.</summary>
@@ -77,6 +84,7 @@ public sealed class Match
     private readonly Func<Scene, Simulation> _createSimulation;
     private readonly List<MatchShot> _shots = [];
     private Dictionary<BallId, Vec3> _balls = [];
+    private Dictionary<BallId, Vec3> _beforeShot = [];
     private int _racks;
     private (GameState Before, GameShot Input)? _struck;
     private Simulation? _judged;
@@ -128,8 +136,8 @@ public sealed class Match
     /// <summary>The state the referee will judge the running shot by (with its call, push-out and placement), or null.</summary>
     public GameState? RunningShotState => _struck?.Before;
 
-    /// <summary>Where the next shooter may place the cue ball (the break places behind the head string).</summary>
-    public BallInHand BallInHand => State.Shot == 0 ? BallInHand.Kitchen : State.BallInHand;
+    /// <summary>Where the next shooter may place the cue ball (the break places behind the head string, in snooker in the D).</summary>
+    public BallInHand BallInHand => State.Shot == 0 ? Ruleset.BreakBallInHand : State.BallInHand;
 
     /// <summary>The balls on the table now, at rest (the cue ball is absent while in hand after a scratch).</summary>
     public IReadOnlyDictionary<BallId, Vec3> Balls => _balls;
@@ -145,8 +153,8 @@ public sealed class Match
         var cue = Ruleset.CueBall(State);
         if (!balls.ContainsKey(cue))
         {
-            var region = BallInHand == BallInHand.Kitchen ? PlacementRegion.Kitchen : PlacementRegion.Table;
-            var head = Initializer.HeadSpot(Setup.Table, Setup.BallRadius);
+            var region = BallInHand switch { BallInHand.Kitchen => PlacementRegion.Kitchen, BallInHand.D => PlacementRegion.D, _ => PlacementRegion.Table };
+            var head = Ruleset.CueStart(Setup.Table, Setup.BallRadius);
             balls[cue] = BallInHand == BallInHand.None ? head
                 : Placement.FreeSpotNear(Setup.Table, Setup.BallRadius, cue, head, balls.Select(b => (b.Key, b.Value)), region);
         }
@@ -214,9 +222,10 @@ public sealed class Match
         }
         else if (!_balls.ContainsKey(cue))
         {
-            _balls[cue] = Initializer.HeadSpot(Setup.Table, r);
+            _balls[cue] = Ruleset.CueStart(Setup.Table, r);
             before = before with { Placement = _balls[cue] };
         }
+        _beforeShot = new Dictionary<BallId, Vec3>(_balls);
         // No wall-clock bound: a shot must end the same way on every machine.
         var sim = _createSimulation(SceneOf(_balls, input.Shot));
         sim.RefereeRules = true;
@@ -287,12 +296,14 @@ public sealed class Match
 
     private void Apply(Ruling ruling, OptionOutcome outcome, Simulation sim)
     {
-        if (!outcome.Rerack && outcome.Spot.Count > 0)
+        if (outcome.Replace)
         {
-            foreach (var ball in outcome.Spot)
-            {
-                sim.SpotBall(ball);
-            }
+            // Snooker's replace: every ball back where it stood before the shot.
+            _balls = new Dictionary<BallId, Vec3>(_beforeShot);
+        }
+        else if (!outcome.Rerack && outcome.Spot.Count > 0)
+        {
+            Ruleset.SpotBalls(sim, outcome.Spot);
             _balls = AtRest(sim);
         }
         State = outcome.Next;

@@ -38,6 +38,24 @@ public sealed record Ruling(
     /// </summary>
     public IReadOnlyList<BallId> Rerack { get; init; } = [];
 
+    /// <summary>Snooker: points scored by the shooter on this shot.</summary>
+    public int Points { get; init; }
+
+    /// <summary>Snooker: points awarded to the other player for a foul (0 without one).</summary>
+    public int Penalty { get; init; }
+
+    /// <summary>Snooker: the referee called a foul and a miss (<see cref="RefereeOption.Replace"/> is offered).</summary>
+    public bool FoulAndMiss { get; init; }
+
+    /// <summary>Snooker: the incoming player is snookered after a foul and may nominate a free ball.</summary>
+    public bool FreeBall { get; init; }
+
+    /// <summary>
+    /// Snooker, after a foul and a miss: the state for the offender's next shot when the balls are
+    /// replaced where they were before the shot (<see cref="RefereeOption.Replace"/>), else null.
+    /// </summary>
+    public GameState? Replaced { get; init; }
+
     /// <summary>
     /// The state and table work that follow when the next shooter takes <paramref name="option"/>.
     /// </summary>
@@ -49,4 +67,8 @@ public sealed record Ruling(
 /// <param name="Next">The game state before the next shot.</param>
 /// <param name="Rerack">Rack all the game's balls again (the next shot is a break).</param>
 /// <param name="Spot">Balls to spot before the next shot.</param>
-public sealed record OptionOutcome(GameState Next, bool Rerack, IReadOnlyList<BallId> Spot);
+public sealed record OptionOutcome(GameState Next, bool Rerack, IReadOnlyList<BallId> Spot)
+{
+    /// <summary>Put every ball back where it stood before the shot (snooker's replace); <see cref="Spot"/> is then empty.</summary>
+    public bool Replace { get; init; }
+}

@@ -11,7 +11,7 @@ namespace Billiards.Core.Scenes;
 /// unknown fields are refused, as everywhere in a scene.
 /// </summary>
 /// <remarks>
-/// Besides the contract's fields the block may carry "ball_in_hand" ("table" or "kitchen"): the
+/// Besides the contract's fields the block may carry "ball_in_hand" ("table", "kitchen" or "d"): the
 /// previous ruling's ball in hand, which the referee needs to judge the placement. Rulings write
 /// it into their "next" block, so that "next" is all the next shot needs.
 /// </remarks>
@@ -19,7 +19,7 @@ public static class GameBlockReader
 {
     /// <summary>The fields a game block may have.</summary>
     public static IReadOnlyList<string> Fields { get; } =
-        ["rules", "players", "shooter", "shot", "groups", "call", "push_out", "fouls_in_row", "score", "target", "ball_in_hand"];
+        ["rules", "players", "shooter", "shot", "groups", "call", "push_out", "fouls_in_row", "score", "target", "ball_in_hand", "ball_on", "free_ball", "misses_in_row"];
 
     /// <summary>Reads a game block.</summary>
     /// <param name="element">The block.</param>
@@ -150,9 +150,42 @@ public static class GameBlockReader
             string name = Text(hand, $"{path}.ball_in_hand");
             if (!RuleNames.TryParseBallInHand(name, out var bih))
             {
-                throw Error($"{path}.ball_in_hand", $"unknown value \"{name}\" (expected \"table\", \"kitchen\" or null)");
+                throw Error($"{path}.ball_in_hand", $"unknown value \"{name}\" (expected \"table\", \"kitchen\", \"d\" or null)");
             }
             state = state with { BallInHand = bih };
+        }
+        bool snooker = rules == GameRules.Snooker;
+        if (f.TryGetValue("ball_on", out var ballOn) && ballOn.ValueKind != JsonValueKind.Null)
+        {
+            string name = Text(ballOn, $"{path}.ball_on");
+            if (!snooker || name is not (SnookerRuleset.Red or SnookerRuleset.Colour) && !BallSet.Colours.Contains(name))
+            {
+                throw Error($"{path}.ball_on", snooker
+                    ? $"unknown ball on \"{name}\" (expected \"red\", \"colour\" or a colour: {Quote(BallSet.Colours)})"
+                    : $"{rules.ToName()} has no ball on (only snooker has)");
+            }
+            state = state with { BallOn = name };
+        }
+        if (f.TryGetValue("free_ball", out var free))
+        {
+            if (free.ValueKind is not (JsonValueKind.True or JsonValueKind.False))
+            {
+                throw Error($"{path}.free_ball", "expected true or false");
+            }
+            if (free.GetBoolean() && !snooker)
+            {
+                throw Error($"{path}.free_ball", $"{rules.ToName()} has no free ball (only snooker has)");
+            }
+            state = state with { FreeBall = free.GetBoolean() };
+        }
+        if (f.TryGetValue("misses_in_row", out var misses))
+        {
+            var pair = Pair(misses, $"{path}.misses_in_row");
+            if (pair.First < 0 || pair.Second < 0 || pair.First > 2 || pair.Second > 2)
+            {
+                throw Error($"{path}.misses_in_row", "each count must be 0, 1 or 2 (a third miss with a full ball view ends the frame)");
+            }
+            state = state with { MissesInRow = pair };
         }
         return state;
 
@@ -183,6 +216,10 @@ public static class GameBlockReader
         {
             throw error($"{path}.{name}", "unknown field (expected \"ball\" and \"pocket\", or \"safety\" alone)");
         }
+        if (rules == GameRules.Snooker)
+        {
+            return Nomination(e, path, error);
+        }
         if (!e.TryGetProperty("ball", out var ball) || !e.TryGetProperty("pocket", out var pocket))
         {
             throw error(path, "a call needs both \"ball\" and \"pocket\" (or {\"safety\": true})");
@@ -198,6 +235,21 @@ public static class GameBlockReader
             throw error($"{path}.pocket", $"unknown pocket \"{pocketName}\" (expected one of {Quote(PocketIds.All.Select(p => p.ToName()))})");
         }
         return new Call(id, pocketId);
+    }
+
+    // Snooker's call names a ball (a colour after a red, or a free ball) and no pocket.
+    private static Call Nomination(JsonElement e, string path, Func<string, string, SceneException> error)
+    {
+        if (e.TryGetProperty("pocket", out _) || !e.TryGetProperty("ball", out var ball))
+        {
+            throw error(path, "a snooker call nominates a ball and no pocket: {\"ball\": \"blue\"}");
+        }
+        string? name = ball.ValueKind == JsonValueKind.String ? ball.GetString() : ball.GetRawText();
+        if (!BallSet.Snooker.TryParse(name, out var id) || id.IsCue)
+        {
+            throw error($"{path}.ball", $"\"{name}\" is not an object ball of snooker (expected \"red-1\" .. \"red-15\" or a colour)");
+        }
+        return Call.Nominate(id);
     }
 
     private static string Quote(IEnumerable<string> values) => string.Join(", ", values.Select(v => $"\"{v}\""));

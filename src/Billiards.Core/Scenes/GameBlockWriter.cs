@@ -53,10 +53,16 @@ public static class GameBlockWriter
         {
             w.WriteString("ball_in_hand", state.BallInHand.ToName());
         }
+        if (state.Rules == GameRules.Snooker)
+        {
+            w.WriteString("ball_on", SnookerRuleset.BallOnOf(state));
+            w.WriteBoolean("free_ball", state.FreeBall);
+            WritePair(w, "misses_in_row", state.MissesInRow);
+        }
         w.WriteEndObject();
     }
 
-    /// <summary>Writes a call: <c>{"ball", "pocket"}</c> or <c>{"safety": true}</c>.</summary>
+    /// <summary>Writes a call: <c>{"ball", "pocket"}</c>, <c>{"safety": true}</c> or snooker's nomination <c>{"ball"}</c>.</summary>
     public static void WriteCall(Utf8JsonWriter w, string name, Call call)
     {
         ArgumentNullException.ThrowIfNull(w);
@@ -65,6 +71,10 @@ public static class GameBlockWriter
         if (call.IsSafety)
         {
             w.WriteBoolean("safety", true);
+        }
+        else if (call.IsNomination)
+        {
+            w.WriteString("ball", call.Ball.ToString());
         }
         else
         {
@@ -104,6 +114,13 @@ public static class GameBlockWriter
             w.WriteNull("winner");
         }
         w.WriteString("message", ruling.Message);
+        if (ruling.Next.Rules == GameRules.Snooker)
+        {
+            w.WriteNumber("points", ruling.Points);
+            w.WriteNumber("penalty", ruling.Penalty);
+            w.WriteBoolean("foul_and_miss", ruling.FoulAndMiss);
+            w.WriteBoolean("free_ball", ruling.FreeBall);
+        }
         w.WritePropertyName("next");
         WriteGame(w, ruling.Next);
         w.WriteEndObject();

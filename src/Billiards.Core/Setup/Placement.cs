@@ -12,6 +12,8 @@ public enum PlacementRegion
     Table,
     /// <summary>Behind the head string: the quarter of the table at the head end, x &lt;= -L/4.</summary>
     Kitchen,
+    /// <summary>Snooker's D: behind the baulk line, within the D's radius of the brown spot (<see cref="SnookerTable.InD"/>).</summary>
+    D,
 }
 
 /// <summary>
@@ -46,6 +48,7 @@ public static class Placement
             // balls arriving from the bed, and a ball starting between them is on neither.
             Problem.OffTable => Text($"ball \"{id}\" at [{position.X}, {position.Y}] is off the table (the centre must stay within [{-(table.HalfLength - radius):0.######}, {table.HalfLength - radius:0.######}] x [{-(table.HalfWidth - radius):0.######}, {table.HalfWidth - radius:0.######}]: on the bed, R inside the cushion noses; in both models a ball starts on the bed, never in a pocket's mouth)"),
             Problem.OutsideKitchen => Text($"ball \"{id}\" at [{position.X}, {position.Y}] is outside the kitchen (x must be at most the head string, {HeadString(table):0.######} m)"),
+            Problem.OutsideD => Text($"ball \"{id}\" at [{position.X}, {position.Y}] is outside the D (at most {SnookerTable.DRadius} m from the brown spot [{SnookerTable.BaulkLineX(table):0.######}, 0], on the baulk side)"),
             _ => Text($"ball \"{id}\" at [{position.X}, {position.Y}] is over the {PocketIds.FromIndex(OverPocket(table, radius, position, 0)).ToName()} pocket"),
         };
     }
@@ -78,6 +81,7 @@ public static class Placement
         NotFinite,
         OffTable,
         OutsideKitchen,
+        OutsideD,
         OverPocket,
     }
 
@@ -97,7 +101,19 @@ public static class Placement
         {
             return Problem.OutsideKitchen;
         }
+        if (region == PlacementRegion.D && !InD(table, position, margin))
+        {
+            return Problem.OutsideD;
+        }
         return OverPocket(table, radius, position, margin) >= 0 ? Problem.OverPocket : Problem.None;
+    }
+
+    // In the D with the margin inside the line and the arc.
+    private static bool InD(TableSpec table, Vec3 position, double margin)
+    {
+        double dx = position.X - SnookerTable.BaulkLineX(table);
+        double reach = SnookerTable.DRadius - margin + Tolerance;
+        return dx <= -margin + Tolerance && (dx * dx) + (position.Y * position.Y) <= reach * reach;
     }
 
     // The index of the pocket whose capture circle (grown by the margin) holds the centre, or -1.

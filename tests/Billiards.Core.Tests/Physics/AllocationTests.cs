@@ -29,6 +29,8 @@ public class AllocationTests
     [InlineData("eight-ball-break.json", "event")]
     [InlineData("eight-ball-break.json", "euler")]
     [InlineData("nine-ball-break.json", "exact")]
+    [InlineData("snooker-break.json", "event")]
+    [InlineData("snooker-break.json", "exact")]
     [InlineData("flight/jump.json", "exact")]
     [InlineData("flight/jump.json", "event")]
     [InlineData("flight/jump.json", "euler")]

@@ -126,7 +126,7 @@ public class SceneLoaderTests
     [InlineData("""{ §, "balls": [ { "id": "cue", "position": [0, 0] } ], "shot": { "speed": 99, "aim_deg": 0 } }""", "$.shot.speed", "out of range")]
     [InlineData("""{ §, "balls": [ { "id": "cue", "position": [0, 0] } ], "shot": { "speed": 2, "aim_deg": 0, "tip": [0.8, 0.8] } }""", "$.shot.tip", "inside the ball")]
     [InlineData("""{ §, "balls": [ { "id": "cue", "position": [0, 0] } ], "shot": { "speed": 2, "aim_deg": 0, "elevation_deg": 95 } }""", "$.shot.elevation_deg", "out of range")]
-    [InlineData("""{ §, "rules": "snooker" }""", "$.rules", "unknown value \"snooker\"")]
+    [InlineData("""{ §, "rules": "carom" }""", "$.rules", "unknown value \"carom\"")]
     [InlineData("""{ §, "name": "a", "name": "b" }""", "$.name", "field appears twice")]
     public void MalformedScenesAreRefusedWithTheFileThePathAndTheProblem(string json, string path, string problem)
     {

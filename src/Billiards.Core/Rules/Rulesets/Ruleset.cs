@@ -19,7 +19,7 @@ public sealed record HudTarget(string Text, IReadOnlyList<BallId> Balls);
 /// </summary>
 public abstract class Ruleset
 {
-    private static readonly Ruleset[] Rulesets = [new EightBallRuleset(), new NineBallRuleset(), new TenBallRuleset(), new StraightPoolRuleset()];
+    private static readonly Ruleset[] Rulesets = [new EightBallRuleset(), new NineBallRuleset(), new TenBallRuleset(), new StraightPoolRuleset(), new SnookerRuleset()];
 
     /// <summary>Every ruleset, in <see cref="GameRules"/> order.</summary>
     public static IReadOnlyList<Ruleset> All => Rulesets;
@@ -54,6 +54,30 @@ public abstract class Ruleset
     /// <summary>The rack's shape as the scene loader and the physics name it.</summary>
     public RackGame RackGame => RackShape;
 
+    /// <summary>The table the game is played on by default (a preset of <see cref="TableSpec.FromPreset"/>).</summary>
+    public virtual string TablePreset => "pool-9ft";
+
+    /// <summary>Where the break places the cue ball from hand: behind the head string in pool, in the D in snooker.</summary>
+    public virtual BallInHand BreakBallInHand => BallInHand.Kitchen;
+
+    /// <summary>Where a rack's cue ball starts (m, z = R): the head spot in pool, in the D in snooker.</summary>
+    public Vec3 CueStart(TableSpec table, double ballRadius) => Initializer.CueStart(RackShape, table, ballRadius);
+
+    /// <summary>
+    /// Puts the ruling's <paramref name="balls"/> back on the table at rest in
+    /// <paramref name="simulation"/>: pool spots them on the foot spot (or behind it on the long
+    /// axis); snooker puts each colour on its own spot or the next free one.
+    /// </summary>
+    public virtual void SpotBalls(Physics.Simulation simulation, IReadOnlyList<BallId> balls)
+    {
+        ArgumentNullException.ThrowIfNull(simulation);
+        ArgumentNullException.ThrowIfNull(balls);
+        foreach (var ball in balls)
+        {
+            simulation.SpotBall(ball);
+        }
+    }
+
     /// <summary>The referee of the game on <paramref name="table"/> with balls of radius <paramref name="ballRadius"/> (m).</summary>
     public abstract IReferee Referee(TableSpec table, double ballRadius);
 
@@ -86,6 +110,9 @@ public abstract class Ruleset
     /// Without it (8-ball) the count only grows.
     /// </summary>
     public virtual bool HasThreeFouls => true;
+
+    /// <summary>True when the computer player (<see cref="Ai.ShotPlanner"/>) plays the game.</summary>
+    public virtual bool HasComputerPlayer => true;
 
     /// <summary>True when the game keeps a score with a target (14.1).</summary>
     public virtual bool HasScore => false;
@@ -125,6 +152,9 @@ public abstract class Ruleset
         {
             RefereeOption.Rerack => new OptionOutcome(Rerack(next), true, []),
             RefereeOption.PassBack => new OptionOutcome(next with { Shooter = next.Incoming, BallInHand = BallInHand.None }, false, ruling.Spot),
+            // The offender plays again from where the balls lie (from hand after an in-off); a free ball is the incoming player's only.
+            RefereeOption.PutBack => new OptionOutcome(next with { Shooter = next.Incoming, FreeBall = false }, false, ruling.Spot),
+            RefereeOption.Replace => new OptionOutcome(ruling.Replaced ?? throw new ArgumentException("the ruling has no replaced state", nameof(ruling)), false, []) { Replace = true },
             _ => new OptionOutcome(next, false, ruling.Spot),
         };
     }

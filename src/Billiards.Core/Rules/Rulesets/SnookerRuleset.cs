@@ -1,0 +1,226 @@
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Setup;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Rules;
+
+/// <summary>
+/// Snooker (rules.md "Snooker", the WPBSA's rules): 15 reds and six colours on the 12 ft table, the
+/// ball on red and colour in turn while reds remain and then the colours in order, nominated
+/// colours and free balls, points for pots and for the opponent's fouls, re-spotted colours,
+/// <c>play</c> / <c>put-back</c> after a foul and <c>replace</c> after a miss.
+/// </summary>
+public sealed class SnookerRuleset : Ruleset
+{
+    /// <summary>The ball on while reds remain: a red.</summary>
+    public const string Red = "red";
+
+    /// <summary>The ball on after a potted red: a colour, which the striker nominates.</summary>
+    public const string Colour = "colour";
+
+    /// <summary>The smallest penalty of a foul (points).</summary>
+    public const int MinimumPenalty = 4;
+
+    /// <inheritdoc />
+    public override GameRules Game => GameRules.Snooker;
+
+    /// <inheritdoc />
+    public override BallSet BallSet => BallSet.Snooker;
+
+    /// <inheritdoc />
+    public override IReadOnlyList<BallId> Balls => BallSet.Ids;
+
+    /// <inheritdoc />
+    protected override RackGame RackShape => RackGame.Snooker;
+
+    /// <inheritdoc />
+    public override string TablePreset => SnookerTable.Preset;
+
+    /// <summary>The break-off is played from in hand in the D.</summary>
+    public override BallInHand BreakBallInHand => BallInHand.D;
+
+    /// <summary>No pocket is ever called; a colour or a free ball is nominated (<see cref="MayCall"/>).</summary>
+    public override bool CallsShots => false;
+
+    /// <summary>No three-foul rule (snooker's is the three-miss rule).</summary>
+    public override bool HasThreeFouls => false;
+
+    /// <inheritdoc />
+    public override bool HasScore => true;
+
+    /// <summary>Not yet: the planner knows pool's games only.</summary>
+    public override bool HasComputerPlayer => false;
+
+    /// <inheritdoc />
+    public override IReferee Referee(TableSpec table, double ballRadius) => new SnookerReferee(table, ballRadius);
+
+    /// <summary>True for a red.</summary>
+    public static bool IsRed(BallId ball) => ball.Value >= BallSet.FirstRed && ball.Value < BallSet.FirstRed + BallSet.Reds;
+
+    /// <summary>True for one of the six colours.</summary>
+    public static bool IsColour(BallId ball) => ball.Value >= BallSet.FirstRed + BallSet.Reds && ball.Value < BallSet.FirstRed + BallSet.Reds + 6;
+
+    /// <summary>A ball's points: red 1, yellow 2 .. black 7 (0 for the cue ball).</summary>
+    public static int ValueOf(BallId ball) => IsRed(ball) ? 1 : IsColour(ball) ? ball.Value - (BallSet.FirstRed + BallSet.Reds) + 2 : 0;
+
+    /// <summary>The ball on of <paramref name="state"/>: its <see cref="GameState.BallOn"/>, "red" at the start of a frame.</summary>
+    public static string BallOnOf(GameState state)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        return state.BallOn ?? Red;
+    }
+
+    /// <summary>The ball on at the start of a turn with <paramref name="objectBalls"/> on the table: a red while any remains, else the lowest colour.</summary>
+    public static string TurnBallOn(IEnumerable<BallId> objectBalls)
+    {
+        var balls = objectBalls.ToList();
+        if (balls.Exists(IsRed))
+        {
+            return Red;
+        }
+        var colours = balls.Where(IsColour).OrderBy(b => b.Value).ToList();
+        return colours.Count > 0 ? colours[0].ToString() : BallSet.Colours[^1];
+    }
+
+    /// <summary>
+    /// The balls the striker may legally strike first: the nominated free ball; the reds; the
+    /// nominated colour (any colour before one is nominated); the colour in turn.
+    /// </summary>
+    public override IReadOnlyList<BallId> LegalTargets(GameState state, IEnumerable<BallId> objectBalls)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        var on = objectBalls.ToList();
+        if (state.FreeBall && state.Call is { IsNomination: true } free)
+        {
+            return on.Contains(free.Ball) ? [free.Ball] : [];
+        }
+        return BallOnOf(state) switch
+        {
+            Red => Ordered(on.Where(IsRed)),
+            Colour when state.Call is { IsNomination: true } c => on.Contains(c.Ball) ? [c.Ball] : [],
+            Colour => Ordered(on.Where(IsColour)),
+            var name => Ordered(on.Where(b => b.ToString() == name)),
+        };
+    }
+
+    /// <summary>A colour after a red; with a free ball any object ball; nothing else is nominated.</summary>
+    public override bool MayCall(GameState state, BallId ball)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        return state.FreeBall ? !ball.IsCue : BallOnOf(state) == Colour && IsColour(ball);
+    }
+
+    /// <summary>A frame rarely lasts 300 shots; 600 leaves room for long safety exchanges.</summary>
+    public override int MaxShots(GameState start) => 600;
+
+    /// <inheritdoc />
+    public override HudTarget Target(GameState state, int player, IReadOnlyCollection<BallId> objectBalls)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        ArgumentNullException.ThrowIfNull(objectBalls);
+        if (player != state.Shooter)
+        {
+            return new HudTarget($"{state.Score[player]}", []);
+        }
+        string on = BallOnOf(state);
+        var balls = LegalTargets(state, objectBalls);
+        string text = state.FreeBall ? "free ball" : on switch
+        {
+            Red => "on a red",
+            Colour => state.Call is { IsNomination: true } c ? $"on the {c.Ball}" : "on a colour",
+            var name => $"on the {name}",
+        };
+        return new HudTarget($"{state.Score[player]}, {text}", balls);
+    }
+
+    /// <summary>
+    /// The points still on the table for a player whose ball on is <paramref name="ballOn"/>: eight
+    /// a red and 27 for the colours while reds remain (7 more when a colour is on after a red); in
+    /// the colours phase the values of the colours still on the table.
+    /// </summary>
+    public static int PointsRemaining(string ballOn, IEnumerable<BallId> objectBalls)
+    {
+        var balls = objectBalls.ToList();
+        int reds = balls.Count(IsRed);
+        int colours = balls.Where(IsColour).Sum(ValueOf);
+        int extra = ballOn == Colour ? 7 : 0;
+        return reds > 0 ? (8 * reds) + 27 + extra : colours + extra;
+    }
+
+    /// <summary>True when either player is behind by more than the points remaining (needs snookers).</summary>
+    public static bool NeedsSnookers(PerPlayer<int> score, string ballOn, IEnumerable<BallId> objectBalls)
+    {
+        int remaining = PointsRemaining(ballOn, objectBalls);
+        return Math.Abs(score.First - score.Second) > remaining;
+    }
+
+    /// <summary>
+    /// Re-spots the colours of <paramref name="balls"/> on <paramref name="table"/> (ball centres,
+    /// changed in place), the highest value first (rules.md): each on its own spot; if that is
+    /// taken, on the highest-value spot that is free; if none is, as near its own spot as it fits on
+    /// the long axis towards the top cushion, else towards baulk. Reds are never re-spotted.
+    /// </summary>
+    public static void Respot(IDictionary<BallId, Vec3> table, IEnumerable<BallId> balls, TableSpec tableSpec, double radius)
+    {
+        ArgumentNullException.ThrowIfNull(table);
+        foreach (var ball in balls.Where(IsColour).OrderByDescending(b => b.Value))
+        {
+            table.Remove(ball);
+            table[ball] = RespotPosition(ball, table.Values.ToList(), tableSpec, radius);
+        }
+    }
+
+    /// <summary>Where a colour goes when re-spotted among <paramref name="others"/> (m, z = R).</summary>
+    public static Vec3 RespotPosition(BallId colour, IReadOnlyList<Vec3> others, TableSpec table, double radius)
+    {
+        ArgumentNullException.ThrowIfNull(others);
+        bool Free(Vec3 p) => others.All(o => !Placement.Overlaps(radius, o, p));
+        var own = SnookerTable.Spot(table, colour.ToString(), radius);
+        if (Free(own))
+        {
+            return own;
+        }
+        foreach (string name in BallSet.Colours.Reverse())
+        {
+            var spot = SnookerTable.Spot(table, name, radius);
+            if (Free(spot))
+            {
+                return spot;
+            }
+        }
+        var onAxis = others.Where(o => Math.Abs(o.Y) < 2 * radius).ToList();
+        double limit = table.HalfLength - radius;
+        double x = Placement.FreeOnLongAxis(radius, onAxis, own.X, +1);
+        if (x > limit)
+        {
+            x = Placement.FreeOnLongAxis(radius, onAxis, own.X, -1);
+        }
+        return new Vec3(x, 0, radius);
+    }
+
+    /// <summary>Re-spots the colours among <paramref name="balls"/> on their spots (<see cref="Respot"/>).</summary>
+    public override void SpotBalls(Physics.Simulation simulation, IReadOnlyList<BallId> balls)
+    {
+        ArgumentNullException.ThrowIfNull(simulation);
+        ArgumentNullException.ThrowIfNull(balls);
+        var table = new Dictionary<BallId, Vec3>();
+        var state = simulation.Balls;
+        for (int i = 0; i < state.Length; i++)
+        {
+            if (!state[i].IsOutOfPlay)
+            {
+                table[simulation.Ids[i]] = state[i].Position;
+            }
+        }
+        var before = new Dictionary<BallId, Vec3>(table);
+        Respot(table, balls, simulation.Table, simulation.BallRadius);
+        foreach (var ball in balls.Where(IsColour).OrderByDescending(b => b.Value))
+        {
+            if (!before.TryGetValue(ball, out var was) || was != table[ball])
+            {
+                simulation.PlaceBall(ball, table[ball]);
+            }
+        }
+    }
+}

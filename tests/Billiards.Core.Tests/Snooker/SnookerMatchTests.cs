@@ -1,0 +1,107 @@
+using Billiards.Core.Balls;
+using Billiards.Core.Cue;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+using Billiards.Core.Table;
+
+namespace Billiards.Core.Tests.Snooker;
+
+/// <summary>Core's match drives snooker frames with real physics: the break-off, the options after a foul, replace, and records that replay.</summary>
+public class SnookerMatchTests
+{
+    private static readonly Vec3 BreakPlace = new(SnookerTable.BaulkLineX(TableSpec.FromPreset("snooker-12ft")), -0.146, 0.02625);
+
+    // The break-off into the side of the pack, then the incoming player plays away from every ball (a foul and a miss).
+    private static Match Opening(RefereeOption choice)
+    {
+        var match = new Match(GameSetup.Of(GameRules.Snooker, 1, new("Anna", "Ben")));
+        var breakOff = match.Play(new GameShot(new ShotSpec(7.0, 2.6), Place: BreakPlace));
+        Assert.True(breakOff.Ruling.Legal, breakOff.Ruling.Message);
+        Assert.Equal(1, match.State.Shooter);
+        // Straight at the baulk cushion and back, short of every ball.
+        match.Play(new GameShot(new ShotSpec(0.8, 180), Choice: choice));
+        return match;
+    }
+
+    [Fact]
+    public void A_snooker_frame_starts_from_its_rack_on_its_table_with_the_cue_ball_in_hand_in_the_D()
+    {
+        var match = new Match(GameSetup.Of(GameRules.Snooker, 1));
+        Assert.Equal("snooker-12ft", match.Setup.Table.Preset);
+        Assert.Equal(0.02625, match.Setup.BallRadius);
+        Assert.Equal(22, match.Balls.Count);
+        Assert.Equal(BallInHand.D, match.BallInHand);
+        Assert.True(SnookerTable.InD(match.Setup.Table, match.Balls[BallId.Cue]));
+    }
+
+    [Fact]
+    public void Replace_after_a_foul_and_a_miss_puts_every_ball_back_and_the_offender_plays_again()
+    {
+        var match = Opening(RefereeOption.Replace);
+        var miss = match.Shots[^1];
+        Assert.True(miss.Ruling.FoulAndMiss, miss.Ruling.Message);
+        Assert.Equal([Foul.NoContact], miss.Ruling.Fouls);
+        var before = match.Shots[0].After.ToDictionary(b => b.Id, b => b.Position);
+        Assert.Equal(before.Count, match.Balls.Count);
+        Assert.All(before, b => Assert.Equal(b.Value, match.Balls[b.Key]));
+        Assert.Equal(1, match.State.Shooter);
+        Assert.Equal(new PerPlayer<int>(4, 0), match.State.Score);
+        Assert.Equal(new PerPlayer<int>(0, 1), match.State.MissesInRow);
+    }
+
+    [Fact]
+    public void Play_after_a_foul_leaves_the_balls_where_they_lie_for_the_incoming_player()
+    {
+        var match = Opening(RefereeOption.Play);
+        var lie = match.Shots[^1].After.ToDictionary(b => b.Id, b => b.Position);
+        Assert.All(lie, b => Assert.Equal(b.Value, match.Balls[b.Key]));
+        Assert.NotEqual(match.Shots[0].After.Single(b => b.Id.IsCue).Position, match.Balls[BallId.Cue]);
+        Assert.Equal(0, match.State.Shooter);
+    }
+
+    // The opening, a replaced miss, a put-back, and on.
+    private static Match Scripted()
+    {
+        var match = Opening(RefereeOption.Replace);
+        match.Play(new GameShot(new ShotSpec(2.0, 10), Choice: RefereeOption.PutBack));
+        match.Play(new GameShot(new ShotSpec(3.0, -15), Call: Call.Nominate(BallSet.Colour("blue"))));
+        return match;
+    }
+
+    /// <summary>
+    /// The committed record (assets/records/snooker-opening.json, what <c>replay --verify</c>
+    /// reads) replays shot for shot. To write it again: BILLIARDS_WRITE_RECORDS=1 dotnet test --filter The_committed_snooker_record.
+    /// </summary>
+    [Fact]
+    public void The_committed_snooker_record_replays_with_verify()
+    {
+        string path = AssetFolder.File("records/snooker-opening.json");
+        if (Environment.GetEnvironmentVariable("BILLIARDS_WRITE_RECORDS") == "1")
+        {
+            byte[] bytes = GameRecordFile.ToUtf8(Scripted());
+            File.WriteAllBytes(Path.Combine(SourceFolder(), "..", "..", "..", "assets", "records", "snooker-opening.json"), bytes);
+            File.WriteAllBytes(path, bytes);
+        }
+        var record = GameRecordFile.Parse(File.ReadAllText(path), path);
+        var report = GameRecordFile.Verify(record, out _);
+        Assert.Null(report.FirstDifference);
+        Assert.Equal(record.Shots.Count, report.Same);
+        Assert.True(report.Shots >= 4);
+    }
+
+    private static string SourceFolder([System.Runtime.CompilerServices.CallerFilePath] string file = "") => Path.GetDirectoryName(file)!;
+
+    [Fact]
+    public void A_recorded_snooker_frame_replays_ruling_for_ruling()
+    {
+        var match = Scripted();
+        var text = System.Text.Encoding.UTF8.GetString(GameRecordFile.ToUtf8(match));
+        Assert.Contains("\"ball_on\"", text, StringComparison.Ordinal);
+        Assert.Contains("\"foul_and_miss\": true", text, StringComparison.Ordinal);
+        var record = GameRecordFile.Parse(text, "frame.json");
+        Assert.Equal(match.Shots.Count, record.Shots.Count);
+        Assert.Equal(-1, GameRecordFile.Replay(record, out var replayed));
+        Assert.Equal(match.State, replayed.State);
+    }
+}
