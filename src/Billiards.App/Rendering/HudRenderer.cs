@@ -478,12 +478,19 @@ internal sealed class HudRenderer : IDisposable
     }
 
     // A pool ball seen from above: its colour (a white disc with a coloured band for a stripe), a
-    // white spot and the number in ink.
+    // white spot and the number in ink; a ball without a number (snooker's) is a disc of its colour.
     private void BallIcon(Vector2 centre, float radius, int number, int scale)
     {
-        var colour = BallTextures.BaseColor(new Billiards.Core.Balls.BallId(number));
+        var id = new Billiards.Core.Balls.BallId(number);
+        var colour = BallTextures.BaseColor(id);
         var c = new Vector4(colour, 1);
-        if (number > 8)
+        var look = Billiards.Core.Balls.BallSet.KindOfAny(id).Look;
+        if (!look.Numbered)
+        {
+            Disc(centre, radius, c, 2);
+            return;
+        }
+        if (look.Striped)
         {
             Disc(centre, radius, new Vector4(0.97f, 0.96f, 0.92f, 1), 2);
             Quad(centre.X - radius, centre.Y - (radius * 0.55f), 2 * radius, radius * 1.1f, 0, 0, 0, 0, c, 0);

@@ -400,7 +400,7 @@ public static class TableModelGenerator
     }
 
     /// <summary>Width of the baulk line and the D's arc on a snooker bed (m): a chalk line, drawn wide enough to read from the overhead view.</summary>
-    public const float MarkingWidth = 0.004f;
+    public const float MarkingWidth = 0.006f;
 
     /// <summary>Radius of a marked colour spot (m).</summary>
     public const float SpotRadius = 0.005f;

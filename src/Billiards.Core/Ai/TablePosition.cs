@@ -73,11 +73,16 @@ public sealed class TablePosition
         return new TablePosition(list);
     }
 
-    /// <summary>A fresh rack of <paramref name="rack"/> with the cue ball on the head spot.</summary>
+    /// <summary>A fresh rack of <paramref name="rack"/> with the cue ball where the rack puts it (the head spot; snooker's rack has it in the D).</summary>
     public static TablePosition Rack(RackSpec rack, TableSpec table, double radius)
     {
-        var balls = new List<(BallId, Vec3)> { (BallId.Cue, Initializer.HeadSpot(table, radius)) };
-        balls.AddRange(Initializer.Rack(rack, table, radius));
+        var racked = Initializer.Rack(rack, table, radius);
+        var balls = new List<(BallId, Vec3)>();
+        if (!racked.Any(b => b.Id.IsCue))
+        {
+            balls.Add((BallId.Cue, Initializer.HeadSpot(table, radius)));
+        }
+        balls.AddRange(racked);
         return new TablePosition(balls);
     }
 
@@ -103,8 +108,7 @@ public sealed class TablePosition
     public bool CanPlace(Vec3 p, BallInHand region, TableSpec table, double radius, BallId ignore)
     {
         ArgumentNullException.ThrowIfNull(table);
-        var where = region == BallInHand.Kitchen ? PlacementRegion.Kitchen : PlacementRegion.Table;
-        if (!Placement.FitsOnTable(table, radius, p, where, PlacementMargin))
+        if (!Placement.FitsOnTable(table, radius, p, region.Region(), PlacementMargin))
         {
             return false;
         }
