@@ -13,8 +13,8 @@ using Billiards.Core.Scenes;
 // (after the third shot), then a pot, then a legal miss. Deterministic: same code, same script.
 // With --snooker it makes a whole snooker frame between two people (assets/scripts/snooker-frame.json):
 // the break-off from the D, pots of reds and of nominated colours while they are found (B to pick
-// the ball, which also nominates it, X, the power, Space), and, once a visit finds nothing or after
-// a few pots, the player at the table misses on purpose and the other has the balls replaced
+// the ball, which also nominates it, X, the power, Space), else the best legal shot found, and,
+// after four pots or sixteen turns, the player at the table misses on purpose and the other has the balls replaced
 // (key 3) until the third foul and a miss with a full view of the ball on ends the frame.
 // Usage: dotnet run --project tools/game-script -c Release -- [--snooker] OUT.json | [--snooker] --check SCRIPT.json
 internal static class Program
@@ -134,7 +134,7 @@ internal static class Program
 
     // The snooker frame (see the file's head): the break-off, then each turn the best of the key
     // sequences tried (a pot that keeps the player at the table, the most points first; else a
-    // legal shot), and from the fourth legal pot on, or when a turn finds no pot, the misses.
+    // legal shot), and from the fourth pot or the sixteenth turn on, the misses.
     private static List<ScriptEvent> SnookerSearch()
     {
         var events = new List<ScriptEvent>();
@@ -145,7 +145,7 @@ internal static class Program
             var (match, host) = Run(events, 0.05);
             if (match.IsOver)
             {
-                Console.WriteLine($"frame over: {match.State.Players[match.Winner ?? 0]} wins {match.State.Score.First}-{match.State.Score.Second}");
+                Console.WriteLine($"frame over: {match.LastRuling!.Message}");
                 break;
             }
             double start = Math.Round((events.Count > 0 ? events[^1].Time : 0) + 0.3, 2);
@@ -170,21 +170,14 @@ internal static class Program
                 onTable += sim.Ids[i].Value != 0 && !sim.Balls[i].IsPocketed ? 1 : 0;
             }
             var candidates = new List<List<ScriptEvent>>();
-            if (match.State.Shot == 0)
+            // Each ball in turn (B), aimed at its ghost ball (X), at two powers: the break-off
+            // is played so too, firmly, into a red of the pack.
+            double[] powers = match.State.Shot == 0 ? [3.0, 4.5] : [1.5, 2.5];
+            for (int b = 0; b < onTable; b++)
             {
-                for (int tweak = -6; tweak <= 6; tweak += 2)
+                foreach (double power in powers)
                 {
-                    candidates.Add(Shot(events, start, 5, 0, tweak, null, aimAtGhost: false, match.Power));
-                }
-            }
-            else
-            {
-                for (int b = 0; b < onTable; b++)
-                {
-                    foreach (double power in new[] { 1.5, 2.5 })
-                    {
-                        candidates.Add(Shot(events, start, power, b, 0, null, aimAtGhost: true, match.Power));
-                    }
+                    candidates.Add(Shot(events, start, power, b, 0, null, aimAtGhost: true, match.Power));
                 }
             }
             double best = double.NegativeInfinity;
@@ -205,7 +198,7 @@ internal static class Program
                 }
             }
             bool potted = bestRuling is { Legal: true, Continue: true };
-            if (turn > 0 && (!potted || pots >= 4))
+            if (turn > 0 && (pots >= 4 || turn >= 16))
             {
                 // Nothing to pot, or enough pots: from here the player at the table misses.
                 misser = match.State.Shooter;
