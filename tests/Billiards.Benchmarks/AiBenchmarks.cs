@@ -35,11 +35,11 @@ public class AiBenchmarks
     {
         var physics = PhysicsParams.Default;
         _planner = new ShotPlanner(Table, physics);
-        var rack = TablePosition.Rack(new RackSpec(RackGame.EightBall, 5), Table, physics.R);
+        var rack = TablePosition.Rack(new RackSpec(RackGame.EightBall, 5), Table, physics.R, Billiards.Core.Balls.BallSet.Pool.CueBalls[0]);
         var sim = rack.CreateSimulation(Table, physics);
         sim.Strike(new ShotSpec(7, 0.3, 0, -0.2));
         sim.AdvanceTo(120);
-        _open = TablePosition.Of(sim);
+        _open = TablePosition.Of(sim, Billiards.Core.Balls.BallSet.Pool.CueBalls[0]);
         _state = new GameState(GameRules.EightBall) { Shot = 1, BallInHand = _open.Cue is null ? BallInHand.Table : BallInHand.None };
         _sim = _open.CreateSimulation(Table, physics);
         _snapshot = _sim.CreateSnapshot();
@@ -53,7 +53,7 @@ public class AiBenchmarks
     /// <summary>One decision with ball in hand on the same table.</summary>
     [Benchmark]
     public double DecideBallInHand() =>
-        _planner.Decide(_state with { BallInHand = BallInHand.Table }, _open.Without(Core.Balls.BallId.Cue), SkillLevel.Of(Level), new PlannerBudget(60_000), 1).ExpectedScore;
+        _planner.Decide(_state with { BallInHand = BallInHand.Table }, _open.Without(Billiards.Core.Balls.BallSet.Pool.CueBalls[0]), SkillLevel.Of(Level), new PlannerBudget(60_000), 1).ExpectedScore;
 
     /// <summary>One simulated shot of the search (restore the position's snapshot, strike, run to rest), on one core; the inverse is simulations per second.</summary>
     [Benchmark]

@@ -35,12 +35,12 @@ public class SnookerAiBenchmarks
     {
         var physics = BallSet.Snooker.DefaultParams;
         _planner = new ShotPlanner(Table, physics);
-        var rack = TablePosition.Rack(new RackSpec(RackGame.Snooker, 5), Table, physics.R);
+        var rack = TablePosition.Rack(new RackSpec(RackGame.Snooker, 5), Table, physics.R, BallSet.Snooker.CueBalls[0]);
         var sim = rack.CreateSimulation(Table, physics);
         // A firm break-off into the side of the pack, so that reds lie open for the decision.
         sim.Strike(new ShotSpec(5, 2.6, 0, 0));
         sim.AdvanceTo(120);
-        _open = TablePosition.Of(sim);
+        _open = TablePosition.Of(sim, BallSet.Snooker.CueBalls[0]);
         _redOn = new GameState(GameRules.Snooker) { Shot = 1, BallOn = SnookerRuleset.Red, BallInHand = _open.Cue is null ? BallInHand.D : BallInHand.None };
         var red = _open.Ids.First(SnookerRuleset.IsRed);
         _colourTable = _open.Without(red);

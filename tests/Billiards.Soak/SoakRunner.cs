@@ -138,7 +138,7 @@ public sealed class SoakRunner(SoakOptions options)
             {
                 return MakeScene(random, shot);
             }
-            balls.Insert(0, new BallSetup(BallId.Cue, c, Vec3.Zero, Vec3.Zero));
+            balls.Insert(0, new BallSetup(Billiards.Core.Balls.BallSet.Pool.CueBalls[0], c, Vec3.Zero, Vec3.Zero));
         }
         else
         {
@@ -150,7 +150,7 @@ public sealed class SoakRunner(SoakOptions options)
                     balls.Add(new BallSetup(new BallId(id), p, Vec3.Zero, Vec3.Zero));
                 }
             }
-            if (balls.Count == 0 || !balls[0].Id.IsCue)
+            if (balls.Count == 0 || !Billiards.Core.Balls.BallSet.Pool.IsCueBall(balls[0].Id))
             {
                 return MakeScene(random, shot);
             }

@@ -101,7 +101,7 @@ public static class PlayCommand
         string? statsPath = options?.Stats is { } s ? OutputFiles.Check("--stats", s, ".json") : null;
         string? recordPath = options?.Record is { } r ? OutputFiles.Check("--record", r, ".json") : null;
         var match = MatchFor(scene, gameRules, options?.Players);
-        if (recordPath is not null && (match is null || !scene.Balls.Any(b => b.Id == Core.Balls.BallId.Cue)))
+        if (recordPath is not null && (match is null || !scene.Balls.Any(b => b.Id == scene.CueBall)))
         {
             throw new CliException($"--record {recordPath}: {path} has no match to record (it names no rules and no --rules was given, or it has no cue ball)");
         }

@@ -47,18 +47,19 @@ public static class SuggestCommand
             }
             var loaded = SceneLoader.Load(parse.GetValue(scene)!);
             var state = StateOf(loaded);
-            if (!Ruleset.For(state.Rules).HasComputerPlayer)
+            var ruleset = Ruleset.For(state.Rules);
+            if (!ruleset.HasComputerPlayer)
             {
                 throw new CliException($"{state.Rules.ToName()}: the computer player does not play it yet");
             }
-            var position = new TablePosition(loaded.Balls.Select(b => (b.Id, b.Position with { Z = loaded.BallRadius })));
-            if (position.Count < 2 || position.Ids.All(b => b.IsCue))
+            var position = new TablePosition(loaded.Balls.Select(b => (b.Id, b.Position with { Z = loaded.BallRadius })), ruleset.CueBall(state));
+            if (position.Count < 2 || !position.ObjectBalls.Any())
             {
                 throw new SceneException(loaded.Path, "$.balls", "no object ball to play");
             }
             var planner = new ShotPlanner(loaded.Table, loaded.Physics.Params, loaded.Physics.Models);
             var decision = planner.Decide(state, position, SkillLevel.Of(levelValue), new PlannerBudget(budgetValue), 1);
-            stdout.WriteLine(Encoding.UTF8.GetString(ToUtf8(decision)));
+            stdout.WriteLine(Encoding.UTF8.GetString(ToUtf8(decision, ruleset.BallSet)));
             return 0;
         });
         return command;
@@ -81,9 +82,10 @@ public static class SuggestCommand
     }
 
     /// <summary>The suggestion's JSON.</summary>
-    public static byte[] ToUtf8(Decision decision)
+    public static byte[] ToUtf8(Decision decision, Core.Balls.BallSet ballSet)
     {
         ArgumentNullException.ThrowIfNull(decision);
+        ArgumentNullException.ThrowIfNull(ballSet);
         using var stream = new MemoryStream();
         using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
         {
@@ -92,7 +94,7 @@ public static class SuggestCommand
             GameRecordFile.WritePlace(w, "place", decision.Place);
             if (decision.Call is { } call)
             {
-                GameBlockWriter.WriteCall(w, "call", call);
+                GameBlockWriter.WriteCall(w, "call", call, ballSet);
             }
             else
             {

@@ -77,8 +77,8 @@ public sealed class AimLineNode : Node
             return [];
         }
         var sim = physics.Simulation;
-        int cueIndex = sim.IndexOf(BallId.Cue);
-        var preview = AimPreview.Compute(sim.Balls, sim.Ids, cueIndex, cue.AimDirection, physics.BallRadius, _pockets, physics.Table);
+        int cueIndex = sim.IndexOf(physics.CueBall);
+        var preview = AimPreview.Compute(sim.Balls, sim.Ids, cueIndex, cue.AimDirection, physics.BallRadius, _pockets, physics.Table.Pockets, physics.Table);
         Preview = preview;
         float r = (float)physics.BallRadius;
         var lift = new Vector3(0, 0, r);
@@ -147,7 +147,7 @@ public sealed class AimLineNode : Node
         }
         foreach (var pocket in _pockets)
         {
-            if (pocket.Pocket == (int)call.Pocket)
+            if (pocket.Pocket == call.Pocket.Index)
             {
                 Ring((pocket.Centre with { Z = 0 }).ToVector3(), (float)pocket.Radius + r);
             }

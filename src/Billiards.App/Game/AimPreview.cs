@@ -47,8 +47,9 @@ public sealed record AimPreview(BallId? Ball, Vec3 Ghost, Vec3 ObjectDirection, 
     /// <param name="direction">The aim (need not be unit; z is ignored).</param>
     /// <param name="radius">Ball radius (m).</param>
     /// <param name="pockets">The pockets' capture circles.</param>
+    /// <param name="pocketSet">The table's pockets, which the circles' indices name.</param>
     /// <param name="table">The table: the path stops at its cushions and banks off them; null draws <see cref="FreeLength"/>.</param>
-    public static AimPreview Compute(ReadOnlySpan<BallState> balls, IReadOnlyList<BallId> ids, int cueIndex, Vec3 direction, double radius, ReadOnlySpan<PocketCircle> pockets, TableSpec? table = null)
+    public static AimPreview Compute(ReadOnlySpan<BallState> balls, IReadOnlyList<BallId> ids, int cueIndex, Vec3 direction, double radius, ReadOnlySpan<PocketCircle> pockets, PocketSet pocketSet, TableSpec? table = null)
     {
         var start = balls[cueIndex].Position with { Z = 0 };
         var d = (direction with { Z = 0 }).Normalized();
@@ -92,12 +93,13 @@ public sealed record AimPreview(BallId? Ball, Vec3 Ghost, Vec3 ObjectDirection, 
         var ghost = start + best * d;
         var target = balls[hit].Position with { Z = 0 };
         var objectDirection = (target - ghost).Normalized();
-        return new AimPreview(ids[hit], ghost, objectDirection, EasiestPocket(target, objectDirection, pockets));
+        return new AimPreview(ids[hit], ghost, objectDirection, EasiestPocket(target, objectDirection, pockets, pocketSet));
     }
 
     /// <summary>The pocket whose direction from <paramref name="ball"/> is closest to <paramref name="heading"/>, nearer ones first among equals.</summary>
-    public static PocketId EasiestPocket(Vec3 ball, Vec3 heading, ReadOnlySpan<PocketCircle> pockets)
+    public static PocketId EasiestPocket(Vec3 ball, Vec3 heading, ReadOnlySpan<PocketCircle> pockets, PocketSet pocketSet)
     {
+        ArgumentNullException.ThrowIfNull(pocketSet);
         double bestScore = double.NegativeInfinity;
         var best = PocketId.None;
         foreach (var pocket in pockets)
@@ -106,14 +108,14 @@ public sealed record AimPreview(BallId? Ball, Vec3 Ghost, Vec3 ObjectDirection, 
             double distance = to.Length;
             if (distance < 1e-9)
             {
-                return PocketIds.FromIndex(pocket.Pocket);
+                return pocketSet.Id(pocket.Pocket);
             }
             // Cosine of the cut, less a little for distance: a straight pot far away beats a thin cut near by.
             double score = Vec3.Dot(to, heading) / distance - 0.05 * distance;
             if (score > bestScore)
             {
                 bestScore = score;
-                best = PocketIds.FromIndex(pocket.Pocket);
+                best = pocketSet.Id(pocket.Pocket);
             }
         }
         return best;

@@ -20,6 +20,7 @@ public sealed class CallPickerNode : Node
 
     private MatchNode? _match;
     private PhysicsNode? _physics;
+    private PocketSet _pocketSet = PocketSet.None;
     private PocketCircle[] _pockets = [];
     private Matrix4x4 _viewProjection;
     private (int Width, int Height) _size;
@@ -31,6 +32,7 @@ public sealed class CallPickerNode : Node
         _match = GetInTree<MatchNode>();
         _physics = GetInTree<PhysicsNode>();
         _pockets = TableGeometry.Build(_physics.Table, _physics.BallRadius).Pockets.ToArray();
+        _pocketSet = _physics.Table.Pockets;
     }
 
     /// <inheritdoc />
@@ -67,7 +69,7 @@ public sealed class CallPickerNode : Node
         float bestDistance = float.MaxValue;
         for (int i = 0; i < sim.Ids.Count; i++)
         {
-            if (sim.Ids[i] == BallId.Cue || sim.Balls[i].IsPocketed)
+            if (sim.Ids[i] == _physics.CueBall || sim.Balls[i].IsPocketed)
             {
                 continue;
             }
@@ -103,7 +105,7 @@ public sealed class CallPickerNode : Node
             if (Pixel(c) is { } centre && Pixel(far) is { } hole && Pixel(c + new Vector3((float)pocket.Radius, 0, 0)) is { } edge
                 && DistanceToSegment(at, centre, hole) <= MathF.Max(Vector2.Distance(centre, edge) * 1.5f, 12))
             {
-                match.CallPocket(PocketIds.FromIndex(pocket.Pocket));
+                match.CallPocket(_pocketSet.Id(pocket.Pocket));
                 return true;
             }
         }

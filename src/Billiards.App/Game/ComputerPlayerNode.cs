@@ -103,7 +103,7 @@ public sealed class ComputerPlayerNode : Node
             return true;
         }
         var state = _match.State;
-        var position = TablePosition.Of(_physics.Simulation);
+        var position = TablePosition.Of(_physics.Simulation, _physics.CueBall);
         var planner = _planner;
         ulong seed = _match.ShotSeed(3);
         var budget = Budget(BudgetMs);
@@ -152,7 +152,7 @@ public sealed class ComputerPlayerNode : Node
         if (_decision is null && _thinking is null)
         {
             var state = _match.State;
-            var position = TablePosition.Of(_physics.Simulation);
+            var position = TablePosition.Of(_physics.Simulation, _physics.CueBall);
             var planner = _planner;
             ulong seed = _match.ShotSeed(1);
             var budget = Budget(BudgetMs);
@@ -207,7 +207,7 @@ public sealed class ComputerPlayerNode : Node
         {
             var ruling = _match!.LastRuling!;
             // The table as the shot left it (a scratched cue ball is off it), as self-play chooses.
-            var position = new TablePosition(_match.Game!.Shots[^1].After);
+            var position = new TablePosition(_match.Game!.Shots[^1].After, _physics!.CueBall);
             var planner = _planner!;
             _choosing = BackgroundWork.Run(() => planner.ChooseOption(ruling, position));
             Status = $"{_match.State.ShooterName} chooses...";

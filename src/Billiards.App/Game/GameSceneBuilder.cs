@@ -40,13 +40,13 @@ public static class GameSceneBuilder
         var physics = root.AddChild(new PhysicsNode(scene, createSimulation));
         var loop = new FixedStepLoop(physics.Simulation.Dt);
         root.AddChild(new CameraNode());
-        if (scene.Balls.Any(b => b.Id == BallId.Cue))
+        if (scene.Balls.Any(b => b.Id == scene.CueBall))
         {
             root.AddChild(new CueNode());
             root.AddChild(new AimLineNode());
         }
         var modes = root.AddChild(new InputModeNode());
-        if (match is not null && scene.Balls.Any(b => b.Id == BallId.Cue))
+        if (match is not null && scene.Balls.Any(b => b.Id == scene.CueBall))
         {
             root.AddChild(new MatchNode(match.Rules, match.Players, scene.Game));
             root.AddChild(new ComputerPlayerNode());

@@ -153,7 +153,7 @@ public sealed class MatchNode : Node
     /// arrive in one frame see each other's effect as they would in separate frames.
     /// </summary>
     public AimPreview? Aim => _physics is { IsRolling: false, HasCueBall: true } physics && _cue is not null && _geometry is not null
-        ? AimPreview.Compute(physics.Simulation.Balls, physics.Simulation.Ids, physics.Simulation.IndexOf(BallId.Cue), _cue.AimDirection, physics.BallRadius, _geometry.Pockets)
+        ? AimPreview.Compute(physics.Simulation.Balls, physics.Simulation.Ids, physics.Simulation.IndexOf(physics.CueBall), _cue.AimDirection, physics.BallRadius, _geometry.Pockets, physics.Table.Pockets)
         : null;
 
     /// <summary>Every shot struck in the match, in order: the state at the strike (with its call and placement) and the shot.</summary>
@@ -332,7 +332,7 @@ public sealed class MatchNode : Node
         }
         else
         {
-            _physics.Load(_match.Layout());
+            LoadLayout(_match);
             GiveHand(_match.BallInHand);
         }
         Say(State.Shot == 0 ? $"{State.ShooterName} to break." : $"{State.ShooterName} to shoot.");
@@ -438,7 +438,7 @@ public sealed class MatchNode : Node
         PendingOptions = [];
         _match!.Choose(option);
         State = _match.State;
-        _physics!.Load(_match.Layout());
+        LoadLayout(_match);
         GiveHand(_match.BallInHand);
         Say(State.Shot == 0 ? $"Rerack: {State.ShooterName} breaks." : $"{option.ToName()}: {State.ShooterName} to shoot.");
     }
@@ -476,7 +476,7 @@ public sealed class MatchNode : Node
         State = new GameState(_rules) { Players = _opening.Players, Shooter = breaker, Target = _opening.Target };
         // Game g racks with the scene's seed + g.
         _match = new Match(_firstGame! with { Seed = _firstGame.Seed + _games, Start = State, Position = null }, _physics!.CreateSimulation);
-        _physics.Load(_match.Layout());
+        LoadLayout(_match);
         GiveHand(_match.BallInHand);
         Say($"{what}: {State.ShooterName} breaks.");
     }
@@ -508,7 +508,7 @@ public sealed class MatchNode : Node
         _rulings.Add(ruling);
         // A game that ended shows how it stood at the end (groups, fouls, score), not the next game's blank state.
         State = ruling.GameOver ? played.Before with { Shot = played.Before.Shot + 1, Call = null, Placement = null, PushOut = false, BallInHand = BallInHand.None } : match.State;
-        _physics.Load(match.Layout());
+        LoadLayout(match);
         Say(ruling.Message);
         if (ruling.GameOver)
         {
@@ -579,7 +579,7 @@ public sealed class MatchNode : Node
         Vec3? centre = null;
         foreach (var circle in _geometry.Pockets)
         {
-            if (circle.Pocket == (int)pocket)
+            if (circle.Pocket == pocket.Index)
             {
                 centre = circle.Centre with { Z = 0 };
             }
@@ -618,7 +618,7 @@ public sealed class MatchNode : Node
         }
         var target = _physics.Simulation.Balls[i].Position with { Z = 0 };
         var cue = _physics.CueBallPosition with { Z = 0 };
-        return AimPreview.EasiestPocket(target, (target - cue).Normalized(), _geometry.Pockets);
+        return AimPreview.EasiestPocket(target, (target - cue).Normalized(), _geometry.Pockets, _geometry.Spec.Pockets);
     }
 
     // The aimed ball when the shooter may hit it first, else the nearest ball that they may.
@@ -632,13 +632,20 @@ public sealed class MatchNode : Node
         return aim?.Ball is { } aimed && legal.Contains(aimed) ? aimed : Nearest(_physics.CueBallPosition with { Z = 0 }, legal);
     }
 
+    // The table between shots, and the ball the next shooter strikes on it.
+    private void LoadLayout(Match match)
+    {
+        _physics!.CueBall = match.Ruleset.CueBall(match.State);
+        _physics.Load(match.Layout());
+    }
+
     private List<BallId> ObjectBallsOnTable()
     {
         var sim = _physics!.Simulation;
         var onTable = new List<BallId>();
         for (int i = 0; i < sim.Ids.Count; i++)
         {
-            if (sim.Ids[i] != BallId.Cue && !sim.Balls[i].IsPocketed)
+            if (sim.Ids[i] != _physics.CueBall && !sim.Balls[i].IsPocketed)
             {
                 onTable.Add(sim.Ids[i]);
             }
@@ -653,7 +660,7 @@ public sealed class MatchNode : Node
         double bestDistance = double.PositiveInfinity;
         for (int i = 0; i < sim.Ids.Count; i++)
         {
-            if (sim.Ids[i] == BallId.Cue || sim.Balls[i].IsPocketed || (among is not null && !among.Contains(sim.Ids[i])))
+            if (sim.Ids[i] == _physics.CueBall || sim.Balls[i].IsPocketed || (among is not null && !among.Contains(sim.Ids[i])))
             {
                 continue;
             }
@@ -669,7 +676,7 @@ public sealed class MatchNode : Node
 
     private void CyclePocket()
     {
-        var pockets = _physics?.Table.Pockets ?? [];
+        var pockets = _physics?.Table.Pockets.Ids ?? [];
         if (pockets.Count == 0)
         {
             return;

@@ -41,7 +41,14 @@ public sealed class PhysicsNode : Node
         _simulation = createSimulation(scene);
         _simulation.TrackOrientation = true; // the game draws the balls' numbers turning
         _previous = _simulation.Balls.ToArray();
+        CueBall = scene.CueBall;
     }
+
+    /// <summary>
+    /// The ball the player at the table strikes: the scene's, and in a match the ruleset's for
+    /// the shooter (<see cref="Core.Rules.Ruleset.CueBall"/>), which the match sets before each shot.
+    /// </summary>
+    public BallId CueBall { get; set; }
 
     /// <summary>Makes a simulation of a scene: what the node was made with (a match makes its shots with it too).</summary>
     public Func<Scene, Simulation> CreateSimulation { get; }
@@ -183,7 +190,7 @@ public sealed class PhysicsNode : Node
     /// <summary>The cue ball's centre (m).</summary>
     public Vec3 CueBallPosition => CueIndex is int i ? _simulation.Balls[i].Position : Vec3.Zero;
 
-    private int? CueIndex => _simulation.IndexOf(BallId.Cue) is var i and >= 0 ? i : null;
+    private int? CueIndex => _simulation.IndexOf(CueBall) is var i and >= 0 ? i : null;
 
     /// <summary>
     /// Places the cue ball by hand (move mode). Refused (false) while balls roll, off the bed, or
@@ -202,13 +209,13 @@ public sealed class PhysicsNode : Node
     // must not slide it from its old place.
     private bool Place(Vec3 position)
     {
-        _simulation.PlaceBall(BallId.Cue, position);
+        _simulation.PlaceBall(CueBall, position);
         _simulation.Balls.CopyTo(_previous);
         return true;
     }
 
     // Core's placement test: on the bed inside the cushions, over no pocket, clear of every other ball.
-    private bool IsFreeSpot(Vec3 position) => _simulation.PlacementProblem(BallId.Cue, position, BallInHand ? HandRegion : PlacementRegion.Table) is null;
+    private bool IsFreeSpot(Vec3 position) => _simulation.PlacementProblem(CueBall, position, BallInHand ? HandRegion : PlacementRegion.Table) is null;
 
     /// <summary>
     /// Where a scratched cue ball comes back: the head spot (a quarter of the length from the head
@@ -227,7 +234,7 @@ public sealed class PhysicsNode : Node
         var region = BallInHand ? HandRegion : PlacementRegion.Table;
         // In snooker's D the ball comes back where the break-off starts, not to pool's head spot (outside the D).
         var near = region == PlacementRegion.D ? Initializer.CueStart(RackGame.Snooker, Table, BallRadius) : Initializer.HeadSpot(Table, BallRadius);
-        return Placement.FreeSpotNear(Table, BallRadius, BallId.Cue, near, others, region);
+        return Placement.FreeSpotNear(Table, BallRadius, CueBall, near, others, region);
     }
 
     /// <summary>Puts every ball back where the scene had it (practice's restart); the scene's own shot is not played again.</summary>
@@ -265,7 +272,7 @@ public sealed class PhysicsNode : Node
         else
         {
             EndBallInHand();
-            _simulation.Strike(shot);
+            _simulation.Strike(shot, CueBall);
         }
         LastShot = shot;
         IsRolling = true;
@@ -318,6 +325,7 @@ public sealed class PhysicsNode : Node
     protected override void Draw(FrameBuilder frame)
     {
         frame.Frame.BallRadius = (float)BallRadius;
+        frame.Frame.BallSet = _simulation.BallSet;
         var balls = _simulation.Balls;
         float alpha = (float)frame.Alpha;
         for (int i = 0; i < balls.Length; i++)

@@ -49,6 +49,7 @@ public sealed class ReplayNode(GameRecord record, int firstShot) : Node
         }
         _physics.StrikeThrough = _ => _match.Strike(record.Shots[_next]);
         _physics.CameToRest += _ => OnRest();
+        _physics.CueBall = _match.Ruleset.CueBall(_match.State);
         _physics.Load(_match.Layout());
         _wait = PauseSeconds;
         Finished = _next >= record.Shots.Count || _match.IsOver;
@@ -78,6 +79,7 @@ public sealed class ReplayNode(GameRecord record, int firstShot) : Node
         Rulings.Add(played.Ruling);
         Ruled?.Invoke(_next, played.Ruling);
         _next++;
+        _physics.CueBall = _match.Ruleset.CueBall(_match.State);
         _physics.Load(_match.Layout());
         _wait = PauseSeconds;
         Finished = _next >= record.Shots.Count || _match.IsOver;

@@ -65,7 +65,7 @@ public sealed class TargetViewNode : Node
         var onTable = new List<BallId>();
         for (int i = 0; i < sim.Balls.Length; i++)
         {
-            if (!sim.Balls[i].IsPocketed && !sim.Ids[i].IsCue)
+            if (!sim.Balls[i].IsPocketed && sim.Ids[i] != physics.CueBall)
             {
                 onTable.Add(sim.Ids[i]);
             }

@@ -100,7 +100,7 @@ public static class MatchLines
         var sim = physics.Simulation;
         for (int i = 0; i < sim.Ids.Count; i++)
         {
-            if (!sim.Ids[i].IsCue && !sim.Balls[i].IsPocketed)
+            if (sim.Ids[i] != physics.CueBall && !sim.Balls[i].IsPocketed)
             {
                 list.Add(sim.Ids[i]);
             }

@@ -7,9 +7,9 @@ namespace Billiards.App.Rendering;
 
 /// <summary>
 /// Procedural ball textures: equirectangular RGBA images (u = longitude, v = latitude from the
-/// south pole) of the standard pool set. Solids are coloured with a white number disc at +x and
+/// south pole) of a ball set's balls, as each ball's look says (pool's here). Solids are coloured with a white number disc at +x and
 /// -x of the ball's own frame, stripes are white with a coloured band round the equator, the 8
-/// is black, the cue ball white with small red spots so that its spin shows. Numbers are drawn
+/// is black, a cue ball white with small red spots so that its spin shows. Numbers are drawn
 /// with a TrueType font through SkiaSharp.
 /// </summary>
 public static class BallTextures
@@ -27,9 +27,10 @@ public static class BallTextures
     private const float DigitHeight = 0.52f;   // gnomonic units (tan of the angle)
 
     /// <summary>The ball's base colour (sRGB, 0..1), as its ball set's look has it.</summary>
-    public static Vector3 BaseColor(BallId id)
+    public static Vector3 BaseColor(BallSet set, BallId id)
     {
-        var look = BallSet.KindOfAny(id).Look;
+        ArgumentNullException.ThrowIfNull(set);
+        var look = set.Kind(id).Look;
         return new(look.Red, look.Green, look.Blue);
     }
 
@@ -52,13 +53,16 @@ public static class BallTextures
     /// One sample a texel: the edges of the disc, the band and the spots are blended over the
     /// texel's angular size, the number's ink comes antialiased from the font.
     /// </summary>
-    public static byte[] Generate(BallId id)
+    public static byte[] Generate(BallSet set, BallId id)
     {
+        ArgumentNullException.ThrowIfNull(set);
+        var kind = set.Kind(id);
         var pixels = new byte[Width * Height * 4];
         var white = new Vector3(0.97f, 0.96f, 0.92f);
         var ink = new Vector3(0.03f, 0.03f, 0.03f);
-        var baseColor = BaseColor(id);
-        float[] number = !BallSet.KindOfAny(id).Look.Numbered ? [] : NumberCoverage(id.Value.ToString(System.Globalization.CultureInfo.InvariantCulture));
+        var baseColor = BaseColor(set, id);
+        float[] number = !kind.Look.Numbered ? [] : NumberCoverage(kind.Name);
+        bool cueBall = set.IsCueBall(id);
         var cosLon = new float[Width];
         var sinLon = new float[Width];
         for (int i = 0; i < Width; i++)
@@ -76,7 +80,7 @@ public static class BallTextures
             for (int i = 0; i < Width; i++)
             {
                 var d = new Vector3(cosLat * cosLon[i], cosLat * sinLon[i], z);
-                var c = Shade(id, d, baseColor, white, ink, number, Texel);
+                var c = Shade(cueBall, kind.Look.Striped, d, baseColor, white, ink, number, Texel);
                 int o = ((j * Width) + i) * 4;
                 pixels[o] = (byte)Math.Clamp((c.X * 255) + 0.5f, 0, 255);
                 pixels[o + 1] = (byte)Math.Clamp((c.Y * 255) + 0.5f, 0, 255);
@@ -90,9 +94,9 @@ public static class BallTextures
     /// <summary>Part of a texel inside an edge at signed angular distance <paramref name="inside"/> (rad, positive inside).</summary>
     private static float Cover(float inside, float texel) => Math.Clamp((inside / texel) + 0.5f, 0, 1);
 
-    private static Vector3 Shade(BallId id, Vector3 d, Vector3 baseColor, Vector3 white, Vector3 ink, float[] number, float texel)
+    private static Vector3 Shade(bool cueBall, bool striped, Vector3 d, Vector3 baseColor, Vector3 white, Vector3 ink, float[] number, float texel)
     {
-        if (id.IsCue)
+        if (cueBall)
         {
             // Six small red spots on the axes show the cue ball's rotation.
             float nearest = MathF.Max(MathF.Max(MathF.Abs(d.X), MathF.Abs(d.Y)), MathF.Abs(d.Z));
@@ -100,7 +104,7 @@ public static class BallTextures
             return Vector3.Lerp(baseColor, new Vector3(0.80f, 0.08f, 0.08f), spot);
         }
         var surface = baseColor;
-        if (BallSet.KindOfAny(id).Look.Striped)
+        if (striped)
         {
             // The band's edge as an angle: latitude asin(StripeHalfHeight).
             float band = Cover(MathF.Asin(StripeHalfHeight) - MathF.Abs(MathF.Asin(d.Z)), texel);

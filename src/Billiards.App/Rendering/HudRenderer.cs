@@ -482,9 +482,10 @@ internal sealed class HudRenderer : IDisposable
     private void BallIcon(Vector2 centre, float radius, int number, int scale)
     {
         var id = new Billiards.Core.Balls.BallId(number);
-        var colour = BallTextures.BaseColor(id);
+        var set = Billiards.Core.Balls.BallSet.All.FirstOrDefault(s => s.Contains(id)) ?? Billiards.Core.Balls.BallSet.Pool;
+        var colour = BallTextures.BaseColor(set, id);
         var c = new Vector4(colour, 1);
-        var look = Billiards.Core.Balls.BallSet.KindOfAny(id).Look;
+        var look = set.Kind(id).Look;
         if (!look.Numbered)
         {
             Disc(centre, radius, c, 2);

@@ -20,6 +20,9 @@ public sealed class RenderFrame
     /// <summary>The table to draw.</summary>
     public required TableSpec Table { get; set; }
 
+    /// <summary>The set the balls belong to: how each of them looks.</summary>
+    public Core.Balls.BallSet BallSet { get; set; } = Core.Balls.BallSet.Pool;
+
     /// <summary>Camera position (m).</summary>
     public Vector3 Eye { get; set; } = new(-2.2f, 0, 1.2f);
 

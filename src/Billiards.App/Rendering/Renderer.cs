@@ -22,7 +22,7 @@ internal sealed class Renderer : IDisposable
     private readonly LitProgram _gouraud;
     private readonly (int Slices, GpuMesh Mesh)[] _spheres;
     private readonly GpuMesh _cue;
-    private readonly Dictionary<int, uint> _ballTextures = [];
+    private readonly Dictionary<(string Set, int Ball), uint> _ballTextures = [];
     private readonly DebugLines _lines;
     private readonly ShadowDecals _shadows;
     private readonly HudRenderer _hud;
@@ -233,7 +233,7 @@ internal sealed class Renderer : IDisposable
             }
             var model = Matrix4x4.CreateScale(radius) * Matrix4x4.CreateFromQuaternion(Normalized(ball.Orientation)) * Matrix4x4.CreateTranslation(ball.Position);
             _lit.Material(Vector4.One, new Vector3(0.55f), 160, reflect: 0.045f);
-            _lit.Draw(model, BallTexture(ball.Id), SphereFor(ball.Position, frame, pass.Height, radius));
+            _lit.Draw(model, BallTexture(frame.BallSet, ball.Id), SphereFor(ball.Position, frame, pass.Height, radius));
         }
         gl.Disable(Gl.CullFace);
     }
@@ -392,23 +392,23 @@ internal sealed class Renderer : IDisposable
         _tableSpec = spec;
     }
 
-    private uint BallTexture(BallId id)
+    private uint BallTexture(BallSet set, BallId id)
     {
-        if (_ballTextures.TryGetValue(id.Value, out uint texture))
+        if (_ballTextures.TryGetValue((set.Name, id.Value), out uint texture))
         {
             return texture;
         }
         texture = _gl.GenTexture();
         _gl.BindTexture(Gl.Texture2D, texture);
         _gl.PixelStore(Gl.UnpackAlignment, 1);
-        _gl.TexImage2D(Gl.Texture2D, 0, Gl.Srgb8Alpha8, BallTextures.Width, BallTextures.Height, Gl.Rgba, Gl.UnsignedByte, BallTextures.Generate(id));
+        _gl.TexImage2D(Gl.Texture2D, 0, Gl.Srgb8Alpha8, BallTextures.Width, BallTextures.Height, Gl.Rgba, Gl.UnsignedByte, BallTextures.Generate(set, id));
         _gl.GenerateMipmap(Gl.Texture2D);
         _gl.TexParameter(Gl.Texture2D, Gl.TextureMinFilter, Gl.LinearMipmapLinear);
         _gl.TexParameter(Gl.Texture2D, Gl.TextureMagFilter, Gl.Linear);
         _gl.TexParameter(Gl.Texture2D, Gl.TextureWrapS, Gl.Repeat);
         _gl.TexParameter(Gl.Texture2D, Gl.TextureWrapT, Gl.ClampToEdge);
         DetailTextures.Anisotropic(_gl);
-        _ballTextures[id.Value] = texture;
+        _ballTextures[(set.Name, id.Value)] = texture;
         return texture;
     }
 

@@ -14,7 +14,7 @@ public static class SceneFrames
     /// </summary>
     public static RenderFrame Build(Scene scene, double time, int width, int height)
     {
-        var frame = new RenderFrame { Table = scene.Table, Width = width, Height = height, BallRadius = (float)scene.BallRadius };
+        var frame = new RenderFrame { Table = scene.Table, BallSet = scene.BallSet, Width = width, Height = height, BallRadius = (float)scene.BallRadius };
         (frame.Eye, frame.Target) = RenderMath.DefaultCamera(scene.Table, (float)width / height, frame.FovYDegrees);
         if (time <= 0)
         {
@@ -22,7 +22,7 @@ public static class SceneFrames
             {
                 frame.Balls.Add(new BallVisual(ball.Id, ToVector(ball.Position), RestingOrientation(ball.Id)));
             }
-            if (scene.Balls.FirstOrDefault(b => b.Id.IsCue) is { } cueBall)
+            if (scene.Balls.FirstOrDefault(b => b.Id == scene.CueBall) is { } cueBall)
             {
                 var centre = ToVector(cueBall.Position);
                 frame.Cue = scene.Shot is { } shot
@@ -35,7 +35,7 @@ public static class SceneFrames
         simulation.TrackOrientation = true;
         if (scene.Shot is { } s)
         {
-            simulation.Strike(s);
+            simulation.Strike(s, scene.CueBall);
         }
         // Bounded as every run is (events, wall clock): a frictionless table never rests.
         SimulationRunner.Advance(simulation, time, new RunOptions(), System.Diagnostics.Stopwatch.StartNew());
@@ -46,7 +46,7 @@ public static class SceneFrames
             frame.Balls.Add(new BallVisual(simulation.Ids[i], ToVector(state.Position), state.Orientation, !state.IsOutOfPlay));
         }
         // As in the game, the cue is back, addressing the cue ball, once every ball rests.
-        int cue = simulation.IndexOf(BallId.Cue);
+        int cue = simulation.IndexOf(scene.CueBall);
         if (simulation.IsAtRest && cue >= 0 && !states[cue].IsOutOfPlay)
         {
             frame.Cue = AddressingCue(frame, ToVector(states[cue].Position));

@@ -81,14 +81,12 @@ public static class TableModelGenerator
 
         // Pockets in the order a counter-clockwise walk round the bed meets them.
         var pockets = new List<Pocket>();
-        if (spec.HasPockets)
+        foreach (var (end, side) in WalkOrder)
         {
-            pockets.Add(SidePocket(spec, hy, -1, outer));
-            pockets.Add(CornerPocket(spec, hx, hy, 1, -1, outer));
-            pockets.Add(CornerPocket(spec, hx, hy, 1, 1, outer));
-            pockets.Add(SidePocket(spec, hy, 1, outer));
-            pockets.Add(CornerPocket(spec, hx, hy, -1, 1, outer));
-            pockets.Add(CornerPocket(spec, hx, hy, -1, -1, outer));
+            if (spec.Pockets.At(end, side) is { } p)
+            {
+                pockets.Add(p.IsCorner ? CornerPocket(p, hx, hy, outer) : SidePocket(p, hy, outer));
+            }
         }
 
         BuildBed(cloth, pockets, hx + inner, hy + inner);
@@ -110,10 +108,14 @@ public static class TableModelGenerator
         return [cloth, cushion, rail, frame, sight, pocket, pocketFloor, trim, floor];
     }
 
-    private static Pocket CornerPocket(TableSpec spec, float hx, float hy, int sx, int sy, float outer)
+    // The places of the outline in the order a counter-clockwise walk round the bed from the head-right corner meets them.
+    private static readonly (int End, int Side)[] WalkOrder = [(0, -1), (1, -1), (1, 1), (0, 1), (-1, 1), (-1, -1)];
+
+    private static Pocket CornerPocket(PocketSpec spec, float hx, float hy, float outer)
     {
-        float mouth = (float)spec.CornerPocketMouth / MathF.Sqrt(2);
-        float turn = (180 - (float)spec.CornerJawAngleDeg) * MathF.PI / 180;
+        int sx = spec.End, sy = spec.Side;
+        float mouth = (float)spec.Mouth / MathF.Sqrt(2);
+        float turn = (180 - (float)spec.JawAngleDeg) * MathF.PI / 180;
         float run = CushionDepth / MathF.Sin(turn);
         var tipA = new Vector2(sx * (hx - mouth), sy * hy);
         var jawA = tipA + (run * new Vector2(sx * MathF.Cos(turn), sy * MathF.Sin(turn)));
@@ -123,10 +125,11 @@ public static class TableModelGenerator
             jawA, jawB, new Vector2(sx * (hx + outer), sy * (hy + outer)));
     }
 
-    private static Pocket SidePocket(TableSpec spec, float hy, int sy, float outer)
+    private static Pocket SidePocket(PocketSpec spec, float hy, float outer)
     {
-        float mouth = (float)spec.SidePocketMouth / 2;
-        float turn = (180 - (float)spec.SideJawAngleDeg) * MathF.PI / 180;
+        int sy = spec.Side;
+        float mouth = (float)spec.Mouth / 2;
+        float turn = (180 - (float)spec.JawAngleDeg) * MathF.PI / 180;
         float run = CushionDepth / MathF.Sin(turn);
         var jawA = new Vector2(-mouth, sy * hy) + (run * new Vector2(MathF.Cos(turn), sy * MathF.Sin(turn)));
         var jawB = new Vector2(mouth, sy * hy) + (run * new Vector2(-MathF.Cos(turn), sy * MathF.Sin(turn)));
@@ -207,22 +210,29 @@ public static class TableModelGenerator
             Cushion(mesh, profile, new(-hx, 0), -Vector2.UnitY, -Vector2.UnitX, -hy, hy, 45, 45);
             return;
         }
-        float corner = 180 - (float)spec.CornerJawAngleDeg, side = 180 - (float)spec.SideJawAngleDeg;
-        float cm = (float)spec.CornerPocketMouth / MathF.Sqrt(2), sm = (float)spec.SidePocketMouth / 2;
-        // Long rails: two cushions each, from a corner jaw to a side jaw.
+        // Each cushion end at a place of the outline: cut back by the pocket there and turned by
+        // its jaw, or (no pocket there) running to the corner mitred at 45 deg, or butting its
+        // neighbour square in the middle of a long rail.
+        (float Cut, float Turn) End(int end, int side) => spec.Pockets.At(end, side) is { } p
+            ? ((float)p.RailCut, 180 - (float)p.JawAngleDeg)
+            : (0, end == 0 ? 90 : 45);
+        // Long rails: two cushions each, from the corner to the middle and on to the other corner.
         foreach (int sy in new[] { -1, 1 })
         {
             var along = sy < 0 ? Vector2.UnitX : -Vector2.UnitX;
             var outward = new Vector2(0, sy);
             var origin = new Vector2(0, sy * hy);
-            Cushion(mesh, profile, origin, along, outward, -hx + cm, -sm, corner, side);
-            Cushion(mesh, profile, origin, along, outward, sm, hx - cm, side, corner);
+            // s runs along `along`: on the right rail (sy < 0) from head to foot, on the left from foot to head.
+            var (first, middle, last) = (End(sy, sy), End(0, sy), End(-sy, sy));
+            Cushion(mesh, profile, origin, along, outward, -hx + first.Cut, -middle.Cut, first.Turn, middle.Turn);
+            Cushion(mesh, profile, origin, along, outward, middle.Cut, hx - last.Cut, middle.Turn, last.Turn);
         }
-        // Short rails: one cushion each, corner jaw to corner jaw.
+        // Short rails: one cushion each, corner to corner.
         foreach (int sx in new[] { -1, 1 })
         {
             var along = sx > 0 ? Vector2.UnitY : -Vector2.UnitY;
-            Cushion(mesh, profile, new Vector2(sx * hx, 0), along, new Vector2(sx, 0), -hy + cm, hy - cm, corner, corner);
+            var (first, last) = (End(sx, -sx), End(sx, sx));
+            Cushion(mesh, profile, new Vector2(sx * hx, 0), along, new Vector2(sx, 0), -hy + first.Cut, hy - last.Cut, first.Turn, last.Turn);
         }
     }
 

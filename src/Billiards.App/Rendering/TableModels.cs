@@ -64,7 +64,7 @@ public static class TableModels
     private static string Fingerprint(TableSpec spec)
     {
         string text = string.Create(CultureInfo.InvariantCulture,
-            $"{spec.Length:R}|{spec.Width:R}|{spec.CushionHeight:R}|{spec.HasPockets}|{spec.CornerPocketMouth:R}|{spec.SidePocketMouth:R}|{spec.CornerJawAngleDeg:R}|{spec.SideJawAngleDeg:R}|{spec.SightOffset:R}|v1");
+            $"{spec.Length:R}|{spec.Width:R}|{spec.CushionHeight:R}|{spec.Pockets}|{spec.SightOffset:R}|v2");
         return Convert.ToHexString(SHA256.HashData(Encoding.UTF8.GetBytes(text)))[..12].ToLowerInvariant();
     }
 }

@@ -139,7 +139,7 @@ internal static class CandidateGenerator
             for (int j = 0; j < position.Count; j++)
             {
                 var b = position.Ids[j];
-                if (b.IsCue || b == t || !MayCall(state, b))
+                if (b == position.CueBall || b == t || !MayCall(state, b))
                 {
                     continue;
                 }

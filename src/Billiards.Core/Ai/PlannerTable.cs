@@ -25,9 +25,9 @@ public sealed class PlannerTable
     /// <summary>The largest cut angle the planner tries (deg).</summary>
     public const double MaxCutDeg = 80;
 
-    private readonly Vec3[] _aim = new Vec3[6];
-    private readonly Vec3[] _axis = new Vec3[6];
-    private readonly double[] _mouth = new double[6];
+    private readonly Vec3[] _aim;
+    private readonly Vec3[] _axis;
+    private readonly double[] _mouth;
 
     /// <summary>The planner's view of <paramref name="table"/> for balls with <paramref name="physics"/>.</summary>
     public PlannerTable(TableSpec table, PhysicsParams physics)
@@ -38,16 +38,18 @@ public sealed class PlannerTable
         Physics = physics;
         R = physics.R;
         var geometry = TableGeometry.Build(table, R);
+        int count = table.Pockets.Count;
+        (_aim, _axis, _mouth) = (new Vec3[count], new Vec3[count], new double[count]);
         foreach (var circle in geometry.Pockets)
         {
             int k = circle.Pocket;
+            var pocket = table.Pockets[k];
             _aim[k] = circle.Centre with { Z = R };
-            var p = circle.Centre;
-            bool side = k is (int)PocketId.SideLeft or (int)PocketId.SideRight;
-            _axis[k] = side ? new Vec3(0, -Math.Sign(p.Y), 0) : new Vec3(-Math.Sign(p.X), -Math.Sign(p.Y), 0).Normalized();
-            _mouth[k] = side ? table.SidePocketMouth : table.CornerPocketMouth;
+            // Into the table through the mouth.
+            _axis[k] = pocket.IsCorner ? new Vec3(-pocket.End, -pocket.Side, 0).Normalized() : new Vec3(0, -pocket.Side, 0);
+            _mouth[k] = pocket.Mouth;
         }
-        Pockets = table.Pockets;
+        Pockets = table.Pockets.Ids;
     }
 
     /// <summary>The table.</summary>
@@ -63,7 +65,7 @@ public sealed class PlannerTable
     public IReadOnlyList<PocketId> Pockets { get; }
 
     /// <summary>Where an object ball is sent to fall into <paramref name="pocket"/> (m, z = R).</summary>
-    public Vec3 AimPoint(PocketId pocket) => _aim[(int)pocket];
+    public Vec3 AimPoint(PocketId pocket) => _aim[pocket.Index];
 
     /// <summary>
     /// Half the window (m) an object ball's centre must pass through to drop, arriving along
@@ -71,7 +73,7 @@ public sealed class PlannerTable
     /// </summary>
     public double Window(PocketId pocket, Vec3 direction)
     {
-        int k = (int)pocket;
+        int k = pocket.Index;
         double cos = -Vec3.Dot(direction, _axis[k]);
         if (cos < 0.3)
         {
@@ -164,7 +166,7 @@ public sealed class PlannerTable
     {
         ArgumentNullException.ThrowIfNull(position);
         ArgumentNullException.ThrowIfNull(state);
-        var balls = Ruleset.For(state.Rules).StillToPot(state, position.Ids.Where(b => !b.IsCue));
+        var balls = Ruleset.For(state.Rules).StillToPot(state, position.ObjectBalls);
         int problems = 0;
         foreach (var ball in balls)
         {
@@ -224,7 +226,7 @@ public sealed class PlannerTable
         ArgumentNullException.ThrowIfNull(state);
         ArgumentNullException.ThrowIfNull(position);
         var ruleset = Ruleset.For(state.Rules);
-        var objects = position.Ids.Where(b => !b.IsCue);
+        var objects = position.ObjectBalls;
         if (state.Call is null && ruleset.Nominates(state))
         {
             return [.. objects.Where(b => ruleset.MayCall(state, b)).OrderBy(b => b.Value)];
@@ -253,7 +255,7 @@ public sealed class PlannerTable
             obstacles.Clear();
             for (int i = 0; i < position.Count; i++)
             {
-                if (!position.Ids[i].IsCue && position.Ids[i] != target)
+                if (position.Ids[i] != position.CueBall && position.Ids[i] != target)
                 {
                     obstacles.Add(position.Positions[i]);
                 }
@@ -276,7 +278,7 @@ public sealed class PlannerTable
         for (int i = 0; i < position.Count; i++)
         {
             var id = position.Ids[i];
-            if (id.IsCue || id == ignore)
+            if (id == position.CueBall || id == ignore)
             {
                 continue;
             }

@@ -88,7 +88,7 @@ public sealed class SelfPlay
         {
             var state = game.State;
             var skill = skills[state.Shooter];
-            var position = new TablePosition(game.Balls.OrderBy(b => b.Key.Value).Select(b => (b.Key, b.Value)));
+            var position = new TablePosition(game.Balls.OrderBy(b => b.Key.Value).Select(b => (b.Key, b.Value)), game.Ruleset.CueBall(state));
             var decision = _planner.Decide(state, position, skill, budget, PlannerRandom.Derive(seed, k, 1));
             var place = game.BallInHand == BallInHand.None ? null : decision.Place;
             var executed = skill.Execute(decision.Shot, new PlannerRandom(PlannerRandom.Derive(seed, k, 2)));
@@ -100,7 +100,7 @@ public sealed class SelfPlay
             if (game.PendingOptions.Count > 0)
             {
                 // The incoming player chooses from the table as the shot left it.
-                option = _planner.ChooseOption(played.Ruling, new TablePosition(played.After));
+                option = _planner.ChooseOption(played.Ruling, new TablePosition(played.After, game.Ruleset.CueBall(played.Ruling.Next)));
                 game.Choose(option.Value);
             }
             shots.Add(new SelfPlayShot(played.Before, place, decision.Shot, executed, decision.Kind, played.Ruling, option, decision.Milliseconds, decision.Simulations)

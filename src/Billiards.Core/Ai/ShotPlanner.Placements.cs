@@ -22,7 +22,7 @@ public sealed partial class ShotPlanner
                 region = BallInHand.Table;
             }
             var spots = state.Shot > 0 ? Placements(region) : ruleset.PowerBreak ? BreakSpots() : OpeningSpots(region);
-            return [.. spots.Select(p => new Root(position.With(BallId.Cue, p), p, p))];
+            return [.. spots.Select(p => new Root(position.With(position.CueBall, p), p, p))];
         }
 
         private List<Vec3> BreakSpots()
@@ -36,7 +36,7 @@ public sealed partial class ShotPlanner
                 spots.Add(new Vec3(x, 0.45 * t.HalfWidth, r));
                 spots.Add(new Vec3(x, -0.45 * t.HalfWidth, r));
             }
-            return [.. spots.Where(p => position.CanPlace(p, BallInHand.Kitchen, t, r, BallId.Cue))];
+            return [.. spots.Where(p => position.CanPlace(p, BallInHand.Kitchen, t, r, position.CueBall))];
         }
 
         // An opening safety's spots (snooker's break-off from the D): across the region's front,
@@ -49,7 +49,7 @@ public sealed partial class ShotPlanner
             foreach (double y in (ReadOnlySpan<double>)[0.06, -0.06, 0.14, -0.14, 0.22, -0.22, 0.1, -0.1])
             {
                 var p = FrontOf(region, y);
-                if (position.CanPlace(p, region, t, r, BallId.Cue) && spots.Count < Math.Max(1, level.Placements))
+                if (position.CanPlace(p, region, t, r, position.CueBall) && spots.Count < Math.Max(1, level.Placements))
                 {
                     spots.Add(p);
                 }
@@ -77,7 +77,7 @@ public sealed partial class ShotPlanner
             var t = _table.Table;
             double r = _table.R;
             var scored = new List<(Vec3 P, double Ease)>();
-            var without = position.Without(BallId.Cue);
+            var without = position.Without(position.CueBall);
             foreach (var target in PlannerTable.LegalTargets(state, without))
             {
                 var o = without.Positions[without.IndexOf(target)];
@@ -97,9 +97,9 @@ public sealed partial class ShotPlanner
                         foreach (double distance in (ReadOnlySpan<double>)[0.15, 0.3, 0.55])
                         {
                             var p = (ghost - back * distance) with { Z = r };
-                            if (without.CanPlace(p, region, t, r, BallId.Cue))
+                            if (without.CanPlace(p, region, t, r, position.CueBall))
                             {
-                                double ease = _table.DirectEase(without.With(BallId.Cue, p), p, target, pocket);
+                                double ease = _table.DirectEase(without.With(position.CueBall, p), p, target, pocket);
                                 if (ease > 0)
                                 {
                                     scored.Add((p, ease - 0.02 * Math.Abs(cutDeg) / 15));
@@ -130,7 +130,7 @@ public sealed partial class ShotPlanner
                     for (double gy = -0.8; gy <= 0.8; gy += 0.2)
                     {
                         var p = new Vec3(gx * (t.HalfLength - r), gy * (t.HalfWidth - r), r);
-                        if (without.CanPlace(p, region, t, r, BallId.Cue))
+                        if (without.CanPlace(p, region, t, r, position.CueBall))
                         {
                             grid.Add(p);
                         }
@@ -147,7 +147,7 @@ public sealed partial class ShotPlanner
                         grid.Add(new Vec3(baulk - (2 * r) - (0.5 * d * Math.Cos(a)), 0.5 * d * Math.Sin(a), r));
                         grid.Add(new Vec3(baulk - (2 * r) - (d * Math.Cos(a)), d * Math.Sin(a), r));
                     }
-                    grid.RemoveAll(p => !without.CanPlace(p, region, t, r, BallId.Cue));
+                    grid.RemoveAll(p => !without.CanPlace(p, region, t, r, position.CueBall));
                 }
                 var targets = PlannerTable.LegalTargets(state, without);
                 chosen.AddRange(grid.Where(p => targets.Any(b => !_table.Blocked(without, p, without.Positions[without.IndexOf(b)], b))).Take(2));

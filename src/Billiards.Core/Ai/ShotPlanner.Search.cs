@@ -30,7 +30,7 @@ public sealed partial class ShotPlanner
             var root = roots[v.Root];
             var sim = _sims[v.Root] ??= root.Position.CreateSimulation(planner.Model);
             sim.Restore(root.Snapshot!);
-            sim.Strike(shot);
+            sim.Strike(shot, root.Position.CueBall);
             sim.AdvanceTo(MaxShotTime);
             _record.Capture(sim, 0, shot);
             return referee.Judge(v.Before, _record);

@@ -99,13 +99,13 @@ public sealed partial class ShotPlanner
         ArgumentNullException.ThrowIfNull(level);
         ArgumentNullException.ThrowIfNull(budget);
         var clock = Stopwatch.StartNew();
-        var search = new Search(this, state, position, level, budget, seed, clock);
+        var search = new Search(this, state, position.ForCueBall(Ruleset.For(state.Rules).CueBall(state)), level, budget, seed, clock);
         return search.Run();
     }
 
     /// <summary>Decides with a level number and a time cap: the short form for the game.</summary>
     public Decision Decide(GameState state, Simulation simulation, int level, int budgetMs, ulong seed) =>
-        Decide(state, TablePosition.Of(simulation), SkillLevel.Of(level), new PlannerBudget(budgetMs), seed);
+        Decide(state, TablePosition.Of(simulation, Ruleset.For(state.Rules).CueBall(state)), SkillLevel.Of(level), new PlannerBudget(budgetMs), seed);
 
     /// <summary>
     /// The choice of the incoming player when <paramref name="ruling"/> offers options, with the
@@ -121,7 +121,7 @@ public sealed partial class ShotPlanner
         {
             throw new ArgumentException("the ruling offers no options", nameof(ruling));
         }
-        double q = Table.BestEase(position, ruling.Next);
+        double q = Table.BestEase(position.ForCueBall(Ruleset.For(ruling.Next.Rules).CueBall(ruling.Next)), ruling.Next);
         if (options.Contains(RefereeOption.SpotEight))
         {
             return RefereeOption.SpotEight;

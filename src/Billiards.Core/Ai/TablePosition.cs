@@ -20,13 +20,18 @@ public sealed class TablePosition
 
     /// <summary>A position of the given balls.</summary>
     /// <param name="balls">Ids and centres (m); the order is kept.</param>
-    public TablePosition(IEnumerable<(BallId Id, Vec3 Position)> balls)
+    /// <param name="cueBall">The ball the player at the table strikes (<see cref="Ruleset.CueBall"/>).</param>
+    public TablePosition(IEnumerable<(BallId Id, Vec3 Position)> balls, BallId cueBall)
     {
         ArgumentNullException.ThrowIfNull(balls);
         var list = balls.ToList();
         _ids = [.. list.Select(b => b.Id)];
         _positions = [.. list.Select(b => b.Position)];
+        CueBall = cueBall;
     }
+
+    /// <summary>The ball the player at the table strikes; every other ball is an object ball to them.</summary>
+    public BallId CueBall { get; }
 
     /// <summary>Ball ids, index-aligned with <see cref="Positions"/>.</summary>
     public IReadOnlyList<BallId> Ids => _ids;
@@ -37,11 +42,17 @@ public sealed class TablePosition
     /// <summary>Number of balls on the table.</summary>
     public int Count => _ids.Length;
 
-    /// <summary>The cue ball's centre, or null when it is off the table (pocketed).</summary>
-    public Vec3? Cue => IndexOf(BallId.Cue) is var i and >= 0 ? _positions[i] : null;
+    /// <summary>The centre of <see cref="CueBall"/>, or null when it is off the table (pocketed).</summary>
+    public Vec3? Cue => IndexOf(CueBall) is var i and >= 0 ? _positions[i] : null;
 
-    /// <summary>The balls at rest in a simulation, pocketed ones left out.</summary>
-    public static TablePosition Of(Simulation simulation)
+    /// <summary>The object balls on the table: every ball but <see cref="CueBall"/>.</summary>
+    public IEnumerable<BallId> ObjectBalls => _ids.Where(b => b != CueBall);
+
+    /// <summary>This position for a player who strikes <paramref name="cueBall"/>.</summary>
+    public TablePosition ForCueBall(BallId cueBall) => cueBall == CueBall ? this : new(Enumerate(), cueBall);
+
+    /// <summary>The balls at rest in a simulation, pocketed ones left out, for a player who strikes <paramref name="cueBall"/>.</summary>
+    public static TablePosition Of(Simulation simulation, BallId cueBall)
     {
         ArgumentNullException.ThrowIfNull(simulation);
         var list = new List<(BallId, Vec3)>();
@@ -53,10 +64,10 @@ public sealed class TablePosition
                 list.Add((simulation.Ids[i], balls[i].Position));
             }
         }
-        return new TablePosition(list);
+        return new TablePosition(list, cueBall);
     }
 
-    /// <summary>The balls after a shot, pocketed ones left out.</summary>
+    /// <summary>The balls after a shot, pocketed ones left out, for the player who struck it (<see cref="ShotRecord.CueBall"/>).</summary>
     public static TablePosition After(ShotRecord record)
     {
         ArgumentNullException.ThrowIfNull(record);
@@ -70,20 +81,20 @@ public sealed class TablePosition
                 list.Add((ids[i], balls[i].Position));
             }
         }
-        return new TablePosition(list);
+        return new TablePosition(list, record.CueBall);
     }
 
-    /// <summary>A fresh rack of <paramref name="rack"/> with the cue ball where the rack puts it (the head spot; snooker's rack has it in the D).</summary>
-    public static TablePosition Rack(RackSpec rack, TableSpec table, double radius)
+    /// <summary>A fresh rack of <paramref name="rack"/> with <paramref name="cueBall"/> where the rack puts it (the head spot; snooker's rack has it in the D).</summary>
+    public static TablePosition Rack(RackSpec rack, TableSpec table, double radius, BallId cueBall)
     {
         var racked = Initializer.Rack(rack, table, radius);
         var balls = new List<(BallId, Vec3)>();
-        if (!racked.Any(b => b.Id.IsCue))
+        if (!racked.Any(b => b.Id == cueBall))
         {
-            balls.Add((BallId.Cue, Initializer.HeadSpot(table, radius)));
+            balls.Add((cueBall, Initializer.HeadSpot(table, radius)));
         }
         balls.AddRange(racked);
-        return new TablePosition(balls);
+        return new TablePosition(balls, cueBall);
     }
 
     /// <summary>Index of a ball, or -1 when it is not on the table.</summary>
@@ -94,11 +105,11 @@ public sealed class TablePosition
     {
         var list = Enumerate().Where(b => b.Id != id).ToList();
         list.Add((id, position));
-        return new TablePosition(list);
+        return new TablePosition(list, CueBall);
     }
 
     /// <summary>This position without <paramref name="id"/>.</summary>
-    public TablePosition Without(BallId id) => new(Enumerate().Where(b => b.Id != id));
+    public TablePosition Without(BallId id) => new(Enumerate().Where(b => b.Id != id), CueBall);
 
     /// <summary>
     /// True when a ball of radius <paramref name="radius"/> at <paramref name="p"/> may be placed

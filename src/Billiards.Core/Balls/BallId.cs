@@ -1,27 +1,20 @@
-using System.Globalization;
-
 namespace Billiards.Core.Balls;
 
 /// <summary>
-/// Identity of a ball within its <see cref="BallSet"/>. In scene and result files a ball id is
-/// the ball's name in its set ("cue", or the number in pool's). Which ball is a cue ball, what
-/// it is called and how it looks are the set's to say; the members here answer for pool's set,
-/// the one played now.
+/// Identity of a ball within its <see cref="BallSet"/>. Which balls are cue balls, what each is
+/// called in files and how it looks are the set's to say (<see cref="BallSet.IsCueBall"/>,
+/// <see cref="BallSet.NameOf"/>, <see cref="BallSet.TryParse"/>); which cue ball a player strikes
+/// is the game's (<see cref="Rules.Ruleset.CueBall"/>).
 /// </summary>
 public readonly record struct BallId(int Value)
 {
-    /// <summary>Pool's cue ball.</summary>
-    public static BallId Cue => BallSet.Pool.CueBalls[0];
+    /// <summary>No ball (a safety's call names none).</summary>
+    public static BallId None { get; } = new(-1);
 
-    /// <summary>True for a cue ball of pool's set.</summary>
-    public bool IsCue => BallSet.Pool.IsCueBall(this);
-
-    /// <summary>True for one of pool's stripes.</summary>
-    public bool IsStripe => BallSet.Pool.Group("stripes").Contains(this);
-
-    /// <summary>The id as a scene file writes it: the ball's name in its set ("cue", "1", "2", ..., "red-1", ..., "black").</summary>
+    /// <summary>
+    /// The id for messages: the ball's name in the set that has it ("cue", "1", ..., "red-1", ...,
+    /// "black"; ids are unique across the sets), else its number. Files name balls through their
+    /// own set (<see cref="BallSet.NameOf"/>).
+    /// </summary>
     public override string ToString() => BallSet.NameOfAny(this);
-
-    /// <summary>Parses a ball's name in any set (<see cref="BallSet.Pool"/>, <see cref="BallSet.Snooker"/>): "cue", "1" .. "15", "red-1" .. "black".</summary>
-    public static bool TryParse(string? text, out BallId id) => BallSet.TryParseAny(text, out id);
 }

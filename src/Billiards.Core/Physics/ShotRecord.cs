@@ -16,6 +16,7 @@ public sealed class ShotRecord
     private BallId[] _ids = [];
     private BallState[] _balls = [];
     private BallState[] _before = [];
+    private PocketSet _pockets = PocketSet.None;
 
     /// <summary>The strike that opened the shot, or null for a shot without one (balls set moving by the scene).</summary>
     public ShotSpec? Shot { get; private set; }
@@ -25,6 +26,9 @@ public sealed class ShotRecord
 
     /// <summary>Simulated time when the record was taken, normally when every ball rests (s).</summary>
     public double EndTime { get; private set; }
+
+    /// <summary>The ball the shot's cue strike struck; without a strike, the set's first cue ball.</summary>
+    public BallId CueBall { get; private set; }
 
     /// <summary>Number of events of the shot.</summary>
     public int EventCount { get; private set; }
@@ -82,6 +86,9 @@ public sealed class ShotRecord
         {
             _ids[i] = simulation.Ids[i];
         }
+        _pockets = simulation.Table.Pockets;
+        // The struck ball is the shot's cue ball (carom's players strike different ones).
+        CueBall = slice.Length > 0 && slice[0].Kind == EventKind.CueStrike ? slice[0].A : simulation.BallSet.CueBalls[0];
         Shot = shot;
         StartTime = slice.Length > 0 && slice[0].Kind == EventKind.CueStrike ? slice[0].Time : simulation.Time;
         EndTime = simulation.Time;
@@ -155,14 +162,14 @@ public sealed class ShotRecord
         return i >= 0 && _balls[i].IsPocketed;
     }
 
-    /// <summary>The pocket the ball fell into on this shot, or <see cref="PocketId.None"/>.</summary>
+    /// <summary>The pocket of the table the ball fell into on this shot, or <see cref="PocketId.None"/>.</summary>
     public PocketId PocketedOnShot(BallId id)
     {
         foreach (ref readonly var e in Events)
         {
             if (e.Kind == EventKind.BallPocket && e.A == id)
             {
-                return e.Pocket;
+                return _pockets.Id(e.Feature);
             }
         }
         return PocketId.None;
@@ -178,9 +185,9 @@ public sealed class ShotRecord
         {
             foreach (ref readonly var e in Events)
             {
-                if (e.Kind == EventKind.BallBall && (e.A.IsCue || e.B.IsCue))
+                if (e.Kind == EventKind.BallBall && (e.A == CueBall || e.B == CueBall))
                 {
-                    return e.A.IsCue ? e.B : e.A;
+                    return e.A == CueBall ? e.B : e.A;
                 }
             }
             return null;
@@ -195,7 +202,7 @@ public sealed class ShotRecord
             var events = Events;
             for (int i = 0; i < events.Length; i++)
             {
-                if (events[i].Kind == EventKind.BallBall && (events[i].A.IsCue || events[i].B.IsCue))
+                if (events[i].Kind == EventKind.BallBall && (events[i].A == CueBall || events[i].B == CueBall))
                 {
                     return i;
                 }

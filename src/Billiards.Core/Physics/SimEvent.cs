@@ -37,11 +37,7 @@ public enum EventKind : byte
 /// Normal approach speed at impact (m/s); for a pocket drop the ball's speed as it drops; for a
 /// cue strike the cue's speed.
 /// </param>
-public readonly record struct SimEvent(double Time, EventKind Kind, BallId A, BallId B, int Feature, double Speed)
-{
-    /// <summary>The pocket of a <see cref="EventKind.BallPocket"/> event.</summary>
-    public PocketId Pocket => Kind == EventKind.BallPocket ? (PocketId)Feature : PocketId.None;
-}
+public readonly record struct SimEvent(double Time, EventKind Kind, BallId A, BallId B, int Feature, double Speed);
 
 /// <summary>
 /// An append-only list of events that reuses its buffer between shots: after warm-up, logging an

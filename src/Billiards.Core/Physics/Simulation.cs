@@ -18,8 +18,10 @@ public abstract partial class Simulation
     /// <param name="dt">Fixed step (s).</param>
     /// <param name="table">The table.</param>
     /// <param name="ids">Ids of the balls, in the order of <see cref="Balls"/>.</param>
-    protected Simulation(string model, IIntegrator integrator, double dt, TableSpec table, IReadOnlyList<BallId> ids)
+    /// <param name="ballSet">The set the balls belong to; pool's when null.</param>
+    protected Simulation(string model, IIntegrator integrator, double dt, TableSpec table, IReadOnlyList<BallId> ids, BallSet? ballSet = null)
     {
+        BallSet = ballSet ?? BallSet.Pool;
         Model = model;
         Integrator = integrator;
         Dt = dt;
@@ -44,6 +46,9 @@ public abstract partial class Simulation
 
     /// <summary>Ball ids, index-aligned with <see cref="Balls"/>.</summary>
     public IReadOnlyList<BallId> Ids { get; }
+
+    /// <summary>The set the balls belong to: which are cue balls, their names in files and their looks.</summary>
+    public BallSet BallSet { get; }
 
     /// <summary>Simulated time since the start (s).</summary>
     public double Time { get; protected set; }
@@ -105,14 +110,18 @@ public abstract partial class Simulation
     /// </summary>
     public abstract void Reset();
 
+    /// <summary>Strikes the set's first cue ball (<see cref="Strike(ShotSpec, BallId)"/>): the one cue ball of pool or snooker.</summary>
+    public void Strike(ShotSpec shot) => Strike(shot, BallSet.CueBalls[0]);
+
     /// <summary>
-    /// Strikes the cue ball with the cue at the current time and opens a shot: logs a
+    /// Strikes <paramref name="cueBall"/> with the cue at the current time and opens a shot: logs a
     /// <see cref="EventKind.CueStrike"/> event (speed = the cue's speed), then applies the model's
-    /// strike. Does nothing without a cue ball in play.
+    /// strike. Does nothing when that ball is not in play.
     /// </summary>
-    public void Strike(ShotSpec shot)
+    public void Strike(ShotSpec shot, BallId cueBall)
     {
-        int cue = IndexOf(BallId.Cue);
+        ArgumentNullException.ThrowIfNull(shot);
+        int cue = IndexOf(cueBall);
         if (cue < 0 || Balls[cue].IsOutOfPlay)
         {
             return;
@@ -123,7 +132,7 @@ public abstract partial class Simulation
             _atStrike = new BallState[Balls.Length];
         }
         Balls.CopyTo(_atStrike);
-        Events.Add(new SimEvent(Time, EventKind.CueStrike, BallId.Cue, BallId.Cue, -1, shot.Speed));
+        Events.Add(new SimEvent(Time, EventKind.CueStrike, cueBall, cueBall, -1, shot.Speed));
         ApplyStrike(cue, shot);
     }
 

@@ -106,21 +106,21 @@ public enum Foul
 /// The shooter's call: a ball and a pocket, a safety (the cue ball and
 /// <see cref="Table.PocketId.None"/>), or snooker's nomination of a ball without a pocket.
 /// </summary>
-/// <param name="Ball">The called ball (the cue ball for a safety).</param>
+/// <param name="Ball">The called ball (<see cref="Balls.BallId.None"/> for a safety).</param>
 /// <param name="Pocket">The called pocket, or <see cref="Table.PocketId.None"/> for a safety or a nomination.</param>
 public sealed record Call(Balls.BallId Ball, Table.PocketId Pocket)
 {
     /// <summary>A declared safety: no ball is called.</summary>
-    public static Call Safety { get; } = new(Balls.BallId.Cue, Table.PocketId.None);
+    public static Call Safety { get; } = new(Balls.BallId.None, Table.PocketId.None);
 
     /// <summary>True for a declared safety.</summary>
-    public bool IsSafety => Pocket == Table.PocketId.None && Ball.IsCue;
+    public bool IsSafety => !Pocket.IsPocket && Ball == Balls.BallId.None;
 
     /// <summary>Snooker: the striker nominates <paramref name="ball"/> (a colour after a red, or a free ball), no pocket.</summary>
     public static Call Nominate(Balls.BallId ball) => new(ball, Table.PocketId.None);
 
     /// <summary>True for snooker's nomination of a ball without a pocket.</summary>
-    public bool IsNomination => Pocket == Table.PocketId.None && !Ball.IsCue;
+    public bool IsNomination => !Pocket.IsPocket && Ball != Balls.BallId.None;
 }
 
 /// <summary>The names scene and result files use for the referee's enums (scene-format.md).</summary>

@@ -229,7 +229,7 @@ public sealed class Match
         // No wall-clock bound: a shot must end the same way on every machine.
         var sim = _createSimulation(SceneOf(_balls, input.Shot));
         sim.RefereeRules = true;
-        sim.Strike(input.Shot);
+        sim.Strike(input.Shot, cue);
         _struck = (before, input);
         return sim;
     }
@@ -362,5 +362,5 @@ public sealed class Match
 
     private Scene SceneOf(IReadOnlyDictionary<BallId, Vec3> balls, ShotSpec? shot) =>
         new("game", null, Setup.Table, Setup.Physics, null,
-            [.. Ordered(balls).Select(b => new BallSetup(b.Id, b.Position, Vec3.Zero, Vec3.Zero))], shot, Ruleset.Name);
+            [.. Ordered(balls).Select(b => new BallSetup(b.Id, b.Position, Vec3.Zero, Vec3.Zero))], shot, Ruleset.Name) { BallSet = Ruleset.BallSet };
 }

@@ -10,6 +10,8 @@ internal sealed class ShotFacts
 {
     public ShotFacts(GameState before, ShotRecord shot, TableSpec table, double radius)
     {
+        // The shooter's cue ball; every other ball is an object ball to them.
+        var cue = Ruleset.For(before.Rules).CueBall(before);
         var events = shot.Events;
         int contact = shot.FirstContactIndex;
         FirstContact = shot.FirstContact;
@@ -23,30 +25,30 @@ internal sealed class ShotFacts
                     cushioned.Add(e.A);
                     RailAfterContact |= contact >= 0 && i > contact;
                     break;
-                case EventKind.BallPocket when e.A.IsCue:
+                case EventKind.BallPocket when e.A == cue:
                     Scratch = true;
                     break;
-                case EventKind.BallOffTable when e.A.IsCue:
+                case EventKind.BallOffTable when e.A == cue:
                     CueOffTable = true;
                     break;
                 case EventKind.BallOffTable:
                     OffTable.Add(e.A);
                     break;
                 case EventKind.BallPocket when !PocketOf.ContainsKey(e.A):
-                    PocketOf[e.A] = e.Pocket;
+                    PocketOf[e.A] = table.Pockets.Id(e.Feature);
                     Pocketed.Add(e.A);
                     RailAfterContact |= contact >= 0 && i > contact;
                     break;
             }
         }
-        CueToCushion = cushioned.Contains(BallId.Cue);
+        CueToCushion = cushioned.Contains(cue);
         ObjectBallsToCushion = cushioned.Count - (CueToCushion ? 1 : 0);
 
         var ids = shot.Ids;
         var after = shot.BallsAfter;
         for (int i = 0; i < ids.Length; i++)
         {
-            if (ids[i].IsCue)
+            if (ids[i] == cue)
             {
                 continue;
             }
@@ -133,7 +135,7 @@ internal sealed class ShotFacts
         var after = shot.BallsAfter;
         for (int i = 0; i < ids.Length; i++)
         {
-            if (!ids[i].IsCue && !moved.Contains(ids[i]) && !after[i].IsOutOfPlay
+            if (ids[i] != shot.CueBall && !moved.Contains(ids[i]) && !after[i].IsOutOfPlay
                 && Placement.Overlaps(radius, after[i].Position, p))
             {
                 return true;

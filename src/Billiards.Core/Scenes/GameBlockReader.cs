@@ -23,11 +23,13 @@ public static class GameBlockReader
 
     /// <summary>Reads a game block.</summary>
     /// <param name="element">The block.</param>
+    /// <param name="pockets">The table's pockets, which a call names.</param>
     /// <param name="file">The file, for errors.</param>
     /// <param name="path">The block's JSON path, for errors (normally <c>$.game</c>).</param>
     /// <exception cref="SceneException">When the block is invalid.</exception>
-    public static GameState Read(JsonElement element, string file, string path = "$.game")
+    public static GameState Read(JsonElement element, PocketSet pockets, string file, string path = "$.game")
     {
+        ArgumentNullException.ThrowIfNull(pockets);
         SceneException Error(string at, string problem) => new(file, at, problem);
         if (element.ValueKind != JsonValueKind.Object)
         {
@@ -100,7 +102,7 @@ public static class GameBlockReader
         }
         if (f.TryGetValue("call", out var call) && call.ValueKind != JsonValueKind.Null)
         {
-            state = state with { Call = ReadCall(call, rules, $"{path}.call", Error) };
+            state = state with { Call = ReadCall(call, rules, pockets, $"{path}.call", Error) };
         }
         if (f.TryGetValue("push_out", out var push))
         {
@@ -181,9 +183,10 @@ public static class GameBlockReader
         if (f.TryGetValue("misses_in_row", out var misses))
         {
             var pair = Pair(misses, $"{path}.misses_in_row");
-            if (pair.First < 0 || pair.Second < 0 || pair.First > 2 || pair.Second > 2)
+            // Misses without a full ball view go on counting past two (rules.md: only the third with a view loses).
+            if (pair.First < 0 || pair.Second < 0)
             {
-                throw Error($"{path}.misses_in_row", "each count must be 0, 1 or 2 (a third miss with a full ball view ends the frame)");
+                throw Error($"{path}.misses_in_row", "each count must be 0 or more");
             }
             state = state with { MissesInRow = pair };
         }
@@ -201,7 +204,7 @@ public static class GameBlockReader
                 : throw Error(at, $"expected one whole number per player, e.g. [0, 0], found {e.GetRawText()}");
     }
 
-    private static Call ReadCall(JsonElement e, GameRules rules, string path, Func<string, string, SceneException> error)
+    private static Call ReadCall(JsonElement e, GameRules rules, PocketSet pockets, string path, Func<string, string, SceneException> error)
     {
         if (e.ValueKind != JsonValueKind.Object)
         {
@@ -225,14 +228,19 @@ public static class GameBlockReader
             throw error(path, "a call needs both \"ball\" and \"pocket\" (or {\"safety\": true})");
         }
         string? ballName = ball.ValueKind == JsonValueKind.String ? ball.GetString() : ball.GetRawText();
-        if (!BallId.TryParse(ballName, out var id) || id.IsCue || !Referee.BallsOf(rules).Contains(id))
+        var ruleset = Ruleset.For(rules);
+        var set = ruleset.BallSet;
+        var objectBalls = ruleset.Balls.Where(b => !set.IsCueBall(b)).ToList();
+        if (!set.TryParse(ballName, out var id) || !objectBalls.Contains(id))
         {
-            throw error($"{path}.ball", $"\"{ballName}\" is not an object ball of {rules.ToName()} (expected \"1\" .. \"{Referee.BallsOf(rules)[^1]}\")");
+            throw error($"{path}.ball", $"\"{ballName}\" is not an object ball of {rules.ToName()} (expected \"{set.NameOf(objectBalls[0])}\" .. \"{set.NameOf(objectBalls[^1])}\")");
         }
         string? pocketName = pocket.ValueKind == JsonValueKind.String ? pocket.GetString() : pocket.GetRawText();
-        if (!PocketIds.TryParse(pocketName, out var pocketId))
+        if (!pockets.TryParse(pocketName, out var pocketId))
         {
-            throw error($"{path}.pocket", $"unknown pocket \"{pocketName}\" (expected one of {Quote(PocketIds.All.Select(p => p.ToName()))})");
+            throw error($"{path}.pocket", pockets.Count == 0
+                ? $"unknown pocket \"{pocketName}\" (this table has no pockets)"
+                : $"unknown pocket \"{pocketName}\" (expected one of {pockets.Describe()})");
         }
         return new Call(id, pocketId);
     }
@@ -245,7 +253,7 @@ public static class GameBlockReader
             throw error(path, "a snooker call nominates a ball and no pocket: {\"ball\": \"blue\"}");
         }
         string? name = ball.ValueKind == JsonValueKind.String ? ball.GetString() : ball.GetRawText();
-        if (!BallSet.Snooker.TryParse(name, out var id) || id.IsCue)
+        if (!BallSet.Snooker.TryParse(name, out var id) || BallSet.Snooker.IsCueBall(id))
         {
             throw error($"{path}.ball", $"\"{name}\" is not an object ball of snooker (expected \"red-1\" .. \"red-15\" or a colour)");
         }

@@ -1,4 +1,5 @@
 using System.Text.Json;
+using Billiards.Core.Balls;
 using Billiards.Core.Rules;
 using Billiards.Core.Table;
 
@@ -40,7 +41,7 @@ public static class GameBlockWriter
         }
         if (state.Call is { } call)
         {
-            WriteCall(w, "call", call);
+            WriteCall(w, "call", call, Ruleset.For(state.Rules).BallSet);
         }
         if (state.PushOut)
         {
@@ -62,9 +63,10 @@ public static class GameBlockWriter
         w.WriteEndObject();
     }
 
-    /// <summary>Writes a call: <c>{"ball", "pocket"}</c>, <c>{"safety": true}</c> or snooker's nomination <c>{"ball"}</c>.</summary>
-    public static void WriteCall(Utf8JsonWriter w, string name, Call call)
+    /// <summary>Writes a call: <c>{"ball", "pocket"}</c>, <c>{"safety": true}</c> or snooker's nomination <c>{"ball"}</c>; <paramref name="ballSet"/> names the ball.</summary>
+    public static void WriteCall(Utf8JsonWriter w, string name, Call call, BallSet ballSet)
     {
+        ArgumentNullException.ThrowIfNull(ballSet);
         ArgumentNullException.ThrowIfNull(w);
         ArgumentNullException.ThrowIfNull(call);
         w.WriteStartObject(name);
@@ -74,11 +76,11 @@ public static class GameBlockWriter
         }
         else if (call.IsNomination)
         {
-            w.WriteString("ball", call.Ball.ToString());
+            w.WriteString("ball", ballSet.NameOf(call.Ball));
         }
         else
         {
-            w.WriteString("ball", call.Ball.ToString());
+            w.WriteString("ball", ballSet.NameOf(call.Ball));
             w.WriteString("pocket", call.Pocket.ToName());
         }
         w.WriteEndObject();
@@ -89,10 +91,11 @@ public static class GameBlockWriter
     {
         ArgumentNullException.ThrowIfNull(w);
         ArgumentNullException.ThrowIfNull(ruling);
+        var set = Ruleset.For(ruling.Next.Rules).BallSet;
         w.WriteStartObject();
         w.WriteBoolean("legal", ruling.Legal);
         WriteNames(w, "fouls", ruling.Fouls.Select(f => f.ToName()));
-        WriteNames(w, "pocketed", ruling.Pocketed.Select(b => b.ToString()));
+        WriteNames(w, "pocketed", ruling.Pocketed.Select(set.NameOf));
         w.WriteBoolean("continue", ruling.Continue);
         if (ruling.BallInHand == BallInHand.None)
         {
@@ -102,7 +105,7 @@ public static class GameBlockWriter
         {
             w.WriteString("ball_in_hand", ruling.BallInHand.ToName());
         }
-        WriteNames(w, "spot", ruling.Spot.Select(b => b.ToString()));
+        WriteNames(w, "spot", ruling.Spot.Select(set.NameOf));
         WriteNames(w, "options", ruling.Options.Select(o => o.ToName()));
         w.WriteBoolean("game_over", ruling.GameOver);
         if (ruling.Winner is { } winner)

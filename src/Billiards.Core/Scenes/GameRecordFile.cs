@@ -72,7 +72,7 @@ public static class GameRecordFile
         if (setup.Position is { } position)
         {
             // A game from a scene's position rather than its rack.
-            WriteBalls(w, "balls", position);
+            WriteBalls(w, "balls", position, setup.Ruleset.BallSet);
         }
         w.WriteStartArray("shots");
         foreach (var played in game.Shots)
@@ -84,7 +84,7 @@ public static class GameRecordFile
             WritePlace(w, "place", input.Place);
             if (input.Call is { } call)
             {
-                GameBlockWriter.WriteCall(w, "call", call);
+                GameBlockWriter.WriteCall(w, "call", call, setup.Ruleset.BallSet);
             }
             else
             {
@@ -101,7 +101,7 @@ public static class GameRecordFile
             }
             w.WritePropertyName("ruling");
             GameBlockWriter.WriteRuling(w, played.Ruling);
-            WriteBalls(w, "balls", played.After);
+            WriteBalls(w, "balls", played.After, setup.Ruleset.BallSet);
             w.WriteEndObject();
         }
         w.WriteEndArray();
@@ -109,21 +109,22 @@ public static class GameRecordFile
     }
 
     /// <summary>Balls at rest as records write them: [{"id", "position": [x, y]}] (m), as a scene's balls.</summary>
-    public static void WriteBalls(Utf8JsonWriter w, string name, IEnumerable<(Balls.BallId Id, Vec3 Position)> balls)
+    public static void WriteBalls(Utf8JsonWriter w, string name, IEnumerable<(Balls.BallId Id, Vec3 Position)> balls, Balls.BallSet ballSet)
     {
         ArgumentNullException.ThrowIfNull(w);
         ArgumentNullException.ThrowIfNull(balls);
+        ArgumentNullException.ThrowIfNull(ballSet);
         w.WritePropertyName(name);
-        WriteBallsValue(w, balls);
+        WriteBallsValue(w, balls, ballSet);
     }
 
-    private static void WriteBallsValue(Utf8JsonWriter w, IEnumerable<(Balls.BallId Id, Vec3 Position)> balls)
+    private static void WriteBallsValue(Utf8JsonWriter w, IEnumerable<(Balls.BallId Id, Vec3 Position)> balls, Balls.BallSet ballSet)
     {
         w.WriteStartArray();
         foreach (var (id, p) in balls)
         {
             w.WriteStartObject();
-            w.WriteString("id", id.ToString());
+            w.WriteString("id", ballSet.NameOf(id));
             WritePlace(w, "position", p);
             w.WriteEndObject();
         }
@@ -238,7 +239,7 @@ public static class GameRecordFile
         {
             throw Error("$.rack.seed", "expected a whole number (a 32-bit integer)");
         }
-        var start = GameBlockReader.Read(Get(root, "game", "$"), file, "$.game");
+        var start = GameBlockReader.Read(Get(root, "game", "$"), scene.Table.Pockets, file, "$.game");
         string rackGame = Get(rack, "game", "$.rack").GetString() ?? "";
         if (rackGame != start.Rules.ToName())
         {
@@ -257,7 +258,7 @@ public static class GameRecordFile
         foreach (var s in Get(root, "shots", "$").EnumerateArray())
         {
             string at = string.Create(CultureInfo.InvariantCulture, $"$.shots[{i++}]");
-            var before = GameBlockReader.Read(Get(s, "game", at), file, at + ".game");
+            var before = GameBlockReader.Read(Get(s, "game", at), scene.Table.Pockets, file, at + ".game");
             Vec3? place = null;
             if (s.TryGetProperty("place", out var pl) && pl.ValueKind == JsonValueKind.Array)
             {
@@ -367,7 +368,7 @@ public static class GameRecordFile
             }
             if (record.Balls[k] is { } recordedBalls)
             {
-                string replayedBalls = BallsJson(played.After);
+                string replayedBalls = BallsJson(played.After, record.Setup.Ruleset.BallSet);
                 if (Compact(recordedBalls) != replayedBalls)
                 {
                     return new ReplayReport(record.Shots.Count, k, new ReplayDifference(k, "balls", Compact(recordedBalls), replayedBalls));
@@ -394,12 +395,12 @@ public static class GameRecordFile
         return null;
     }
 
-    private static string BallsJson(IEnumerable<(Balls.BallId Id, Vec3 Position)> balls)
+    private static string BallsJson(IEnumerable<(Balls.BallId Id, Vec3 Position)> balls, Balls.BallSet ballSet)
     {
         using var stream = new MemoryStream();
         using (var w = new Utf8JsonWriter(stream))
         {
-            WriteBallsValue(w, balls);
+            WriteBallsValue(w, balls, ballSet);
         }
         return System.Text.Encoding.UTF8.GetString(stream.ToArray());
     }

@@ -48,7 +48,7 @@ public static class ResultWriter
         {
             ref readonly var b = ref balls[i];
             w.WriteStartObject();
-            w.WriteString("id", sim.Ids[i].ToString());
+            w.WriteString("id", sim.BallSet.NameOf(sim.Ids[i]));
             WriteVector(w, "position", b.Position);
             WriteVector(w, "velocity", b.Velocity);
             WriteVector(w, "spin", b.Spin);
@@ -74,23 +74,23 @@ public static class ResultWriter
             {
                 case EventKind.CueStrike:
                     w.WriteString("type", "cue-strike");
-                    WriteIds(w, e.A);
+                    WriteIds(w, sim.BallSet, e.A);
                     w.WriteNumber("speed", e.Speed);
                     break;
                 case EventKind.BallBall:
                     w.WriteString("type", "ball-ball");
-                    WriteIds(w, e.A, e.B);
+                    WriteIds(w, sim.BallSet, e.A, e.B);
                     w.WriteNumber("speed", e.Speed);
                     break;
                 case EventKind.BallCushion:
                     w.WriteString("type", "ball-cushion");
-                    WriteIds(w, e.A);
+                    WriteIds(w, sim.BallSet, e.A);
                     w.WriteString("cushion", sim.FeatureName(e.Kind, e.Feature));
                     w.WriteNumber("speed", e.Speed);
                     break;
                 case EventKind.BallPocket:
                     w.WriteString("type", "ball-pocket");
-                    WriteIds(w, e.A);
+                    WriteIds(w, sim.BallSet, e.A);
                     w.WriteString("pocket", sim.FeatureName(e.Kind, e.Feature));
                     w.WriteNumber("speed", e.Speed);
                     break;
@@ -101,7 +101,7 @@ public static class ResultWriter
                         EventKind.BallTable => "ball-table",
                         _ => "ball-off-table",
                     });
-                    WriteIds(w, e.A);
+                    WriteIds(w, sim.BallSet, e.A);
                     w.WriteNumber("speed", e.Speed);
                     break;
             }
@@ -119,7 +119,7 @@ public static class ResultWriter
                 w.WriteStartObject("positions");
                 for (int i = 0; i < s.Positions.Length; i++)
                 {
-                    w.WriteStartArray(sim.Ids[i].ToString());
+                    w.WriteStartArray(sim.BallSet.NameOf(sim.Ids[i]));
                     w.WriteNumberValue(s.Positions[i].X);
                     w.WriteNumberValue(s.Positions[i].Y);
                     w.WriteNumberValue(s.Positions[i].Z);
@@ -158,12 +158,12 @@ public static class ResultWriter
         w.WriteEndObject();
     }
 
-    private static void WriteIds(Utf8JsonWriter w, params ReadOnlySpan<BallId> ids)
+    private static void WriteIds(Utf8JsonWriter w, BallSet set, params ReadOnlySpan<BallId> ids)
     {
         w.WriteStartArray("balls");
         foreach (var id in ids)
         {
-            w.WriteStringValue(id.ToString());
+            w.WriteStringValue(set.NameOf(id));
         }
         w.WriteEndArray();
     }

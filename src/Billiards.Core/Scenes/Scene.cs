@@ -68,6 +68,12 @@ public sealed record Scene(
     /// </summary>
     public Rules.GameState? Game { get; init; }
 
+    /// <summary>The balls the scene is played with: its game's set, pool's without a game.</summary>
+    public BallSet BallSet { get; init; } = BallSet.Pool;
+
+    /// <summary>The ball the scene's shot strikes: the game's cue ball for its shooter, else the set's first cue ball.</summary>
+    public BallId CueBall => Game is { } game ? global::Billiards.Core.Rules.Ruleset.For(game.Rules).CueBall(game) : BallSet.CueBalls[0];
+
     /// <summary>The ball radius the scene's model uses (m).</summary>
     public double BallRadius => Physics.Model.BallRadius(Physics.Params);
 }

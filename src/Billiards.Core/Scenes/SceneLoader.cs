@@ -105,6 +105,8 @@ public static class SceneLoader
                 throw Error("$.physics.params.R", radiusProblem);
             }
 
+            // The game names the ball set; the game block is read in full below, once the balls are.
+            var cueBall = set.CueBalls[0];
             RackSpec? rack = fields.TryGetValue("rack", out var r) ? ReadRack(r) : null;
             var balls = new SortedDictionary<int, (BallSetup Ball, string Path)>();
             if (rack is not null)
@@ -113,9 +115,9 @@ public static class SceneLoader
                 {
                     balls[id.Value] = (new BallSetup(id, position, Vec3.Zero, Vec3.Zero), "$.rack");
                 }
-                if (!balls.ContainsKey(0))
+                if (!balls.ContainsKey(cueBall.Value))
                 {
-                    balls[0] = (new BallSetup(BallId.Cue, Initializer.CueStart(rack.Game, table, radius), Vec3.Zero, Vec3.Zero), "$.rack");
+                    balls[cueBall.Value] = (new BallSetup(cueBall, Initializer.CueStart(rack.Game, table, radius), Vec3.Zero, Vec3.Zero), "$.rack");
                 }
             }
             if (fields.TryGetValue("balls", out var b))
@@ -125,7 +127,7 @@ public static class SceneLoader
                 foreach (var item in Array(b, "$.balls"))
                 {
                     string itemPath = $"$.balls[{i++}]";
-                    var ball = ReadBall(item, itemPath, radius, physics.Model.HasFlight, set);
+                    var ball = ReadBall(item, itemPath, set, radius, physics.Model.HasFlight);
                     if (!explicitIds.Add(ball.Id.Value))
                     {
                         throw Error(itemPath + ".id", $"ball \"{ball.Id}\" appears twice");
@@ -137,17 +139,20 @@ public static class SceneLoader
             ValidatePlacement(list, table, radius);
 
             ShotSpec? shot = fields.TryGetValue("shot", out var s) ? ReadShot(s) : null;
-            if (shot is not null && !balls.ContainsKey(0))
-            {
-                throw Error("$.shot", "a shot needs a cue ball, and the scene has none");
-            }
             string? rules = fields.TryGetValue("rules", out var ru) ? OneOf(ru, "$.rules", [.. Rules.RuleNames.GameNames]) : null;
 
             // A game block without a shot is a position to play (suggest); a run refuses it (SimulationRunner).
-            var game = fields.TryGetValue("game", out var gm) ? GameBlockReader.Read(gm, file) : null;
-            return new Scene(file, name, table, physics, rack, list.Select(x => x.Ball).ToList(), shot, rules) { Game = game };
+            var game = fields.TryGetValue("game", out var gm) ? GameBlockReader.Read(gm, table.Pockets, file) : null;
+            var scene = new Scene(file, name, table, physics, rack, list.Select(x => x.Ball).ToList(), shot, rules) { Game = game, BallSet = set };
+            if (shot is not null && !balls.ContainsKey(scene.CueBall.Value))
+            {
+                throw Error("$.shot", $"a shot needs a cue ball (\"{set.NameOf(scene.CueBall)}\"), and the scene has none");
+            }
+            return scene;
         }
 
+        // The set of the scene's game (the game block's rules, else "rules"), pool's without one;
+        // a bad name is refused where the field is read.
         // The balls a scene is played with, for its ball ids and the default radius and mass:
         // snooker's when the scene names snooker (its rules, rack, game or table), else pool's.
         // Read before the fields are validated, which happens as each is read.
@@ -156,9 +161,20 @@ public static class SceneLoader
             static bool Is(JsonElement e, string property, string value) =>
                 e.ValueKind == JsonValueKind.Object && e.TryGetProperty(property, out var v)
                 && v.ValueKind == JsonValueKind.String && v.GetString() == value;
-            bool snooker = (fields.TryGetValue("rules", out var rules) && rules.ValueKind == JsonValueKind.String && rules.GetString() == "snooker")
-                || (fields.TryGetValue("rack", out var rack) && Is(rack, "game", "snooker"))
-                || (fields.TryGetValue("game", out var game) && Is(game, "rules", "snooker"))
+            string? game = null;
+            if (fields.TryGetValue("game", out var g) && g.ValueKind == JsonValueKind.Object && g.TryGetProperty("rules", out var gr) && gr.ValueKind == JsonValueKind.String)
+            {
+                game = gr.GetString();
+            }
+            else if (fields.TryGetValue("rules", out var ru) && ru.ValueKind == JsonValueKind.String)
+            {
+                game = ru.GetString();
+            }
+            if (Rules.RuleNames.TryParseGame(game, out var rules))
+            {
+                return Rules.Ruleset.For(rules).BallSet;
+            }
+            bool snooker = (fields.TryGetValue("rack", out var rack) && Is(rack, "game", "snooker"))
                 || (fields.TryGetValue("table", out var table) && Is(table, "preset", SnookerTable.Preset));
             return snooker ? BallSet.Snooker : BallSet.Pool;
         }
@@ -366,7 +382,7 @@ public static class SceneLoader
             return new RackSpec(game, seed);
         }
 
-        private BallSetup ReadBall(JsonElement e, string path, double radius, bool flight, BallSet set)
+        private BallSetup ReadBall(JsonElement e, string path, BallSet set, double radius, bool flight)
         {
             var f = Object(e, path, "id", "position", "velocity", "spin");
             if (!f.TryGetValue("id", out var idElement))

@@ -78,7 +78,7 @@ public static class SimulationRunner
         var sim = SimulationFactory.Create(scene);
         if (scene.Shot is { } shot)
         {
-            sim.Strike(shot);
+            sim.Strike(shot, scene.CueBall);
         }
         double limit = options.Until ?? options.MaxTime;
         var samples = new List<Sample>();
@@ -119,7 +119,7 @@ public static class SimulationRunner
         }
         if (game.Shot == 0 || game.BallInHand != Rules.BallInHand.None)
         {
-            var cue = scene.Balls.FirstOrDefault(b => b.Id.IsCue);
+            var cue = scene.Balls.FirstOrDefault(b => b.Id == scene.CueBall);
             game = game with { Placement = cue?.Position };
         }
         var referee = Rules.Referee.For(game.Rules, scene.Table, scene.BallRadius);

@@ -19,10 +19,6 @@ public static partial class Initializer
         "head-left-back", "head-right-back", "side-left-back", "side-right-back", "foot-left-back", "foot-right-back",
     ];
 
-    /// <summary>Names of the pockets, indexed by <see cref="Ball.Pocket"/> and pocket events.</summary>
-    public static IReadOnlyList<string> PocketNames { get; } =
-        ["head-left", "head-right", "side-left", "side-right", "foot-left", "foot-right"];
-
     /// <summary>Lowest point of the collision walls (cm): below the -20 cm at which a dropping ball leaves play, so the pocket's back walls hold it until then.</summary>
     public const float RailBottom = -25f;
 
@@ -30,7 +26,11 @@ public static partial class Initializer
     public const float RailTop = 8f;
 
     private const int Head = 0, Foot = 1, LeftHead = 2, LeftFoot = 3, RightHead = 4, RightFoot = 5;
-    private const int FirstJaw = 6, FirstBack = 12;
+    /// <summary>The feature of the first pocket's jaw; pocket p's is FirstJaw + p.</summary>
+    internal const int FirstJaw = 6;
+
+    /// <summary>The feature of the first pocket's back wall; pocket p's is FirstBack + p.</summary>
+    internal const int FirstBack = 12;
     private const int HeadRight = 1, SideRight = 3, FootRight = 5;
     private const int BackChords = 3;
 

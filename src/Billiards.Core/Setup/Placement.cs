@@ -49,7 +49,7 @@ public static class Placement
             Problem.OffTable => Text($"ball \"{id}\" at [{position.X}, {position.Y}] is off the table (the centre must stay within [{-(table.HalfLength - radius):0.######}, {table.HalfLength - radius:0.######}] x [{-(table.HalfWidth - radius):0.######}, {table.HalfWidth - radius:0.######}]: on the bed, R inside the cushion noses; in both models a ball starts on the bed, never in a pocket's mouth)"),
             Problem.OutsideKitchen => Text($"ball \"{id}\" at [{position.X}, {position.Y}] is outside the kitchen (x must be at most the head string, {HeadString(table):0.######} m)"),
             Problem.OutsideD => Text($"ball \"{id}\" at [{position.X}, {position.Y}] is outside the D (at most {SnookerTable.DRadius} m from the brown spot [{SnookerTable.BaulkLineX(table):0.######}, 0], on the baulk side)"),
-            _ => Text($"ball \"{id}\" at [{position.X}, {position.Y}] is over the {PocketIds.FromIndex(OverPocket(table, radius, position, 0)).ToName()} pocket"),
+            _ => Text($"ball \"{id}\" at [{position.X}, {position.Y}] is over the {table.Pockets.NameOf(OverPocket(table, radius, position, 0))} pocket"),
         };
     }
 

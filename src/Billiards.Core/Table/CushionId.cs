@@ -1,90 +1,78 @@
 namespace Billiards.Core.Table;
 
-/// <summary>
-/// A cushion feature of a six-pocket table, the same under every model: the six rails, the
-/// jaws of each pocket and the back wall of each pocket. Head is -x, foot +x; left and right as
-/// seen from the head rail (scene-format.md). Each model maps its own features to these
-/// (<see cref="Physics.Simulation.CushionOf"/>); results keep each model's feature names.
-/// </summary>
-public enum CushionId : sbyte
+/// <summary>What a cushion feature is: a rail, a pocket's jaw, or a pocket's back wall.</summary>
+public enum CushionKind : sbyte
 {
     /// <summary>No cushion (another kind of event).</summary>
-    None = -1,
-    /// <summary>The head rail (x = -L/2).</summary>
-    Head = 0,
-    /// <summary>The foot rail (x = +L/2).</summary>
-    Foot = 1,
-    /// <summary>The left long rail between the head-left corner and the left side pocket.</summary>
-    LeftHead = 2,
-    /// <summary>The left long rail between the left side pocket and the foot-left corner.</summary>
-    LeftFoot = 3,
-    /// <summary>The right long rail between the head-right corner and the right side pocket.</summary>
-    RightHead = 4,
-    /// <summary>The right long rail between the right side pocket and the foot-right corner.</summary>
-    RightFoot = 5,
-    /// <summary>A jaw of the head-left pocket.</summary>
-    HeadLeftJaw = 6,
-    /// <summary>A jaw of the head-right pocket.</summary>
-    HeadRightJaw = 7,
-    /// <summary>A jaw of the left side pocket.</summary>
-    SideLeftJaw = 8,
-    /// <summary>A jaw of the right side pocket.</summary>
-    SideRightJaw = 9,
-    /// <summary>A jaw of the foot-left pocket.</summary>
-    FootLeftJaw = 10,
-    /// <summary>A jaw of the foot-right pocket.</summary>
-    FootRightJaw = 11,
-    /// <summary>The back wall of the head-left pocket.</summary>
-    HeadLeftBack = 12,
-    /// <summary>The back wall of the head-right pocket.</summary>
-    HeadRightBack = 13,
-    /// <summary>The back wall of the left side pocket.</summary>
-    SideLeftBack = 14,
-    /// <summary>The back wall of the right side pocket.</summary>
-    SideRightBack = 15,
-    /// <summary>The back wall of the foot-left pocket.</summary>
-    FootLeftBack = 16,
-    /// <summary>The back wall of the foot-right pocket.</summary>
-    FootRightBack = 17,
+    None = 0,
+    /// <summary>One of the six rail cushions.</summary>
+    Rail = 1,
+    /// <summary>A jaw of a pocket (both jaws of a pocket are one cushion here).</summary>
+    Jaw = 2,
+    /// <summary>The back wall of a pocket.</summary>
+    Back = 3,
 }
 
-/// <summary>Helpers for <see cref="CushionId"/>.</summary>
-public static class CushionIds
+/// <summary>
+/// A cushion feature, the same under every model: one of the six rails (the long rails split at
+/// their middle), or the jaws or back wall of one of the table's pockets. Head is -x, foot +x;
+/// left and right as seen from the head rail (scene-format.md). Each model maps its own features
+/// to these (<see cref="Physics.Simulation.CushionOf"/>); results keep each model's feature names.
+/// </summary>
+/// <param name="Kind">Rail, jaw or back wall.</param>
+/// <param name="Rail">The rail's index in <see cref="RailNames"/>, -1 for a jaw or back wall.</param>
+/// <param name="Pocket">The pocket of a jaw or back wall, <see cref="PocketId.None"/> for a rail.</param>
+public readonly record struct CushionId(CushionKind Kind, int Rail, PocketId Pocket)
 {
-    private const int Rails = 6;
-    private const int Pockets = 6;
+    /// <summary>The rails' names as results write them, by rail index.</summary>
+    public static IReadOnlyList<string> RailNames { get; } = ["head", "foot", "left-head", "left-foot", "right-head", "right-foot"];
 
-    /// <summary>The jaw of <paramref name="pocket"/>.</summary>
-    public static CushionId Jaw(PocketId pocket) => pocket == PocketId.None ? CushionId.None : (CushionId)(Rails + (int)pocket);
+    /// <summary>No cushion.</summary>
+    public static CushionId None { get; } = new(CushionKind.None, -1, PocketId.None);
 
-    /// <summary>The back wall of <paramref name="pocket"/>.</summary>
-    public static CushionId Back(PocketId pocket) => pocket == PocketId.None ? CushionId.None : (CushionId)(Rails + Pockets + (int)pocket);
+    /// <summary>The head rail (x = -L/2).</summary>
+    public static CushionId Head { get; } = OfRail(0);
+
+    /// <summary>The foot rail (x = +L/2).</summary>
+    public static CushionId Foot { get; } = OfRail(1);
+
+    /// <summary>The left long rail between the head end and the middle.</summary>
+    public static CushionId LeftHead { get; } = OfRail(2);
+
+    /// <summary>The left long rail between the middle and the foot end.</summary>
+    public static CushionId LeftFoot { get; } = OfRail(3);
+
+    /// <summary>The right long rail between the head end and the middle.</summary>
+    public static CushionId RightHead { get; } = OfRail(4);
+
+    /// <summary>The right long rail between the middle and the foot end.</summary>
+    public static CushionId RightFoot { get; } = OfRail(5);
+
+    /// <summary>The rail of index <paramref name="rail"/> (<see cref="RailNames"/>).</summary>
+    public static CushionId OfRail(int rail) =>
+        (uint)rail < 6 ? new(CushionKind.Rail, rail, PocketId.None) : throw new ArgumentOutOfRangeException(nameof(rail));
+
+    /// <summary>The jaw of <paramref name="pocket"/>, or <see cref="None"/> for no pocket.</summary>
+    public static CushionId Jaw(PocketId pocket) => pocket.IsPocket ? new(CushionKind.Jaw, -1, pocket) : None;
+
+    /// <summary>The back wall of <paramref name="pocket"/>, or <see cref="None"/> for no pocket.</summary>
+    public static CushionId Back(PocketId pocket) => pocket.IsPocket ? new(CushionKind.Back, -1, pocket) : None;
 
     /// <summary>True for one of the six rails.</summary>
-    public static bool IsRail(this CushionId cushion) => cushion is >= CushionId.Head and <= CushionId.RightFoot;
-
-    /// <summary>The pocket of a jaw or back wall; <see cref="PocketId.None"/> for a rail.</summary>
-    public static PocketId PocketOf(this CushionId cushion) => cushion switch
-    {
-        >= CushionId.HeadLeftJaw and <= CushionId.FootRightJaw => (PocketId)((int)cushion - Rails),
-        >= CushionId.HeadLeftBack and <= CushionId.FootRightBack => (PocketId)((int)cushion - Rails - Pockets),
-        _ => PocketId.None,
-    };
+    public bool IsRail => Kind == CushionKind.Rail;
 
     /// <summary>
     /// The feature's name: a rail's as results write it ("head", "left-foot", ...), "head-left-jaw"
-    /// for a jaw, "head-left-back" for a back wall; "none" for <see cref="CushionId.None"/>.
+    /// for a jaw, "head-left-back" for a back wall; "none" for <see cref="None"/>.
     /// </summary>
-    public static string ToName(this CushionId cushion) => cushion switch
+    public string ToName() => Kind switch
     {
-        CushionId.Head => "head",
-        CushionId.Foot => "foot",
-        CushionId.LeftHead => "left-head",
-        CushionId.LeftFoot => "left-foot",
-        CushionId.RightHead => "right-head",
-        CushionId.RightFoot => "right-foot",
-        >= CushionId.HeadLeftJaw and <= CushionId.FootRightJaw => cushion.PocketOf().ToName() + "-jaw",
-        >= CushionId.HeadLeftBack and <= CushionId.FootRightBack => cushion.PocketOf().ToName() + "-back",
+        CushionKind.Rail => RailNames[Rail],
+        CushionKind.Jaw => Pocket.ToName() + "-jaw",
+        CushionKind.Back => Pocket.ToName() + "-back",
         _ => "none",
     };
+
+    /// <summary>The name, for messages.</summary>
+    public override string ToString() => ToName();
 }

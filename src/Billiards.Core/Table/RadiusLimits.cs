@@ -30,7 +30,7 @@ public static class RadiusLimits
         {
             return null;
         }
-        double mouth = Math.Min(table.CornerPocketMouth, table.SidePocketMouth);
+        double mouth = table.Pockets.Min(p => p.Mouth);
         if (2 * radius >= mouth)
         {
             return Format($"a ball of R = {radius} m does not fit through the pockets: its diameter is not less than the narrowest mouth, {mouth:0.####} m");
@@ -45,13 +45,12 @@ public static class RadiusLimits
     public static bool CaptureSpansJaws(TableSpec table, double radius)
     {
         var geometry = TableGeometry.Build(table, radius);
-        var mouths = MouthMiddles(table);
         foreach (var pocket in geometry.Pockets)
         {
-            var middle = mouths[pocket.Pocket];
+            var middle = table.Pockets[pocket.Pocket].MouthMiddle(table);
             var across = (pocket.Centre - middle).Normalized();
             across = new Vec3(-across.Y, across.X, 0);
-            string prefix = TableGeometry.PocketName(pocket.Pocket) + "-jaw-";
+            string prefix = geometry.PocketName(pocket.Pocket) + "-jaw-";
             var jaws = new List<CushionSegment>(2);
             foreach (var face in geometry.Segments)
             {
@@ -66,18 +65,6 @@ public static class RadiusLimits
             }
         }
         return true;
-    }
-
-    // The middles of the mouth lines, by pocket index, as TableGeometry places them.
-    private static Vec3[] MouthMiddles(TableSpec t)
-    {
-        double hx = t.HalfLength, hy = t.HalfWidth, c = t.CornerPocketMouth / Math.Sqrt(2);
-        return
-        [
-            new(-hx + c / 2, hy - c / 2, 0), new(-hx + c / 2, -hy + c / 2, 0),
-            new(0, hy, 0), new(0, -hy, 0),
-            new(hx - c / 2, hy - c / 2, 0), new(hx - c / 2, -hy + c / 2, 0),
-        ];
     }
 
     private static string Format(FormattableString s) => s.ToString(CultureInfo.InvariantCulture);

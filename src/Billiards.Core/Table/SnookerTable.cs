@@ -55,7 +55,7 @@ public static class SnookerTable
 
     /// <summary>The preset: 3.569 x 1.778 m, corner openings 86 mm, middle 92 mm, rounded jaws.</summary>
     public static TableSpec Spec { get; } = new(
-        Preset, Length, Width, 0.64 * BallDiameter, true, CornerOpening, MiddleOpening, 135, 90, 0.0937,
+        Preset, Length, Width, 0.64 * BallDiameter, PocketSet.Six(CornerOpening, MiddleOpening, 135, 90), 0.0937,
         RailHeight: 0.78 * BallDiameter, JawNoseRadius: JawNoseRadius);
 
     /// <summary>x of the baulk line on <paramref name="table"/> (m).</summary>

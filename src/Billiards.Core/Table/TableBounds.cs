@@ -33,13 +33,16 @@ public static class TableBounds
         {
             return false;
         }
-        // The mouths, folded into the first quadrant: the corner mouth's middle and the side's.
-        double corner = table.CornerPocketMouth / Math.Sqrt(2);
-        double cx = table.HalfLength - corner / 2, cy = table.HalfWidth - corner / 2;
-        double cornerReach = table.CornerPocketMouth / 2 + 2 * radius;
-        double sideReach = table.SidePocketMouth / 2 + 2 * radius;
-        return Square(x - cx) + Square(y - cy) <= cornerReach * cornerReach
-            || Square(x) + Square(y - table.HalfWidth) <= sideReach * sideReach;
+        foreach (var pocket in table.Pockets)
+        {
+            var middle = pocket.MouthMiddle(table);
+            double reach = pocket.Mouth / 2 + 2 * radius;
+            if (Square(centre.X - middle.X) + Square(centre.Y - middle.Y) <= reach * reach)
+            {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static double Square(double v) => v * v;

@@ -34,7 +34,7 @@ public readonly record struct CushionNose(Vec3 Centre, double Radius, int Featur
 /// </summary>
 /// <param name="Centre">Centre (m, z = 0).</param>
 /// <param name="Radius">Radius (m).</param>
-/// <param name="Pocket">Index of the pocket's name, <see cref="TableGeometry.PocketNames"/>.</param>
+/// <param name="Pocket">Index of the pocket in the table's <see cref="TableSpec.Pockets"/>.</param>
 public readonly record struct PocketCircle(Vec3 Centre, double Radius, int Pocket);
 
 /// <summary>
@@ -48,7 +48,7 @@ public readonly record struct PocketCircle(Vec3 Centre, double Radius, int Pocke
 /// corner, 104 deg side, measured through the cushion rubber), so the jaws converge towards the
 /// back of the pocket. The corner is rounded by a nose of <see cref="TableSpec.JawNoseRadius"/>
 /// (pool's sharp <see cref="NoseRadius"/>, snooker's rounder). The
-/// capture circle of radius R (wider where the jaws leave more room) sits R behind the middle of the mouth line: a ball is pocketed once
+/// capture circle of radius R sits R behind the middle of the mouth line: a ball is pocketed once
 /// its centre is past the mouth line and more than half of it hangs over the hole, or it rattles
 /// off a jaw first.
 /// </remarks>
@@ -59,10 +59,6 @@ public sealed class TableGeometry
 
     /// <summary>Length of a jaw face from the rail into the pocket (m).</summary>
     public const double JawLength = 0.1;
-
-    /// <summary>The pockets' names, by pocket index.</summary>
-    public static IReadOnlyList<string> PocketNames { get; } =
-        ["head-left", "head-right", "side-left", "side-right", "foot-left", "foot-right"];
 
     private readonly CushionSegment[] _segments;
     private readonly CushionNose[] _noses;
@@ -104,8 +100,8 @@ public sealed class TableGeometry
     /// <summary>The name of a cushion or jaw feature, or "?" for an unknown index.</summary>
     public string CushionName(int feature) => (uint)feature < (uint)_cushionNames.Length ? _cushionNames[feature] : "?";
 
-    /// <summary>The name of a pocket, or "?" for an unknown index.</summary>
-    public static string PocketName(int pocket) => (uint)pocket < (uint)PocketNames.Count ? PocketNames[pocket] : "?";
+    /// <summary>The name of a pocket of the table, or "?" for an unknown index.</summary>
+    public string PocketName(int pocket) => Spec.Pockets.NameOf(pocket);
 
     /// <summary>Builds the geometry of a table for balls of radius <paramref name="ballRadius"/> (m).</summary>
     public static TableGeometry Build(TableSpec spec, double ballRadius)
@@ -115,51 +111,47 @@ public sealed class TableGeometry
         var segments = new List<CushionSegment>();
         var noses = new List<CushionNose>();
         var pockets = new List<PocketCircle>();
-        var names = new List<string> { "head", "foot", "left-head", "left-foot", "right-head", "right-foot" };
+        var names = new List<string>(CushionId.RailNames);
         var ids = new List<CushionId> { CushionId.Head, CushionId.Foot, CushionId.LeftHead, CushionId.LeftFoot, CushionId.RightHead, CushionId.RightFoot };
 
-        // How far each rail stops short of the corner and of the middle of a long rail.
-        double corner = spec.HasPockets ? spec.CornerPocketMouth / Math.Sqrt(2) : 0;
-        double side = spec.HasPockets ? spec.SidePocketMouth / 2 : 0;
+        // How far each rail stops short of a pocket at its corner or the middle of its long rail.
+        var set = spec.Pockets;
+        double Cut(int end, int side) => set.At(end, side)?.RailCut ?? 0;
 
         // Rail faces, walked so that each runs from its head or right end to its foot or left end.
         var rails = new (Vec3 A, Vec3 B, Vec3 N)[]
         {
-            (new Vec3(-hx, -hy + corner, 0), new Vec3(-hx, hy - corner, 0), new Vec3(1, 0, 0)),   // head
-            (new Vec3(hx, -hy + corner, 0), new Vec3(hx, hy - corner, 0), new Vec3(-1, 0, 0)),    // foot
-            (new Vec3(-hx + corner, hy, 0), new Vec3(-side, hy, 0), new Vec3(0, -1, 0)),          // left-head
-            (new Vec3(side, hy, 0), new Vec3(hx - corner, hy, 0), new Vec3(0, -1, 0)),            // left-foot
-            (new Vec3(-hx + corner, -hy, 0), new Vec3(-side, -hy, 0), new Vec3(0, 1, 0)),         // right-head
-            (new Vec3(side, -hy, 0), new Vec3(hx - corner, -hy, 0), new Vec3(0, 1, 0)),           // right-foot
+            (new Vec3(-hx, -hy + Cut(-1, -1), 0), new Vec3(-hx, hy - Cut(-1, 1), 0), new Vec3(1, 0, 0)),   // head
+            (new Vec3(hx, -hy + Cut(1, -1), 0), new Vec3(hx, hy - Cut(1, 1), 0), new Vec3(-1, 0, 0)),      // foot
+            (new Vec3(-hx + Cut(-1, 1), hy, 0), new Vec3(-Cut(0, 1), hy, 0), new Vec3(0, -1, 0)),          // left-head
+            (new Vec3(Cut(0, 1), hy, 0), new Vec3(hx - Cut(1, 1), hy, 0), new Vec3(0, -1, 0)),             // left-foot
+            (new Vec3(-hx + Cut(-1, -1), -hy, 0), new Vec3(-Cut(0, -1), -hy, 0), new Vec3(0, 1, 0)),       // right-head
+            (new Vec3(Cut(0, -1), -hy, 0), new Vec3(hx - Cut(1, -1), -hy, 0), new Vec3(0, 1, 0)),          // right-foot
         };
-        if (!spec.HasPockets)
-        {
-            for (int i = 0; i < rails.Length; i++)
-            {
-                segments.Add(new CushionSegment(rails[i].A, rails[i].B, rails[i].N, i));
-            }
-            return new TableGeometry(spec, segments, noses, pockets, names, ids);
-        }
 
-        // Each rail end at a pocket: (rail, which end, pocket, rail word of the jaw name).
-        var ends = new (int Rail, bool AtB, int Pocket, string RailWord)[]
+        // Each rail end at a pocket's place: (rail, which end, the place, rail word of the jaw name).
+        var ends = new (int Rail, bool AtB, int End, int Side, string RailWord)[]
         {
-            (0, true, 0, "head"), (0, false, 1, "head"),
-            (1, true, 4, "foot"), (1, false, 5, "foot"),
-            (2, false, 0, "left"), (2, true, 2, "head"),
-            (3, false, 2, "foot"), (3, true, 4, "left"),
-            (4, false, 1, "right"), (4, true, 3, "head"),
-            (5, false, 3, "foot"), (5, true, 5, "right"),
+            (0, true, -1, 1, "head"), (0, false, -1, -1, "head"),
+            (1, true, 1, 1, "foot"), (1, false, 1, -1, "foot"),
+            (2, false, -1, 1, "left"), (2, true, 0, 1, "head"),
+            (3, false, 0, 1, "foot"), (3, true, 1, 1, "left"),
+            (4, false, -1, -1, "right"), (4, true, 0, -1, "head"),
+            (5, false, 0, -1, "foot"), (5, true, 1, -1, "right"),
         };
         var trimmed = rails.Select(r => (r.A, r.B)).ToArray();
-        var jaws = Enumerable.Range(0, PocketNames.Count).Select(_ => new List<CushionSegment>(2)).ToArray();
-        foreach (var (rail, atB, pocket, railWord) in ends)
+        var jaws = Enumerable.Range(0, set.Count).Select(_ => new List<CushionSegment>(2)).ToArray();
+        foreach (var (rail, atB, end, side, railWord) in ends)
         {
+            int pocket = set.IndexAt(end, side);
+            if (pocket < 0)
+            {
+                continue;
+            }
             var (a, b, nIn) = rails[rail];
             var tip = atB ? b : a;
             var back = ((atB ? a : b) - tip).Normalized(); // along the rail, away from the pocket
-            bool isSide = pocket is 2 or 3;
-            double angle = (isSide ? spec.SideJawAngleDeg : spec.CornerJawAngleDeg) * Math.PI / 180;
+            double angle = set[pocket].JawAngleDeg * Math.PI / 180;
             // The jaw turns from the rail through the cushion body (away from the balls) by the
             // jaw angle measured from the direction back along the rail.
             var jaw = back * Math.Cos(angle) - nIn * Math.Sin(angle);
@@ -174,8 +166,8 @@ public sealed class TableGeometry
             var bisector = (back + jaw).Normalized();
             var noseCentre = tip + bisector * (nose / Math.Sin(angle / 2));
             int feature = names.Count;
-            names.Add($"{PocketNames[pocket]}-jaw-{railWord}");
-            ids.Add(CushionIds.Jaw((PocketId)pocket));
+            names.Add($"{set[pocket].Name}-jaw-{railWord}");
+            ids.Add(CushionId.Jaw(set.Id(pocket)));
             noses.Add(new CushionNose(noseCentre, nose, feature));
             var face = new CushionSegment(tip + jaw * tangent, tip + jaw * JawLength, jawNormal, feature);
             segments.Add(face);
@@ -192,19 +184,11 @@ public sealed class TableGeometry
         // channel a ball's centre can reach between the jaws is wider than the circle there (a
         // small ball in wide jaws): the circle then spans the channel, so no ball can roll past
         // it between the jaws and off the table.
-        var mouths = new (Vec3 Middle, Vec3 Out)[]
+        for (int i = 0; i < set.Count; i++)
         {
-            (new Vec3(-hx + corner / 2, hy - corner / 2, 0), new Vec3(-1, 1, 0).Normalized()),
-            (new Vec3(-hx + corner / 2, -hy + corner / 2, 0), new Vec3(-1, -1, 0).Normalized()),
-            (new Vec3(0, hy, 0), new Vec3(0, 1, 0)),
-            (new Vec3(0, -hy, 0), new Vec3(0, -1, 0)),
-            (new Vec3(hx - corner / 2, hy - corner / 2, 0), new Vec3(1, 1, 0).Normalized()),
-            (new Vec3(hx - corner / 2, -hy + corner / 2, 0), new Vec3(1, -1, 0).Normalized()),
-        };
-        for (int i = 0; i < mouths.Length; i++)
-        {
-            var centre = mouths[i].Middle + mouths[i].Out * ballRadius;
-            var across = new Vec3(-mouths[i].Out.Y, mouths[i].Out.X, 0);
+            var outward = set[i].Outward;
+            var centre = set[i].MouthMiddle(spec) + outward * ballRadius;
+            var across = new Vec3(-outward.Y, outward.X, 0);
             pockets.Add(new PocketCircle(centre, Math.Max(ballRadius, ChannelHalfWidth(jaws[i], centre, across, ballRadius)), i));
         }
         return new TableGeometry(spec, segments, noses, pockets, names, ids);

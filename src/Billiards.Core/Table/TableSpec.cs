@@ -9,11 +9,10 @@ namespace Billiards.Core.Table;
 /// <param name="Length">Playing length between the cushion noses (m).</param>
 /// <param name="Width">Playing width between the cushion noses (m).</param>
 /// <param name="CushionHeight">Height of the cushion nose's contact point above the bed (m).</param>
-/// <param name="HasPockets">False for a pocketless (carom-style) rectangle.</param>
-/// <param name="CornerPocketMouth">Corner pocket mouth, jaw tip to jaw tip (m).</param>
-/// <param name="SidePocketMouth">Side pocket mouth, jaw tip to jaw tip (m).</param>
-/// <param name="CornerJawAngleDeg">Angle between the two jaws of a corner pocket (deg, WPA 142).</param>
-/// <param name="SideJawAngleDeg">Angle between the two jaws of a side pocket (deg, WPA 104).</param>
+/// <param name="Pockets">
+/// The table's pockets, each with its name, place and mouth (<see cref="PocketSet.Six"/> for a
+/// pool or snooker table, <see cref="PocketSet.None"/> for a pocketless, carom-style rectangle).
+/// </param>
 /// <param name="SightOffset">Distance of the sights behind the cushion nose (m).</param>
 /// <param name="RailHeight">
 /// Height of the top of the rails above the bed (m): a ball in the air whose bottom is above it
@@ -28,11 +27,7 @@ public sealed record TableSpec(
     double Length,
     double Width,
     double CushionHeight,
-    bool HasPockets,
-    double CornerPocketMouth,
-    double SidePocketMouth,
-    double CornerJawAngleDeg,
-    double SideJawAngleDeg,
+    PocketSet Pockets,
     double SightOffset,
     double RailHeight = TableSpec.DefaultRailHeight,
     double JawNoseRadius = TableGeometry.NoseRadius)
@@ -44,8 +39,8 @@ public sealed record TableSpec(
     /// </summary>
     public const double DefaultRailHeight = 1.75 * 0.0254;
 
-    /// <summary>The table's pockets, in index order: the six of a pool or snooker table, none for a pocketless one.</summary>
-    public IReadOnlyList<PocketId> Pockets => HasPockets ? PocketIds.All : [];
+    /// <summary>False for a pocketless (carom-style) rectangle.</summary>
+    public bool HasPockets => Pockets.Count > 0;
 
     /// <summary>Default cushion contact height: 0.64 of the ball diameter (physics-standard-model.md).</summary>
     public const double DefaultCushionHeight = 0.64 * 2 * 0.028575;
@@ -69,14 +64,14 @@ public sealed record TableSpec(
         SnookerTable.Preset => SnookerTable.Spec,
         // The seed's table (seed 3.1): bed 258 x 140 less two 6.5 cm rails; pockets are cylinders of 11.2 cm.
         // The seed's cushion faces are 60 deg to the bed; its jaws 35 deg (corner) and 70 deg (side) to the rail.
-        "thesis" => new TableSpec(preset, 2.45, 1.27, DefaultCushionHeight, true, 0.112, 0.112, 142, 104, 0.0937),
-        "pocketless" => Pool(preset, 100 * Inch, 50 * Inch) with { HasPockets = false },
+        "thesis" => new TableSpec(preset, 2.45, 1.27, DefaultCushionHeight, PocketSet.Six(0.112, 0.112, 142, 104), 0.0937),
+        "pocketless" => Pool(preset, 100 * Inch, 50 * Inch) with { Pockets = PocketSet.None },
         _ => throw new ArgumentException($"unknown table preset '{preset}' (expected one of {string.Join(", ", PresetNames)})", nameof(preset)),
     };
 
     // WPA: corner mouth 4.5-4.625 in at 142 deg, side mouth 5-5.125 in at 104 deg; sights 93.7 mm behind the nose.
     private static TableSpec Pool(string preset, double length, double width) =>
-        new(preset, length, width, DefaultCushionHeight, true, 4.5625 * Inch, 5.0625 * Inch, 142, 104, 0.0937);
+        new(preset, length, width, DefaultCushionHeight, PocketSet.Six(4.5625 * Inch, 5.0625 * Inch, 142, 104), 0.0937);
 
     /// <summary>Half the length (m).</summary>
     public double HalfLength => Length / 2;

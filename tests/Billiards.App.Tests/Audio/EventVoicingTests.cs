@@ -14,7 +14,7 @@ public sealed class EventVoicingTests
         _ => "head rail",
     };
 
-    private static SimEvent Strike(double speed) => new(0, EventKind.CueStrike, BallId.Cue, BallId.Cue, -1, speed);
+    private static SimEvent Strike(double speed) => new(0, EventKind.CueStrike, PoolBalls.Cue, PoolBalls.Cue, -1, speed);
 
     [Theory]
     [InlineData(0.0, 0.0, SoundKind.CueStrike)]
@@ -35,7 +35,7 @@ public sealed class EventVoicingTests
     {
         var voicing = new EventVoicing(Names);
         var one = new BallId(1);
-        Assert.Equal(SoundKind.BallClick, voicing.Voice(new SimEvent(0.1, EventKind.BallBall, BallId.Cue, one, -1, 2), Vec3.Zero, null)!.Value.Kind);
+        Assert.Equal(SoundKind.BallClick, voicing.Voice(new SimEvent(0.1, EventKind.BallBall, PoolBalls.Cue, one, -1, 2), Vec3.Zero, null)!.Value.Kind);
         Assert.Equal(SoundKind.CushionThud, voicing.Voice(new SimEvent(0.2, EventKind.BallCushion, one, one, 0, 1), Vec3.Zero, null)!.Value.Kind);
         Assert.Equal(SoundKind.JawKnock, voicing.Voice(new SimEvent(0.3, EventKind.BallCushion, one, one, 1, 1), Vec3.Zero, null)!.Value.Kind);
     }
@@ -58,7 +58,7 @@ public sealed class EventVoicingTests
     public void TheSameShotGetsTheSameSeedsAndANewStrikeStartsAfresh()
     {
         var voicing = new EventVoicing(Names);
-        var click = new SimEvent(0.1, EventKind.BallBall, BallId.Cue, new BallId(1), -1, 2);
+        var click = new SimEvent(0.1, EventKind.BallBall, PoolBalls.Cue, new BallId(1), -1, 2);
         uint first = voicing.Voice(Strike(3), Vec3.Zero, null)!.Value.Seed;
         uint second = voicing.Voice(click, Vec3.Zero, null)!.Value.Seed;
         Assert.NotEqual(first, second);

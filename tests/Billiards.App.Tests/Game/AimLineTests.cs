@@ -150,7 +150,7 @@ public class CallPickerTests
         var r = (float)host.World.Physics.BallRadius;
         var ball = RenderMath.ToPixel(vp, new Vector3(0.635f, 0, r), 1280, 720)!.Value;
         var pockets = Billiards.Core.Table.TableGeometry.Build(scene.Table, r).Pockets.ToArray();
-        var footLeft = pockets.Single(p => PocketIds.FromIndex(p.Pocket) == PocketId.FootLeft);
+        var footLeft = pockets.Single(p => PoolPockets.Set.Id(p.Pocket) == PoolPockets.FootLeft);
         var pocket = RenderMath.ToPixel(vp, footLeft.Centre.ToVector3() with { Z = 0 }, 1280, 720)!.Value;
 
         window.MoveTo(ball.X, ball.Y);
@@ -160,13 +160,13 @@ public class CallPickerTests
         window.MoveTo(pocket.X, pocket.Y);
         window.Down();
         window.Up();
-        Assert.Equal(new Call(new BallId(1), PocketId.FootLeft), match.CurrentCall);
-        var footRight = pockets.Single(p => PocketIds.FromIndex(p.Pocket) == PocketId.FootRight);
+        Assert.Equal(new Call(new BallId(1), PoolPockets.FootLeft), match.CurrentCall);
+        var footRight = pockets.Single(p => PoolPockets.Set.Id(p.Pocket) == PoolPockets.FootRight);
         var other = RenderMath.ToPixel(vp, footRight.Centre.ToVector3() with { Z = 0 }, 1280, 720)!.Value;
         window.MoveTo(other.X, other.Y);
         window.Down();
         window.Up();
-        Assert.Equal(new Call(new BallId(1), PocketId.FootRight), match.CurrentCall);
+        Assert.Equal(new Call(new BallId(1), PoolPockets.FootRight), match.CurrentCall);
 
         // A drag that starts on a pocket orbits the camera and calls nothing.
         var left = RenderMath.ToPixel(vp, footLeft.Centre.ToVector3() with { Z = 0 }, 1280, 720)!.Value;
@@ -174,7 +174,7 @@ public class CallPickerTests
         window.Down();
         window.MoveTo(left.X + 40, left.Y);
         window.Up();
-        Assert.Equal(new Call(new BallId(1), PocketId.FootRight), match.CurrentCall);
+        Assert.Equal(new Call(new BallId(1), PoolPockets.FootRight), match.CurrentCall);
     }
 
     [Fact]
@@ -191,7 +191,7 @@ public class CallPickerTests
         var vp = RenderMath.ViewProjection(frame);
         var r = (float)host.World.Physics.BallRadius;
         var capture = Billiards.Core.Table.TableGeometry.Build(scene.Table, r).Pockets.ToArray()
-            .Single(p => PocketIds.FromIndex(p.Pocket) == PocketId.FootRight).Centre;
+            .Single(p => PoolPockets.Set.Id(p.Pocket) == PoolPockets.FootRight).Centre;
         // The hole as the table model cuts it: the middle of its floor's rim points round that pocket.
         var floor = TableModelGenerator.Generate(scene.Table).Single(m => m.Material.Name == "pocket_floor").Positions
             .Where(p => Math.Abs(p.X - capture.X) < 0.15 && Math.Abs(p.Y - capture.Y) < 0.15).ToList();
@@ -207,6 +207,6 @@ public class CallPickerTests
         window.MoveTo(holePixel.X, holePixel.Y);
         window.Down();
         window.Up();
-        Assert.Equal(new Call(new BallId(1), PocketId.FootRight), match.CurrentCall);
+        Assert.Equal(new Call(new BallId(1), PoolPockets.FootRight), match.CurrentCall);
     }
 }

@@ -12,9 +12,9 @@ public class AimPreviewTests
 
     private static readonly PocketCircle[] Pockets =
     [
-        new(new Vec3(1.27, 0.635, 0), 0.06, (int)PocketId.FootLeft),
-        new(new Vec3(1.27, -0.635, 0), 0.06, (int)PocketId.FootRight),
-        new(new Vec3(0, 0.66, 0), 0.06, (int)PocketId.SideLeft),
+        new(new Vec3(1.27, 0.635, 0), 0.06, PoolPockets.FootLeft.Index),
+        new(new Vec3(1.27, -0.635, 0), 0.06, PoolPockets.FootRight.Index),
+        new(new Vec3(0, 0.66, 0), 0.06, PoolPockets.SideLeft.Index),
     ];
 
     private static BallState At(double x, double y) => new() { Position = new Vec3(x, y, R) };
@@ -24,8 +24,8 @@ public class AimPreviewTests
     {
         // Cue at the origin aimed along +x; the 1 ball offset sideways by R (a half-ball hit), the 2 farther on.
         BallState[] balls = [At(0, 0), At(0.5, R), At(0.9, 0)];
-        BallId[] ids = [BallId.Cue, new(1), new(2)];
-        var preview = AimPreview.Compute(balls, ids, 0, new Vec3(1, 0, 0), R, Pockets);
+        BallId[] ids = [PoolBalls.Cue, new(1), new(2)];
+        var preview = AimPreview.Compute(balls, ids, 0, new Vec3(1, 0, 0), R, Pockets, PoolPockets.Set);
         Assert.Equal(new BallId(1), preview.Ball);
         // Contact when the centres are 2R apart: x = 0.5 - sqrt(4R^2 - R^2) = 0.5 - sqrt(3) R.
         Assert.Equal(0.5 - Math.Sqrt(3) * R, preview.Ghost.X, 12);
@@ -38,11 +38,11 @@ public class AimPreviewTests
     public void The_easiest_pocket_is_the_one_the_object_ball_heads_for_and_a_clear_path_has_no_ball()
     {
         var heading = new Vec3(1, 1, 0).Normalized();
-        Assert.Equal(PocketId.FootLeft, AimPreview.EasiestPocket(new Vec3(1.0, 0.365, 0), heading, Pockets));
-        Assert.Equal(PocketId.FootRight, AimPreview.EasiestPocket(new Vec3(1.0, -0.365, 0), new Vec3(1, -1, 0).Normalized(), Pockets));
+        Assert.Equal(PoolPockets.FootLeft, AimPreview.EasiestPocket(new Vec3(1.0, 0.365, 0), heading, Pockets, PoolPockets.Set));
+        Assert.Equal(PoolPockets.FootRight, AimPreview.EasiestPocket(new Vec3(1.0, -0.365, 0), new Vec3(1, -1, 0).Normalized(), Pockets, PoolPockets.Set));
 
         BallState[] balls = [At(0, 0), At(0.5, 0.2)];
-        var miss = AimPreview.Compute(balls, [BallId.Cue, new(1)], 0, new Vec3(1, 0, 0), R, Pockets);
+        var miss = AimPreview.Compute(balls, [PoolBalls.Cue, new(1)], 0, new Vec3(1, 0, 0), R, Pockets, PoolPockets.Set);
         Assert.Null(miss.Ball);
         Assert.Equal(PocketId.None, miss.Pocket);
     }

@@ -79,7 +79,7 @@ public class FrameInterpolationTests
         var frame = game.Frame(0.010);             // 0.010 / (1/256) = 2.56: 2 steps, alpha 0.56
         Assert.Equal(2, game.Simulation.StepCount);
         Assert.Equal(0.56, game.Host.Loop.Alpha, 9);
-        var cue = frame.Balls.Single(b => b.Id.IsCue);
+        var cue = frame.Balls.Single(b => PoolBalls.IsCue(b.Id));
         // previous = x0 + 2 dt * 1, current = x0 + 2 dt * 2, drawn = x0 + 2 dt * 1.56
         Assert.Equal(x0 + 2 * dt * 1.56, cue.Position.X, 5);
         Assert.Equal((float)(x0 + 2 * 2 * dt), (float)game.Simulation.State[0].Position.X, 6);
@@ -91,7 +91,7 @@ public class FrameInterpolationTests
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
         game.RunUntilRest();
         var frame = game.Frame(0.001);
-        var cue = frame.Balls.Single(b => b.Id.IsCue);
+        var cue = frame.Balls.Single(b => PoolBalls.IsCue(b.Id));
         Assert.Equal((float)game.Simulation.State[0].Position.X, cue.Position.X, 6);
     }
 }

@@ -67,7 +67,7 @@ public class GameSceneTests
         game.Simulation.Pocket(new BallId(1));
         var frame = game.Frame();
         Assert.False(frame.Balls.Single(b => b.Id.Value == 1).Visible);
-        Assert.True(frame.Balls.Single(b => b.Id.IsCue).Visible);
+        Assert.True(frame.Balls.Single(b => PoolBalls.IsCue(b.Id)).Visible);
         game.RunUntilRest();
         Assert.False(game.Frame().Balls.Single(b => b.Id.Value == 1).Visible);
     }
@@ -77,7 +77,7 @@ public class GameSceneTests
     {
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
         game.Frame();
-        game.Simulation.Pocket(BallId.Cue);
+        game.Simulation.Pocket(PoolBalls.Cue);
         game.RunUntilRest();
         var physics = game.World.Physics;
         Assert.True(physics.BallInHand);
@@ -87,7 +87,7 @@ public class GameSceneTests
         Assert.Equal(0, physics.CueBallPosition.Y, 9);
         Assert.Equal(InputMode.Move, game.World.InputModes.Mode);
         var frame = game.Frame();
-        Assert.True(frame.Balls.Single(b => b.Id.IsCue).Visible);
+        Assert.True(frame.Balls.Single(b => PoolBalls.IsCue(b.Id)).Visible);
         Assert.True(frame.Cue.Visible);
         Assert.Contains(frame.Hud!.Lines, l => l.StartsWith("Ball in hand", StringComparison.Ordinal));
 
@@ -100,8 +100,8 @@ public class GameSceneTests
         // The next strike plays from there: a new simulation with the cue ball at the placement.
         physics.Strike(new ShotSpec(1.0, 0, 0, 0, 0));
         Assert.False(physics.BallInHand);
-        Assert.Equal(0.3, game.Simulation.State[game.Simulation.IndexOf(BallId.Cue)].Position.X, 9);
-        Assert.False(game.Simulation.State[game.Simulation.IndexOf(BallId.Cue)].IsPocketed);
+        Assert.Equal(0.3, game.Simulation.State[game.Simulation.IndexOf(PoolBalls.Cue)].Position.X, 9);
+        Assert.False(game.Simulation.State[game.Simulation.IndexOf(PoolBalls.Cue)].IsPocketed);
     }
 
     [Fact]
@@ -114,7 +114,7 @@ public class GameSceneTests
         bool returned = false;
         physics.CueBallReturned += _ => returned = true;
         game.Frame();
-        game.Simulation.Pocket(BallId.Cue);
+        game.Simulation.Pocket(PoolBalls.Cue);
         game.RunUntilRest();
         Assert.False(returned);
         Assert.False(physics.BallInHand);

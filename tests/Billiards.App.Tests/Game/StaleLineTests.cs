@@ -42,7 +42,7 @@ public class StaleLineTests
     {
         string safety = ComputerPlayerNode.HintLine(Hint(ShotKind.Safety, PocketId.None, 0, Call.Safety));
         Assert.Equal("Hint: a safety at 2.5 m/s; Space shoots.", safety);
-        string pot = ComputerPlayerNode.HintLine(Hint(ShotKind.Direct, PocketId.FootRight, 0.83, new Call(new BallId(3), PocketId.FootRight)));
+        string pot = ComputerPlayerNode.HintLine(Hint(ShotKind.Direct, PoolPockets.FootRight, 0.83, new Call(new BallId(3), PoolPockets.FootRight)));
         Assert.Equal("Hint: the 3 in the foot-right pocket at 2.5 m/s (pots 83 % of the time); Space shoots.", pot);
     }
 

@@ -75,6 +75,6 @@ public class TargetViewTests
         var nearest = TargetViewNode.NearestTarget(match, game.World.Physics)!.Value;
         Assert.Equal(nearest.Id, view.LastTarget);
         Assert.Equal(AimTo(game, nearest.Id), match.AimDegrees, 9);
-        Assert.Equal(15, game.World.Physics.Simulation.Ids.Count(id => !id.IsCue));
+        Assert.Equal(15, game.World.Physics.Simulation.Ids.Count(id => !PoolBalls.IsCue(id)));
     }
 }

@@ -196,7 +196,7 @@ public class InputModeNodeTests
 
         // The strike hands the placement to Core (a new simulation with the ball there).
         Stroke(game, 1.0);
-        var cue = game.Simulation.State[game.Simulation.IndexOf(BallId.Cue)];
+        var cue = game.Simulation.State[game.Simulation.IndexOf(PoolBalls.Cue)];
         Assert.Single(game.Simulation.Strikes);
         Assert.Equal(maxX, cue.Position.X, 12);
         Assert.Equal(ball.Y - 0.2, cue.Position.Y, 9);

@@ -27,7 +27,7 @@ public class OffscreenRenderTests(GlFixture gl, ITestOutputHelper output)
             Eye = new Vector3(-1.7f, 0, 1.3f),
             Target = new Vector3(0.15f, 0, 0),
         };
-        frame.Balls.Add(new BallVisual(BallId.Cue, new Vector3(-0.5f, 0, R), s_sideways));
+        frame.Balls.Add(new BallVisual(PoolBalls.Cue, new Vector3(-0.5f, 0, R), s_sideways));
         frame.Balls.Add(new BallVisual(new BallId(1), new Vector3(0.3f, -0.3f, R), s_sideways));
         frame.Balls.Add(new BallVisual(new BallId(2), new Vector3(0.3f, 0, R), s_sideways));
         frame.Balls.Add(new BallVisual(new BallId(3), new Vector3(0.3f, 0.3f, R), s_sideways));

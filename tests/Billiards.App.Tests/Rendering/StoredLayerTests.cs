@@ -44,7 +44,7 @@ public sealed class StoredLayerTests : IDisposable
             Target = new Vector3(0.15f, 0, 0),
             Hud = new HudInfo(["Player 1: open table", "FPS: 60"], Vector2.Zero, ShowHelp: true, HelpLines: ["H or F1  help", "Escape   menu"]),
         };
-        frame.Balls.Add(new BallVisual(BallId.Cue, new Vector3(-0.5f, 0, R), Quaternion.Identity));
+        frame.Balls.Add(new BallVisual(PoolBalls.Cue, new Vector3(-0.5f, 0, R), Quaternion.Identity));
         frame.Balls.Add(new BallVisual(new BallId(1), oneAt, Quaternion.Identity));
         frame.Balls.Add(new BallVisual(new BallId(8), new Vector3(0.7f, 0.1f, R), Quaternion.Identity));
         return frame;

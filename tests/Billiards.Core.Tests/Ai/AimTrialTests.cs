@@ -59,7 +59,7 @@ public class AimTrialTests
         // A cap of 0 ms is passed before the first trial: no thread takes a variation, and the one
         // simulation left is the chosen shot's without error. Without the cap the trials alone
         // would be 13 for each of the hundreds of pot variations of level 5.
-        var position = StraightIn(PocketId.FootLeft, 0.5, 0.6);
+        var position = StraightIn(PoolPockets.FootLeft, 0.5, 0.6);
         var state = new GameState(GameRules.NineBall) { Shot = 3 };
 
         var capped = Planner.Decide(state, position, SkillLevel.Of(5), new PlannerBudget(0, 2), 1);
@@ -86,18 +86,18 @@ public class AimTrialTests
     {
         var o = new Vec3(ox, Pool.HalfWidth - Params.R - gap, Params.R);
         var cue = new Vec3(cx, cy, Params.R);
-        var position = new TablePosition([(BallId.Cue, cue), (new BallId(9), o)]);
+        var position = new TablePosition([(PoolBalls.Cue, cue), (new BallId(9), o)], PoolBalls.Cue);
         var state = new GameState(GameRules.NineBall) { Shot = 3 };
 
         var decision = Planner.Decide(state, position, SkillLevel.Of(5), new PlannerBudget(60_000, 2), 5);
         Assert.Equal(ShotKind.Direct, decision.Kind);
-        Assert.Equal(PocketId.FootLeft, decision.Pocket);
+        Assert.Equal(PoolPockets.FootLeft, decision.Pocket);
 
         // The potting range around the chosen aim, to 0.01 deg, by simulating without error.
         bool Pots(double deg)
         {
             var record = Simulate(position, decision.Shot with { AimDeg = deg });
-            return record.PocketedOnShot(new BallId(9)) == PocketId.FootLeft && !record.IsPocketedAfter(BallId.Cue);
+            return record.PocketedOnShot(new BallId(9)) == PoolPockets.FootLeft && !record.IsPocketedAfter(PoolBalls.Cue);
         }
         Assert.True(Pots(decision.Shot.AimDeg));
         double lo = decision.Shot.AimDeg, hi = decision.Shot.AimDeg;

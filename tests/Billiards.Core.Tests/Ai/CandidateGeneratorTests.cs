@@ -13,13 +13,13 @@ public class CandidateGeneratorTests
     // Seven stripes spread over the table and the cue ball in the middle: every one is in view.
     private static TablePosition OpenTable()
     {
-        var balls = new List<(BallId, Vec3)> { (BallId.Cue, new Vec3(0, 0, Params.R)) };
+        var balls = new List<(BallId, Vec3)> { (PoolBalls.Cue, new Vec3(0, 0, Params.R)) };
         for (int i = 0; i < 7; i++)
         {
             double a = 2 * Math.PI * i / 7;
             balls.Add((new BallId(9 + i), new Vec3(0.5 * Math.Cos(a), 0.35 * Math.Sin(a), Params.R)));
         }
-        return new TablePosition(balls);
+        return new TablePosition(balls, PoolBalls.Cue);
     }
 
     [Fact]
@@ -41,8 +41,8 @@ public class CandidateGeneratorTests
 /// <summary>How the planner declares the shot it chose.</summary>
 public class DeclarationTests
 {
-    private static readonly Candidate Pot = new(ShotKind.Direct, new BallId(3), new BallId(3), PocketId.FootLeft, Vec3.Zero, new Vec3(1, 0, 0), Vec3.Zero, 2, 0.9);
-    private static readonly Call Called = new(new BallId(3), PocketId.FootLeft);
+    private static readonly Candidate Pot = new(ShotKind.Direct, new BallId(3), new BallId(3), PoolPockets.FootLeft, Vec3.Zero, new Vec3(1, 0, 0), Vec3.Zero, 2, 0.9);
+    private static readonly Call Called = new(new BallId(3), PoolPockets.FootLeft);
 
     [Fact]
     public void APotThatNoneOfItsSimulationsMadeIsPlayedAndCalledAsASafety()
@@ -58,8 +58,8 @@ public class DeclarationTests
     [Fact]
     public void APotThatSomeSimulationMadeOrThatHadTooFewSimulationsStaysAPot()
     {
-        Assert.Equal((ShotKind.Direct, PocketId.FootLeft, (Call?)Called), ShotPlanner.Declared(Pot, Called, pots: 1, simulations: 73));
-        Assert.Equal((ShotKind.Direct, PocketId.FootLeft, (Call?)Called), ShotPlanner.Declared(Pot, Called, 0, ShotPlanner.SafetyEvidence - 1));
+        Assert.Equal((ShotKind.Direct, PoolPockets.FootLeft, (Call?)Called), ShotPlanner.Declared(Pot, Called, pots: 1, simulations: 73));
+        Assert.Equal((ShotKind.Direct, PoolPockets.FootLeft, (Call?)Called), ShotPlanner.Declared(Pot, Called, 0, ShotPlanner.SafetyEvidence - 1));
         // A kick without a pocket is a safety already and stays what it is.
         var kick = Pot with { Kind = ShotKind.Kick, Pocket = PocketId.None };
         Assert.Equal((ShotKind.Kick, PocketId.None, (Call?)Call.Safety), ShotPlanner.Declared(kick, Call.Safety, 0, 73));
@@ -85,7 +85,7 @@ public class OpponentJudgementTests
     public void LeavingAnOpenShotCostsAStrongPlayerMoreThanAWeakOne()
     {
         // A legal miss that leaves the opponent a long cut: level 5 fears it more than level 3.
-        var position = StraightIn(PocketId.FootLeft, 1.2, 0.8);
+        var position = StraightIn(PoolPockets.FootLeft, 1.2, 0.8);
         var state = new GameState(GameRules.NineBall) { Shot = 4 };
         var miss = new Ruling(true, [], [], false, BallInHand.None, [], [], false, null, "", state with { Shooter = 1, Shot = 5 });
         double strong = Planner.Score(state, miss, position, SkillLevel.Of(5));

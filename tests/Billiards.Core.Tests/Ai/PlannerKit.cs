@@ -23,20 +23,20 @@ internal static class PlannerKit
     {
         var aim = Planner.Table.AimPoint(pocket);
         var dir = (aim - new Vec3(0, 0, aim.Z)).XY.Normalized();
-        if (pocket is PocketId.SideLeft or PocketId.SideRight)
+        if (pocket == PoolPockets.SideLeft || pocket == PoolPockets.SideRight)
         {
             dir = new Vec3(0, Math.Sign(aim.Y), 0);
         }
         var o = (aim - dir * toPocket) with { Z = Params.R };
         var cue = (o - dir * cueGap) with { Z = Params.R };
         var other = far ?? new Vec3(-Pool.HalfLength + 0.2, -Math.Sign(o.Y == 0 ? 1 : o.Y) * (Pool.HalfWidth - 0.1), Params.R);
-        return new TablePosition([(BallId.Cue, cue), (new BallId(1), o), (new BallId(2), other)]);
+        return new TablePosition([(PoolBalls.Cue, cue), (new BallId(1), o), (new BallId(2), other)], PoolBalls.Cue);
     }
 
     /// <summary>Simulates a shot from a position; returns the record.</summary>
     public static ShotRecord Simulate(TablePosition position, ShotSpec shot, Vec3? place = null)
     {
-        var start = place is { } p ? position.With(BallId.Cue, p) : position;
+        var start = place is { } p ? position.With(PoolBalls.Cue, p) : position;
         var sim = start.CreateSimulation(Pool, Params);
         sim.Strike(shot);
         sim.AdvanceTo(120);

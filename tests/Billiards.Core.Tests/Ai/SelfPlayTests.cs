@@ -78,7 +78,7 @@ public class SelfPlayTests
         Assert.True(last.Ruling.GameOver);
         Assert.Equal(w, last.Before.Shooter);
         // A point per ball legally pocketed: the winning shot brings the winner to the target.
-        int points = last.Before.Score[w] + last.Ruling.Pocketed.Count(b => !b.IsCue);
+        int points = last.Before.Score[w] + last.Ruling.Pocketed.Count(b => !PoolBalls.IsCue(b));
         Assert.True(last.Ruling.Legal);
         Assert.True(last.Before.Score[w] < 8 && points >= 8, $"winner's score {last.Before.Score[w]} + {points - last.Before.Score[w]}");
         // Every shot after the break is called (14.1 is call-shot).

@@ -16,25 +16,25 @@ public class ShotPlannerTests
     public void AStraightInPotIsChosenAndItsShotPotsTheBall()
     {
         // The 9 alone, straight in: any pot wins, so nothing but the pot itself counts.
-        var line = StraightIn(PocketId.FootLeft, 0.5, 0.6);
+        var line = StraightIn(PoolPockets.FootLeft, 0.5, 0.6);
         var nine = new BallId(9);
-        var position = new TablePosition([(BallId.Cue, line.Cue!.Value), (nine, line.Positions[line.IndexOf(new BallId(1))])]);
+        var position = new TablePosition([(PoolBalls.Cue, line.Cue!.Value), (nine, line.Positions[line.IndexOf(new BallId(1))])], PoolBalls.Cue);
         var decision = Planner.Decide(NineBall, position, SkillLevel.Of(5), new PlannerBudget(60_000, 2), 11);
 
         Assert.Equal(nine, decision.Target);
         Assert.Equal(ShotKind.Direct, decision.Kind);
-        Assert.Equal(PocketId.FootLeft, decision.Pocket);
+        Assert.Equal(PoolPockets.FootLeft, decision.Pocket);
         Assert.Null(decision.Place);
         var record = Simulate(position, decision.Shot);
-        Assert.Equal(PocketId.FootLeft, record.PocketedOnShot(nine));
-        Assert.False(record.IsPocketedAfter(BallId.Cue));
+        Assert.Equal(PoolPockets.FootLeft, record.PocketedOnShot(nine));
+        Assert.False(record.IsPocketedAfter(PoolBalls.Cue));
         Assert.True(decision.ExpectedPot > 0.9, $"expected pot {decision.ExpectedPot}");
     }
 
     [Fact]
     public void EightBallCallsTheBallAndPocketItPlays()
     {
-        var position = StraightIn(PocketId.SideLeft, 0.4, 0.5);
+        var position = StraightIn(PoolPockets.SideLeft, 0.4, 0.5);
         var state = new GameState(GameRules.EightBall) { Shot = 2 };
         var decision = Planner.Decide(state, position, SkillLevel.Of(4), new PlannerBudget(60_000, 2), 3);
 
@@ -47,7 +47,7 @@ public class ShotPlannerTests
     public void TheSameSeedGivesTheSameDecisionOnOneThreadAndOnTwo()
     {
         var state = new GameState(GameRules.EightBall) { Shot = 0 };
-        var position = TablePosition.Rack(new Billiards.Core.Setup.RackSpec(Billiards.Core.Setup.RackGame.EightBall, 5), Pool, Params.R);
+        var position = TablePosition.Rack(new Billiards.Core.Setup.RackSpec(Billiards.Core.Setup.RackGame.EightBall, 5), Pool, Params.R, PoolBalls.Cue);
         var broken = Simulate(position, new Cue.ShotSpec(7, 0.3, 0, -0.2));
         var after = TablePosition.After(broken);
         var open = new GameState(GameRules.EightBall) { Shot = 1, BallInHand = after.Cue is null ? BallInHand.Table : BallInHand.None };
@@ -68,7 +68,7 @@ public class ShotPlannerTests
     [Fact]
     public async Task TheSearchRunsOnTheCallersSchedulerAndDecidesAsItDoesOnThePool()
     {
-        var line = StraightIn(PocketId.FootLeft, 0.5, 0.6);
+        var line = StraightIn(PoolPockets.FootLeft, 0.5, 0.6);
         var state = NineBall;
         var plain = Planner.Decide(state, line, SkillLevel.Of(3), new PlannerBudget(600_000, 2), 5);
 
@@ -104,12 +104,12 @@ public class ShotPlannerTests
     [Fact]
     public void BallInHandPlacesTheCueBallLegallyAndPots()
     {
-        var position = StraightIn(PocketId.HeadRight, 0.4, 0.5).Without(BallId.Cue);
+        var position = StraightIn(PoolPockets.HeadRight, 0.4, 0.5).Without(PoolBalls.Cue);
         var state = NineBall with { BallInHand = BallInHand.Table };
         var decision = Planner.Decide(state, position, SkillLevel.Of(5), new PlannerBudget(60_000, 2), 9);
 
         var place = Assert.NotNull(decision.Place);
-        Assert.True(position.CanPlace(place, BallInHand.Table, Pool, Params.R, BallId.Cue));
+        Assert.True(position.CanPlace(place, BallInHand.Table, Pool, Params.R, PoolBalls.Cue));
         var record = Simulate(position, decision.Shot, place);
         var ruling = Referee.For(GameRules.NineBall, Pool, Params.R).Judge(state with { Placement = place }, record);
         Assert.True(ruling.Legal);
@@ -119,7 +119,7 @@ public class ShotPlannerTests
     [Fact]
     public void TheBreakIsPlacedBehindTheHeadString()
     {
-        var position = TablePosition.Rack(new Billiards.Core.Setup.RackSpec(Billiards.Core.Setup.RackGame.NineBall, 1), Pool, Params.R);
+        var position = TablePosition.Rack(new Billiards.Core.Setup.RackSpec(Billiards.Core.Setup.RackGame.NineBall, 1), Pool, Params.R, PoolBalls.Cue);
         var decision = Planner.Decide(new GameState(GameRules.NineBall), position, SkillLevel.Of(2), new PlannerBudget(60_000, 2), 1);
 
         Assert.Equal(ShotKind.Break, decision.Kind);
@@ -136,7 +136,7 @@ public class ShotPlannerTests
         // professional misses almost none of these.
         var level = SkillLevel.Of(5);
         int made = 0, total = 0;
-        PocketId[] pockets = [PocketId.FootLeft, PocketId.FootRight, PocketId.HeadLeft, PocketId.SideLeft, PocketId.SideRight, PocketId.HeadRight];
+        PocketId[] pockets = [PoolPockets.FootLeft, PoolPockets.FootRight, PoolPockets.HeadLeft, PoolPockets.SideLeft, PoolPockets.SideRight, PoolPockets.HeadRight];
         for (int i = 0; i < 12; i++)
         {
             var position = StraightIn(pockets[i % 6], 0.3 + 0.1 * (i % 7), 0.3 + 0.05 * (i % 5));
@@ -160,7 +160,7 @@ public class ShotPlannerTests
         double a = 30 * Math.PI / 180;
         var u = new Billiards.Core.Mathematics.Vec3(Math.Cos(a), Math.Sin(a), 0);
         var ghost = o - u * (2 * Params.R);
-        var c = new Candidate(ShotKind.Direct, new BallId(1), new BallId(1), PocketId.FootLeft, o, u, ghost, 2, 1);
+        var c = new Candidate(ShotKind.Direct, new BallId(1), new BallId(1), PoolPockets.FootLeft, o, u, ghost, 2, 1);
         var d = ghost - cue;
         double plain = Math.Atan2(d.Y, d.X) * 180 / Math.PI;
         double corrected = Planner.AimFor(c, cue, 0, 0);
@@ -186,14 +186,14 @@ public class PositionPlayTests
         // The 1 in the middle of the table; a stripe on the line to each of the six pockets, 0.15 m out.
         var table = Planner.Table;
         var one = new Vec3(0.2, 0.1, Params.R);
-        var balls = new List<(BallId, Vec3)> { (BallId.Cue, new Vec3(-0.9, -0.4, Params.R)), (new BallId(1), one), (new BallId(8), new Vec3(-1.0, 0.45, Params.R)) };
+        var balls = new List<(BallId, Vec3)> { (PoolBalls.Cue, new Vec3(-0.9, -0.4, Params.R)), (new BallId(1), one), (new BallId(8), new Vec3(-1.0, 0.45, Params.R)) };
         int id = 9;
-        foreach (var pocket in PocketIds.All)
+        foreach (var pocket in PoolPockets.All)
         {
             var u = (table.AimPoint(pocket) - one).XY.Normalized();
             balls.Add((new BallId(id++), (one + u * 0.15) with { Z = Params.R }));
         }
-        var blocked = new TablePosition(balls);
+        var blocked = new TablePosition(balls, PoolBalls.Cue);
         Assert.Equal(1, table.ProblemBalls(blocked, Solids));
 
         // Take away the stripe towards one pocket: the 1 has a way again.
@@ -206,12 +206,12 @@ public class PositionPlayTests
     {
         // A long straight-in shot on the 1 and a shorter one on the 2 just behind the cue ball: the
         // 2 is the best next shot, the 1 the next-but-one choice. Without the 2, the 1 is all there is.
-        var line = StraightIn(PocketId.FootLeft, 1.0, 1.0);
+        var line = StraightIn(PoolPockets.FootLeft, 1.0, 1.0);
         var cue = line.Cue!.Value;
         var one = line.Positions[line.IndexOf(new BallId(1))];
         var eight = new Vec3(-1.1, 0.5, Params.R);
-        var two = new TablePosition([(BallId.Cue, cue), (new BallId(1), one), (new BallId(2), new Vec3(cue.X - 0.3, cue.Y, Params.R)), (new BallId(8), eight)]);
-        var single = new TablePosition([(BallId.Cue, cue), (new BallId(1), one), (new BallId(8), eight)]);
+        var two = new TablePosition([(PoolBalls.Cue, cue), (new BallId(1), one), (new BallId(2), new Vec3(cue.X - 0.3, cue.Y, Params.R)), (new BallId(8), eight)], PoolBalls.Cue);
+        var single = new TablePosition([(PoolBalls.Cue, cue), (new BallId(1), one), (new BallId(8), eight)], PoolBalls.Cue);
         double sigma = PlannerTable.ReferenceAimStdDeg;
         var table = Planner.Table;
 

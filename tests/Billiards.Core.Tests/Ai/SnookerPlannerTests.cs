@@ -19,6 +19,10 @@ public class SnookerPlannerTests
     private static readonly BallId Blue = BallSet.Colour("blue");
     private static readonly BallId Black = BallSet.Colour("black");
     private static readonly BallId Red = BallSet.Snooker.Ids.First(SnookerRuleset.IsRed);
+    private static readonly BallId Cue = BallSet.Snooker.CueBalls[0];
+    private static readonly PocketId FootLeft = Pocket("foot-left");
+
+    private static PocketId Pocket(string name) => Table.Pockets.TryParse(name, out var p) ? p : throw new ArgumentException(name);
 
     private static ShotRecord Simulate(TablePosition position, ShotSpec shot)
     {
@@ -31,11 +35,11 @@ public class SnookerPlannerTests
     // The blue straight in to the top-left corner from 0.4 m with the cue ball 0.5 m behind it, the black on its spot.
     private static TablePosition BlueStraightIn()
     {
-        var aim = Planner.Table.AimPoint(PocketId.FootLeft);
+        var aim = Planner.Table.AimPoint(FootLeft);
         var dir = (aim - new Vec3(0, 0, aim.Z)).XY.Normalized();
         var blue = (aim - (dir * 0.4)) with { Z = R };
         var cue = (blue - (dir * 0.5)) with { Z = R };
-        return new TablePosition([(BallId.Cue, cue), (Blue, blue), (Black, SnookerTable.Spot(Table, "black", R)), (BallSet.Colour("yellow"), SnookerTable.Spot(Table, "yellow", R))]);
+        return new TablePosition([(Cue, cue), (Blue, blue), (Black, SnookerTable.Spot(Table, "black", R)), (BallSet.Colour("yellow"), SnookerTable.Spot(Table, "yellow", R))], Cue);
     }
 
     [Fact]
@@ -58,7 +62,7 @@ public class SnookerPlannerTests
     [Fact]
     public void TheBreakOffIsPlayedFromTheDOffTheSideOfThePack()
     {
-        var position = TablePosition.Rack(new RackSpec(RackGame.Snooker, 3), Table, R).Without(BallId.Cue);
+        var position = TablePosition.Rack(new RackSpec(RackGame.Snooker, 3), Table, R, Cue).Without(Cue);
         var state = new GameState(GameRules.Snooker);
         var decision = Planner.Decide(state, position, SkillLevel.Of(3), new PlannerBudget(60_000, 2), 9);
 
@@ -67,7 +71,7 @@ public class SnookerPlannerTests
         Assert.True(SnookerRuleset.IsRed(decision.Target));
         Assert.Null(decision.Call);
         // Played as planned it strikes a red first and leaves the cue ball on the table: no foul.
-        var record = Simulate(position.With(BallId.Cue, decision.Place.Value), decision.Shot);
+        var record = Simulate(position.With(Cue, decision.Place.Value), decision.Shot);
         var ruling = Referee.For(GameRules.Snooker, Table, R).Judge(state with { Placement = decision.Place }, record);
         Assert.True(ruling.Legal, ruling.Message);
     }
@@ -75,7 +79,7 @@ public class SnookerPlannerTests
     // A miss: the cue ball, with a full view of the only red, rolled gently away from it.
     private static (Ruling Ruling, TablePosition After) Miss(Vec3 red, Vec3 cue)
     {
-        var position = new TablePosition([(BallId.Cue, cue), (Red, red), (Black, SnookerTable.Spot(Table, "black", R))]);
+        var position = new TablePosition([(Cue, cue), (Red, red), (Black, SnookerTable.Spot(Table, "black", R))], Cue);
         var state = new GameState(GameRules.Snooker) { Shot = 4, BallOn = SnookerRuleset.Red };
         var away = Math.Atan2(cue.Y - red.Y, cue.X - red.X) * 180 / Math.PI;
         var record = Simulate(position, new ShotSpec(0.3, away, 0, 0));
@@ -88,7 +92,7 @@ public class SnookerPlannerTests
     public void AfterAMissThatLeavesAnEasyPotTheComputerPlaysOn()
     {
         // The red 0.3 m from the top-left corner's mouth, the cue ball straight behind it.
-        var aim = Planner.Table.AimPoint(PocketId.FootLeft);
+        var aim = Planner.Table.AimPoint(FootLeft);
         var dir = (aim - new Vec3(0, 0, aim.Z)).XY.Normalized();
         var red = (aim - (dir * 0.3)) with { Z = R };
         var (ruling, after) = Miss(red, (red - (dir * 0.45)) with { Z = R });
@@ -110,8 +114,8 @@ public class SnookerPlannerTests
         // The red behind the blue on the cue ball's line, the balls touching nearly: no part of the red is seen.
         var cue = new Vec3(-0.6, 0, R);
         var blue = new Vec3(0, 0, R);
-        var hidden = new TablePosition([(BallId.Cue, cue), (Blue, blue), (Red, new Vec3(2.05 * R, 0, R))]);
-        var open = new TablePosition([(BallId.Cue, cue), (Blue, blue), (Red, new Vec3(2.05 * R, 0.4, R))]);
+        var hidden = new TablePosition([(Cue, cue), (Blue, blue), (Red, new Vec3(2.05 * R, 0, R))], Cue);
+        var open = new TablePosition([(Cue, cue), (Blue, blue), (Red, new Vec3(2.05 * R, 0.4, R))], Cue);
         var state = new GameState(GameRules.Snooker) { Shot = 3, BallOn = SnookerRuleset.Red };
 
         Assert.True(Planner.Table.Snookered(hidden, state));

@@ -33,7 +33,7 @@ public class PlacementTests
     }
 
     private static BallState State(Simulation sim, string id) =>
-        sim.Balls[sim.IndexOf(BallId.TryParse(id, out var b) ? b : throw new ArgumentException(id))];
+        sim.Balls[sim.IndexOf(BallSet.Pool.TryParse(id, out var b) ? b : throw new ArgumentException(id))];
 
     private static void AssertAt(Simulation sim, string id, double x, double y)
     {
@@ -50,7 +50,7 @@ public class PlacementTests
     public void APlacedCueBallIsStruckFromWhereItWasPlaced(string model)
     {
         var sim = Create(model, ("cue", -0.6, 0), ("1", 0.3, 0.2));
-        sim.PlaceBall(BallId.Cue, new Vec3(-0.2, 0.2, 0));
+        sim.PlaceBall(PoolBalls.Cue, new Vec3(-0.2, 0.2, 0));
         AssertAt(sim, "cue", -0.2, 0.2);
 
         // Straight along +x into the 1, 0.5 m away.
@@ -59,7 +59,7 @@ public class PlacementTests
         Assert.True(sim.IsAtRest);
         var hit = sim.Events.AsSpan().ToArray().Where(e => e.Kind == EventKind.BallBall).ToList();
         Assert.NotEmpty(hit);
-        Assert.Equal((BallId.Cue, new BallId(1)), (hit[0].A, hit[0].B));
+        Assert.Equal((PoolBalls.Cue, new BallId(1)), (hit[0].A, hit[0].B));
         // A centred hit along the line of centres sends the 1 along it (and square off the foot
         // cushion, should it reach it): it stays on y = 0.2.
         Assert.Equal(0.2, State(sim, "1").Position.Y, 1e-4);
@@ -71,16 +71,16 @@ public class PlacementTests
     public void APlacementIsRefusedWithTheBallAndTheProblemNamed(string model)
     {
         var sim = Create(model, ("cue", -0.6, 0), ("1", 0.3, 0.2));
-        var e = Assert.Throws<PlacementException>(() => sim.PlaceBall(BallId.Cue, new Vec3(0.32, 0.21, 0)));
+        var e = Assert.Throws<PlacementException>(() => sim.PlaceBall(PoolBalls.Cue, new Vec3(0.32, 0.21, 0)));
         Assert.StartsWith("ball \"cue\" overlaps ball \"1\"", e.Message);
-        Assert.False(sim.TryPlaceBall(BallId.Cue, new Vec3(-0.3, 0, 0), PlacementRegion.Kitchen, out string? problem));
+        Assert.False(sim.TryPlaceBall(PoolBalls.Cue, new Vec3(-0.3, 0, 0), PlacementRegion.Kitchen, out string? problem));
         Assert.Contains("outside the kitchen", problem);
-        Assert.Contains("off the table", sim.PlacementProblem(BallId.Cue, new Vec3(1.4, 0, 0)));
-        Assert.Contains("pocket", sim.PlacementProblem(BallId.Cue, new Vec3(1.27 - 0.0286, 0.635 - 0.0286, 0)));
+        Assert.Contains("off the table", sim.PlacementProblem(PoolBalls.Cue, new Vec3(1.4, 0, 0)));
+        Assert.Contains("pocket", sim.PlacementProblem(PoolBalls.Cue, new Vec3(1.27 - 0.0286, 0.635 - 0.0286, 0)));
         Assert.Contains("not in this game's ball set", sim.PlacementProblem(new BallId(9), Vec3.Zero));
         // Nothing moved.
         AssertAt(sim, "cue", -0.6, 0);
-        Assert.True(sim.TryPlaceBall(BallId.Cue, new Vec3(-0.7, 0.1, 0), PlacementRegion.Kitchen, out problem));
+        Assert.True(sim.TryPlaceBall(PoolBalls.Cue, new Vec3(-0.7, 0.1, 0), PlacementRegion.Kitchen, out problem));
         Assert.Null(problem);
         AssertAt(sim, "cue", -0.7, 0.1);
     }
@@ -171,13 +171,13 @@ public class PlacementTests
         sim.AdvanceTo(120);
         Assert.True(sim.IsAtRest);
         // The cue ball may have stopped inside the rack's triangle: take it out first.
-        sim.RemoveBall(BallId.Cue);
+        sim.RemoveBall(PoolBalls.Cue);
         sim.Rerack(scene.Rack!);
-        foreach (var ball in scene.Balls.Where(b => !b.Id.IsCue))
+        foreach (var ball in scene.Balls.Where(b => !PoolBalls.IsCue(b.Id)))
         {
             AssertAt(sim, ball.Id.ToString(), ball.Position.X, ball.Position.Y);
         }
-        sim.PlaceBall(BallId.Cue, Initializer.HeadSpot(scene.Table, sim.BallRadius), PlacementRegion.Kitchen);
+        sim.PlaceBall(PoolBalls.Cue, Initializer.HeadSpot(scene.Table, sim.BallRadius), PlacementRegion.Kitchen);
         AssertAt(sim, "cue", scene.Balls[0].Position.X, scene.Balls[0].Position.Y);
     }
 
@@ -217,16 +217,16 @@ public class PlacementTests
     {
         // From the centre straight at the foot-left pocket's capture circle.
         var sim = Create("standard", ("cue", 0, 0), ("1", -0.5, 0));
-        var pocket = TableGeometry.Build(sim.Table, sim.BallRadius).Pockets[(int)PocketId.FootLeft].Centre;
+        var pocket = TableGeometry.Build(sim.Table, sim.BallRadius).Pockets[PoolPockets.FootLeft.Index].Centre;
         double aim = Math.Atan2(pocket.Y, pocket.X) * 180 / Math.PI;
         sim.Strike(new ShotSpec(3, aim));
         sim.AdvanceTo(60);
         Assert.True(State(sim, "cue").IsPocketed);
-        Assert.Equal((int)PocketId.FootLeft, State(sim, "cue").Pocket);
-        sim.PlaceBall(BallId.Cue, new Vec3(-1.0, 0, 0), PlacementRegion.Kitchen);
+        Assert.Equal(PoolPockets.FootLeft.Index, State(sim, "cue").Pocket);
+        sim.PlaceBall(PoolBalls.Cue, new Vec3(-1.0, 0, 0), PlacementRegion.Kitchen);
         AssertAt(sim, "cue", -1.0, 0);
         sim.Strike(new ShotSpec(1, 0));
         sim.AdvanceTo(60);
-        Assert.Contains(sim.Events.AsSpan().ToArray(), e => e.Kind == EventKind.BallBall && e.A == BallId.Cue && e.B == new BallId(1));
+        Assert.Contains(sim.Events.AsSpan().ToArray(), e => e.Kind == EventKind.BallBall && e.A == PoolBalls.Cue && e.B == new BallId(1));
     }
 }

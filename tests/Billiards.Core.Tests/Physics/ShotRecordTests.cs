@@ -30,7 +30,7 @@ public class ShotRecordTests
 
         Assert.Equal(EventKind.CueStrike, events[0].Kind);
         Assert.Equal(0, events[0].Time);
-        Assert.Equal(BallId.Cue, events[0].A);
+        Assert.Equal(PoolBalls.Cue, events[0].A);
         Assert.Equal(scene.Shot!.Speed, events[0].Speed);
         int drops = 0;
         for (int i = 1; i < events.Length; i++)
@@ -42,7 +42,7 @@ public class ShotRecordTests
                 // A ball drops moving, and no faster than the break sent the cue ball (cue speed
                 // times the largest cue-to-ball speed ratio, 2 m_c / (m_c + m_b) < 2).
                 Assert.InRange(events[i].Speed, 1e-6, 2 * scene.Shot.Speed);
-                Assert.NotEqual(PocketId.None, events[i].Pocket);
+                Assert.NotEqual(PocketId.None, outcome.Simulation.Pocket(events[i]));
             }
         }
         // Euler's coarse break pockets nothing in this rack; the event-exact breaks all pocket a ball.
@@ -62,7 +62,7 @@ public class ShotRecordTests
         foreach (var e in events.EnumerateArray().Where(e => e.GetProperty("type").GetString() == "ball-pocket"))
         {
             Assert.True(e.GetProperty("speed").GetDouble() > 0);
-            Assert.True(PocketIds.TryParse(e.GetProperty("pocket").GetString(), out _));
+            Assert.True(PoolPockets.Set.TryParse(e.GetProperty("pocket").GetString(), out _));
         }
     }
 
@@ -114,12 +114,12 @@ public class ShotRecordTests
     [Fact]
     public void PocketNamesRoundTrip()
     {
-        foreach (var p in PocketIds.All)
+        foreach (var p in PoolPockets.All)
         {
-            Assert.True(PocketIds.TryParse(p.ToName(), out var back));
+            Assert.True(PoolPockets.Set.TryParse(p.ToName(), out var back));
             Assert.Equal(p, back);
-            Assert.Equal(TableGeometry.PocketName((int)p), p.ToName());
+            Assert.Equal(PoolPockets.Set.NameOf(p.Index), p.ToName());
         }
-        Assert.False(PocketIds.TryParse("middle", out _));
+        Assert.False(PoolPockets.Set.TryParse("middle", out _));
     }
 }

@@ -18,7 +18,7 @@ public class ShotSpeedTests
     {
         var sim = Alone(model);
         sim.Strike(new ShotSpec(cueSpeed, aimDeg));
-        return sim.Balls[sim.IndexOf(BallId.Cue)].Velocity.Length;
+        return sim.Balls[sim.IndexOf(PoolBalls.Cue)].Velocity.Length;
     }
 
     [Theory]

@@ -25,7 +25,7 @@ internal static class Aimer
         }
         var pockets = Billiards.Core.Table.TableGeometry.Build(table, R).Pockets.ToArray();
         var hand = game.BallInHand;
-        var targets = balls.Where(b => !b.Key.IsCue && isTarget(b.Key)).OrderBy(b => b.Key.Value).ToList();
+        var targets = balls.Where(b => !PoolBalls.IsCue(b.Key) && isTarget(b.Key)).OrderBy(b => b.Key.Value).ToList();
         (double Score, BallId Target, int Pocket, Vec3 Cue, Vec3? Place)? best = null;
         foreach (var (target, t) in targets)
         {
@@ -34,7 +34,7 @@ internal static class Aimer
                 var toPocket = pocket.Centre with { Z = R } - t;
                 var u = toPocket.Normalized();
                 var ghost = t - u * (2 * R);
-                if (!Clear(balls, t, pocket.Centre with { Z = R }, target, BallId.Cue))
+                if (!Clear(balls, t, pocket.Centre with { Z = R }, target, PoolBalls.Cue))
                 {
                     continue;
                 }
@@ -50,7 +50,7 @@ internal static class Aimer
                         }
                     }
                 }
-                if (balls.TryGetValue(BallId.Cue, out var cue))
+                if (balls.TryGetValue(PoolBalls.Cue, out var cue))
                 {
                     candidates.Add((cue, null));
                 }
@@ -58,7 +58,7 @@ internal static class Aimer
                 {
                     var v = ghost - c;
                     double cos = Dot(v.Normalized(), u);
-                    if (cos < Math.Cos(65 * Math.PI / 180) || !Clear(balls, c, ghost, target, BallId.Cue))
+                    if (cos < Math.Cos(65 * Math.PI / 180) || !Clear(balls, c, ghost, target, PoolBalls.Cue))
                     {
                         continue;
                     }
@@ -79,12 +79,12 @@ internal static class Aimer
             double distance = v.Length + (pocketCentre - t).Length;
             double speed = Math.Min(4.5, 1.4 + 1.3 * distance);
             var shot = new ShotSpec(speed, Math.Atan2(v.Y, v.X) * 180 / Math.PI, 0, -0.3);
-            return new GameShot(shot, callShots ? new Call(b.Target, (PocketId)b.Pocket) : null, b.Place);
+            return new GameShot(shot, callShots ? new Call(b.Target, PoolPockets.Set.Id(b.Pocket)) : null, b.Place);
         }
         // Nothing makeable: hit the first target full and firmly.
         var target0 = targets[0];
         Vec3? placed = null;
-        var from = balls.TryGetValue(BallId.Cue, out var c0) ? c0 : Initializer(table);
+        var from = balls.TryGetValue(PoolBalls.Cue, out var c0) ? c0 : Initializer(table);
         if (hand != BallInHand.None)
         {
             foreach (double d in new[] { 0.3, 0.5, 0.8 })
@@ -100,7 +100,7 @@ internal static class Aimer
         }
         var dir = target0.Value - from;
         var nearest = pockets.OrderBy(p => (p.Centre - target0.Value).LengthXY).First();
-        return new GameShot(new ShotSpec(3.0, Math.Atan2(dir.Y, dir.X) * 180 / Math.PI), callShots ? new Call(target0.Key, (PocketId)nearest.Pocket) : null, placed);
+        return new GameShot(new ShotSpec(3.0, Math.Atan2(dir.Y, dir.X) * 180 / Math.PI), callShots ? new Call(target0.Key, PoolPockets.Set.Id(nearest.Pocket)) : null, placed);
     }
 
     /// <summary>A hard break at the apex ball from the head spot.</summary>
@@ -117,7 +117,7 @@ internal static class Aimer
     {
         var balls = game.Balls;
         var table = game.Setup.Table;
-        var cue = balls.TryGetValue(BallId.Cue, out var c) ? c : Initializer(table);
+        var cue = balls.TryGetValue(PoolBalls.Cue, out var c) ? c : Initializer(table);
         var pockets = Billiards.Core.Table.TableGeometry.Build(table, R).Pockets.ToArray();
         double bestAngle = 0, bestClearance = -1;
         for (int k = 0; k < 72; k++)
@@ -128,7 +128,7 @@ internal static class Aimer
             {
                 continue;
             }
-            double clearance = balls.Where(b => !b.Key.IsCue).Select(b => Distance(b.Value, cue, end)).DefaultIfEmpty(1).Min();
+            double clearance = balls.Where(b => !PoolBalls.IsCue(b.Key)).Select(b => Distance(b.Value, cue, end)).DefaultIfEmpty(1).Min();
             clearance = Math.Min(clearance, pockets.Select(p => Distance(p.Centre with { Z = R }, cue, end) - 0.1).Min());
             if (clearance > bestClearance)
             {
@@ -144,7 +144,7 @@ internal static class Aimer
     private static bool Placeable(Vec3 p, IReadOnlyDictionary<BallId, Vec3> balls, TableSpec table, BallInHand hand) =>
         Math.Abs(p.X) < table.HalfLength - 2 * R && Math.Abs(p.Y) < table.HalfWidth - 2 * R
         && (hand != BallInHand.Kitchen || p.X < -table.HalfLength / 2)
-        && balls.Where(b => !b.Key.IsCue).All(b => (b.Value - p).Length > 2 * R + 0.005);
+        && balls.Where(b => !PoolBalls.IsCue(b.Key)).All(b => (b.Value - p).Length > 2 * R + 0.005);
 
     private static bool Clear(IReadOnlyDictionary<BallId, Vec3> balls, Vec3 a, Vec3 b, BallId skip1, BallId skip2) =>
         balls.Where(x => x.Key != skip1 && x.Key != skip2).All(x => Distance(x.Value, a, b) > 2 * R + 0.003);

@@ -23,7 +23,7 @@ public class CommonFoulTests
     [Fact]
     public void ScratchIsCueBallPocketedAndGivesBallInHandOnTheTable()
     {
-        var r = Judge(NineBall, ShotBuilder.Of(GameRules.NineBall).Hit(1).Rail(1).Pocket(0, PocketId.SideLeft));
+        var r = Judge(NineBall, ShotBuilder.Of(GameRules.NineBall).Hit(1).Rail(1).Pocket(0, PoolPockets.SideLeft));
         Expect(r, [Foul.CueBallPocketed], cont: false, BallInHand.Table, nextShooter: 1);
         Assert.Equal(new PerPlayer<int>(1, 0), r.Next.FoulsInRow);
         Assert.Equal(BallInHand.Table, r.Next.BallInHand);
@@ -39,7 +39,7 @@ public class CommonFoulTests
     [Fact]
     public void HittingAnotherBallThanTheLowestFirstIsWrongBallFirstEvenIfItPockets()
     {
-        var r = Judge(NineBall, ShotBuilder.Of(GameRules.NineBall).Hit(2).Collide(2, 1).Pocket(1, PocketId.FootLeft));
+        var r = Judge(NineBall, ShotBuilder.Of(GameRules.NineBall).Hit(2).Collide(2, 1).Pocket(1, PoolPockets.FootLeft));
         Expect(r, [Foul.WrongBallFirst], cont: false, BallInHand.Table, nextShooter: 1);
         Assert.Equal(Ids(1), r.Pocketed);
         Assert.Empty(r.Spot); // only the 9 is spotted after a foul
@@ -56,7 +56,7 @@ public class CommonFoulTests
     [Fact]
     public void APocketedObjectBallCountsAsTheRailAfterContact()
     {
-        var r = Judge(NineBall, ShotBuilder.Of(GameRules.NineBall).Hit(1).Pocket(1, PocketId.FootRight));
+        var r = Judge(NineBall, ShotBuilder.Of(GameRules.NineBall).Hit(1).Pocket(1, PoolPockets.FootRight));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 0);
     }
 
@@ -111,7 +111,7 @@ public class CommonFoulTests
         // In the foot-right corner, R from both cushion noses: on the bed, but in the pocket's mouth.
         var table = Billiards.Core.Table.TableSpec.FromPreset("pool-9ft");
         var corner = new Vec3(table.HalfLength - ShotBuilder.R, table.HalfWidth - ShotBuilder.R, ShotBuilder.R);
-        Assert.Contains("pocket", Billiards.Core.Setup.Placement.OnTable(table, ShotBuilder.R, Billiards.Core.Balls.BallId.Cue, corner), StringComparison.Ordinal);
+        Assert.Contains("pocket", Billiards.Core.Setup.Placement.OnTable(table, ShotBuilder.R, PoolBalls.Cue, corner), StringComparison.Ordinal);
         var before = NineBall with { BallInHand = BallInHand.Table, Placement = corner };
         var r = Judge(before, ShotBuilder.Of(GameRules.NineBall).Hit(1).Rail(1));
         Assert.Equal([Foul.BadPlacement], r.Fouls);
@@ -120,7 +120,7 @@ public class CommonFoulTests
     [Fact]
     public void SeveralFoulsAreAllListedAndCountAsOne()
     {
-        var r = Judge(NineBall, ShotBuilder.Of(GameRules.NineBall).Hit(3).Rail(3).Pocket(0, PocketId.HeadLeft));
+        var r = Judge(NineBall, ShotBuilder.Of(GameRules.NineBall).Hit(3).Rail(3).Pocket(0, PoolPockets.HeadLeft));
         Expect(r, [Foul.CueBallPocketed, Foul.WrongBallFirst], cont: false, BallInHand.Table, nextShooter: 1);
         Assert.Equal(1, r.Next.FoulsInRow[0]);
     }
@@ -128,7 +128,7 @@ public class CommonFoulTests
     [Fact]
     public void TheRefereeIsAPureFunction()
     {
-        var shot = ShotBuilder.Of(GameRules.NineBall).Hit(2).Pocket(0, PocketId.SideLeft).Record();
+        var shot = ShotBuilder.Of(GameRules.NineBall).Hit(2).Pocket(0, PoolPockets.SideLeft).Record();
         var referee = RefereeOf(GameRules.NineBall);
         var first = referee.Judge(NineBall, shot);
         var second = referee.Judge(NineBall, shot);

@@ -18,7 +18,7 @@ public class EightBallRefereeTests
     [Fact]
     public void ABreakThatPocketsABallIsLegalAndTheBreakerContinuesWithTheTableOpen()
     {
-        var r = Judge(Break, Shot().Hit(1).Rail(2).Pocket(3, PocketId.FootLeft).Pocket(12, PocketId.SideRight));
+        var r = Judge(Break, Shot().Hit(1).Rail(2).Pocket(3, PoolPockets.FootLeft).Pocket(12, PoolPockets.SideRight));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 0);
         Assert.Equal(Ids(3, 12), r.Pocketed);
         Assert.Null(r.Next.Groups);
@@ -54,7 +54,7 @@ public class EightBallRefereeTests
     [Fact]
     public void AScratchOnTheBreakIsAFoulTheBallsStayDownAndTheTableStaysOpen()
     {
-        var r = Judge(Break, Shot().Hit(1).Rail(2).Pocket(4, PocketId.FootRight).Pocket(0, PocketId.SideLeft));
+        var r = Judge(Break, Shot().Hit(1).Rail(2).Pocket(4, PoolPockets.FootRight).Pocket(0, PoolPockets.SideLeft));
         Expect(r, [Foul.CueBallPocketed], cont: false, BallInHand.Table, nextShooter: 1);
         Assert.Equal(Ids(4), r.Pocketed);
         Assert.Empty(r.Spot);
@@ -64,7 +64,7 @@ public class EightBallRefereeTests
     [Fact]
     public void TheEightOnTheBreakIsSpottedOrReracksAtTheBreakersChoice()
     {
-        var r = Judge(Break, Shot().Hit(1).Pocket(8, PocketId.FootLeft));
+        var r = Judge(Break, Shot().Hit(1).Pocket(8, PoolPockets.FootLeft));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 0);
         Assert.Equal(Ids(8), r.Spot);
         Assert.Equal([RefereeOption.SpotEight, RefereeOption.Rerack], r.Options);
@@ -76,7 +76,7 @@ public class EightBallRefereeTests
     [Fact]
     public void TheEightOnTheBreakWithAScratchGivesTheChoiceAndBallInHandToTheIncomingPlayer()
     {
-        var r = Judge(Break, Shot().Hit(1).Pocket(8, PocketId.FootLeft).Pocket(0, PocketId.HeadRight));
+        var r = Judge(Break, Shot().Hit(1).Pocket(8, PoolPockets.FootLeft).Pocket(0, PoolPockets.HeadRight));
         Expect(r, [Foul.CueBallPocketed], cont: false, BallInHand.Table, nextShooter: 1);
         Assert.Equal(Ids(8), r.Spot);
         Assert.Equal([RefereeOption.SpotEight, RefereeOption.Rerack], r.Options);
@@ -86,7 +86,7 @@ public class EightBallRefereeTests
     [Fact]
     public void OnAnOpenTableAStripeMayBeHitFirst()
     {
-        var r = Judge(Open with { Call = Calls(11, PocketId.SideLeft) }, Shot().Hit(11).Rail(11));
+        var r = Judge(Open with { Call = Calls(11, PoolPockets.SideLeft) }, Shot().Hit(11).Rail(11));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 1);
     }
 
@@ -101,8 +101,8 @@ public class EightBallRefereeTests
     public void ACalledStripeLegallyPocketedAssignsTheStripesToTheShooter()
     {
         // Ben (1) shoots; he gets the stripes, Anna the solids. A solid also dropped: it stays down.
-        var before = Open with { Shooter = 1, Call = Calls(10, PocketId.FootRight) };
-        var r = Judge(before, Shot().Hit(10).Collide(10, 3).Pocket(10, PocketId.FootRight).Pocket(3, PocketId.SideLeft));
+        var before = Open with { Shooter = 1, Call = Calls(10, PoolPockets.FootRight) };
+        var r = Judge(before, Shot().Hit(10).Collide(10, 3).Pocket(10, PoolPockets.FootRight).Pocket(3, PoolPockets.SideLeft));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 1);
         Assert.Equal(new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes), r.Next.Groups);
         Assert.Equal(Ids(10, 3), r.Pocketed);
@@ -112,8 +112,8 @@ public class EightBallRefereeTests
     [Fact]
     public void AnUncalledBallPocketedOnAnOpenTableAssignsNothing()
     {
-        var before = Open with { Call = Calls(2, PocketId.FootLeft) };
-        var r = Judge(before, Shot().Hit(2).Collide(2, 13).Pocket(13, PocketId.FootLeft));
+        var before = Open with { Call = Calls(2, PoolPockets.FootLeft) };
+        var r = Judge(before, Shot().Hit(2).Collide(2, 13).Pocket(13, PoolPockets.FootLeft));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 1);
         Assert.Null(r.Next.Groups);
     }
@@ -121,8 +121,8 @@ public class EightBallRefereeTests
     [Fact]
     public void ACalledBallInAnotherPocketIsNoFoulButEndsTheTurn()
     {
-        var before = Assigned with { Call = Calls(2, PocketId.FootLeft) };
-        var r = Judge(before, Shot().Hit(2).Pocket(2, PocketId.FootRight));
+        var before = Assigned with { Call = Calls(2, PoolPockets.FootLeft) };
+        var r = Judge(before, Shot().Hit(2).Pocket(2, PoolPockets.FootRight));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 1);
         Assert.Equal(Ids(2), r.Pocketed);
         Assert.Empty(r.Spot);
@@ -132,23 +132,23 @@ public class EightBallRefereeTests
     public void ASafetyEndsTheTurnEvenWhenABallDrops()
     {
         var before = Assigned with { Call = Call.Safety };
-        var r = Judge(before, Shot().Hit(2).Pocket(2, PocketId.FootRight));
+        var r = Judge(before, Shot().Hit(2).Pocket(2, PoolPockets.FootRight));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 1);
     }
 
     [Fact]
     public void TheCalledBallOfTheShootersGroupKeepsTheShooterAtTheTable()
     {
-        var before = Assigned with { Call = Calls(5, PocketId.SideRight) };
-        var r = Judge(before, Shot().Hit(5).Pocket(5, PocketId.SideRight));
+        var before = Assigned with { Call = Calls(5, PoolPockets.SideRight) };
+        var r = Judge(before, Shot().Hit(5).Pocket(5, PoolPockets.SideRight));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 0);
     }
 
     [Fact]
     public void HittingTheOpponentsGroupFirstIsWrongBallFirst()
     {
-        var before = Assigned with { Call = Calls(5, PocketId.SideRight) };
-        var r = Judge(before, Shot().Hit(9).Collide(9, 5).Pocket(5, PocketId.SideRight));
+        var before = Assigned with { Call = Calls(5, PoolPockets.SideRight) };
+        var r = Judge(before, Shot().Hit(9).Collide(9, 5).Pocket(5, PoolPockets.SideRight));
         Expect(r, [Foul.WrongBallFirst], cont: false, BallInHand.Table, nextShooter: 1);
     }
 
@@ -156,7 +156,7 @@ public class EightBallRefereeTests
     public void WithTheGroupClearedTheEightIsTheLegalTarget()
     {
         // Anna's solids are all down; hitting a stripe first is a foul, the 8 first is legal.
-        var before = Assigned with { Call = Calls(8, PocketId.FootLeft) };
+        var before = Assigned with { Call = Calls(8, PoolPockets.FootLeft) };
         var wrong = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7).Hit(9).Rail(9));
         Assert.Equal([Foul.WrongBallFirst], wrong.Fouls);
         var right = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7).Hit(8).Rail(8));
@@ -166,8 +166,8 @@ public class EightBallRefereeTests
     [Fact]
     public void TheEightLegallyPocketedInTheCalledPocketAfterTheGroupWins()
     {
-        var before = Assigned with { Call = Calls(8, PocketId.FootLeft) };
-        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7).Hit(8).Pocket(8, PocketId.FootLeft));
+        var before = Assigned with { Call = Calls(8, PoolPockets.FootLeft) };
+        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7).Hit(8).Pocket(8, PoolPockets.FootLeft));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 0, gameOver: true, winner: 0);
         Assert.Empty(r.Options);
     }
@@ -176,24 +176,24 @@ public class EightBallRefereeTests
     public void TheEightWhileTheGroupIsOnTheTableLosesEightBallEarly()
     {
         // The last solid and the 8 on one shot: the group was on the table when the shot began.
-        var before = Assigned with { Call = Calls(8, PocketId.FootLeft) };
-        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6).Hit(7).Collide(7, 8).Pocket(7, PocketId.SideLeft).Pocket(8, PocketId.FootLeft));
+        var before = Assigned with { Call = Calls(8, PoolPockets.FootLeft) };
+        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6).Hit(7).Collide(7, 8).Pocket(7, PoolPockets.SideLeft).Pocket(8, PoolPockets.FootLeft));
         Expect(r, [Foul.EightBallEarly], cont: false, BallInHand.None, nextShooter: 1, gameOver: true, winner: 1);
     }
 
     [Fact]
     public void TheEightWithAScratchLosesEightBallFoul()
     {
-        var before = Assigned with { Call = Calls(8, PocketId.FootLeft) };
-        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7).Hit(8).Pocket(8, PocketId.FootLeft).Pocket(0, PocketId.FootRight));
+        var before = Assigned with { Call = Calls(8, PoolPockets.FootLeft) };
+        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7).Hit(8).Pocket(8, PoolPockets.FootLeft).Pocket(0, PoolPockets.FootRight));
         Expect(r, [Foul.CueBallPocketed, Foul.EightBallFoul], cont: false, BallInHand.None, nextShooter: 1, gameOver: true, winner: 1);
     }
 
     [Fact]
     public void TheEightInAnotherPocketLosesEightBallUncalled()
     {
-        var before = Assigned with { Call = Calls(8, PocketId.FootLeft) };
-        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7).Hit(8).Pocket(8, PocketId.SideRight));
+        var before = Assigned with { Call = Calls(8, PoolPockets.FootLeft) };
+        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7).Hit(8).Pocket(8, PoolPockets.SideRight));
         Expect(r, [Foul.EightBallUncalled], cont: false, BallInHand.None, nextShooter: 1, gameOver: true, winner: 1);
     }
 
@@ -201,8 +201,8 @@ public class EightBallRefereeTests
     public void EveryLossCodeOfOneShotIsListed()
     {
         // Ben (stripes, 9-15 all on the table) hits the 8 first, it drops uncalled and he scratches.
-        var before = Assigned with { Shooter = 1, Call = Calls(9, PocketId.FootLeft) };
-        var r = Judge(before, Shot().Hit(8).Pocket(8, PocketId.HeadLeft).Pocket(0, PocketId.HeadRight));
+        var before = Assigned with { Shooter = 1, Call = Calls(9, PoolPockets.FootLeft) };
+        var r = Judge(before, Shot().Hit(8).Pocket(8, PoolPockets.HeadLeft).Pocket(0, PoolPockets.HeadRight));
         Expect(r, [Foul.CueBallPocketed, Foul.WrongBallFirst, Foul.EightBallEarly, Foul.EightBallFoul, Foul.EightBallUncalled],
             cont: false, BallInHand.None, nextShooter: 0, gameOver: true, winner: 0);
     }
@@ -210,8 +210,8 @@ public class EightBallRefereeTests
     [Fact]
     public void AfterTheGameTheNextStateIsANewRackBrokenByTheWinner()
     {
-        var before = Assigned with { Call = Calls(8, PocketId.FootLeft), FoulsInRow = new(1, 1) };
-        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7).Hit(8).Pocket(8, PocketId.FootLeft));
+        var before = Assigned with { Call = Calls(8, PoolPockets.FootLeft), FoulsInRow = new(1, 1) };
+        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7).Hit(8).Pocket(8, PoolPockets.FootLeft));
         Assert.Equal(Start(Game), r.Next);
     }
 }

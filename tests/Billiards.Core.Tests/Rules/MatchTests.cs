@@ -15,7 +15,7 @@ public class MatchTests
     private static readonly PerPlayer<string> Players = new("Anna", "Ben");
 
     private static bool IsTarget(Match game, BallId ball) =>
-        game.Ruleset.LegalTargets(game.State, game.Balls.Keys.Where(b => !b.IsCue)).Contains(ball);
+        game.Ruleset.LegalTargets(game.State, game.Balls.Keys.Where(b => !PoolBalls.IsCue(b))).Contains(ball);
 
     private static Match PlayOut(GameSetup setup, int maxShots = 200)
     {
@@ -189,7 +189,7 @@ public class MatchTests
         double r = start.BallRadius;
         var setup = start with
         {
-            Position = [(BallId.Cue, new Vec3(-0.5, 0, r)), (new BallId(1), new Vec3(0.2, 0.1, r)), (new BallId(9), new Vec3(0.6, -0.2, r))],
+            Position = [(PoolBalls.Cue, new Vec3(-0.5, 0, r)), (new BallId(1), new Vec3(0.2, 0.1, r)), (new BallId(9), new Vec3(0.6, -0.2, r))],
         };
         var game = new Match(setup);
         Assert.Equal(3, game.Balls.Count);

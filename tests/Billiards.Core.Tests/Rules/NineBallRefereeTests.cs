@@ -17,7 +17,7 @@ public class NineBallRefereeTests
     public void TheLowestBallIsTheTargetAndAnyBallLegallyPocketedContinuesWithoutACall()
     {
         // 1 and 2 are down: the 3 is the lowest. It caroms the 6 in.
-        var r = Judge(Later, Shot().Off(1, 2).Hit(3).Collide(3, 6).Pocket(6, PocketId.HeadLeft));
+        var r = Judge(Later, Shot().Off(1, 2).Hit(3).Collide(3, 6).Pocket(6, PoolPockets.HeadLeft));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 0);
         Assert.Equal(Ids(6), r.Pocketed);
     }
@@ -32,7 +32,7 @@ public class NineBallRefereeTests
     [Fact]
     public void ABreakOnTheOneThatPocketsABallIsLegal()
     {
-        var r = Judge(Break, Shot().Hit(1).Pocket(5, PocketId.SideLeft));
+        var r = Judge(Break, Shot().Hit(1).Pocket(5, PoolPockets.SideLeft));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 0);
     }
 
@@ -46,7 +46,7 @@ public class NineBallRefereeTests
     [Fact]
     public void ABreakThatMissesTheOneIsABadBreakWithBallInHand()
     {
-        var r = Judge(Break, Shot().Hit(2).Rail(2, 3, 4, 5).Pocket(6, PocketId.FootLeft));
+        var r = Judge(Break, Shot().Hit(2).Rail(2, 3, 4, 5).Pocket(6, PoolPockets.FootLeft));
         Expect(r, [Foul.BadBreak], cont: false, BallInHand.Table, nextShooter: 1);
         Assert.Empty(r.Options);
         Assert.Equal(1, r.Next.FoulsInRow[0]);
@@ -62,14 +62,14 @@ public class NineBallRefereeTests
     [Fact]
     public void TheNineOnALegalBreakWins()
     {
-        var r = Judge(Break, Shot().Hit(1).Collide(1, 9).Pocket(9, PocketId.FootRight));
+        var r = Judge(Break, Shot().Hit(1).Collide(1, 9).Pocket(9, PoolPockets.FootRight));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 0, gameOver: true, winner: 0);
     }
 
     [Fact]
     public void TheNineOnAScratchedBreakIsSpotted()
     {
-        var r = Judge(Break, Shot().Hit(1).Pocket(9, PocketId.FootRight).Pocket(0, PocketId.SideLeft));
+        var r = Judge(Break, Shot().Hit(1).Pocket(9, PoolPockets.FootRight).Pocket(0, PoolPockets.SideLeft));
         Expect(r, [Foul.CueBallPocketed], cont: false, BallInHand.Table, nextShooter: 1);
         Assert.Equal(Ids(9), r.Spot);
     }
@@ -77,7 +77,7 @@ public class NineBallRefereeTests
     [Fact]
     public void TheNineByACombinationOnALegalShotWins()
     {
-        var r = Judge(Later, Shot().Off(1, 2, 3).Hit(4).Collide(4, 9).Pocket(9, PocketId.SideRight));
+        var r = Judge(Later, Shot().Off(1, 2, 3).Hit(4).Collide(4, 9).Pocket(9, PoolPockets.SideRight));
         // The next state is a new rack, broken by the winner (ours).
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 0, gameOver: true, winner: 0);
     }
@@ -85,7 +85,7 @@ public class NineBallRefereeTests
     [Fact]
     public void TheNineOnAFoulIsSpottedAndDoesNotWin()
     {
-        var r = Judge(Later, Shot().Off(1, 2, 3).Hit(9).Pocket(9, PocketId.SideRight));
+        var r = Judge(Later, Shot().Off(1, 2, 3).Hit(9).Pocket(9, PoolPockets.SideRight));
         Expect(r, [Foul.WrongBallFirst], cont: false, BallInHand.Table, nextShooter: 1);
         Assert.Equal(Ids(9), r.Spot);
     }
@@ -95,7 +95,7 @@ public class NineBallRefereeTests
     {
         // Anna pushes out on shot 1, touching nothing; the 9 drops off a kiss and is spotted.
         var before = At(Game, shot: 1) with { PushOut = true, FoulsInRow = new(1, 0) };
-        var r = Judge(before, Shot().Collide(3, 9).Pocket(9, PocketId.FootLeft).Pocket(4, PocketId.SideLeft));
+        var r = Judge(before, Shot().Collide(3, 9).Pocket(9, PoolPockets.FootLeft).Pocket(4, PoolPockets.SideLeft));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 1);
         Assert.Equal([RefereeOption.Shoot, RefereeOption.PassBack], r.Options);
         Assert.Equal(Ids(9), r.Spot); // the 4 stays down
@@ -113,7 +113,7 @@ public class NineBallRefereeTests
     public void AScratchOnAPushOutIsStillAFoul()
     {
         var before = At(Game, shot: 1) with { PushOut = true };
-        var r = Judge(before, Shot().Rail(0).Pocket(0, PocketId.HeadLeft));
+        var r = Judge(before, Shot().Rail(0).Pocket(0, PoolPockets.HeadLeft));
         Expect(r, [Foul.CueBallPocketed], cont: false, BallInHand.Table, nextShooter: 1);
         Assert.Empty(r.Options);
     }
@@ -140,7 +140,7 @@ public class NineBallRefereeTests
     public void TheThirdFoulInARowLosesTheGame()
     {
         var before = Later with { Shooter = 1, FoulsInRow = new(0, 2) };
-        var r = Judge(before, Shot().Hit(1).Rail(1).Pocket(0, PocketId.SideLeft));
+        var r = Judge(before, Shot().Hit(1).Rail(1).Pocket(0, PoolPockets.SideLeft));
         Expect(r, [Foul.CueBallPocketed, Foul.ThreeFouls], cont: false, BallInHand.None, nextShooter: 0, gameOver: true, winner: 0);
     }
 

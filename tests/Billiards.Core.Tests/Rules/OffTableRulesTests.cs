@@ -63,7 +63,7 @@ public class OffTableRulesTests
     [Fact]
     public void In14Point1JumpedBallsAreSpottedAndTheCueBallOffIsBallInHandInTheKitchen()
     {
-        var before = At(GameRules.StraightPool, shot: 3) with { Call = new Call(B(3), Billiards.Core.Table.PocketId.FootLeft) };
+        var before = At(GameRules.StraightPool, shot: 3) with { Call = new Call(B(3), PoolPockets.FootLeft) };
         var r = Judge(before, ShotBuilder.Of(GameRules.StraightPool).Hit(3).Rail(3).Jump(6).Jump(0));
         Assert.Equal([Foul.BallOffTable], r.Fouls);
         Assert.Equal([B(6)], r.Spot);

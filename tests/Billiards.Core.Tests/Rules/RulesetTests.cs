@@ -16,7 +16,7 @@ public class RulesetTests
         Assert.Equal(16, Ruleset.For(GameRules.EightBall).Balls.Count);
         Assert.Equal(10, Ruleset.For(GameRules.NineBall).Balls.Count);
         Assert.Equal(11, Ruleset.For(GameRules.TenBall).Balls.Count);
-        Assert.All(Ruleset.All, r => Assert.Equal(BallId.Cue, r.Balls[0]));
+        Assert.All(Ruleset.All, r => Assert.Equal(PoolBalls.Cue, r.Balls[0]));
     }
 
     [Theory]

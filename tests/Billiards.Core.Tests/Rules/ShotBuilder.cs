@@ -28,7 +28,7 @@ internal sealed class ShotBuilder
         {
             _balls[i] = new BallState { Position = new Vec3(-1.0 + 0.12 * i, 0.4, R), Pocket = -1, State = MotionState.Stationary };
         }
-        _events.Add(new SimEvent(0, EventKind.CueStrike, BallId.Cue, BallId.Cue, -1, 3.0));
+        _events.Add(new SimEvent(0, EventKind.CueStrike, PoolBalls.Cue, PoolBalls.Cue, -1, 3.0));
     }
 
     /// <summary>A shot of <paramref name="rules"/> with all its balls on the table.</summary>
@@ -59,10 +59,10 @@ internal sealed class ShotBuilder
     /// <summary>A ball drops into a pocket (0 = the cue ball).</summary>
     public ShotBuilder Pocket(int ball, PocketId pocket)
     {
-        _events.Add(new SimEvent(Next, EventKind.BallPocket, new BallId(ball), new BallId(ball), (int)pocket, 0.8));
+        _events.Add(new SimEvent(Next, EventKind.BallPocket, new BallId(ball), new BallId(ball), pocket.Index, 0.8));
         ref var b = ref _balls[_ids.IndexOf(new BallId(ball))];
         b.State = MotionState.Pocketed;
-        b.Pocket = (int)pocket;
+        b.Pocket = pocket.Index;
         return this;
     }
 
@@ -81,14 +81,14 @@ internal sealed class ShotBuilder
         {
             ref var b = ref _balls[_ids.IndexOf(new BallId(n))];
             b.State = MotionState.Pocketed;
-            b.Pocket = (int)PocketId.FootLeft;
+            b.Pocket = PoolPockets.FootLeft.Index;
         }
         return this;
     }
 
     /// <summary>Every object ball but <paramref name="keep"/> was pocketed before this shot.</summary>
     public ShotBuilder OffAllBut(params int[] keep) =>
-        Off([.. _ids.Where(id => !id.IsCue && !keep.Contains(id.Value)).Select(id => id.Value)]);
+        Off([.. _ids.Where(id => !PoolBalls.IsCue(id) && !keep.Contains(id.Value)).Select(id => id.Value)]);
 
     /// <summary>Moves a resting ball (to test placements against it).</summary>
     public ShotBuilder At(int ball, double x, double y)
@@ -103,7 +103,7 @@ internal sealed class ShotBuilder
 /// <summary>Shorthands for the tests.</summary>
 internal static class RulesKit
 {
-    public static readonly BallId Cue = BallId.Cue;
+    public static readonly BallId Cue = PoolBalls.Cue;
 
     public static BallId B(int n) => new(n);
 

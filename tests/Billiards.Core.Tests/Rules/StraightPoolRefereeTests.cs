@@ -15,7 +15,7 @@ public class StraightPoolRefereeTests
     [Fact]
     public void ALegallyPocketedCalledBallScoresAPointAndContinues()
     {
-        var r = Judge(Later with { Call = Calls(6, PocketId.SideLeft) }, Shot().Hit(6).Pocket(6, PocketId.SideLeft));
+        var r = Judge(Later with { Call = Calls(6, PoolPockets.SideLeft) }, Shot().Hit(6).Pocket(6, PoolPockets.SideLeft));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 0);
         Assert.Equal(new PerPlayer<int>(21, 11), r.Next.Score);
     }
@@ -23,7 +23,7 @@ public class StraightPoolRefereeTests
     [Fact]
     public void EveryBallPocketedWithTheCalledOneScores()
     {
-        var r = Judge(Later with { Call = Calls(6, PocketId.SideLeft) }, Shot().Hit(6).Collide(6, 2).Pocket(6, PocketId.SideLeft).Pocket(2, PocketId.FootRight));
+        var r = Judge(Later with { Call = Calls(6, PoolPockets.SideLeft) }, Shot().Hit(6).Collide(6, 2).Pocket(6, PoolPockets.SideLeft).Pocket(2, PoolPockets.FootRight));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 0);
         Assert.Equal(new PerPlayer<int>(22, 11), r.Next.Score);
     }
@@ -31,7 +31,7 @@ public class StraightPoolRefereeTests
     [Fact]
     public void AnUncalledBallScoresNothingAndIsSpotted()
     {
-        var r = Judge(Later with { Call = Calls(6, PocketId.SideLeft) }, Shot().Hit(6).Collide(6, 2).Pocket(2, PocketId.FootRight));
+        var r = Judge(Later with { Call = Calls(6, PoolPockets.SideLeft) }, Shot().Hit(6).Collide(6, 2).Pocket(2, PoolPockets.FootRight));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 1);
         Assert.Equal(new PerPlayer<int>(20, 11), r.Next.Score);
         Assert.Equal(Ids(2), r.Spot);
@@ -40,8 +40,8 @@ public class StraightPoolRefereeTests
     [Fact]
     public void ReachingTheTargetWins()
     {
-        var before = Later with { Score = new(20, 49), Shooter = 1, Target = 50, Call = Calls(3, PocketId.HeadLeft) };
-        var r = Judge(before, Shot().Hit(3).Pocket(3, PocketId.HeadLeft));
+        var before = Later with { Score = new(20, 49), Shooter = 1, Target = 50, Call = Calls(3, PoolPockets.HeadLeft) };
+        var r = Judge(before, Shot().Hit(3).Pocket(3, PoolPockets.HeadLeft));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 1, gameOver: true, winner: 1);
     }
 
@@ -56,7 +56,7 @@ public class StraightPoolRefereeTests
     [Fact]
     public void AnOpeningBreakThatPocketsItsCalledBallIsLegalAndScores()
     {
-        var r = Judge(Start(Game) with { Call = Calls(5, PocketId.FootRight) }, Shot().Hit(1).Pocket(5, PocketId.FootRight));
+        var r = Judge(Start(Game) with { Call = Calls(5, PoolPockets.FootRight) }, Shot().Hit(1).Pocket(5, PoolPockets.FootRight));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 0);
         Assert.Equal(new PerPlayer<int>(1, 0), r.Next.Score);
     }
@@ -87,7 +87,7 @@ public class StraightPoolRefereeTests
     [Fact]
     public void AScratchGivesBallInHandInTheKitchen()
     {
-        var r = Judge(Later, Shot().Hit(4).Rail(4).Pocket(0, PocketId.FootLeft));
+        var r = Judge(Later, Shot().Hit(4).Rail(4).Pocket(0, PoolPockets.FootLeft));
         Expect(r, [Foul.CueBallPocketed], cont: false, BallInHand.Kitchen, nextShooter: 1);
         Assert.Equal(BallInHand.Kitchen, r.Next.BallInHand);
     }
@@ -95,7 +95,7 @@ public class StraightPoolRefereeTests
     [Fact]
     public void ACalledBallPocketedOnAFoulIsSpottedAndScoresNothing()
     {
-        var r = Judge(Later with { Call = Calls(4, PocketId.FootLeft) }, Shot().Hit(4).Pocket(4, PocketId.FootLeft).Pocket(0, PocketId.FootRight));
+        var r = Judge(Later with { Call = Calls(4, PoolPockets.FootLeft) }, Shot().Hit(4).Pocket(4, PoolPockets.FootLeft).Pocket(0, PoolPockets.FootRight));
         Expect(r, [Foul.CueBallPocketed], cont: false, BallInHand.Kitchen, nextShooter: 1);
         Assert.Equal(new PerPlayer<int>(19, 11), r.Next.Score);
         Assert.Equal(Ids(4), r.Spot);
@@ -122,8 +122,8 @@ public class StraightPoolRefereeTests
     public void PocketingTheFourteenthBallReracksFourteenAndTheShooterGoesOn()
     {
         // Balls 1-13 are down; the 14 is called and pocketed; the 15 is left.
-        var before = Later with { Call = Calls(14, PocketId.SideRight) };
-        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13).Hit(14).Pocket(14, PocketId.SideRight));
+        var before = Later with { Call = Calls(14, PoolPockets.SideRight) };
+        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13).Hit(14).Pocket(14, PoolPockets.SideRight));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 0);
         Assert.Equal(Ids(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14), r.Rerack);
         Assert.Equal(21, r.Next.Score[0]);
@@ -133,8 +133,8 @@ public class StraightPoolRefereeTests
     [Fact]
     public void WithTwoBallsLeftNothingIsReracked()
     {
-        var before = Later with { Call = Calls(14, PocketId.SideRight) };
-        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12).Hit(14).Pocket(14, PocketId.SideRight));
+        var before = Later with { Call = Calls(14, PoolPockets.SideRight) };
+        var r = Judge(before, Shot().Off(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12).Hit(14).Pocket(14, PoolPockets.SideRight));
         Assert.Empty(r.Rerack);
     }
 }

@@ -15,14 +15,14 @@ public class TenBallRefereeTests
     [Fact]
     public void TheCalledBallInItsPocketContinues()
     {
-        var r = Judge(Later with { Call = Calls(1, PocketId.FootLeft) }, Shot().Hit(1).Pocket(1, PocketId.FootLeft));
+        var r = Judge(Later with { Call = Calls(1, PoolPockets.FootLeft) }, Shot().Hit(1).Pocket(1, PoolPockets.FootLeft));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 0);
     }
 
     [Fact]
     public void ACalledBallInAnotherPocketEndsTheTurnWithoutAFoul()
     {
-        var r = Judge(Later with { Call = Calls(1, PocketId.FootLeft) }, Shot().Hit(1).Pocket(1, PocketId.FootRight));
+        var r = Judge(Later with { Call = Calls(1, PoolPockets.FootLeft) }, Shot().Hit(1).Pocket(1, PoolPockets.FootRight));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 1);
         Assert.Empty(r.Spot);
     }
@@ -30,7 +30,7 @@ public class TenBallRefereeTests
     [Fact]
     public void AnUncalledBallPocketedEndsTheTurnAndStaysDown()
     {
-        var r = Judge(Later with { Call = Calls(1, PocketId.FootLeft) }, Shot().Hit(1).Collide(1, 6).Pocket(6, PocketId.SideLeft));
+        var r = Judge(Later with { Call = Calls(1, PoolPockets.FootLeft) }, Shot().Hit(1).Collide(1, 6).Pocket(6, PoolPockets.SideLeft));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 1);
         Assert.Equal(Ids(6), r.Pocketed);
         Assert.Empty(r.Spot);
@@ -39,7 +39,7 @@ public class TenBallRefereeTests
     [Fact]
     public void AnUncalledTenIsSpotted()
     {
-        var r = Judge(Later with { Call = Calls(1, PocketId.FootLeft) }, Shot().Hit(1).Collide(1, 10).Pocket(10, PocketId.SideLeft));
+        var r = Judge(Later with { Call = Calls(1, PoolPockets.FootLeft) }, Shot().Hit(1).Collide(1, 10).Pocket(10, PoolPockets.SideLeft));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 1);
         Assert.Equal(Ids(10), r.Spot);
     }
@@ -47,7 +47,7 @@ public class TenBallRefereeTests
     [Fact]
     public void TheTenOnTheBreakIsSpottedAndDoesNotWin()
     {
-        var r = Judge(Start(Game), Shot().Hit(1).Pocket(10, PocketId.FootRight));
+        var r = Judge(Start(Game), Shot().Hit(1).Pocket(10, PoolPockets.FootRight));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 0);
         Assert.Equal(Ids(10), r.Spot);
     }
@@ -55,14 +55,14 @@ public class TenBallRefereeTests
     [Fact]
     public void TheTenLegallyInItsCalledPocketWins()
     {
-        var r = Judge(Later with { Call = Calls(10, PocketId.HeadLeft) }, Shot().Off(1, 2, 3, 4, 5, 6).Hit(7).Collide(7, 10).Pocket(10, PocketId.HeadLeft));
+        var r = Judge(Later with { Call = Calls(10, PoolPockets.HeadLeft) }, Shot().Off(1, 2, 3, 4, 5, 6).Hit(7).Collide(7, 10).Pocket(10, PoolPockets.HeadLeft));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 0, gameOver: true, winner: 0);
     }
 
     [Fact]
     public void TheLowestBallIsStillTheFirstTarget()
     {
-        var r = Judge(Later with { Call = Calls(10, PocketId.HeadLeft) }, Shot().Hit(10).Pocket(10, PocketId.HeadLeft));
+        var r = Judge(Later with { Call = Calls(10, PoolPockets.HeadLeft) }, Shot().Hit(10).Pocket(10, PoolPockets.HeadLeft));
         Expect(r, [Foul.WrongBallFirst], cont: false, BallInHand.Table, nextShooter: 1);
         Assert.Equal(Ids(10), r.Spot);
     }
@@ -70,7 +70,7 @@ public class TenBallRefereeTests
     [Fact]
     public void APushOutNeedsNoCall()
     {
-        var r = Judge(At(Game, shot: 1) with { PushOut = true }, Shot().Hit(5).Pocket(5, PocketId.SideRight));
+        var r = Judge(At(Game, shot: 1) with { PushOut = true }, Shot().Hit(5).Pocket(5, PoolPockets.SideRight));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 1);
         Assert.Equal([RefereeOption.Shoot, RefereeOption.PassBack], r.Options);
     }

@@ -28,7 +28,7 @@ public class GameBlockTests
             Players = new("Anna", "Ben"),
             Shot = 3,
             Groups = new(BallGroup.Solids, BallGroup.Stripes),
-            Call = new Call(new BallId(8), PocketId.FootLeft),
+            Call = new Call(new BallId(8), PoolPockets.FootLeft),
             FoulsInRow = new(0, 1),
         };
         Assert.Equal(expected, state);
@@ -109,7 +109,7 @@ public class GameBlockTests
         Assert.False(string.IsNullOrWhiteSpace(ruling.GetProperty("message").GetString()));
 
         // "next" is a game block the loader accepts, for the same game: one shot on, or a new rack's break.
-        var next = GameBlockReader.Read(ruling.GetProperty("next"), file, "$.ruling.next");
+        var next = GameBlockReader.Read(ruling.GetProperty("next"), PoolPockets.Set, file, "$.ruling.next");
         Assert.Equal(scene.Game!.Rules, next.Rules);
         Assert.Equal(ruling.GetProperty("game_over").GetBoolean() ? 0 : scene.Game.Shot + 1, next.Shot);
     }
@@ -119,7 +119,7 @@ public class GameBlockTests
     {
         GameState[] states =
         [
-            new GameState(GameRules.EightBall) { Players = new("A", "B"), Shooter = 1, Shot = 7, Groups = new(BallGroup.Stripes, BallGroup.Solids), Call = new Call(new BallId(12), PocketId.SideRight), FoulsInRow = new(2, 1), BallInHand = BallInHand.Table },
+            new GameState(GameRules.EightBall) { Players = new("A", "B"), Shooter = 1, Shot = 7, Groups = new(BallGroup.Stripes, BallGroup.Solids), Call = new Call(new BallId(12), PoolPockets.SideRight), FoulsInRow = new(2, 1), BallInHand = BallInHand.Table },
             new GameState(GameRules.NineBall) { Shot = 1, PushOut = true },
             new GameState(GameRules.TenBall) { Shot = 4, Call = Call.Safety, BallInHand = BallInHand.Table },
             new GameState(GameRules.StraightPool) { Shot = 40, Score = new(-3, 57), Target = 75, BallInHand = BallInHand.Kitchen },
@@ -132,7 +132,7 @@ public class GameBlockTests
                 GameBlockWriter.WriteGame(w, state);
             }
             using var doc = JsonDocument.Parse(stream.ToArray());
-            Assert.Equal(state, GameBlockReader.Read(doc.RootElement, "x.json"));
+            Assert.Equal(state, GameBlockReader.Read(doc.RootElement, PoolPockets.Set, "x.json"));
         }
     }
 }

@@ -47,7 +47,7 @@ public class SceneLoaderTests
     {
         var scene = Parse($$"""{ {{Head}}, "rack": { "game": "eight-ball", "seed": 1 } }""");
         Assert.Equal(16, scene.Balls.Count);
-        Assert.Equal(BallId.Cue, scene.Balls[0].Id);
+        Assert.Equal(PoolBalls.Cue, scene.Balls[0].Id);
         Assert.Equal(-2.54 / 4, scene.Balls[0].Position.X, 12);
     }
 

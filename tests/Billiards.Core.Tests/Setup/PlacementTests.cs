@@ -30,7 +30,7 @@ public class PlacementTests
         // Each capture circle (radius R) lies R beyond the middle of the mouth; the corner of the
         // cushion rectangle, (L/2 - R, W/2 - R), is inside the foot-left one on a 9 ft table.
         var corner = new Vec3(Pool9.HalfLength - R, Pool9.HalfWidth - R, R);
-        var foot = TableGeometry.Build(Pool9, R).Pockets[(int)PocketId.FootLeft];
+        var foot = TableGeometry.Build(Pool9, R).Pockets[PoolPockets.FootLeft.Index];
         Assert.True((corner - foot.Centre).XY.Length < foot.Radius);
         Assert.Contains("is over the foot-left pocket", Placement.OnTable(Pool9, R, Three, corner));
         Assert.Contains("is over the head-right pocket", Placement.OnTable(Pool9, R, Three, new Vec3(-corner.X, -corner.Y, R)));
@@ -43,24 +43,24 @@ public class PlacementTests
     {
         double headString = -Pool9.Length / 4;
         Assert.Equal(headString, Placement.HeadString(Pool9));
-        Assert.Null(Placement.OnTable(Pool9, R, BallId.Cue, new Vec3(headString, 0.1, R), PlacementRegion.Kitchen));
-        Assert.Contains("is outside the kitchen", Placement.OnTable(Pool9, R, BallId.Cue, new Vec3(headString + 0.001, 0.1, R), PlacementRegion.Kitchen));
-        Assert.Null(Placement.OnTable(Pool9, R, BallId.Cue, new Vec3(headString + 0.001, 0.1, R), PlacementRegion.Table));
+        Assert.Null(Placement.OnTable(Pool9, R, PoolBalls.Cue, new Vec3(headString, 0.1, R), PlacementRegion.Kitchen));
+        Assert.Contains("is outside the kitchen", Placement.OnTable(Pool9, R, PoolBalls.Cue, new Vec3(headString + 0.001, 0.1, R), PlacementRegion.Kitchen));
+        Assert.Null(Placement.OnTable(Pool9, R, PoolBalls.Cue, new Vec3(headString + 0.001, 0.1, R), PlacementRegion.Table));
     }
 
     [Fact]
     public void BallsOverlapWhenTheirCentresAreLessThanTwoRadiiApart()
     {
         var a = new Vec3(0, 0, R);
-        Assert.Null(Placement.Overlap(R, Three, new Vec3(2 * R, 0, R), BallId.Cue, a));
+        Assert.Null(Placement.Overlap(R, Three, new Vec3(2 * R, 0, R), PoolBalls.Cue, a));
         Assert.Equal("ball \"3\" overlaps ball \"cue\" (centres 0.05 m apart, less than 2R = 0.05715 m)",
-            Placement.Overlap(R, Three, new Vec3(0.03, 0.04, R), BallId.Cue, a));
+            Placement.Overlap(R, Three, new Vec3(0.03, 0.04, R), PoolBalls.Cue, a));
     }
 
     [Fact]
     public void ASetReportsItsFirstProblemOnTheBallAtFault()
     {
-        var balls = new List<(BallId, Vec3)> { (BallId.Cue, new Vec3(0, 0, R)), (Three, new Vec3(0.5, 0, R)), (new BallId(4), new Vec3(0.5, 0.01, R)) };
+        var balls = new List<(BallId, Vec3)> { (PoolBalls.Cue, new Vec3(0, 0, R)), (Three, new Vec3(0.5, 0, R)), (new BallId(4), new Vec3(0.5, 0.01, R)) };
         Assert.Contains("ball \"4\" overlaps ball \"3\"", Placement.Check(Pool9, R, balls, out int culprit));
         Assert.Equal(2, culprit);
         balls[2] = (new BallId(4), new Vec3(0.5, 0.1, R));
@@ -105,19 +105,19 @@ public class PlacementTests
         var onString = new Vec3(Placement.HeadString(table), 0.2, r);
         // The referee takes a centre on the head string as behind it; the planner keeps 0.1 mm clear.
         Assert.True(Placement.FitsOnTable(table, r, onString, PlacementRegion.Kitchen));
-        Assert.Null(Placement.OnTable(table, r, BallId.Cue, onString, PlacementRegion.Kitchen));
-        var position = new Billiards.Core.Ai.TablePosition([(new BallId(1), new Vec3(0.5, 0, r))]);
-        Assert.False(position.CanPlace(onString, Billiards.Core.Rules.BallInHand.Kitchen, table, r, BallId.Cue));
-        Assert.True(position.CanPlace(onString with { X = onString.X - 0.001 }, Billiards.Core.Rules.BallInHand.Kitchen, table, r, BallId.Cue));
+        Assert.Null(Placement.OnTable(table, r, PoolBalls.Cue, onString, PlacementRegion.Kitchen));
+        var position = new Billiards.Core.Ai.TablePosition([(new BallId(1), new Vec3(0.5, 0, r))], PoolBalls.Cue);
+        Assert.False(position.CanPlace(onString, Billiards.Core.Rules.BallInHand.Kitchen, table, r, PoolBalls.Cue));
+        Assert.True(position.CanPlace(onString with { X = onString.X - 0.001 }, Billiards.Core.Rules.BallInHand.Kitchen, table, r, PoolBalls.Cue));
         // Touching a ball is allowed; the planner wants its margin.
         var touching = new Vec3(0.5 - 2 * r, 0, r);
         Assert.False(Placement.Overlaps(r, touching, new Vec3(0.5, 0, r)));
-        Assert.False(position.CanPlace(touching, Billiards.Core.Rules.BallInHand.Table, table, r, BallId.Cue));
-        Assert.True(position.CanPlace(touching with { X = touching.X - 0.001 }, Billiards.Core.Rules.BallInHand.Table, table, r, BallId.Cue));
+        Assert.False(position.CanPlace(touching, Billiards.Core.Rules.BallInHand.Table, table, r, PoolBalls.Cue));
+        Assert.True(position.CanPlace(touching with { X = touching.X - 0.001 }, Billiards.Core.Rules.BallInHand.Table, table, r, PoolBalls.Cue));
         // Over a pocket, for both.
         var corner = new Vec3(table.HalfLength - r, table.HalfWidth - r, r);
         Assert.False(Placement.FitsOnTable(table, r, corner, PlacementRegion.Table));
-        Assert.False(position.CanPlace(corner, Billiards.Core.Rules.BallInHand.Table, table, r, BallId.Cue));
+        Assert.False(position.CanPlace(corner, Billiards.Core.Rules.BallInHand.Table, table, r, PoolBalls.Cue));
     }
 
     [Fact]
@@ -126,14 +126,14 @@ public class PlacementTests
         var table = TableSpec.FromPreset("pool-9ft");
         double r = 0.028575;
         var head = new Vec3(-table.HalfLength / 2, 0, r);
-        Assert.Equal(head, Placement.FreeSpotNear(table, r, BallId.Cue, head, []));
+        Assert.Equal(head, Placement.FreeSpotNear(table, r, PoolBalls.Cue, head, []));
         // A ball on the head spot: the first free point is on the first ring that clears it (2R away), at angle 0.
-        var spot = Placement.FreeSpotNear(table, r, BallId.Cue, head, [(new BallId(1), head)]);
+        var spot = Placement.FreeSpotNear(table, r, PoolBalls.Cue, head, [(new BallId(1), head)]);
         Assert.Equal(2 * r, (spot - head).Length, 9);
         Assert.Equal(head.Y, spot.Y, 12);
         Assert.True(spot.X > head.X);
         // In the kitchen, the ring point ahead of the head string is refused: the first one behind it.
-        var kitchen = Placement.FreeSpotNear(table, r, BallId.Cue, head, [(new BallId(1), head)], PlacementRegion.Kitchen);
+        var kitchen = Placement.FreeSpotNear(table, r, PoolBalls.Cue, head, [(new BallId(1), head)], PlacementRegion.Kitchen);
         Assert.True(kitchen.X <= Placement.HeadString(table) + Placement.Tolerance);
         Assert.True((kitchen - head).Length >= 2 * r - Placement.Tolerance);
     }

@@ -35,8 +35,8 @@ public class RackTests
         Assert.Equal(1, BallAt(rack, Ideal(0, 0, 1)));    // apex on the foot spot
         Assert.Equal(8, BallAt(rack, Ideal(2, 1, 3)));    // centre of the triangle
         var corners = new[] { BallAt(rack, Ideal(4, 0, 5)), BallAt(rack, Ideal(4, 4, 5)) };
-        Assert.Single(corners, n => !new BallId(n).IsStripe && n != 8);
-        Assert.Single(corners, n => new BallId(n).IsStripe);
+        Assert.Single(corners, n => !BallSet.Pool.Group("stripes").Contains(new BallId(n)) && n != 8);
+        Assert.Single(corners, n => BallSet.Pool.Group("stripes").Contains(new BallId(n)));
     }
 
     [Theory]

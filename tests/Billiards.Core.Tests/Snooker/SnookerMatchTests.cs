@@ -10,6 +10,8 @@ namespace Billiards.Core.Tests.Snooker;
 /// <summary>Core's match drives snooker frames with real physics: the break-off, the options after a foul, replace, and records that replay.</summary>
 public class SnookerMatchTests
 {
+    private static readonly BallId Cue = BallSet.Snooker.CueBalls[0];
+
     private static readonly Vec3 BreakPlace = new(SnookerTable.BaulkLineX(TableSpec.FromPreset("snooker-12ft")), -0.146, 0.02625);
 
     // The break-off into the side of the pack, then the incoming player plays away from every ball (a foul and a miss).
@@ -24,6 +26,53 @@ public class SnookerMatchTests
         return match;
     }
 
+    /// <summary>
+    /// Seeded random shots through a frame (random strikes, nominations, placements in the D and
+    /// choices among the options offered): every ruling applies, the score only grows, no two balls
+    /// overlap between shots, and the record of it all replays.
+    /// </summary>
+    [Theory]
+    [InlineData(26)]
+    [InlineData(7)]
+    [InlineData(1234)]
+    [InlineData(99)]
+    public void Random_shots_through_a_frame_apply_every_ruling_and_replay(int seed)
+    {
+        var random = new Random(seed);
+        var match = new Match(GameSetup.Of(GameRules.Snooker, 3));
+        double r = match.Setup.BallRadius;
+        for (int i = 0; i < 80 && !match.IsOver; i++)
+        {
+            var state = match.State;
+            var colours = match.Balls.Keys.Where(SnookerRuleset.IsColour).ToList();
+            Call? call = state.BallOn == "colour" && colours.Count > 0 ? Call.Nominate(colours[random.Next(colours.Count)]) : null;
+            Vec3? place = match.BallInHand == BallInHand.D
+                ? new Vec3(SnookerTable.BaulkLineX(match.Setup.Table) - (random.NextDouble() * 0.2), (random.NextDouble() - 0.5) * 0.4, r)
+                : null;
+            var input = new GameShot(new ShotSpec(1 + (random.NextDouble() * 6), random.NextDouble() * 360, (random.NextDouble() - 0.5) * 0.6, (random.NextDouble() - 0.5) * 0.6), call, place);
+            var sim = match.Strike(input);
+            Match.RunToRest(sim);
+            var shot = match.Judge(sim);
+            if (match.PendingOptions.Count > 0)
+            {
+                match.Choose(match.PendingOptions[random.Next(match.PendingOptions.Count)]);
+            }
+            // (A frame's end starts the next frame's state at 0 - 0.)
+            Assert.True(match.IsOver || match.State.Score.First >= shot.Before.Score.First && match.State.Score.Second >= shot.Before.Score.Second,
+                $"shot {i}: {shot.Before.Score} -> {match.State.Score}: {match.Shots[^1].Ruling.Message} ({match.Shots[^1].Input.Choice})");
+            var balls = match.Balls.Values.ToList();
+            for (int a = 0; a < balls.Count; a++)
+            {
+                for (int b = a + 1; b < balls.Count; b++)
+                {
+                    Assert.True((balls[a] - balls[b]).LengthXY >= 2 * r - 1e-6, $"shot {i}: two balls overlap");
+                }
+            }
+        }
+        var record = GameRecordFile.Parse(System.Text.Encoding.UTF8.GetString(GameRecordFile.ToUtf8(match)), "random.json");
+        Assert.Equal(-1, GameRecordFile.Replay(record, out _));
+    }
+
     [Fact]
     public void A_snooker_frame_starts_from_its_rack_on_its_table_with_the_cue_ball_in_hand_in_the_D()
     {
@@ -32,7 +81,7 @@ public class SnookerMatchTests
         Assert.Equal(0.02625, match.Setup.BallRadius);
         Assert.Equal(22, match.Balls.Count);
         Assert.Equal(BallInHand.D, match.BallInHand);
-        Assert.True(SnookerTable.InD(match.Setup.Table, match.Balls[BallId.Cue]));
+        Assert.True(SnookerTable.InD(match.Setup.Table, match.Balls[Cue]));
     }
 
     [Fact]
@@ -56,7 +105,7 @@ public class SnookerMatchTests
         var match = Opening(RefereeOption.Play);
         var lie = match.Shots[^1].After.ToDictionary(b => b.Id, b => b.Position);
         Assert.All(lie, b => Assert.Equal(b.Value, match.Balls[b.Key]));
-        Assert.NotEqual(match.Shots[0].After.Single(b => b.Id.IsCue).Position, match.Balls[BallId.Cue]);
+        Assert.NotEqual(match.Shots[0].After.Single(b => b.Id == Cue).Position, match.Balls[Cue]);
         Assert.Equal(0, match.State.Shooter);
     }
 

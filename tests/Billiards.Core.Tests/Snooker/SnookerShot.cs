@@ -18,6 +18,8 @@ internal sealed class SnookerShot
     public static readonly TableSpec Table = TableSpec.FromPreset("snooker-12ft");
     public const double R = 0.02625;
 
+    private static readonly BallId Cue = BallSet.Snooker.CueBalls[0];
+
     private readonly List<BallId> _ids = [.. BallSet.Snooker.Ids];
     private readonly BallState[] _before;
     private readonly BallState[] _after;
@@ -29,7 +31,7 @@ internal sealed class SnookerShot
         var rack = Initializer.Rack(new RackSpec(RackGame.Snooker, 1), Table, R).ToDictionary(b => b.Id, b => b.Position);
         _before = [.. _ids.Select(id => new BallState { Position = rack[id], Pocket = -1, State = MotionState.Stationary })];
         _after = [.. _before];
-        _events.Add(new SimEvent(0, EventKind.CueStrike, BallId.Cue, BallId.Cue, -1, 3.0));
+        _events.Add(new SimEvent(0, EventKind.CueStrike, Cue, Cue, -1, 3.0));
     }
 
     public static BallId Id(string name) => BallSet.Snooker.TryParse(name, out var id) ? id : throw new ArgumentException(name);
@@ -48,12 +50,12 @@ internal sealed class SnookerShot
     }
 
     /// <summary>A ball drops into a pocket during the shot.</summary>
-    public SnookerShot Pot(string ball, PocketId pocket = PocketId.FootLeft)
+    public SnookerShot Pot(string ball, int pocket = 4)
     {
-        _events.Add(new SimEvent(Next, EventKind.BallPocket, Id(ball), Id(ball), (int)pocket, 0.8));
+        _events.Add(new SimEvent(Next, EventKind.BallPocket, Id(ball), Id(ball), pocket, 0.8));
         ref var b = ref _after[Index(ball)];
         b.State = MotionState.Pocketed;
-        b.Pocket = (int)pocket;
+        b.Pocket = pocket;
         return this;
     }
 
@@ -68,7 +70,7 @@ internal sealed class SnookerShot
     /// <summary>The cue ball leaves the bed.</summary>
     public SnookerShot Airborne()
     {
-        _events.Add(new SimEvent(Next, EventKind.BallAirborne, BallId.Cue, BallId.Cue, -1, 1.0));
+        _events.Add(new SimEvent(Next, EventKind.BallAirborne, Cue, Cue, -1, 1.0));
         return this;
     }
 

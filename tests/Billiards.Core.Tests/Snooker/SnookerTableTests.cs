@@ -19,10 +19,10 @@ public class SnookerTableTests
     {
         Assert.Equal(3.569, Table.Length);
         Assert.Equal(1.778, Table.Width);
-        Assert.Equal(0.086, Table.CornerPocketMouth);
-        Assert.Equal(0.092, Table.SidePocketMouth);
+        Assert.Equal(6, Table.Pockets.Count);
+        Assert.All(Table.Pockets, p => Assert.Equal(p.IsCorner ? 0.086 : 0.092, p.Mouth));
         var pool = TableSpec.FromPreset("pool-9ft");
-        Assert.True(Table.CornerPocketMouth < pool.CornerPocketMouth && Table.SidePocketMouth < pool.SidePocketMouth);
+        Assert.All(Table.Pockets.Zip(pool.Pockets), p => Assert.True(p.First.Mouth < p.Second.Mouth));
         // Rounded: the noses at the jaws are four times pool's.
         Assert.All(TableGeometry.Build(Table, R).Noses.ToArray(), n => Assert.Equal(0.02, n.Radius));
     }
@@ -62,7 +62,7 @@ public class SnookerTableTests
         Assert.Equal(0.0525 / 2, set.Radius);
         Assert.Equal(0.142, set.Mass);
         // Names are unique across the sets: an id writes and reads as its ball's name.
-        Assert.True(BallId.TryParse("pink", out var pink));
+        Assert.True(BallSet.Snooker.TryParse("pink", out var pink));
         Assert.Equal("pink", pink.ToString());
         Assert.Equal("7", new BallId(7).ToString());
         var red = BallSet.Snooker.Kind(BallSet.Snooker.Group("reds")[0]).Look;
@@ -82,7 +82,7 @@ public class SnookerTableTests
         {
             Assert.Equal(SnookerTable.Spot(Table, colour, R), rack.Single(b => b.Id == BallSet.Colour(colour)).Position);
         }
-        Assert.True(SnookerTable.InD(Table, rack.Single(b => b.Id.IsCue).Position));
+        Assert.True(SnookerTable.InD(Table, rack.Single(b => b.Id == BallSet.Snooker.CueBalls[0]).Position));
         var pink = SnookerTable.Spot(Table, "pink", R);
         var reds = rack.Where(b => BallSet.Snooker.Group("reds").Contains(b.Id)).Select(b => b.Position).ToList();
         Assert.Equal(15, reds.Count);
@@ -128,7 +128,7 @@ public class SnookerTableTests
         {
             foreach (var start in new[] { new Vec3(0.3, 0.1, R), new Vec3(-1.5, 0.8, R), new Vec3(1.6, -0.5, R) })
             {
-                var scene = new Scene("pockets", null, Table, physics, null, [new BallSetup(BallId.Cue, start, Vec3.Zero, Vec3.Zero)], new ShotSpec(12, aim), null);
+                var scene = new Scene("pockets", null, Table, physics, null, [new BallSetup(BallSet.Snooker.CueBalls[0], start, Vec3.Zero, Vec3.Zero)], new ShotSpec(12, aim), null) { BallSet = BallSet.Snooker };
                 var b = SimulationRunner.Run(scene, new RunOptions()).Simulation.Balls[0];
                 Assert.True(b.IsPocketed || TableBounds.Contains(Table, b.Position, R), $"{integrator}, from {start} at {aim} deg: ended at {b.Position}");
             }

@@ -15,18 +15,20 @@ public class CushionIdTests
     [Fact]
     public void JawsAndBacksBelongToTheirPocketAndRailsToNone()
     {
-        Assert.Equal(CushionId.FootLeftJaw, CushionIds.Jaw(PocketId.FootLeft));
-        Assert.Equal(CushionId.SideRightBack, CushionIds.Back(PocketId.SideRight));
-        foreach (var pocket in PocketIds.All)
+        Assert.Equal(CushionKind.Jaw, CushionId.Jaw(PoolPockets.FootLeft).Kind);
+        Assert.Equal(CushionKind.Back, CushionId.Back(PoolPockets.SideRight).Kind);
+        Assert.NotEqual(CushionId.Jaw(PoolPockets.FootLeft), CushionId.Jaw(PoolPockets.FootRight));
+        foreach (var pocket in PoolPockets.All)
         {
-            Assert.Equal(pocket, CushionIds.Jaw(pocket).PocketOf());
-            Assert.Equal(pocket, CushionIds.Back(pocket).PocketOf());
-            Assert.False(CushionIds.Jaw(pocket).IsRail());
+            Assert.Equal(pocket, CushionId.Jaw(pocket).Pocket);
+            Assert.Equal(pocket, CushionId.Back(pocket).Pocket);
+            Assert.False(CushionId.Jaw(pocket).IsRail);
         }
-        Assert.True(CushionId.RightFoot.IsRail());
-        Assert.Equal(PocketId.None, CushionId.Head.PocketOf());
-        Assert.Equal("side-left-jaw", CushionId.SideLeftJaw.ToName());
-        Assert.Equal("foot-right-back", CushionId.FootRightBack.ToName());
+        Assert.True(CushionId.RightFoot.IsRail);
+        Assert.Equal(PocketId.None, CushionId.Head.Pocket);
+        Assert.Equal(CushionId.None, CushionId.Jaw(PocketId.None));
+        Assert.Equal("side-left-jaw", CushionId.Jaw(PoolPockets.SideLeft).ToName());
+        Assert.Equal("foot-right-back", CushionId.Back(PoolPockets.FootRight).ToName());
         Assert.Equal("left-foot", CushionId.LeftFoot.ToName());
     }
 
@@ -48,7 +50,7 @@ public class CushionIdTests
             string name = sim.FeatureName(EventKind.BallCushion, f);
             // Rails carry the same name under both models; a jaw's name starts with its pocket's
             // jaw ("foot-left-jaw", or "foot-left-jaw-foot" for the standard model's jaw on the foot rail).
-            if (id.IsRail())
+            if (id.IsRail)
             {
                 Assert.Equal(id.ToName(), name);
             }
@@ -62,18 +64,19 @@ public class CushionIdTests
     }
 
     [Theory]
-    [InlineData("standard", 0.0, CushionId.Foot)]
-    [InlineData("thesis", 0.0, CushionId.Foot)]
-    [InlineData("standard", 180.0, CushionId.Head)]
-    [InlineData("thesis", 180.0, CushionId.Head)]
-    [InlineData("standard", 90.0, CushionId.LeftFoot)]
-    [InlineData("thesis", 90.0, CushionId.LeftFoot)]
-    [InlineData("standard", -90.0, CushionId.RightHead)]
-    [InlineData("thesis", -90.0, CushionId.RightHead)]
-    public void AStraightShotAtARailHitsTheSameCushionUnderBothModels(string model, double aim, CushionId expected)
+    [InlineData("standard", 0.0, "foot")]
+    [InlineData("thesis", 0.0, "foot")]
+    [InlineData("standard", 180.0, "head")]
+    [InlineData("thesis", 180.0, "head")]
+    [InlineData("standard", 90.0, "left-foot")]
+    [InlineData("thesis", 90.0, "left-foot")]
+    [InlineData("standard", -90.0, "right-head")]
+    [InlineData("thesis", -90.0, "right-head")]
+    public void AStraightShotAtARailHitsTheSameCushionUnderBothModels(string model, double aim, string rail)
     {
+        var expected = CushionId.OfRail(CushionId.RailNames.ToList().IndexOf(rail));
         // From a point off the side pockets (x = +0.3 or -0.3 towards the named long rail's half).
-        double x = expected is CushionId.LeftFoot ? 0.3 : expected is CushionId.RightHead ? -0.3 : 0;
+        double x = expected == CushionId.LeftFoot ? 0.3 : expected == CushionId.RightHead ? -0.3 : 0;
         var sim = Create(model, $$""" "balls": [ { "id": "cue", "position": [{{x.ToString(System.Globalization.CultureInfo.InvariantCulture)}}, 0.1] } ] """);
         sim.Strike(new ShotSpec(1.5, aim));
         sim.AdvanceTo(30);

@@ -311,7 +311,7 @@ public sealed class EulerStepper
             }
         }
         var spec = _geometry.Spec;
-        double reach = Math.Max(spec.CornerPocketMouth, spec.SidePocketMouth) / 2 + 2 * _params.R;
+        double reach = spec.Pockets.Max(p => p.Mouth) / 2 + 2 * _params.R;
         if (nearest >= 0 && best <= reach)
         {
             Drop(ref b, i, nearest, time);

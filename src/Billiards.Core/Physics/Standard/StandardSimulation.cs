@@ -28,7 +28,7 @@ public sealed partial class StandardSimulation : Simulation
 
     /// <summary>Creates the simulation of a scene's balls on a shared table model (the scene's table and physics are the model's).</summary>
     internal StandardSimulation(StandardTableModel model, Scene scene)
-        : base(StandardModel.ModelName, scene.Physics.Integrator, scene.Physics.Dt, scene.Table, [.. scene.Balls.Select(b => b.Id)])
+        : base(StandardModel.ModelName, scene.Physics.Integrator, scene.Physics.Dt, scene.Table, [.. scene.Balls.Select(b => b.Id)], scene.BallSet)
     {
         _model = model;
         _balls = new BallState[scene.Balls.Count];
@@ -165,5 +165,5 @@ public sealed partial class StandardSimulation : Simulation
 
     /// <inheritdoc />
     public override string FeatureName(EventKind kind, int feature) =>
-        kind == EventKind.BallPocket ? TableGeometry.PocketName(feature) : Geometry.CushionName(feature);
+        kind == EventKind.BallPocket ? Geometry.PocketName(feature) : Geometry.CushionName(feature);
 }

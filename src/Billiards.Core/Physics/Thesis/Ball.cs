@@ -26,11 +26,11 @@ public sealed class Ball
         Position = position;
     }
 
-    /// <summary>The ball's id value in pool's set (<see cref="Balls.BallSet.Pool"/>): the cue ball and the numbered balls.</summary>
+    /// <summary>The ball's id value in its set.</summary>
     public int Number { get; }
 
-    /// <summary>True for the cue ball, the only ball the effet acts on (seed 4.3.2).</summary>
-    public bool IsCue => Balls.BallSet.Pool.IsCueBall(new Balls.BallId(Number));
+    /// <summary>True for a cue ball of the set, the only ball the effet acts on (seed 4.3.2).</summary>
+    public bool IsCue { get; init; }
 
     /// <summary>Centre of the ball (cm); y = 2.86 while it lies on the bed.</summary>
     public Vector3 Position { get; set; }
@@ -41,7 +41,7 @@ public sealed class Ball
     /// <summary>Orientation for drawing (seed Listing 1); only integrated when asked for.</summary>
     public Quaternion Orientation { get; set; } = Quaternion.Identity;
 
-    /// <summary>Index of the pocket the ball is dropping into or lies in (see <see cref="Setup.Initializer.PocketNames"/>), or -1.</summary>
+    /// <summary>Index of the pocket the ball is dropping into or lies in (in the table's <see cref="Table.TableSpec.Pockets"/>), or -1.</summary>
     public int Pocket { get; set; } = -1;
 
     /// <summary>The seed's pocketed flag: set once the ball has fallen below y = -20 cm; it is then out of play and not drawn.</summary>

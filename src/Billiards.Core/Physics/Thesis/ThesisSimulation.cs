@@ -39,7 +39,7 @@ public sealed partial class ThesisSimulation : Simulation
 
     /// <summary>The scene's balls on a shared table model (the scene's table and physics are the model's).</summary>
     internal ThesisSimulation(ThesisTableModel model, Scene scene)
-        : base(ThesisModel.ModelName, scene.Physics.Integrator, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList())
+        : base(ThesisModel.ModelName, scene.Physics.Integrator, scene.Physics.Dt, scene.Table, scene.Balls.Select(b => b.Id).ToList(), scene.BallSet)
     {
         _model = model;
         var balls = new Ball[scene.Balls.Count];
@@ -48,7 +48,7 @@ public sealed partial class ThesisSimulation : Simulation
         for (int i = 0; i < balls.Length; i++)
         {
             var setup = scene.Balls[i];
-            balls[i] = new Ball(setup.Id.Value, SeedFrame.FromSi(setup.Position)) { Velocity = SeedFrame.FromSi(setup.Velocity) };
+            balls[i] = new Ball(setup.Id.Value, SeedFrame.FromSi(setup.Position)) { Velocity = SeedFrame.FromSi(setup.Velocity), IsCue = scene.BallSet.IsCueBall(setup.Id) };
             balls[i].RandomizeOrientation(random);
         }
         Queue = new ThesisCue();
@@ -174,15 +174,20 @@ public sealed partial class ThesisSimulation : Simulation
         _statesStale = true;
     }
 
-    /// <summary>The seed's features are numbered as <see cref="CushionId"/> is: rails 0-5, jaws 6 + pocket, backs 12 + pocket.</summary>
-    public override CushionId CushionOf(int feature) =>
-        (uint)feature < (uint)Initializer.CushionNames.Count ? (CushionId)feature : CushionId.None;
+    /// <summary>The seed's features: rails 0-5, jaws 6 + pocket, backs 12 + pocket (<see cref="Initializer.CushionNames"/>).</summary>
+    public override CushionId CushionOf(int feature) => feature switch
+    {
+        >= 0 and < Initializer.FirstJaw => CushionId.OfRail(feature),
+        >= Initializer.FirstJaw and < Initializer.FirstBack => CushionId.Jaw(Table.Pockets.Id(feature - Initializer.FirstJaw)),
+        >= Initializer.FirstBack and < Initializer.FirstBack + Initializer.FirstBack - Initializer.FirstJaw => CushionId.Back(Table.Pockets.Id(feature - Initializer.FirstBack)),
+        _ => CushionId.None,
+    };
 
     /// <inheritdoc />
     public override string FeatureName(EventKind kind, int feature) => kind switch
     {
         EventKind.BallCushion => Initializer.CushionNames[feature],
-        EventKind.BallPocket => Initializer.PocketNames[feature],
+        EventKind.BallPocket => Table.Pockets.NameOf(feature),
         _ => "",
     };
 

@@ -99,15 +99,28 @@ public sealed class ThesisTable
     public float PocketZoneZ { get; }
 
     /// <summary>The thesis model's view of a table.</summary>
+    /// <exception cref="ArgumentException">
+    /// For a table whose pockets are not the six of <see cref="PocketSet.Six"/> in its order, with
+    /// one mouth for the corners and one for the sides: the seed's construction and its pocket
+    /// test know no other (a pocketless table is fine).
+    /// </exception>
     public static ThesisTable From(TableSpec table)
     {
+        ArgumentNullException.ThrowIfNull(table);
+        var pockets = table.Pockets;
+        bool six = pockets.Count == 0 || (pockets.Count == 6 && pockets.Equals(PocketSet.Six(pockets[0].Mouth, pockets[2].Mouth, pockets[0].JawAngleDeg, pockets[2].JawAngleDeg)));
+        if (!six)
+        {
+            throw new ArgumentException($"the thesis model knows tables with the six pockets of a pool table (one corner mouth, one side mouth), not {pockets}", nameof(table));
+        }
         float halfLength = (float)(table.HalfLength * 100);
         float halfWidth = (float)(table.HalfWidth * 100);
         // The thesis table keeps the seed's box-derived throats; any other table its own mouths
         // (a corner mouth is measured across the diagonal, so each rail leaves mouth / sqrt 2).
         bool seedTable = table.Preset == "thesis";
-        float cornerGap = seedTable ? SeedCornerGap : (float)(table.CornerPocketMouth * 100 / Math.Sqrt(2));
-        float sideGap = seedTable ? SeedSideGap : (float)(table.SidePocketMouth * 100);
+        // A pocketless table has no throats; its pocket test never runs.
+        float cornerGap = seedTable ? SeedCornerGap : pockets.Count == 0 ? 0 : (float)(pockets[0].Mouth * 100 / Math.Sqrt(2));
+        float sideGap = seedTable ? SeedSideGap : pockets.Count == 0 ? 0 : (float)(pockets[2].Mouth * 100);
         return new ThesisTable(halfLength, halfWidth, table.HasPockets, cornerGap, sideGap);
     }
 

@@ -117,7 +117,7 @@ internal sealed class EightBallReferee(TableSpec table, double ballRadius) : Ref
         var called = call!.Ball;
         if (open)
         {
-            var group = called.IsStripe ? BallGroup.Stripes : BallGroup.Solids;
+            var group = BallGroup.Stripes.Contains(called) ? BallGroup.Stripes : BallGroup.Solids;
             var other = group == BallGroup.Solids ? BallGroup.Stripes : BallGroup.Solids;
             ruling.Groups = before.Shooter == 0 ? new PerPlayer<BallGroup>(group, other) : new PerPlayer<BallGroup>(other, group);
             ruling.Note = $"{before.ShooterName} has the {group.ToName()}.";

@@ -25,6 +25,9 @@ namespace Billiards.Core.Rules;
 /// </remarks>
 internal sealed class SnookerReferee(TableSpec table, double ballRadius) : IReferee
 {
+    // Snooker's one cue ball, the white.
+    private static readonly BallId Cue = BallSet.Snooker.CueBalls[0];
+
     public GameRules Rules => GameRules.Snooker;
 
     public TableSpec Table { get; } = table;
@@ -139,11 +142,11 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : IRefe
                 .Where(b => redsPhase || !ruling.Legal || b != BallOnBall(ballOn))
                 .ToList();
             var afterTable = Positions(shot.BallsAfter);
-            afterTable.Remove(BallId.Cue);
+            afterTable.Remove(Cue);
             bool cueInHand = facts.Scratch || facts.CueOffTable;
-            if (!cueInHand && shot.IndexOf(BallId.Cue) is int ci and >= 0 && !shot.BallsAfter[ci].IsOutOfPlay)
+            if (!cueInHand && shot.IndexOf(Cue) is int ci and >= 0 && !shot.BallsAfter[ci].IsOutOfPlay)
             {
-                afterTable[BallId.Cue] = shot.BallsAfter[ci].Position;
+                afterTable[Cue] = shot.BallsAfter[ci].Position;
             }
 
             bool scoring = ruling.Legal && points > 0;
@@ -161,7 +164,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : IRefe
             }
 
             SnookerRuleset.Respot(afterTable, spot, _table, _r);
-            var objectsAfter = afterTable.Keys.Where(b => !b.IsCue).ToList();
+            var objectsAfter = afterTable.Keys.Where(b => b != Cue).ToList();
             string nextOn = scoring
                 ? ballOn switch
                 {
@@ -180,7 +183,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : IRefe
                 miss = !lastBlack && !snookersNeeded && !SnookeredAndReached(positionsBefore, firstOn);
             }
             misses = misses.With(shooter, miss ? misses[shooter] + 1 : 0);
-            bool fullView = miss && positionsBefore.TryGetValue(BallId.Cue, out var cueBefore)
+            bool fullView = miss && positionsBefore.TryGetValue(Cue, out var cueBefore)
                 && firstOn.Any(b => positionsBefore.TryGetValue(b, out var p) && Sightlines.BothSides(cueBefore, p, Obstacles(positionsBefore, b), _r));
             if (miss && fullView && misses[shooter] >= 3)
             {
@@ -292,7 +295,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : IRefe
         // travelled at least as far as the nearest ball on: no miss.
         private bool SnookeredAndReached(Dictionary<BallId, Vec3> positions, HashSet<BallId> on)
         {
-            if (!positions.TryGetValue(BallId.Cue, out var cue))
+            if (!positions.TryGetValue(Cue, out var cue))
             {
                 return false;
             }
@@ -302,7 +305,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : IRefe
                 return false;
             }
             double nearest = targets.Min(b => (positions[b] - cue).LengthXY - (2 * _r));
-            int ci = shot.IndexOf(BallId.Cue);
+            int ci = shot.IndexOf(Cue);
             double travelled = ci >= 0 ? (shot.BallsAfter[ci].Position - cue).LengthXY : 0;
             return travelled >= nearest;
         }
@@ -310,11 +313,11 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : IRefe
         // The incoming player cannot strike both extremities of any ball on (their ball on: nextOn).
         private bool Snookered(Dictionary<BallId, Vec3> table, string ballOn)
         {
-            if (!table.TryGetValue(BallId.Cue, out var cue))
+            if (!table.TryGetValue(Cue, out var cue))
             {
                 return false;
             }
-            var on = BallsOn(ballOn, null, [.. table.Keys.Where(b => !b.IsCue)]).ToList();
+            var on = BallsOn(ballOn, null, [.. table.Keys.Where(b => b != Cue)]).ToList();
             return on.Count > 0 && !on.Exists(b => Sightlines.BothSides(cue, table[b], Obstacles(table, b), _r));
         }
 
@@ -326,7 +329,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : IRefe
         }
 
         private static List<Vec3> Obstacles(Dictionary<BallId, Vec3> table, BallId target) =>
-            [.. table.Where(b => !b.Key.IsCue && b.Key != target).Select(b => b.Value)];
+            [.. table.Where(b => b.Key != Cue && b.Key != target).Select(b => b.Value)];
 
         // The cue ball left the bed before its first contact and passed over a ball lying on its
         // straight line of flight short of the ball it struck.
@@ -337,9 +340,9 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : IRefe
             bool airborne = false;
             for (int i = 0; i < events.Length && i < contact; i++)
             {
-                airborne |= events[i].Kind == EventKind.BallAirborne && events[i].A.IsCue;
+                airborne |= events[i].Kind == EventKind.BallAirborne && events[i].A == Cue;
             }
-            if (!airborne || shot.Shot is not { } strike || !positions.TryGetValue(BallId.Cue, out var cue) || !positions.TryGetValue(struck, out var target))
+            if (!airborne || shot.Shot is not { } strike || !positions.TryGetValue(Cue, out var cue) || !positions.TryGetValue(struck, out var target))
             {
                 return false;
             }
@@ -348,7 +351,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : IRefe
             double reach = Vec3.Dot(target - cue, u);
             foreach (var (id, p) in positions)
             {
-                if (id.IsCue || id == struck)
+                if (id == Cue || id == struck)
                 {
                     continue;
                 }

@@ -106,7 +106,7 @@ public sealed class SnookerRuleset : Ruleset
     public override bool MayCall(GameState state, BallId ball)
     {
         ArgumentNullException.ThrowIfNull(state);
-        return state.FreeBall ? !ball.IsCue : BallOnOf(state) == Colour && IsColour(ball);
+        return state.FreeBall ? !BallSet.IsCueBall(ball) : BallOnOf(state) == Colour && IsColour(ball);
     }
 
     /// <summary>A colour is nominated after a potted red, and any ball with a free ball.</summary>

@@ -48,15 +48,16 @@ public sealed class StraightPoolRuleset : Ruleset
         var rack = Initializer.Rerack(balls, tableSpec, r, seed);
         bool InTheWay(Vec3 p) => rack.Any(b => (b.Position - p).Length < 2 * r) || (Initializer.FootSpot(tableSpec, r) - p).Length < 2 * r;
         BallInHand? hand = null;
-        if (table.TryGetValue(BallId.Cue, out var cue) && InTheWay(cue))
+        var cueBall = BallSet.CueBalls[0]; // 14.1's one cue ball
+        if (table.TryGetValue(cueBall, out var cue) && InTheWay(cue))
         {
-            table.Remove(BallId.Cue);
+            table.Remove(cueBall);
             hand = BallInHand.Kitchen;
         }
-        foreach (var (id, _) in table.Where(b => !b.Key.IsCue && InTheWay(b.Value)).OrderBy(b => b.Key.Value).ToList())
+        foreach (var (id, _) in table.Where(b => b.Key != cueBall && InTheWay(b.Value)).OrderBy(b => b.Key.Value).ToList())
         {
             var head = Initializer.HeadSpot(tableSpec, r);
-            bool headTaken = table.TryGetValue(BallId.Cue, out var c) && (c - head).Length < 2 * r;
+            bool headTaken = table.TryGetValue(cueBall, out var c) && (c - head).Length < 2 * r;
             table[id] = headTaken ? new Vec3(0, 0, r) : head;
         }
         foreach (var (id, p) in rack)

@@ -92,7 +92,7 @@ public class TableBoundGuaranteeTests
             {
                 foreach (var start in new[] { new Vec3(0.3, 0.1, radius), new Vec3(-1.0, 0.55, radius), new Vec3(1.1, -0.3, radius) })
                 {
-                    var scene = new Scene("pockets", null, table, physics, null, [new BallSetup(BallId.Cue, start, Vec3.Zero, Vec3.Zero)], new ShotSpec(12, aim), null);
+                    var scene = new Scene("pockets", null, table, physics, null, [new BallSetup(PoolBalls.Cue, start, Vec3.Zero, Vec3.Zero)], new ShotSpec(12, aim), null);
                     var outcome = SimulationRunner.Run(scene, new RunOptions());
                     var b = outcome.Simulation.Balls[0];
                     Assert.True(b.IsPocketed || TableBounds.Contains(table, b.Position, radius),
@@ -123,7 +123,7 @@ public class TableBoundGuaranteeTests
         var physics = PhysicsConfig.Default with { Integrator = ModelRegistry.Euler, Dt = dt };
         var rolling = outward * 2.0;
         var scene = new Scene("jaws", null, table, physics, null,
-            [new BallSetup(BallId.Cue, start, rolling, Vec3.Cross(Vec3.UnitZ, rolling) / r)], null, null);
+            [new BallSetup(PoolBalls.Cue, start, rolling, Vec3.Cross(Vec3.UnitZ, rolling) / r)], null, null);
         var sim = SimulationFactory.Create(scene);
         sim.Step();
         var b = sim.Balls[0];

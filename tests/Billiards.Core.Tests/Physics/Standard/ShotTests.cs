@@ -201,7 +201,7 @@ public class ShotTests
         Assert.True(g.Segments[2].Start.Y > 0);
         // Corner mouth: the jaw tips are mouth/sqrt(2) from the corner along each rail.
         var spec = TableSpec.FromPreset("pool-9ft");
-        double tipDistance = spec.CornerPocketMouth / Math.Sqrt(2);
+        double tipDistance = spec.Pockets[0].Mouth / Math.Sqrt(2);
         Assert.True(g.Segments[0].End.Y < spec.HalfWidth - tipDistance);
         Assert.Empty(TableGeometry.Build(TableSpec.FromPreset("pocketless"), R).Pockets.ToArray());
     }

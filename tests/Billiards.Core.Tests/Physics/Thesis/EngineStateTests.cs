@@ -19,7 +19,7 @@ public class EngineStateTests
         // reset, which draws new orientations for every ball.
         var balls = new[]
         {
-            new Ball(0, new Vector3(-60, Y, 0)),
+            new Ball(0, new Vector3(-60, Y, 0)) { IsCue = true },
             new Ball(8, new Vector3(110, Y, 51)) { Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) },
         };
         var table = TableSpec.FromPreset("thesis");

@@ -34,7 +34,7 @@ public class PocketTests
     [InlineData(-2f, -66f, "side-left")]
     public void Near_a_pocket_centre_the_ball_is_pocketed(float x, float z, string pocket)
     {
-        Assert.Equal(pocket, Initializer.PocketNames[Table.PocketAt(new Vector3(x, Y, z))]);
+        Assert.Equal(pocket, PoolPockets.Set.NameOf(Table.PocketAt(new Vector3(x, Y, z))));
     }
 
     [Theory]

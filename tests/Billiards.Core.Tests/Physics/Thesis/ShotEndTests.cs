@@ -41,7 +41,7 @@ public class ShotEndTests
         // Straight at the foot-right pocket centre (124.5, 65.5) along 45 deg: it meets the test
         // circle 3.5 cm inside both jaws' triangles, so nothing deflects it.
         var start = new Vector3(110, Y, 51);
-        var cue = new Ball(0, start) { Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
+        var cue = new Ball(0, start) { IsCue = true, Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
         var other = At(1, -50, 0);
         var engine = Engine("thesis", cue, other);
         RunToRest(engine);
@@ -61,7 +61,7 @@ public class ShotEndTests
     {
         // The shot above, for a game whose referee decides: the engine leaves the ball where it dropped.
         var start = new Vector3(110, Y, 51);
-        var cue = new Ball(0, start) { Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
+        var cue = new Ball(0, start) { IsCue = true, Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
         var other = At(1, -50, 0);
         var engine = Engine("thesis", cue, other);
         engine.SeedEndOfShotRules = false;
@@ -78,7 +78,7 @@ public class ShotEndTests
         // As above, but once the cue ball is on its way another ball is put on its start: the
         // seed put the cue ball back onto it anyway, leaving them overlapping at rest.
         var start = new Vector3(110, Y, 51);
-        var cue = new Ball(0, start) { Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
+        var cue = new Ball(0, start) { IsCue = true, Velocity = 200 * Vector3.Normalize(new Vector3(1, 0, 1)) };
         var other = At(1, -50, 0);
         var engine = Engine("thesis", cue, other);
         for (int k = 0; k < 10; k++)

@@ -12,8 +12,9 @@ internal static class ThesisKit
 {
     public const float Y = 2.86f;
 
+    /// <summary>Pool's ball <paramref name="number"/> (0 the cue ball) at (x, z) cm.</summary>
     public static Ball At(int number, float x, float z, float vx = 0, float vz = 0) =>
-        new(number, new Vector3(x, Y, z)) { Velocity = new Vector3(vx, 0, vz) };
+        new(number, new Vector3(x, Y, z)) { Velocity = new Vector3(vx, 0, vz), IsCue = PoolBalls.IsCue(new Billiards.Core.Balls.BallId(number)) };
 
     public static PhysicsEngine Engine(string preset, params Ball[] balls) => Engine(preset, 1.0 / 250, balls);
 
