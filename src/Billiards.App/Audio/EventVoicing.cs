@@ -58,6 +58,10 @@ public sealed class EventVoicing
             case EventKind.BallPocket:
                 bool rattle = _lastJawHit.TryGetValue(e.A.Value, out double hit) && e.Time - hit <= RattleWindow;
                 return new SoundCue(e.Time, SoundKind.PocketDrop, e.Speed, position, rattle, seed);
+            case EventKind.BallTable:
+                // A landing from the air (the event's speed is the vertical impact speed), also the
+                // cue ball driven into the slate by a jump stroke.
+                return new SoundCue(e.Time, SoundKind.TableLanding, e.Speed, position, false, seed);
             default:
                 return null;
         }

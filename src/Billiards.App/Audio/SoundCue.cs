@@ -22,6 +22,9 @@ public enum SoundKind
 
     /// <summary>A ball drops into a pocket, then rolls along the return under the table.</summary>
     PocketDrop,
+
+    /// <summary>A ball in the air lands on the bed: the cloth-covered slate's dull thump, louder the faster it comes down.</summary>
+    TableLanding,
 }
 
 /// <summary>

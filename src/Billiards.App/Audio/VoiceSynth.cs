@@ -34,6 +34,8 @@ public static class VoiceSynth
             SoundKind.Miscue => 0.25 * Math.Pow(v / 4, 0.7),
             // Even a ball that trickles in drops the pocket's depth: never silent.
             SoundKind.PocketDrop => 0.30 * Math.Pow(Math.Max(v, 0.4) / 1.5, 0.5),
+            // Scaled by the vertical impact speed: a hop of 5 cm lands at 1 m/s.
+            SoundKind.TableLanding => 0.45 * Math.Pow(v / 1.5, 0.7),
             _ => 0,
         };
     }
@@ -87,6 +89,16 @@ public static class VoiceSynth
                 break;
             case SoundKind.PocketDrop:
                 Drop(ref s, cue.Rattle, level, pitch, decay);
+                break;
+            case SoundKind.TableLanding:
+                s.Allocate(0.14);
+                // The cloth spreads the contact over a millisecond or two (less when the ball comes
+                // down hard); the thick slate answers low and dies fast, the ball itself knocks higher.
+                s.Pulse(Math.Clamp(0.0018 * Math.Pow(Math.Max(cue.Speed, 0.05), -0.2), 0.0008, 0.003), 0.40 * level);
+                s.Mode(0, 95 * pitch, 0.030 * decay, 0.70 * level);
+                s.Mode(0, 210 * pitch, 0.018 * decay, 0.45 * level);
+                s.Mode(0, 720 * pitch, 0.005 * decay, 0.18 * level);
+                s.Rumble(0, 300, 0.012 * decay, 0.30 * level, attack: 0);
                 break;
         }
         return s.Buffer;

@@ -15,8 +15,10 @@ namespace Billiards.App.Camera;
 /// The game's camera: an <see cref="OrbitCamera"/> around the cue ball, which it follows while the
 /// player aims. When the balls come to rest it moves by the cue ball's displacement over the shot
 /// (seed 4.3), so the view is kept and the camera is back behind the cue ball. While they roll it
-/// looks straight down on the whole table (<see cref="Overhead"/>; <see cref="OverheadKey"/> toggles
-/// it at any time). It never goes below the rail's height, nor through the cue.
+/// follows them from behind the shot's line (<see cref="ChaseView"/>, <see cref="Following"/>);
+/// <see cref="OverheadKey"/> switches to a view straight down on the whole table
+/// (<see cref="Overhead"/>) and back at any time. It never goes below the rail's height, nor
+/// through the cue.
 /// </summary>
 public sealed class CameraNode : Node
 {
@@ -55,9 +57,16 @@ public sealed class CameraNode : Node
 
     private PhysicsNode? _physics;
     private CueNode? _cue;
+    private readonly ChaseView _chase = new();
 
     /// <summary>True while the camera looks down on the whole table.</summary>
     public bool Overhead { get; private set; }
+
+    /// <summary>True from a stroke until the balls rest: the view follows them unless <see cref="Overhead"/>.</summary>
+    public bool Following { get; private set; }
+
+    /// <summary>The view that follows the rolling balls.</summary>
+    public ChaseView Chase => _chase;
 
     /// <summary>The camera; valid from <see cref="Node.Ready"/> on (placed at the table centre until then).</summary>
     public OrbitCamera Camera { get; private set; } = new(Vec3.Zero, OverviewTheta, StartPhi, OverviewDistance);
@@ -71,13 +80,24 @@ public sealed class CameraNode : Node
             : new OrbitCamera(new Vec3(0, 0, _physics.BallRadius), OverviewTheta, StartPhi, OverviewDistance);
         _cue = FindInTree<CueNode>();
         _physics.CameToRest += OnCameToRest;
-        _physics.Struck += _ => Overhead = true;
-        Overhead = _physics.IsRolling; // a scene's opening shot was struck before this node was ready
+        _physics.Struck += _ => StartFollowing();
+        if (_physics.IsRolling)
+        {
+            StartFollowing(); // a scene's opening shot was struck before this node was ready
+        }
+    }
+
+    private void StartFollowing()
+    {
+        Following = true;
+        Overhead = false;
+        _chase.Start(Camera.Eye.ToVector3(), Camera.Centre.ToVector3());
     }
 
     private void OnCameToRest(Vec3 cueDisplacement)
     {
         Overhead = false;
+        Following = false;
         // Seed 4.3: the camera moves by the cue ball's displacement; a pocketed cue ball leaves it put.
         if (_physics is { HasCueBall: true })
         {
@@ -107,6 +127,12 @@ public sealed class CameraNode : Node
         if (!_physics.IsRolling && _physics.HasCueBall)
         {
             Camera.Centre = _physics.CueBallPosition;
+        }
+        if (Following && _physics.IsRolling)
+        {
+            var table = _physics.Table;
+            double lowest = CueClearance.RailTop(table) + RailMargin;
+            _chase.Follow(_physics.Simulation.Balls, dt, table.HalfLength, table.HalfWidth, Room.WallClearance - 0.4, lowest);
         }
         Camera.LimitTheta(HighestTheta());
     }
@@ -170,6 +196,11 @@ public sealed class CameraNode : Node
             (frame.Frame.Eye, frame.Frame.Target) = OverheadView(_physics.Table, frame.Frame.Width, frame.Frame.Height, FovYDegrees);
             double tan = Math.Tan(FovYDegrees * Math.PI / 360);
             OverheadMetresPerPixel = 2 * (frame.Frame.Eye.Z - _physics.BallRadius) * tan / Math.Max(1, frame.Frame.Height);
+            return;
+        }
+        if (Following)
+        {
+            (frame.Frame.Eye, frame.Frame.Target) = (_chase.Eye, _chase.Target);
             return;
         }
         frame.Frame.Eye = Camera.Eye.ToVector3();

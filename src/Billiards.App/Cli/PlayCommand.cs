@@ -2,6 +2,7 @@ using System.CommandLine;
 using Billiards.App.Audio;
 using Billiards.App.Game;
 using Billiards.App.Platform;
+using Billiards.App.Practice;
 using Billiards.Core.Physics;
 using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
@@ -33,15 +34,24 @@ public static class PlayCommand
         var record = new Option<string?>("--record") { Description = $"Write the game ({GameRecordFile.Format} JSON, which replay reads) when the window closes." };
         var cap = new Option<double?>("--fps-cap") { Description = $"The most frames a second (0: no cap); default the display's refresh rate, else {PlatformWiring.DefaultFrameCap}." };
         var fast = new Option<bool>("--fast-computer") { Description = $"The computer turns to its aim and strikes in {ComputerPlayerNode.FastShare:0%} of the time (default: {ComputerPlayerNode.StrokeSeconds:0.0} s from its aim to its stroke)." };
-        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record, cap, fast };
+        var practice = new Option<bool>("--practice") { Description = $"Practice on the scene (default {PracticeScene}): no referee; drag, add and remove balls, retry, save and load positions." };
+        var drill = new Option<string?>("--drill") { Description = "Play a drill: a name of assets/drills (e.g. stop-shot) or a drill file." };
+        var data = new Option<string?>("--data") { Description = $"The folder for drill results and saved positions (default ${DataFolder.Variable}, else the user's data folder)." };
+        var save = new Option<string?>("--save") { Description = "Where practice saves its position (F5) and loads it from (F9); default practice/position.json in the data folder." };
+        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record, cap, fast, practice, drill, data, save };
         command.SetAction(parse => Play(parse.GetValue(scene), title => PlatformWiring.Open(title, FrameCap(parse.GetValue(cap))), options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))
         {
             Rules = parse.GetValue(rules),
             Players = parse.GetValue(players),
             Record = parse.GetValue(record),
             FastComputer = parse.GetValue(fast),
+            Practice = parse.GetValue(practice),
+            Drill = parse.GetValue(drill),
+            DataFolder = parse.GetValue(data),
+            SavePath = parse.GetValue(save),
             StartMenu = parse.GetValue(scene) is null && parse.GetValue(rules) is null && parse.GetValue(players) is null
-                && parse.GetValue(script) is null && parse.GetValue(stats) is null && parse.GetValue(record) is null,
+                && parse.GetValue(script) is null && parse.GetValue(stats) is null && parse.GetValue(record) is null
+                && !parse.GetValue(practice) && parse.GetValue(drill) is null,
         }, openAudio: OpenAudio));
         root.Add(command);
         root.SetAction(_ => Play(null, PlatformWiring.Open, options: new PlayOptions(null, null) { StartMenu = true }, openAudio: OpenAudio));
@@ -87,8 +97,26 @@ public static class PlayCommand
     public static int Play(string? scenePath, Func<string, GamePlatform> openPlatform, Func<Scene, Simulation>? createSimulation = null, IClock? clock = null, PlayOptions? options = null, Func<IAudioOutput>? openAudio = null)
     {
         var gameRules = ParseRules(options?.Rules);
-        string path = scenePath ?? (gameRules is { } chosen ? FindRulesScene(chosen) : FindDefaultScene());
-        var scene = SceneLoader.Load(path);
+        string dataFolder = options?.DataFolder is { } folder ? OutputFiles.CheckFolder("--data", folder) : DataFolder.Path();
+        var drill = options?.Drill is { } drillName ? DrillLibrary.Load(drillName) : null;
+        bool practice = options?.Practice == true || drill is not null;
+        if (practice && (gameRules is not null || options?.Players is not null))
+        {
+            throw new CliException($"{(drill is null ? "--practice" : "--drill")}: practice has no match (leave out --rules and --players)");
+        }
+        if (drill is not null && scenePath is not null)
+        {
+            throw new CliException($"--drill {options!.Drill}: a drill brings its own position (leave out the scene {scenePath})");
+        }
+        string path = drill?.Scene.Path ?? scenePath ?? (practice ? FindPracticeScene() : gameRules is { } chosen ? FindRulesScene(chosen) : FindDefaultScene());
+        var scene = drill?.Scene ?? SceneLoader.Load(path);
+        string savePath = options?.SavePath is { } sp ? OutputFiles.Check("--save", sp, ".json") : Path.Combine(dataFolder, "practice", "position.json");
+        PracticeSetup? practiceSetup = practice ? PracticeFor(scene, drill, savePath, dataFolder) : null;
+        if (practiceSetup is not null)
+        {
+            // Practice sets the cue to a scene's shot instead of playing it.
+            scene = scene with { Shot = null };
+        }
         // The start menu's physics choice, remembered between runs, makes the games it starts.
         bool startMenu = options?.StartMenu == true && options.Script is null && options.Stats is null && options.Record is null;
         string settingsPath = options?.SettingsPath ?? GameSettings.DefaultPath();
@@ -100,20 +128,21 @@ public static class PlayCommand
         var script = options?.Script is { } scriptPath ? InputScript.Load(scriptPath) : null;
         string? statsPath = options?.Stats is { } s ? OutputFiles.Check("--stats", s, ".json") : null;
         string? recordPath = options?.Record is { } r ? OutputFiles.Check("--record", r, ".json") : null;
-        var match = MatchFor(scene, gameRules, options?.Players);
+        var match = practice ? null : MatchFor(scene, gameRules, options?.Players);
         if (recordPath is not null && (match is null || !scene.Balls.Any(b => b.Id == scene.CueBall)))
         {
             throw new CliException($"--record {recordPath}: {path} has no match to record (it names no rules and no --rules was given, or it has no cue ball)");
         }
-        string title = TitleFor(scene, match);
+        string title = practiceSetup is not null ? PracticeTitle(practiceSetup) : TitleFor(scene, match);
         using var platform = OpenOrExplain(openPlatform, title);
         var gameClock = new ScriptClock(clock ?? new StopwatchClock());
         using var scripted = script is null ? null : new ScriptedInput(platform.Window, script, gameClock);
         using var audio = openAudio?.Invoke() ?? new SilentAudio();
-        using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, match);
+        using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, match, practiceSetup);
         host.Tree.Root.AddChild(new AudioNode(audio));
+        options?.Started?.Invoke(host);
         bool fastComputer = options?.FastComputer == true;
-        Pace(host, fastComputer);
+        Pace(host, fastComputer || settings.FastComputer);
         if (scripted is not null)
         {
             host.TimeScale = script!.Speed;
@@ -135,7 +164,7 @@ public static class PlayCommand
                 warm = true;
                 return;
             }
-            stats?.FrameStarted(now);
+            stats?.FrameStarted(now, Platform.CpuClock.ProcessSeconds());
             if (scripted is not null)
             {
                 scripted.Pump(now);
@@ -155,7 +184,7 @@ public static class PlayCommand
         if (startMenu || (script is null && statsPath is null && recordPath is null && match is not null))
         {
             host.World.Menu.StartSettings = host.World.Menu.PlayedSettings = settings;
-            RunWithStartMenu(host, platform, scene2 => Pace(new GameHost(scene2.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, scene2.Match), fastComputer), audio, settingsPath, startMenu);
+            RunWithStartMenu(host, platform, (next, fast) => Pace(new GameHost(next.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, next.Match, next.Practice), fastComputer || fast), audio, settingsPath, startMenu, dataFolder);
         }
         else
         {
@@ -163,7 +192,7 @@ public static class PlayCommand
         }
         if (stats is not null && statsPath is not null)
         {
-            stats.Ended(gameClock.Now);
+            stats.Ended(gameClock.Now, Platform.CpuClock.ProcessSeconds());
             var (width, height) = platform.Window.FramebufferSize;
             OutputFiles.Write(statsPath, stats.ToJson(path, options?.Script, width, height, platform.GlRenderer));
         }
@@ -186,11 +215,20 @@ public static class PlayCommand
 
     // The start menu shows over the default game; a different choice replaces the game (a new host
     // on the same window) between two frames.
-    private static void RunWithStartMenu(GameHost first, GamePlatform platform, Func<(Scene Scene, MatchSetup Match), GameHost> create, IAudioOutput audio, string settingsPath, bool showAtStart)
+    private static void RunWithStartMenu(GameHost first, GamePlatform platform, Func<(Scene Scene, MatchSetup? Match, PracticeSetup? Practice), bool, GameHost> create, IAudioOutput audio, string settingsPath, bool showAtStart, string dataFolder)
     {
         var current = first;
-        (GameRules Rules, MatchPlayer[] Players, GameSettings Settings)? pending = null;
-        void Listen(GameHost h) => h.World.Menu.StartRequested += (rules, players) => pending = (rules, players, h.World.Menu.StartSettings);
+        // A match (rules and players), or practice (a drill's name, or null for free practice).
+        (GameRules? Rules, MatchPlayer[]? Players, string? Drill, GameSettings Settings)? pending = null;
+        var drills = DrillLibrary.All().Select(d => (d.Name, d.Title)).ToList();
+        void Listen(GameHost h)
+        {
+            h.World.Menu.Drills = drills;
+            h.World.Menu.StartRequested += (rules, players) => pending = (rules, players, null, h.World.Menu.StartSettings);
+            h.World.Menu.PracticeRequested += drill => pending = (null, null, drill, h.World.Menu.StartSettings);
+            // A new pace alone keeps the game: it is saved here, a new game saves its own.
+            h.World.Menu.SettingsChosen += chosen => chosen.Save(settingsPath, Console.Error);
+        }
         Listen(first);
         if (showAtStart)
         {
@@ -204,14 +242,17 @@ public static class PlayCommand
                 {
                     pending = null;
                     next.Settings.Save(settingsPath, Console.Error);
-                    var chosen = next.Settings.Apply(SceneLoader.Load(FindRulesScene(next.Rules)));
+                    var drill = next.Drill is { } name ? DrillLibrary.Load(name) : null;
+                    // A drill's physics is its own: the goal was checked with it.
+                    var chosen = drill?.Scene ?? next.Settings.Apply(SceneLoader.Load(next.Rules is { } r ? FindRulesScene(r) : FindPracticeScene()));
                     if (current != first)
                     {
                         current.Dispose();
                     }
-                    var setup = new MatchSetup(next.Rules, next.Players);
-                    current = create((chosen, setup));
-                    platform.SetTitle?.Invoke(TitleFor(chosen, setup));
+                    var setup = next.Rules is { } rules ? new MatchSetup(rules, next.Players!) : null;
+                    var practice = setup is null ? PracticeFor(chosen, drill, Path.Combine(dataFolder, "practice", "position.json"), dataFolder) : null;
+                    current = create((chosen with { Shot = practice is null ? chosen.Shot : null }, setup, practice), next.Settings.FastComputer);
+                    platform.SetTitle?.Invoke(practice is not null ? PracticeTitle(practice) : TitleFor(chosen, setup));
                     current.Tree.Root.AddChild(new AudioNode(audio));
                     current.World.Menu.StartSettings = current.World.Menu.PlayedSettings = next.Settings;
                     Listen(current);
@@ -279,6 +320,21 @@ public static class PlayCommand
         /// <summary>The computer plays fast (<c>--fast-computer</c>).</summary>
         public bool FastComputer { get; init; }
 
+        /// <summary>Practice on the scene (<c>--practice</c>): no match.</summary>
+        public bool Practice { get; init; }
+
+        /// <summary>The drill to play (<c>--drill</c>: a name or a file), or null.</summary>
+        public string? Drill { get; init; }
+
+        /// <summary>The data folder (<c>--data</c>), or null for <see cref="Practice.DataFolder.Path"/>.</summary>
+        public string? DataFolder { get; init; }
+
+        /// <summary>Where practice saves and loads its position (<c>--save</c>), or null for the data folder's.</summary>
+        public string? SavePath { get; init; }
+
+        /// <summary>Called with the game once it is built, before its first frame (tests read the game through it).</summary>
+        public Action<GameHost>? Started { get; init; }
+
         /// <summary>Open with the start menu (plain <c>play</c>: no scene, game, players, script, stats or record given).</summary>
         public bool StartMenu { get; init; }
 
@@ -322,6 +378,18 @@ public static class PlayCommand
         }
         return new MatchSetup(g, seats);
     }
+
+    /// <summary>The scene <c>play --practice</c> practises on without a scene: a few balls, no rules.</summary>
+    public const string PracticeScene = "assets/scenes/practice.json";
+
+    /// <summary>The shipped practice scene, beside the executable.</summary>
+    public static string FindPracticeScene() => AssetFolder.File(Path.GetRelativePath("assets", PracticeScene));
+
+    private static PracticeSetup PracticeFor(Scene scene, Core.Practice.Drill? drill, string savePath, string dataFolder) =>
+        new(savePath, drill, drill is null ? null : DrillRecords.Load(Path.Combine(dataFolder, DrillRecords.FileName), Console.Error), scene.Shot);
+
+    private static string PracticeTitle(PracticeSetup practice) =>
+        practice.Drill is { } d ? $"{PlatformWiring.WindowTitle}: drill, {d.Title}" : $"{PlatformWiring.WindowTitle}: practice";
 
     /// <summary>The players without <c>--players</c>: a person against the computer at level 3.</summary>
     public const string DefaultPlayers = "human,computer:3";

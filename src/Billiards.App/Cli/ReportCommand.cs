@@ -7,7 +7,8 @@ namespace Billiards.App.Cli;
 
 /// <summary>
 /// <c>report accuracy [--out DIR]</c>: the error-against-run-time report (CSV, SVG plot, Markdown
-/// summary) with its cushion page; <c>report cushions [--out DIR]</c>: the cushion page alone.
+/// summary) with its cushion page; <c>report cushions [--out DIR]</c>: the cushion page alone;
+/// <c>report snookers</c>: the computer player's fouls from snookered positions, without and with jumps.
 /// </summary>
 public static class ReportCommand
 {
@@ -40,9 +41,11 @@ public static class ReportCommand
             }
             string dir = OutputFiles.CheckFolder("--out", parse.GetValue(output)!, [.. FileNames]);
             AccuracyReport.Validate(files);
+            string flight = AssetFolder.Scene("flight");
+            FlightAccuracy.Validate(flight);
 
             var rows = AccuracyReport.Measure(files, stderr);
-            string summary = AccuracyReport.ToMarkdown(rows, files.Count);
+            string summary = AccuracyReport.ToMarkdown(rows, files.Count) + FlightAccuracy.ToMarkdown(FlightAccuracy.Measure(flight));
             byte[][] contents =
             [
                 Encoding.UTF8.GetBytes(AccuracyReport.ToCsv(rows)),
@@ -67,6 +70,29 @@ public static class ReportCommand
             stdout.WriteLine(string.Join(" ", files.Select(f => Path.Combine(dir, f.Name))));
             return 0;
         });
-        return new Command("report", "Reports about the physics.") { accuracy, cushions };
+        var count = new Option<int>("--positions") { Description = "Snookered positions to play.", DefaultValueFactory = _ => 40 };
+        var level = new Option<int>("--level") { Description = "The computer player's level (1-5).", DefaultValueFactory = _ => 4 };
+        var tries = new Option<int>("--tries") { Description = "Strikes of each decision with the level's error.", DefaultValueFactory = _ => 5 };
+        var seed = new Option<ulong>("--seed") { Description = "Seed of the positions and of the player's error.", DefaultValueFactory = _ => 1 };
+        var snookers = new Command("snookers", "The computer player from snookered 8-ball positions, without and with jump shots: fouls, no-contact fouls, jumps played.") { count, level, tries, seed };
+        snookers.SetAction(parse =>
+        {
+            int n = parse.GetValue(count), l = parse.GetValue(level), k = parse.GetValue(tries);
+            if (n is < 1 or > 1000)
+            {
+                throw new CliException($"--positions {n}: expected 1 to 1000");
+            }
+            if (l is < Billiards.Core.Ai.SkillLevel.Min or > Billiards.Core.Ai.SkillLevel.Max)
+            {
+                throw new CliException($"--level {l}: expected {Billiards.Core.Ai.SkillLevel.Min} to {Billiards.Core.Ai.SkillLevel.Max}");
+            }
+            if (k is < 1 or > 100)
+            {
+                throw new CliException($"--tries {k}: expected 1 to 100");
+            }
+            stdout.Write(SnookerReport.Run(n, l, k, parse.GetValue(seed), stderr));
+            return 0;
+        });
+        return new Command("report", "Reports about the physics and the computer player.") { accuracy, cushions, snookers };
     }
 }

@@ -112,6 +112,25 @@ public sealed class ComputerPlayerNode : Node
         return true;
     }
 
+    /// <summary>What the computer is seen to do while it turns its cue and holds its aim: the shot it plays, so that one can watch for it.</summary>
+    public static string AimStatus(string name, Decision decision)
+    {
+        ArgumentNullException.ThrowIfNull(decision);
+        // Short: the scoreboard's status line holds some 45 characters.
+        string pot = $"{decision.Target} in {decision.Pocket.ToName()}";
+        return decision.Kind switch
+        {
+            ShotKind.Break => $"{name} aims its break.",
+            ShotKind.Safety => $"{name} aims a safety on the {decision.Target}.",
+            ShotKind.PushOut => $"{name} aims a push-out.",
+            ShotKind.Bank => $"{name} aims: {pot}, bank.",
+            ShotKind.Kick => $"{name} aims: kick, {pot}.",
+            ShotKind.Combination => $"{name} aims: combination, {pot}.",
+            ShotKind.Carom => $"{name} aims: carom, {pot}.",
+            _ => $"{name} aims: {pot}.",
+        };
+    }
+
     /// <inheritdoc />
     protected override void Process(double dt)
     {
@@ -176,7 +195,7 @@ public sealed class ComputerPlayerNode : Node
             _aimFrom = _match.AimDegrees;
             _match.Adopt(_decision, exactCall: true);
             _aimTime = 0;
-            Status = $"{_match.State.ShooterName} aims.";
+            Status = AimStatus(_match.State.ShooterName, _decision);
         }
         if (_decision is { } d)
         {

@@ -15,6 +15,7 @@ namespace Billiards.App.Game;
 public sealed class CueNode : Node
 {
     private PhysicsNode? _physics;
+    private MatchNode? _match;
     private CameraNode? _camera;
 
     /// <summary>The tip's offset on the cue ball (seed 4.4.4).</summary>
@@ -26,8 +27,8 @@ public sealed class CueNode : Node
     /// <summary>The current backswing (pixels of mouse Y), set by the shot mode; 0 at rest.</summary>
     public double PullBackPixels { get; set; }
 
-    /// <summary>True when the cue is drawn: a cue ball on the table and nothing rolling.</summary>
-    public bool IsVisible => _physics is { IsRolling: false, HasCueBall: true };
+    /// <summary>True when the cue is drawn: a cue ball on the table, nothing rolling, and the game not over (the result panel is up).</summary>
+    public bool IsVisible => _physics is { IsRolling: false, HasCueBall: true } && _match is not { IsOver: true };
 
     /// <summary>
     /// The stroke direction (unit, bed plane): from the camera to the cue ball (seed 4.4.3). The
@@ -94,6 +95,7 @@ public sealed class CueNode : Node
     protected override void Ready()
     {
         _physics = GetInTree<PhysicsNode>();
+        _match = FindInTree<MatchNode>();
         _camera = GetInTree<CameraNode>();
         // Seed 4.3: when the balls rest "the cue is reset": the tip back to the centre.
         _physics.CameToRest += _ =>

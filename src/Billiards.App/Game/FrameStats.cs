@@ -20,6 +20,8 @@ public sealed class FrameStats
     public const string Format = "billiards-play-stats/1";
 
     private readonly List<double> _starts = [];
+    private readonly List<double> _cpu = [];
+    private double _endCpu = double.NaN;
     private readonly List<(ScriptEvent Event, double Due, int Frame)> _inputs = [];
     private double? _zero;
     private double? _end;
@@ -27,21 +29,30 @@ public sealed class FrameStats
     /// <summary>Frames recorded.</summary>
     public int Frames => _starts.Count;
 
-    /// <summary>Records the start of a frame at clock time <paramref name="now"/> (s); the first sets time zero.</summary>
-    public void FrameStarted(double now)
+    /// <summary>
+    /// Records the start of a frame at clock time <paramref name="now"/> (s); the first sets time
+    /// zero. <paramref name="cpu"/> is the process's processor time then (s,
+    /// <see cref="Platform.CpuClock"/>), or NaN when not measured.
+    /// </summary>
+    public void FrameStarted(double now, double cpu = double.NaN)
     {
         _zero ??= now;
         _starts.Add(now - _zero.Value);
+        _cpu.Add(cpu);
     }
 
-    /// <summary>Records the end of the last frame (its swap finished) at clock time <paramref name="now"/> (s).</summary>
-    public void Ended(double now)
+    /// <summary>Records the end of the last frame (its swap finished) at clock time <paramref name="now"/> (s), with the processor time then (s) if measured.</summary>
+    public void Ended(double now, double cpu = double.NaN)
     {
         if (_zero is { } zero)
         {
             _end = now - zero;
+            _endCpu = cpu;
         }
     }
+
+    // The processor time frame k took (s), from its start to the next one's: NaN when not measured.
+    private double CpuOf(int k) => (k + 1 < _cpu.Count ? _cpu[k + 1] : k + 1 == _cpu.Count ? _endCpu : double.NaN) - _cpu[k];
 
     // When frame k was on screen: the next frame's start, or the end for the last frame.
     private double? Shown(int k) => k + 1 < _starts.Count ? _starts[k + 1] : k + 1 == _starts.Count ? _end : null;
@@ -60,7 +71,13 @@ public sealed class FrameStats
     /// <param name="P95">95th percentile (ms).</param>
     /// <param name="P99">99th percentile (ms).</param>
     /// <param name="Max">Longest frame (ms).</param>
-    public sealed record SecondSample(int Second, int Frames, double P50, double P95, double P99, double Max);
+    /// <param name="CpuMs">
+    /// The processor time of those frames, every thread's, divided by their number (ms a frame),
+    /// or NaN when not measured: what a frame costs, which a busy machine does not inflate as it
+    /// does the frame times (on two cores, frames of 33 ms of processor time cannot come at 60 a
+    /// second; drawing threads overlap, so a frame's wall time can be less than its processor time).
+    /// </param>
+    public sealed record SecondSample(int Second, int Frames, double P50, double P95, double P99, double Max, double CpuMs = double.NaN);
 
     /// <summary>One input event's delay.</summary>
     /// <param name="Time">Its time in the script (s).</param>
@@ -82,15 +99,18 @@ public sealed class FrameStats
         for (int s = 0; s < whole; s++)
         {
             var times = new List<double>();
+            double cpu = 0;
             for (int k = 0; k < _starts.Count; k++)
             {
                 if (_starts[k] >= s && _starts[k] < s + 1 && Shown(k) is { } shown)
                 {
                     times.Add((shown - _starts[k]) * 1000);
+                    cpu += CpuOf(k);
                 }
             }
             times.Sort();
-            result.Add(new SecondSample(s, times.Count, Percentile(times, 0.5), Percentile(times, 0.95), Percentile(times, 0.99), times.Count > 0 ? times[^1] : 0));
+            result.Add(new SecondSample(s, times.Count, Percentile(times, 0.5), Percentile(times, 0.95), Percentile(times, 0.99), times.Count > 0 ? times[^1] : 0,
+                times.Count > 0 ? 1000 * cpu / times.Count : double.NaN));
         }
         return result;
     }
@@ -164,6 +184,10 @@ public sealed class FrameStats
                 w.WriteNumber("p99", Math.Round(s.P99, 3));
                 w.WriteNumber("max", Math.Round(s.Max, 3));
                 w.WriteEndObject();
+                if (double.IsFinite(s.CpuMs))
+                {
+                    w.WriteNumber("cpu_ms_per_frame", Math.Round(s.CpuMs, 3));
+                }
                 w.WriteEndObject();
             }
             w.WriteEndArray();
@@ -171,6 +195,13 @@ public sealed class FrameStats
             w.WriteNumber("min_fps", seconds.Count > 0 ? seconds.Min(s => s.Frames) : 0);
             w.WriteNumber("first_ten_fps", Math.Round(MeanFps(seconds.Take(10)), 3));
             w.WriteNumber("last_ten_fps", Math.Round(MeanFps(seconds.TakeLast(10)), 3));
+            var cpus = seconds.Where(s => double.IsFinite(s.CpuMs)).ToList();
+            if (cpus.Count > 0)
+            {
+                // All frames' processor time over their number, and the costliest second's.
+                w.WriteNumber("cpu_ms_per_frame", Math.Round(cpus.Sum(s => s.CpuMs * s.Frames) / Math.Max(1, cpus.Sum(s => s.Frames)), 3));
+                w.WriteNumber("cpu_ms_per_frame_max", Math.Round(cpus.Max(s => s.CpuMs), 3));
+            }
             var delays = inputs.Select(i => (double)i.DelayFrames).Order().ToList();
             var ms = inputs.Select(i => i.DelayMs).Order().ToList();
             w.WriteNumber("inputs", inputs.Count);

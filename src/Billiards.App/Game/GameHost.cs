@@ -27,11 +27,12 @@ public sealed class GameHost : IDisposable
     /// <param name="window">The window (input and switches).</param>
     /// <param name="clock">The clock for frame times and input timestamps.</param>
     /// <param name="match">The match to play, or null for practice.</param>
-    public GameHost(Scene scene, Func<Scene, Simulation> createSimulation, IGameWindow window, IClock clock, MatchSetup? match = null)
+    /// <param name="practice">Practice's tools and a drill, or null.</param>
+    public GameHost(Scene scene, Func<Scene, Simulation> createSimulation, IGameWindow window, IClock clock, MatchSetup? match = null, PracticeSetup? practice = null)
     {
         _window = window;
         _clock = clock;
-        _world = GameSceneBuilder.Build(scene, createSimulation, match);
+        _world = GameSceneBuilder.Build(scene, createSimulation, match, practice);
         _physicsStep = () => _world.Tree.PhysicsProcess(_world.Loop.Dt);
         _world.Menu.QuitConfirmed += window.Close;
         _world.SystemKeys.FullscreenRequested += window.ToggleFullscreen;
@@ -59,8 +60,13 @@ public sealed class GameHost : IDisposable
     /// </summary>
     public double TimeScale { get; set; } = 1;
 
-    /// <summary>True when nothing moves and nobody but a person is to act: the balls rest and no computer player is at work.</summary>
-    public bool IsSettled => !_world.Physics.IsRolling && _world.Tree.Root.FindInTree<MatchNode>() is not { IsComputerActing: true };
+    /// <summary>
+    /// True when nothing moves and nobody but a person is to act: the balls rest, no computer
+    /// player is at work and no hint is being searched (a script that waits for rest after G
+    /// shoots the hint, not whatever the cue pointed at when the search was slower).
+    /// </summary>
+    public bool IsSettled => !_world.Physics.IsRolling && _world.Tree.Root.FindInTree<MatchNode>() is not { IsComputerActing: true }
+        && _world.Tree.Root.FindInTree<ComputerPlayerNode>() is not { IsHinting: true };
 
     /// <summary>
     /// One frame: the physics steps owed since the last frame, Process with the frame's time, then

@@ -33,7 +33,8 @@ public static class GameSceneBuilder
     /// <param name="scene">The scene.</param>
     /// <param name="createSimulation">Makes the scene's simulation.</param>
     /// <param name="match">The match to play on the scene's rules, or null for none (practice).</param>
-    public static GameWorld Build(Scene scene, Func<Scene, Simulation> createSimulation, MatchSetup? match = null)
+    /// <param name="practice">Practice's tools and a drill (<see cref="PracticeNode"/>), or null; only without a match.</param>
+    public static GameWorld Build(Scene scene, Func<Scene, Simulation> createSimulation, MatchSetup? match = null, PracticeSetup? practice = null)
     {
         var root = new Node("Game");
         root.AddChild(new TableNode(scene));
@@ -56,6 +57,11 @@ public static class GameSceneBuilder
         // Added after the modes: input runs from the last child back, so these keys come first.
         var keys = root.AddChild(new SystemKeysNode(loop));
         root.AddChild(new HudNode());
+        if (practice is not null && match is null && scene.Balls.Any(b => b.Id == scene.CueBall))
+        {
+            // After the HUD: it adds its lines and the drill's zone to the HUD's frame, and takes its keys before the others.
+            root.AddChild(new PracticeNode(scene, practice));
+        }
         // Last: it draws over the HUD and takes input first (a menu takes it all).
         var menu = root.AddChild(new MenuNode());
         return new GameWorld(new SceneTree(root), loop, physics, modes, keys, menu);

@@ -8,12 +8,17 @@ namespace Billiards.App.Game;
 /// <summary>
 /// The player's physics choice of the start menu, kept between runs in <c>settings.json</c> under
 /// the user's configuration folder ($XDG_CONFIG_HOME/billiards, else ~/.config/billiards; the
-/// platform's application data folder elsewhere): the cushion model and the cloth.
+/// platform's application data folder elsewhere): the cushion model and the cloth, and how fast
+/// the computer plays.
 /// </summary>
 /// <param name="Cushion">A cushion model of <see cref="ModelRegistry.BallCushionModels"/>.</param>
 /// <param name="Cloth">A cloth of <see cref="Core.Physics.Cloth.All"/>.</param>
-public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth)
+/// <param name="FastComputer">The computer turns and strikes fast (<see cref="ComputerPlayerNode.Fast"/>), not at a pace one can watch.</param>
+public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth, bool FastComputer = false)
 {
+    /// <summary>The same settings but the computer's pace: the physics, which makes the game (a pace changes no game).</summary>
+    public GameSettings Physics => this with { FastComputer = false };
+
     /// <summary>The model's defaults.</summary>
     public static GameSettings Default { get; } = new(InteractionModels.Default.BallCushion, Cloth.Standard);
 
@@ -59,9 +64,11 @@ public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth)
             var root = doc.RootElement;
             string? cushion = root.TryGetProperty("ball_cushion", out var c) && c.ValueKind == JsonValueKind.String ? c.GetString() : null;
             string? cloth = root.TryGetProperty("cloth", out var k) && k.ValueKind == JsonValueKind.String ? k.GetString() : null;
+            // A file from before the pace was kept says nothing of it: the watchable pace.
+            bool fast = root.TryGetProperty("computer_pace", out var p) && p.ValueKind == JsonValueKind.String && p.GetString() == "fast";
             if (ModelRegistry.FindBallCushion(cushion) is { } model && Cloth.Find(cloth) is { } found)
             {
-                return new GameSettings(model, found);
+                return new GameSettings(model, found, fast);
             }
             warnings?.WriteLine($"billiards: {path}: unknown cushion model or cloth; using the defaults");
         }
@@ -84,6 +91,7 @@ public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth)
                 w.WriteStartObject();
                 w.WriteString("ball_cushion", Cushion.Name);
                 w.WriteString("cloth", Cloth.Name);
+                w.WriteString("computer_pace", FastComputer ? "fast" : "watchable");
                 w.WriteEndObject();
             }
             File.WriteAllBytes(path, stream.ToArray());

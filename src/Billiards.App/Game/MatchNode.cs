@@ -178,8 +178,7 @@ public sealed class MatchNode : Node
         {
             return;
         }
-        _camera.Camera.Translate(_physics.CueBallPosition - _camera.Camera.Centre);
-        _camera.Camera.SetPhi((degrees * Math.PI / 180) + Math.PI);
+        CueAim.AimAt(_camera.Camera, _physics.CueBallPosition, degrees);
     }
 
     /// <summary>
@@ -553,10 +552,7 @@ public sealed class MatchNode : Node
         {
             return;
         }
-        // Aim turns about the cue ball (counter-clockwise for positive degrees seen from above), so
-        // the camera is centred on it first; the cue aims from the eye through the ball.
-        _camera.Camera.Translate(_physics.CueBallPosition - _camera.Camera.Centre);
-        _camera.Camera.Orbit(degrees * Math.PI / 180 / OrbitCamera.OrbitRadiansPerPixel / _camera.Camera.Sensitivity, 0);
+        CueAim.Turn(_camera.Camera, _physics.CueBallPosition, degrees);
     }
 
     // X: the cue aims at the ghost ball that sends the called ball (or, with no call, the nearest

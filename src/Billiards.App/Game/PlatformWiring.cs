@@ -42,6 +42,10 @@ public static class PlatformWiring
         {
             // On a software rasteriser a moving camera is drawn at reduced resolution (Renderer.DynamicResolution).
             var renderer = new Renderer(window.Gl) { DynamicResolution = window.IsSoftwareRenderer };
+            if (Environment.GetEnvironmentVariable("BILLIARDS_PASS_PROFILE") is { Length: > 0 })
+            {
+                renderer.Profile = new PassProfile(window.Gl.Finish);
+            }
             var resources = new Resources(renderer, window);
             return new GamePlatform(window, new WindowLoop(window), new FrameRenderer(renderer, window), resources, window.Gl.GetString(Gl.RendererName))
             {
@@ -77,6 +81,13 @@ public static class PlatformWiring
     {
         public void Dispose()
         {
+            if (renderer.Profile is { } profile)
+            {
+                foreach (var (pass, wall, cpu, count) in profile.PerFrame())
+                {
+                    Console.Error.WriteLine(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"pass {pass,-28} wall {wall,7:F2} ms  cpu {cpu,7:F2} ms a frame  ({count} of {profile.Frames} frames)"));
+                }
+            }
             renderer.Dispose();
             window.Dispose();
         }

@@ -3,7 +3,30 @@ namespace Billiards.App.Hud;
 /// <summary>The help overlay: every key and mouse action of the game.</summary>
 public static class HelpText
 {
-    /// <summary>The overlay's lines.</summary>
+    /// <summary>
+    /// The overlay's lines for a game: practice's keys only in practice, the match's everywhere but
+    /// in practice, so that the overlay fits the window.
+    /// </summary>
+    public static IReadOnlyList<string> For(bool match, bool practice)
+    {
+        var lines = new List<string>();
+        bool keep = true;
+        foreach (string line in Lines)
+        {
+            if (!line.StartsWith(' '))
+            {
+                // A scene played without a match or practice (a physics scene) keeps the match's keys, as before.
+                keep = (match || !practice || !line.StartsWith("Match", StringComparison.Ordinal)) && (practice || !line.StartsWith("Practice", StringComparison.Ordinal));
+            }
+            if (keep)
+            {
+                lines.Add(line);
+            }
+        }
+        return lines;
+    }
+
+    /// <summary>The overlay's lines: every section.</summary>
     public static IReadOnlyList<string> Lines { get; } =
     [
         "Modes",
@@ -28,6 +51,12 @@ public static class HelpText
         "  O            declare a push-out (9-ball and 10-ball, the shot after the break)",
         "  1 .. 5       take one of the incoming player's options (or click its button)",
         "  Enter        rematch once a game is over (the other player breaks); M: the start menu",
+        "Practice and drills (play --practice, play --drill NAME, or the start menu)",
+        "  M, then drag any ball follows the cursor; Insert / Delete add / remove the ball under it",
+        "  Space, Q / W shoot at the power, power down / up; Left / Right aim (as in a match)",
+        "  Backspace    retry the last shot (balls, aim, power, spin, elevation); Enter: the start",
+        "  F5 / F9      save the position with the cue's shot as a scene / load it back",
+        "  F6 / F7      shot sensitivity: how often the shot pots with a level's error / the level",
         "Game",
         "  P            pause / resume",
         "  N            one physics step while paused",

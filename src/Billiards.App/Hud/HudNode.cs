@@ -44,7 +44,10 @@ public sealed class HudNode : Node
         _match = FindInTree<MatchNode>();
         _computer = FindInTree<ComputerPlayerNode>();
         _aimLine = FindInTree<AimLineNode>();
+        _help = HelpText.For(_match is not null, FindInTree<PracticeNode>() is not null);
     }
+
+    private IReadOnlyList<string> _help = HelpText.Lines;
 
     /// <summary>How long the meter keeps showing a shot's speed after the strike (s).</summary>
     public const double ShotShownSeconds = 2;
@@ -71,17 +74,27 @@ public sealed class HudNode : Node
             aids.AddRange(call);
         }
         bool paused = _keys is { Loop.Paused: true };
-        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, HelpText.Lines, Meter(), aids, _icons.ToArray())
+        frame.Frame.Hud = new HudInfo(_lines.ToArray(), _cue?.Tip.Fractions ?? Vector2.Zero, _keys?.ShowHelp ?? false, _help, Meter(), aids, _icons.ToArray())
         {
             Board = _match is not null && _physics is not null ? ScoreboardBuilder.Of(_match, _physics, _computer?.Status, paused, _audio?.StatusLine) : null,
             Developer = _keys?.ShowDeveloper ?? false,
             // Not at game over; the person's power not on the computer's turn.
             Gauges = _cue is { IsVisible: true } cue && _match is not { IsOver: true }
-                ? new CueGauges(cue.Tip.Fractions, (float)cue.EffectiveElevationDegrees, _match is null or { IsComputerActing: true } ? null : (float)(_match.Power / MatchNode.MaxPower))
+                ? new CueGauges(cue.Tip.Fractions, GaugeDegrees(cue.EffectiveElevationDegrees), _match is null or { IsComputerActing: true } ? null : (float)(_match.Power / MatchNode.MaxPower))
                 : null,
             Result = _match is null ? null : ScoreboardBuilder.Result(_match),
         };
     }
+
+    /// <summary>Steps the elevation diagram is drawn in (degrees).</summary>
+    public const double GaugeStepDegrees = 1;
+
+    /// <summary>
+    /// The elevation as the diagram draws it, in <see cref="GaugeStepDegrees"/>: the cue's lift
+    /// over a rail or a ball changes by thousandths of a degree as the aim turns, which no one can
+    /// see, but a diagram that changes in every frame keeps the HUD from its stored layer.
+    /// </summary>
+    public static float GaugeDegrees(double elevationDegrees) => (float)(Math.Round(elevationDegrees / GaugeStepDegrees) * GaugeStepDegrees);
 
     /// <summary>
     /// The power meter: while pushing, the push's speed (Formel 31) against the cap; while pulling

@@ -49,8 +49,17 @@ public sealed class MenuNode : Node
     /// <summary>Signal: the player confirmed quitting.</summary>
     public event Action? QuitConfirmed;
 
+    /// <summary>Signal: the start menu's settings were changed and Start pressed (to keep them).</summary>
+    public event Action<GameSettings>? SettingsChosen;
+
     /// <summary>Signal: the start menu asks for a new game of these rules between these players.</summary>
     public event Action<GameRules, MatchPlayer[]>? StartRequested;
+
+    /// <summary>Signal: the start menu asks for practice: free (null) or the drill of this name.</summary>
+    public event Action<string?>? PracticeRequested;
+
+    /// <summary>The drills the start menu offers: (name, title), set by the host (none by default).</summary>
+    public IReadOnlyList<(string Name, string Title)> Drills { get; set; } = [];
 
     /// <summary>The start menu's game.</summary>
     public GameRules StartGame { get; private set; } = GameRules.EightBall;
@@ -79,9 +88,19 @@ public sealed class MenuNode : Node
     private void Begin()
     {
         Resume();
-        if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings == PlayedSettings)
+        if (StartSettings != PlayedSettings)
         {
-            return; // the game behind the menu is the one chosen
+            SettingsChosen?.Invoke(StartSettings);
+        }
+        if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings.Physics == PlayedSettings.Physics)
+        {
+            // The game behind the menu is the one chosen; a new pace takes effect in it at once.
+            if (FindInTree<ComputerPlayerNode>() is { } computer)
+            {
+                computer.Fast = StartSettings.FastComputer;
+            }
+            PlayedSettings = StartSettings;
+            return;
         }
         var opponent = StartOpponent is int level ? new MatchPlayer($"Computer L{level}", level) : new MatchPlayer("Player 2");
         StartRequested?.Invoke(StartGame, [new MatchPlayer("Player 1"), opponent]);
@@ -188,6 +207,10 @@ public sealed class MenuNode : Node
         {
             _match.Restart();
         }
+        else if (FindInTree<PracticeNode>() is { } practice)
+        {
+            practice.Restart();
+        }
         else
         {
             _physics?.Restart();
@@ -223,7 +246,9 @@ public sealed class MenuNode : Node
         switch (Page)
         {
             case MenuPage.Start:
-                title = "New game: the game, the opponent (a person or the computer's level), the physics (cushion, cloth), Start";
+                title = Drills.Count > 0
+                    ? "New game: game, opponent, physics, pace, Start; or practice, a drill"
+                    : "New game: the game, the opponent, the physics, the computer's pace";
                 foreach (var game in Ruleset.All.Select(r => r.Game))
                 {
                     items.Add((Mark(game.ToName(), StartGame == game), () => StartGame = game));
@@ -237,9 +262,17 @@ public sealed class MenuNode : Node
                 rows.Add(opponents);
                 rows.Add([.. ModelRegistry.BallCushionModels.Select(m => (Mark($"Physics: {m.Name}", StartSettings.Cushion == m), (Action)(() => StartSettings = StartSettings with { Cushion = m })))]);
                 rows.Add([.. Cloth.All.Select(c => (Mark($"{c.Name} cloth", StartSettings.Cloth == c), (Action)(() => StartSettings = StartSettings with { Cloth = c })))]);
-                rows.Add([("Start [Enter]", Begin)]);
+                // The computer's pace beside Start, one button that switches it (a row of its own
+                // would push the drills off a 720-line window).
+                rows.Add([("Start [Enter]", Begin), (StartSettings.FastComputer ? "computer: fast" : "computer: watchable", () => StartSettings = StartSettings with { FastComputer = !StartSettings.FastComputer })]);
+                rows.Add([("Practice (no referee)", () => RequestPractice(null))]);
+                // The drills by their titles, four to a row so that the rows fit a small window.
+                for (int i = 0; i < Drills.Count; i += 4)
+                {
+                    rows.Add([.. Drills.Skip(i).Take(4).Select(d => (Label: d.Title, Act: (Action)(() => RequestPractice(d.Name))))]);
+                }
                 // Below the HUD panel, whose lines reach about 0.4 of the height at the start.
-                y = height * 0.5f;
+                y = height * (Drills.Count > 0 ? 0.4f : 0.5f);
                 break;
             case MenuPage.Pause:
                 title = "Paused";
@@ -291,6 +324,12 @@ public sealed class MenuNode : Node
             y += buttonHeight + gap;
         }
         return title;
+    }
+
+    private void RequestPractice(string? drill)
+    {
+        Resume();
+        PracticeRequested?.Invoke(drill);
     }
 
     private static string Mark(string label, bool chosen) => chosen ? $"> {label} <" : label;

@@ -190,7 +190,9 @@ public static class ScoreboardBuilder
         }
         if (match.IsComputerActing)
         {
-            return physics.IsRolling ? $"{state.ShooterName} (computer) shoots." : $"{state.ShooterName} (computer) is at the table.";
+            // "(computer)" only where the name does not say so already (as on the cards).
+            string who = state.ShooterName.StartsWith("Computer", StringComparison.Ordinal) ? state.ShooterName : $"{state.ShooterName} (computer)";
+            return physics.IsRolling ? $"{who} shoots." : $"{who} is at the table.";
         }
         if (physics.IsRolling)
         {

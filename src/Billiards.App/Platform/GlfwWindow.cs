@@ -197,6 +197,13 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
         291 => Key.F2,
         292 => Key.F3,
         300 => Key.F11,
+        294 => Key.F5,
+        295 => Key.F6,
+        296 => Key.F7,
+        298 => Key.F9,
+        260 => Key.Insert,
+        261 => Key.Delete,
+        259 => Key.Backspace,
         340 or 344 => Key.Shift,
         _ => Key.Unknown,
     };

@@ -13,6 +13,8 @@ public enum Key
     D0, D1, D2, D3, D4, D5, D6, D7, D8, D9,
     /// <summary>Other keys.</summary>
     Space, Escape, Enter, Tab, Up, Down, Left, Right, PageUp, PageDown, Plus, Minus, F1, F2, F3, F11,
+    /// <summary>Practice's keys: save, sensitivity, its level, load; add, remove a ball; retry.</summary>
+    F5, F6, F7, F9, Insert, Delete, Backspace,
     /// <summary>Either Shift key: fine aim.</summary>
     Shift,
 }

@@ -21,7 +21,7 @@ internal sealed unsafe class Gl
     public const uint FragmentShader = (uint)GLEnum.FragmentShader, VertexShader = (uint)GLEnum.VertexShader;
     public const uint Texture2D = (uint)GLEnum.Texture2D, Texture0 = (uint)GLEnum.Texture0;
     public const uint TextureMagFilter = (uint)GLEnum.TextureMagFilter, TextureMinFilter = (uint)GLEnum.TextureMinFilter, TextureWrapS = (uint)GLEnum.TextureWrapS, TextureWrapT = (uint)GLEnum.TextureWrapT;
-    public const int Nearest = (int)GLEnum.Nearest, Linear = (int)GLEnum.Linear, LinearMipmapLinear = (int)GLEnum.LinearMipmapLinear, ClampToEdge = (int)GLEnum.ClampToEdge, Repeat = (int)GLEnum.Repeat;
+    public const int Nearest = (int)GLEnum.Nearest, Linear = (int)GLEnum.Linear, LinearMipmapLinear = (int)GLEnum.LinearMipmapLinear, LinearMipmapNearest = (int)GLEnum.LinearMipmapNearest, ClampToEdge = (int)GLEnum.ClampToEdge, Repeat = (int)GLEnum.Repeat;
     public const uint Red = (uint)GLEnum.Red, Rgba = (uint)GLEnum.Rgba, R8 = (uint)GLEnum.R8, Rgba8 = (uint)GLEnum.Rgba8, Srgb8Alpha8 = (uint)GLEnum.Srgb8Alpha8, DepthComponent24 = (uint)GLEnum.DepthComponent24;
     public const uint Framebuffer = (uint)GLEnum.Framebuffer, ReadFramebuffer = (uint)GLEnum.ReadFramebuffer, DrawFramebuffer = (uint)GLEnum.DrawFramebuffer, Renderbuffer = (uint)GLEnum.Renderbuffer;
     public const uint ColorAttachment0 = (uint)GLEnum.ColorAttachment0, DepthAttachment = (uint)GLEnum.DepthAttachment, DepthStencilAttachment = (uint)GLEnum.DepthStencilAttachment, FramebufferComplete = (uint)GLEnum.FramebufferComplete;

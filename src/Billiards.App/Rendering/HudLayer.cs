@@ -217,16 +217,7 @@ internal sealed class HudLayer : IDisposable
         Release();
         _width = width;
         _height = height;
-        _texture = _gl.GenTexture();
-        _gl.BindTexture(Gl.Texture2D, _texture);
-        _gl.TexImage2D(Gl.Texture2D, 0, Gl.Rgba8, width, height, Gl.Rgba, Gl.UnsignedByte, default);
-        _gl.TexParameter(Gl.Texture2D, Gl.TextureMinFilter, Gl.Nearest);
-        _gl.TexParameter(Gl.Texture2D, Gl.TextureMagFilter, Gl.Nearest);
-        _gl.TexParameter(Gl.Texture2D, Gl.TextureWrapS, Gl.ClampToEdge);
-        _gl.TexParameter(Gl.Texture2D, Gl.TextureWrapT, Gl.ClampToEdge);
-        _framebuffer = _gl.GenFramebuffer();
-        _gl.BindFramebuffer(Gl.Framebuffer, _framebuffer);
-        _gl.FramebufferTexture2D(Gl.Framebuffer, Gl.ColorAttachment0, Gl.Texture2D, _texture, 0);
+        (_framebuffer, _texture) = TextureFramebuffer.Create(_gl, width, height, Gl.Nearest);
     }
 
     private void Release()

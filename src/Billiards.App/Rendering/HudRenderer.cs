@@ -28,7 +28,11 @@ internal sealed class HudRenderer : IDisposable
     private readonly HudLayer _helpLayer;
     private readonly Action<bool> _submitHelp;
 
-    // The list the quad helpers append to: the HUD's or the help overlay's.
+    // The aim line and the ghost ball follow the camera: drawn straight onto the frame under the
+    // HUD, not into its stored layer, which a moving camera would otherwise redraw every frame.
+    private readonly List<float> _aids = [];
+
+    // The list the quad helpers append to: the HUD's, the aids' or the help overlay's.
     private List<float> _out;
     private int _width, _height;
 
@@ -101,9 +105,11 @@ internal sealed class HudRenderer : IDisposable
         var textColor = new Vector4(0.95f, 0.95f, 0.9f, 1);
         var panel = new Vector4(0, 0, 0, 0.45f);
 
+        _aids.Clear();
         if (hud.Aids is { } aids)
         {
             // Under the panel: the aim line's segments as thin quads, the ghost ball as a ring.
+            _out = _aids;
             foreach (var aid in aids)
             {
                 if (aid.Radius > 0)
@@ -114,6 +120,11 @@ internal sealed class HudRenderer : IDisposable
                 {
                     Line(aid.A, aid.B, 1.5f * scale, aid.Color);
                 }
+            }
+            _out = _vertices;
+            if (_aids.Count > 0)
+            {
+                Submit(_aids, premultiplied: false);
             }
         }
 
@@ -346,6 +357,13 @@ internal sealed class HudRenderer : IDisposable
         float e = Math.Clamp(gauges.ElevationDegrees, 0, 90) * MathF.PI / 180;
         Line(pivot, pivot + (arm * new Vector2(MathF.Cos(e), -MathF.Sin(e))), 3 * u, Gold);
         Disc(pivot, 3 * u, new Vector4(0.93f, 0.93f, 0.88f, 1), 2);
+        // The angle in degrees in the corner the quarter circle leaves free: a jump shot's 55 is
+        // told apart from 50 at a glance, which the cue's line alone does not do.
+        string degrees = Math.Round(Math.Clamp(gauges.ElevationDegrees, 0, 90)).ToString("0", System.Globalization.CultureInfo.InvariantCulture);
+        float ring = 1.5f * u, textW = degrees.Length * HudFont.Advance * scale;
+        float tx = x0 + column - (3 * u) - (2 * ring) - u - textW;
+        Text(degrees, tx, pivot.Y - arm, scale, Gold);
+        Disc(new Vector2(tx + textW + u + ring, pivot.Y - arm + (2 * u)), ring, Gold, 3);
         y += fan + (4 * u);
         // The cue ball with the tip's contact point.
         var centre = new Vector2(cx, y + r);

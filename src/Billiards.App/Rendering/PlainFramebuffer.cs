@@ -34,3 +34,23 @@ internal readonly record struct PlainFramebuffer(uint Framebuffer, uint Color, u
         gl.DeleteRenderbuffer(Depth);
     }
 }
+
+/// <summary>A framebuffer whose colour is an RGBA8 texture, to be drawn from afterwards (the HUD's stored layer, the reduced frame).</summary>
+internal static class TextureFramebuffer
+{
+    /// <summary>Makes a <paramref name="width"/> x <paramref name="height"/> texture filtered by <paramref name="filter"/> (clamped at the edges), and a framebuffer drawing into it, left bound.</summary>
+    public static (uint Framebuffer, uint Texture) Create(Gl gl, int width, int height, int filter)
+    {
+        uint texture = gl.GenTexture();
+        gl.BindTexture(Gl.Texture2D, texture);
+        gl.TexImage2D(Gl.Texture2D, 0, Gl.Rgba8, width, height, Gl.Rgba, Gl.UnsignedByte, default);
+        gl.TexParameter(Gl.Texture2D, Gl.TextureMinFilter, filter);
+        gl.TexParameter(Gl.Texture2D, Gl.TextureMagFilter, filter);
+        gl.TexParameter(Gl.Texture2D, Gl.TextureWrapS, Gl.ClampToEdge);
+        gl.TexParameter(Gl.Texture2D, Gl.TextureWrapT, Gl.ClampToEdge);
+        uint framebuffer = gl.GenFramebuffer();
+        gl.BindFramebuffer(Gl.Framebuffer, framebuffer);
+        gl.FramebufferTexture2D(Gl.Framebuffer, Gl.ColorAttachment0, Gl.Texture2D, texture, 0);
+        return (framebuffer, texture);
+    }
+}

@@ -64,6 +64,35 @@ public static class RenderMath
         return new Vector2((x + 1) / 2 * width, (1 - y) / 2 * height);
     }
 
+    /// <summary>
+    /// The point of the horizontal plane at height <paramref name="z"/> (m) under a pixel (x right,
+    /// y down), or null when the pixel's ray does not meet the plane in front of the camera: the
+    /// inverse of <see cref="ToPixel"/> for points on the bed (dragging a ball under the cursor).
+    /// </summary>
+    public static Vector3? ToPlane(Matrix4x4 viewProjection, Vector2 pixel, int width, int height, float z)
+    {
+        if (width <= 0 || height <= 0 || !Matrix4x4.Invert(viewProjection, out var inverse))
+        {
+            return null;
+        }
+        float x = (2 * pixel.X / width) - 1, y = 1 - (2 * pixel.Y / height);
+        var near = Vector4.Transform(new Vector4(x, y, -1, 1), inverse);
+        var far = Vector4.Transform(new Vector4(x, y, 1, 1), inverse);
+        if (MathF.Abs(near.W) < 1e-12f || MathF.Abs(far.W) < 1e-12f)
+        {
+            return null;
+        }
+        var a = new Vector3(near.X, near.Y, near.Z) / near.W;
+        var b = new Vector3(far.X, far.Y, far.Z) / far.W;
+        float dz = b.Z - a.Z;
+        if (MathF.Abs(dz) < 1e-9f)
+        {
+            return null;
+        }
+        float t = (z - a.Z) / dz;
+        return t < 0 ? null : a + (t * (b - a));
+    }
+
     /// <summary>Converts an sRGB colour component to linear light.</summary>
     public static float ToLinear(float c) => c <= 0.04045f ? c / 12.92f : MathF.Pow((c + 0.055f) / 1.055f, 2.4f);
 

@@ -19,7 +19,8 @@ internal sealed class Renderer : IDisposable
     private readonly Gl _gl;
     private readonly Func<TableSpec, string> _modelPath;
     private readonly LitProgram _lit;
-    private readonly LitProgram _gouraud;
+    // The table's program for each detail mapping (DetailOf): none, across the bed, along the rails.
+    private readonly LitProgram[] _gouraud;
     private readonly (int Slices, GpuMesh Mesh)[] _spheres;
     private readonly GpuMesh _cue;
     private readonly Dictionary<(string Set, int Ball), uint> _ballTextures = [];
@@ -35,8 +36,7 @@ internal sealed class Renderer : IDisposable
     private long _ballsVersion;
     private Vector3? _lastEye;
     private Matrix4x4 _lastViewProjection;
-    private PlainFramebuffer _reduced;
-    private (int Width, int Height) _reducedSize;
+    private readonly Upscaler _reduced;
     private readonly float[] _lamps = new float[12];
     private TableModel? _table;
     private TableModel? _room;
@@ -51,9 +51,9 @@ internal sealed class Renderer : IDisposable
         _lit = new LitProgram(gl, gl.LinkProgram(
             gl.CompileShader(Gl.VertexShader, Shaders.LitVertex),
             gl.CompileShader(Gl.FragmentShader, Shaders.LitFragment), s_meshAttributes));
-        _gouraud = new LitProgram(gl, gl.LinkProgram(
+        _gouraud = [.. Enumerable.Range(0, 3).Select(mapping => new LitProgram(gl, gl.LinkProgram(
             gl.CompileShader(Gl.VertexShader, Shaders.GouraudVertex),
-            gl.CompileShader(Gl.FragmentShader, Shaders.GouraudFragment), s_meshAttributes));
+            gl.CompileShader(Gl.FragmentShader, Shaders.GouraudFragment(mapping)), s_meshAttributes)))];
         // Levels of detail: a software rasteriser pays for every triangle in every tile it touches,
         // and a ball 15 px across needs no 1,536 triangles (the overhead view shows 16 of them).
         _details = new DetailTextures(gl);
@@ -64,6 +64,7 @@ internal sealed class Renderer : IDisposable
         _hud = new HudRenderer(gl);
         _tableLayer = new StaticLayer(gl);
         _sceneLayer = new StaticLayer(gl);
+        _reduced = new Upscaler(gl);
         _drawTable = DrawTable;
         _drawScene = DrawScene;
     }
@@ -98,6 +99,17 @@ internal sealed class Renderer : IDisposable
     public float MovingScale => _governor.Scale;
 
     private readonly ResolutionGovernor _governor = new();
+    private int _stillFrames = int.MaxValue / 2;
+
+    /// <summary>
+    /// Frames the view must stand still before it is drawn at full resolution again. A camera
+    /// dragged by a mouse that reports at 30 Hz, or turned by a key that repeats, stands still in
+    /// every other 60 Hz frame: drawn sharp, each of those cost several reduced frames.
+    /// </summary>
+    public const int StillFramesToSharpen = 12;
+
+    /// <summary>Where a frame's time goes, pass by pass, or null (the default: no pass is finished on its own).</summary>
+    public PassProfile? Profile { get; set; }
     private bool _lastReduced;
 
     /// <summary>
@@ -119,12 +131,19 @@ internal sealed class Renderer : IDisposable
     /// <summary>Draws the frame into the bound framebuffer, viewport (0, 0, Width, Height).</summary>
     public void Draw(RenderFrame frame)
     {
+        Profile?.Frame();
+        Profile?.Mark("game, swap");
         EnsureTable(frame.Table);
         var viewProjection = RenderMath.ViewProjection(frame);
         bool moving = _lastEye is { } eye && (eye != frame.Eye || _lastViewProjection != viewProjection);
         _lastEye = frame.Eye;
         _lastViewProjection = viewProjection;
-        _lastReduced = DynamicResolution && moving && MovingScale < 1;
+        _stillFrames = moving ? 0 : _stillFrames + 1;
+        _lastReduced = DynamicResolution && _stillFrames < StillFramesToSharpen && MovingScale < 1;
+        if (Profile is { } profile)
+        {
+            profile.Tag = _lastReduced ? "reduced " : "full ";
+        }
         if (_lastReduced)
         {
             DrawReduced(frame);
@@ -137,6 +156,7 @@ internal sealed class Renderer : IDisposable
         if (frame.Hud is { } hud)
         {
             _hud.Draw(hud, frame.Width, frame.Height);
+            Profile?.Mark("hud");
         }
         _gl.BindVertexArray(0);
     }
@@ -146,19 +166,11 @@ internal sealed class Renderer : IDisposable
         uint target = (uint)_gl.GetInteger(Gl.DrawFramebufferBinding);
         int width = frame.Width, height = frame.Height;
         int w = Math.Max(1, (int)(width * MovingScale)), h = Math.Max(1, (int)(height * MovingScale));
-        if (_reduced.Framebuffer == 0 || _reducedSize != (w, h))
-        {
-            _reduced.Delete(_gl);
-            _reduced = PlainFramebuffer.Create(_gl, w, h);
-            _reducedSize = (w, h);
-        }
-        _gl.BindFramebuffer(Gl.Framebuffer, _reduced.Framebuffer);
+        _reduced.Bind(w, h);
         DrawScene3D(frame, w, h);
-        _gl.BindFramebuffer(Gl.ReadFramebuffer, _reduced.Framebuffer);
-        _gl.BindFramebuffer(Gl.DrawFramebuffer, target);
-        _gl.BlitFramebuffer(0, 0, w, h, 0, 0, width, height, Gl.ColorBufferBit, (uint)Gl.Linear);
-        _gl.BindFramebuffer(Gl.Framebuffer, target);
-        _gl.Viewport(0, 0, width, height);
+        Profile?.Mark("before upscale");
+        _reduced.DrawTo(target, width, height);
+        Profile?.Mark("upscale");
         ReducedFrames++;
     }
 
@@ -182,6 +194,7 @@ internal sealed class Renderer : IDisposable
         Lamps(frame.Table, _lamps);
         var pass = new Pass(frame, new StaticLayer.ViewKey(viewProjection, frame.Eye, frame.Table, width, height));
         _sceneLayer.Draw(pass.View, BallsVersion(frame), _drawScene, pass);
+        Profile?.Mark("balls, or the stored layer");
         gl.Viewport(0, 0, width, height);
         gl.Enable(Gl.DepthTest);
         gl.DepthFunc(Gl.LessEqual);
@@ -202,6 +215,7 @@ internal sealed class Renderer : IDisposable
         {
             _lines.Draw(viewProjection, frame.CollisionTriangles, width, height);
         }
+        Profile?.Mark("cue, lines");
     }
 
     /// <summary>
@@ -214,11 +228,13 @@ internal sealed class Renderer : IDisposable
         var frame = pass.Frame;
         float radius = frame.BallRadius;
         _tableLayer.Draw(pass.View, 0, _drawTable, pass);
+        Profile?.Mark("table");
         gl.Viewport(0, 0, pass.Width, pass.Height);
         gl.Enable(Gl.DepthTest);
         gl.DepthFunc(Gl.LessEqual);
         gl.Disable(Gl.Blend);
         _shadows.Draw(pass.View.ViewProjection, frame.Balls, radius, _lamps, LampRadius, Ambient);
+        Profile?.Mark("shadows");
 
         _lit.Begin(pass.View.ViewProjection, frame.Eye, _lamps);
         // Balls and the cue are closed and wound counter-clockwise outwards: their far halves are
@@ -264,8 +280,11 @@ internal sealed class Renderer : IDisposable
         gl.Disable(Gl.CullFace);
         gl.Disable(Gl.Blend);
         gl.Enable(Gl.Multisample);
-        _gouraud.Begin(pass.View.ViewProjection, frame.Eye, _lamps);
-        _gouraud.Half((float)frame.Table.HalfLength, (float)frame.Table.HalfWidth);
+        foreach (var program in _gouraud)
+        {
+            program.Begin(pass.View.ViewProjection, frame.Eye, _lamps);
+            program.Half((float)frame.Table.HalfLength, (float)frame.Table.HalfWidth);
+        }
         foreach (var part in _table!.Parts)
         {
             DrawPart(part);
@@ -287,11 +306,13 @@ internal sealed class Renderer : IDisposable
 
     private void DrawPart(ModelPart part)
     {
-        _gouraud.Material(part.Diffuse, part.Specular, part.Shininess, reflect: 0);
         var (detail, texture, repeat) = DetailOf(part.Name);
-        _gouraud.Detail(detail, repeat);
-        _gouraud.Emissive(part.Name == Room.Bulb.Name ? new Vector3(1.0f, 0.97f, 0.88f) : Vector3.Zero);
-        _gouraud.Draw(Matrix4x4.Identity, texture, part.Mesh);
+        var program = _gouraud[detail];
+        program.Use();
+        program.Material(part.Diffuse, part.Specular, part.Shininess, reflect: 0);
+        program.Detail(repeat);
+        program.Emissive(part.Name == Room.Bulb.Name ? new Vector3(1.0f, 0.97f, 0.88f) : Vector3.Zero);
+        program.Draw(Matrix4x4.Identity, texture, part.Mesh);
     }
 
     /// <summary>How a part's colour is textured: 0 plain, 1 across the bed's plane, 2 along the rail it belongs to.</summary>
@@ -431,12 +452,12 @@ internal sealed class Renderer : IDisposable
         _hud.Dispose();
         _tableLayer.Dispose();
         _sceneLayer.Dispose();
-        if (_reduced.Framebuffer != 0)
-        {
-            _reduced.Delete(_gl);
-        }
+        _reduced.Dispose();
         _gl.DeleteProgram(_lit.Program);
-        _gl.DeleteProgram(_gouraud.Program);
+        foreach (var program in _gouraud)
+        {
+            _gl.DeleteProgram(program.Program);
+        }
     }
 
     /// <summary>The lit program's uniforms.</summary>
@@ -455,7 +476,6 @@ internal sealed class Renderer : IDisposable
         private readonly int _texture = gl.GetUniformLocation(program, "uTexture");
         private readonly int _ambient = gl.GetUniformLocation(program, "uAmbient");
         private readonly int _exposure = gl.GetUniformLocation(program, "uExposure");
-        private readonly int _detail = gl.GetUniformLocation(program, "uDetail");
         private readonly int _detailRepeat = gl.GetUniformLocation(program, "uDetailRepeat");
         private readonly int _half = gl.GetUniformLocation(program, "uHalf");
         private readonly int _emissive = gl.GetUniformLocation(program, "uEmissive");
@@ -482,12 +502,10 @@ internal sealed class Renderer : IDisposable
             gl.Uniform1(_reflect, reflect);
         }
 
-        /// <summary>The detail texture's mapping (0 none) and the metres one repeat covers.</summary>
-        public void Detail(int mapping, float repeat)
-        {
-            gl.Uniform1(_detail, mapping);
-            gl.Uniform1(_detailRepeat, 1 / repeat);
-        }
+        /// <summary>The metres one repeat of the detail texture covers.</summary>
+        public void Detail(float repeat) => gl.Uniform1(_detailRepeat, 1 / repeat);
+
+        public void Use() => gl.UseProgram(Program);
 
         /// <summary>Half the bed's length and width (m): where the rails along x give way to those along y.</summary>
         public void Half(float x, float y) => gl.Uniform2(_half, x, y);

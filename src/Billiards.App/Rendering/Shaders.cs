@@ -116,24 +116,25 @@ internal static class Shaders
     // The lit colour times a detail texture (cloth weave, wood grain, floor boards; a byte holds
     // half the factor). Mapping 1 lays it across the bed's plane; 2 runs it along the rail the
     // point belongs to (x on the long rails, y on the short ones), with height for the sides.
-    public const string GouraudFragment = """
-        #version 330 core
+    // Each mapping is a program of its own: a software rasteriser (llvmpipe) took both branches'
+    // texture samples for every pixel of a branch on a uniform, and the table's texturing was
+    // most of a moving frame's cost.
+    public static string GouraudFragment(int mapping) => "#version 330 core\n#define DETAIL " + mapping.ToString(System.Globalization.CultureInfo.InvariantCulture) + "\n" + """
         in vec4 vShaded;
         in vec3 vWorld;
-        uniform int uDetail;
         uniform float uDetailRepeat;
         uniform vec2 uHalf;
         uniform sampler2D uTexture;
         out vec4 fragColor;
         void main() {
             float m = 1.0;
-            if (uDetail == 1) {
-                m = 2.0 * texture(uTexture, vWorld.xy * uDetailRepeat).r;
-            } else if (uDetail == 2) {
-                bool alongX = abs(vWorld.y) - uHalf.y > abs(vWorld.x) - uHalf.x;
-                vec2 a = alongX ? vWorld.xy : vWorld.yx;
-                m = 2.0 * texture(uTexture, vec2(a.x, a.y + vWorld.z) * uDetailRepeat).r;
-            }
+        #if DETAIL == 1
+            m = 2.0 * texture(uTexture, vWorld.xy * uDetailRepeat).r;
+        #elif DETAIL == 2
+            bool alongX = abs(vWorld.y) - uHalf.y > abs(vWorld.x) - uHalf.x;
+            vec2 a = alongX ? vWorld.xy : vWorld.yx;
+            m = 2.0 * texture(uTexture, vec2(a.x, a.y + vWorld.z) * uDetailRepeat).r;
+        #endif
             fragColor = vec4(vShaded.rgb * m, vShaded.a);
         }
         """;

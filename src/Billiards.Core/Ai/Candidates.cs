@@ -24,6 +24,8 @@ public enum ShotKind
     Safety,
     /// <summary>9-ball and 10-ball: a declared push-out after the break.</summary>
     PushOut,
+    /// <summary>The cue ball hops over the balls in the way to the target (an elevated cue into the slate).</summary>
+    Jump,
 }
 
 /// <summary>What a kind of shot means.</summary>
@@ -31,11 +33,11 @@ public static class ShotKinds
 {
     /// <summary>
     /// True for a shot meant to pot a ball: a direct shot, bank, combination or carom, and a kick
-    /// with a <paramref name="pocket"/> (a kick without one is a safety).
+    /// or jump with a <paramref name="pocket"/> (one without is a safety).
     /// </summary>
     public static bool IsPot(ShotKind kind, PocketId pocket) =>
         kind is ShotKind.Direct or ShotKind.Bank or ShotKind.Combination or ShotKind.Carom
-        || (kind == ShotKind.Kick && pocket != PocketId.None);
+        || (kind is ShotKind.Kick or ShotKind.Jump && pocket != PocketId.None);
 }
 
 /// <summary>

@@ -1,3 +1,4 @@
+using Billiards.Core.Balls;
 using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Rules;
@@ -10,6 +11,52 @@ public sealed partial class ShotPlanner
 {
     // The most safeties a position of a game with snookers gets at levels 3 to 5.
     private const int MaxSnookerSafeties = 24;
+
+    /// <summary>The most samples <see cref="Sensitivity"/> takes.</summary>
+    public const int MaxSensitivitySamples = 1000;
+
+    /// <summary>
+    /// The variation sampler turned on a person's shot: <paramref name="shot"/> played
+    /// <paramref name="samples"/> times from <paramref name="position"/>, each time with the error of
+    /// <paramref name="level"/> drawn anew (<see cref="SkillLevel.Execute"/>: aim, speed and tip), as
+    /// the search samples its own shots. A sample pots when <paramref name="target"/> (or, with none,
+    /// any object ball) drops and the cue ball stays on the table. Sample i draws from the stream
+    /// <see cref="PlannerRandom.Derive"/>(<paramref name="seed"/>, i): the same arguments, the same endings.
+    /// </summary>
+    /// <exception cref="ArgumentOutOfRangeException">When <paramref name="samples"/> is not 1 to <see cref="MaxSensitivitySamples"/>.</exception>
+    public ShotSensitivity Sensitivity(TablePosition position, ShotSpec shot, SkillLevel level, int samples, ulong seed, BallId? target = null)
+    {
+        ArgumentNullException.ThrowIfNull(position);
+        ArgumentNullException.ThrowIfNull(shot);
+        ArgumentNullException.ThrowIfNull(level);
+        ArgumentOutOfRangeException.ThrowIfLessThan(samples, 1);
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(samples, MaxSensitivitySamples);
+        var sim = position.CreateSimulation(Model);
+        var start = sim.CreateSnapshot();
+        int cue = sim.IndexOf(position.CueBall);
+        int aimed = target is { } t ? sim.IndexOf(t) : -1;
+        var endings = new ShotEnding[samples];
+        for (int i = 0; i < samples; i++)
+        {
+            var played = level.Execute(shot, new PlannerRandom(PlannerRandom.Derive(seed, i)));
+            sim.Restore(start);
+            sim.Strike(played, position.CueBall);
+            sim.AdvanceTo(MaxShotTime);
+            var balls = sim.Balls;
+            bool cueOn = cue >= 0 && !balls[cue].IsOutOfPlay;
+            bool dropped = false;
+            for (int k = 0; k < balls.Length; k++)
+            {
+                dropped |= k != cue && (aimed < 0 || k == aimed) && balls[k].IsOutOfPlay;
+            }
+            endings[i] = new ShotEnding(
+                played,
+                cueOn && dropped,
+                cueOn ? balls[cue].Position : null,
+                aimed >= 0 && !balls[aimed].IsOutOfPlay ? balls[aimed].Position : null);
+        }
+        return new ShotSensitivity(level, endings);
+    }
 
     private sealed partial class Search
     {
@@ -56,6 +103,7 @@ public sealed partial class ShotPlanner
                 var withCall = before with { Call = call ? Call.Safety : ruleset.Nomination(state, c.Target) };
                 Vary(rootIndex, c, cue, withCall, Math.Min(level.Speeds, 3), Math.Min(level.Spins, 3), variations);
             }
+            AddJumps(rootIndex, root, before, call, variations);
             // 9-ball and 10-ball: the shot after the break may be a push-out (no contact needed).
             if (level.LookAhead > 0 && Ruleset.For(state.Rules).MayPushOut(state)
                 && pots.All(c => c.Prior < 0.2))

@@ -162,7 +162,8 @@ public static class GameRecordFile
         w.WriteEndObject();
     }
 
-    private static void WritePhysics(Utf8JsonWriter w, PhysicsConfig physics)
+    /// <summary>The <c>physics</c> block as records and written scenes carry it: the model, integrator, step, every parameter and the collision models.</summary>
+    internal static void WritePhysics(Utf8JsonWriter w, PhysicsConfig physics)
     {
         w.WriteStartObject("physics");
         w.WriteString("model", physics.Model.Name);

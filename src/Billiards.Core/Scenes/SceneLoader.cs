@@ -70,6 +70,12 @@ public static class SceneLoader
         }
     }
 
+    /// <summary>Reads a scene object nested in another file (a drill's position); <paramref name="file"/> names that file in errors.</summary>
+    internal static Scene ReadScene(JsonElement e, string file) => new Reader(file).ReadScene(e, new SceneOverrides());
+
+    /// <summary>Reads a shot object (the scene's <c>shot</c> block) found at <paramref name="path"/> of another file.</summary>
+    internal static ShotSpec ReadShot(JsonElement e, string file, string path) => new Reader(file).ReadShot(e, path);
+
     private static string FirstSentence(string message)
     {
         int end = message.IndexOf(". ", StringComparison.Ordinal);
@@ -417,24 +423,24 @@ public static class SceneLoader
             return new BallSetup(id, new Vec3(p[0], p[1], z), new Vec3(v[0], v[1], vz), new Vec3(w[0], w[1], w[2]));
         }
 
-        private ShotSpec ReadShot(JsonElement e)
+        public ShotSpec ReadShot(JsonElement e, string at = "$.shot")
         {
-            var f = Object(e, "$.shot", "speed", "aim_deg", "tip", "elevation_deg");
+            var f = Object(e, at, "speed", "aim_deg", "tip", "elevation_deg");
             if (!f.TryGetValue("speed", out var speed))
             {
-                throw Error("$.shot", "missing \"speed\"");
+                throw Error(at, "missing \"speed\"");
             }
             if (!f.TryGetValue("aim_deg", out var aim))
             {
-                throw Error("$.shot", "missing \"aim_deg\"");
+                throw Error(at, "missing \"aim_deg\"");
             }
-            double[] tip = f.TryGetValue("tip", out var t) ? Numbers(t, "$.shot.tip", 2, 1) : [0, 0];
+            double[] tip = f.TryGetValue("tip", out var t) ? Numbers(t, at + ".tip", 2, 1) : [0, 0];
             if (tip[0] * tip[0] + tip[1] * tip[1] >= 1)
             {
-                throw Error("$.shot.tip", "the tip offset must lie inside the ball (side^2 + height^2 < 1)");
+                throw Error(at + ".tip", "the tip offset must lie inside the ball (side^2 + height^2 < 1)");
             }
-            double elevation = f.TryGetValue("elevation_deg", out var el) ? Number(el, "$.shot.elevation_deg", 0, 90) : 0;
-            return new ShotSpec(Number(speed, "$.shot.speed", 0, MaxShotSpeed), Number(aim, "$.shot.aim_deg", -360, 360), tip[0], tip[1], elevation);
+            double elevation = f.TryGetValue("elevation_deg", out var el) ? Number(el, at + ".elevation_deg", 0, 90) : 0;
+            return new ShotSpec(Number(speed, at + ".speed", 0, MaxShotSpeed), Number(aim, at + ".aim_deg", -360, 360), tip[0], tip[1], elevation);
         }
 
         private Dictionary<string, JsonElement> Object(JsonElement e, string path, params string[] allowed)

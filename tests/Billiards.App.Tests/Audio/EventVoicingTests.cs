@@ -38,6 +38,11 @@ public sealed class EventVoicingTests
         Assert.Equal(SoundKind.BallClick, voicing.Voice(new SimEvent(0.1, EventKind.BallBall, PoolBalls.Cue, one, -1, 2), Vec3.Zero, null)!.Value.Kind);
         Assert.Equal(SoundKind.CushionThud, voicing.Voice(new SimEvent(0.2, EventKind.BallCushion, one, one, 0, 1), Vec3.Zero, null)!.Value.Kind);
         Assert.Equal(SoundKind.JawKnock, voicing.Voice(new SimEvent(0.3, EventKind.BallCushion, one, one, 1, 1), Vec3.Zero, null)!.Value.Kind);
+        var landing = voicing.Voice(new SimEvent(0.4, EventKind.BallTable, one, one, -1, 1.7), Vec3.Zero, null)!.Value;
+        Assert.Equal(SoundKind.TableLanding, landing.Kind);
+        Assert.Equal(1.7, landing.Speed);
+        // Leaving the bed makes no sound of its own; its landing will.
+        Assert.Null(voicing.Voice(new SimEvent(0.5, EventKind.BallAirborne, one, one, -1, 1.7), Vec3.Zero, null));
     }
 
     [Fact]

@@ -19,6 +19,7 @@ public sealed class VoiceSynthTests(ITestOutputHelper output)
     [InlineData(SoundKind.JawKnock)]
     [InlineData(SoundKind.CueStrike)]
     [InlineData(SoundKind.PocketDrop)]
+    [InlineData(SoundKind.TableLanding)]
     public void PeakLoudnessRisesWithImpactSpeed(SoundKind kind)
     {
         double[] speeds = [0.5, 1, 2, 4, 8];
@@ -48,6 +49,20 @@ public sealed class VoiceSynthTests(ITestOutputHelper output)
             // Where the energy is: a phenolic click rings at a few kHz, cushion rubber on wood at a few hundred Hz.
             Assert.InRange(clickPower, 3000, 6500);
             Assert.InRange(thudPower, 100, 500);
+        }
+    }
+
+    [Fact]
+    public void ALandingOnTheBedIsADullThumpBelowAClick()
+    {
+        foreach (double speed in new[] { 0.4, 1, 3 })
+        {
+            double landing = WavAnalysis.Centroid(Sound(SoundKind.TableLanding, speed), Rate, byPower: true);
+            double click = WavAnalysis.Centroid(Sound(SoundKind.BallClick, speed), Rate, byPower: true);
+            output.WriteLine($"{speed} m/s: landing {landing:F0} Hz, click {click:F0} Hz");
+            // Ball on cloth over slate: the energy is in the low hundreds of Hz, far below the phenolic ring.
+            Assert.InRange(landing, 60, 400);
+            Assert.True(click > 5 * landing, $"{speed} m/s: click {click:F0} Hz, landing {landing:F0} Hz");
         }
     }
 

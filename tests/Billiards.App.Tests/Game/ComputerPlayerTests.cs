@@ -65,10 +65,20 @@ public class ComputerPlayerTests
     {
         using var game = new Game(new MatchPlayer("Computer L1", 1), new MatchPlayer("Computer L2", 2));
         game.Computer.Fast = fast;
-        game.RunUntil(() => game.Computer.Status?.EndsWith("aims.", StringComparison.Ordinal) == true, "the computer never aimed");
+        game.RunUntil(() => game.Computer.Status?.Contains(" aims", StringComparison.Ordinal) == true, "the computer never aimed");
         double aimed = game.Clock.Now;
         game.RunUntil(() => game.Match.Shots.Count >= 1, "the computer never struck");
         return game.Clock.Now - aimed;
+    }
+
+    [Fact]
+    public void While_it_aims_the_computer_says_which_ball_it_plays_into_which_pocket()
+    {
+        var shot = new Billiards.Core.Cue.ShotSpec(2.5, 10);
+        Decision Planned(Billiards.Core.Ai.ShotKind kind) => new(shot, null, null, false, kind, new Billiards.Core.Balls.BallId(9), new Billiards.Core.Table.PocketId(1, "head-right"), 0.8, 0.8, 100, 5);
+        Assert.Equal("Computer L3 aims: 9 in head-right.", ComputerPlayerNode.AimStatus("Computer L3", Planned(Billiards.Core.Ai.ShotKind.Direct)));
+        Assert.Equal("Computer L3 aims a safety on the 9.", ComputerPlayerNode.AimStatus("Computer L3", Planned(Billiards.Core.Ai.ShotKind.Safety)));
+        Assert.Equal("Computer L3 aims its break.", ComputerPlayerNode.AimStatus("Computer L3", Planned(Billiards.Core.Ai.ShotKind.Break)));
     }
 
     [Fact]

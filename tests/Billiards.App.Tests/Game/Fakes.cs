@@ -212,12 +212,12 @@ internal static class TestScenes
 /// <summary>A game host on a fake window, a manual clock and fake physics.</summary>
 internal sealed class TestGame : IDisposable
 {
-    public TestGame(Scene? scene = null, MatchSetup? match = null)
+    public TestGame(Scene? scene = null, MatchSetup? match = null, PracticeSetup? practice = null, Func<Scene, Billiards.Core.Physics.Simulation>? create = null)
     {
         Window = new FakeWindow();
         Clock = new ManualClock();
         Scene = scene ?? TestScenes.TwoBalls();
-        Host = new GameHost(Scene, s => Simulation = new FakeSimulation(s), Window, Clock, match);
+        Host = new GameHost(Scene, create ?? (s => Simulation = new FakeSimulation(s)), Window, Clock, match, practice);
     }
 
     public Scene Scene { get; }

@@ -142,6 +142,34 @@ public class InputScriptTests
         Assert.Equal(2, FrameStats.Percentile([1, 2, 3, 4], 0.5));
         Assert.Equal(4, FrameStats.Percentile([1, 2, 3, 4], 0.99));
     }
+
+    [Fact]
+    public void Stats_give_each_second_the_processor_time_of_its_frames_over_their_number()
+    {
+        var stats = new FrameStats();
+        // Frames every 10 ms; the process takes 4 ms of processor time a frame in the first
+        // second and 12 ms in the second.
+        double cpu = 50;
+        for (int k = 0; k < 200; k++)
+        {
+            stats.FrameStarted(10 + (k * 0.01), cpu);
+            cpu += k < 100 ? 0.004 : 0.012;
+        }
+        stats.Ended(12.0, cpu);
+        var seconds = stats.Seconds();
+        Assert.Equal(2, seconds.Count);
+        Assert.Equal(4, seconds[0].CpuMs, 6);
+        Assert.Equal(12, seconds[1].CpuMs, 6);
+        string json = System.Text.Encoding.UTF8.GetString(stats.ToJson("s.json", null, 1280, 720, "test"));
+        Assert.Contains("\"cpu_ms_per_frame\": 8", json, StringComparison.Ordinal);
+        Assert.Contains("\"cpu_ms_per_frame_max\": 12", json, StringComparison.Ordinal);
+        // Without processor times the figure is left out, not written as zero.
+        var plain = new FrameStats();
+        plain.FrameStarted(1);
+        plain.Ended(2.5);
+        Assert.True(double.IsNaN(plain.Seconds()[0].CpuMs));
+        Assert.DoesNotContain("cpu_ms", System.Text.Encoding.UTF8.GetString(plain.ToJson("s.json", null, 1, 1, null)), StringComparison.Ordinal);
+    }
 }
 
 public class PlayDisplayTests

@@ -41,4 +41,24 @@ public class MenuHelpTests
         Assert.True(game.World.Loop.Paused);
         Assert.Equal(MenuPage.Pause, game.World.Menu.Page);
     }
+
+    [Fact]
+    public void The_start_menu_sets_the_computers_pace_in_the_game_behind_it()
+    {
+        var scene = Billiards.Core.Scenes.SceneLoader.Load(Billiards.App.Cli.PlayCommand.FindRulesScene(Billiards.Core.Rules.GameRules.EightBall));
+        using var game = new TestGame(scene, new Billiards.App.Game.MatchSetup(Billiards.Core.Rules.GameRules.EightBall, [new Billiards.App.Game.MatchPlayer("Anna"), new Billiards.App.Game.MatchPlayer("Computer L3", 3)]));
+        var computer = game.World.Tree.Root.GetInTree<Billiards.App.Game.ComputerPlayerNode>();
+        var menu = game.World.Menu;
+        Assert.False(computer.Fast);
+        menu.ShowStart();
+        game.Frame();
+        SystemKeysAndHudTests.Click(game, menu.CentreOf("computer: watchable")!.Value); // the button switches the pace
+        game.Frame();
+        Assert.NotNull(menu.CentreOf("computer: fast"));
+        Assert.False(computer.Fast); // not before Start
+        SystemKeysAndHudTests.Click(game, menu.CentreOf("Start")!.Value);
+        Assert.Equal(MenuPage.None, menu.Page);
+        Assert.True(computer.Fast);
+        Assert.Same(computer, game.World.Tree.Root.GetInTree<Billiards.App.Game.ComputerPlayerNode>());
+    }
 }

@@ -134,6 +134,25 @@ public class StartMenuTests
         Assert.Contains(last.Lines, l => l.Contains("Player 2: on the 1", StringComparison.Ordinal));
     }
 
+    [Theory]
+    [InlineData("Stop shot", "Drill: Stop shot")]
+    [InlineData("Practice (no referee)", "Practice: M then drag any ball")]
+    public void The_start_menu_starts_practice_or_a_drill(string click, string line)
+    {
+        var clock = new ManualClock();
+        var window = new FakeWindow { FramebufferSize = (1280, 720) };
+        var renderer = new RecordingRenderer();
+        var loop = new ClickingLoop(clock, window, renderer, [click]);
+        using var settings = new TempSettings();
+        string data = Path.Combine(Path.GetTempPath(), $"data-{Guid.NewGuid():N}");
+        int code = PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), TestScenes.Create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true, SettingsPath = settings.Path, DataFolder = data });
+        Assert.Equal(0, code);
+        var last = renderer.Frames[^1].Hud!;
+        Assert.Null(last.Board); // no match: no scoreboard
+        Assert.Contains(last.Lines, l => l.StartsWith(line, StringComparison.Ordinal));
+        Assert.False(Directory.Exists(data), "nothing is written before an attempt ends");
+    }
+
     [Fact]
     public void The_physics_choice_makes_the_game_and_is_remembered_after_a_restart()
     {
@@ -169,6 +188,38 @@ public class StartMenuTests
         Assert.Contains(secondRun[0].Buttons!, b => b.Label == "> Physics: stronge-compliant <");
         Assert.Contains(secondRun[0].Buttons!, b => b.Label == "> fast cloth <");
         Assert.Equal("stronge-compliant", scenes[0].Physics.Models.BallCushion.Name);
+    }
+
+    [Fact]
+    public void The_computers_pace_is_chosen_in_the_start_menu_keeps_the_game_and_is_remembered()
+    {
+        using var settings = new TempSettings();
+        int games = 0;
+        List<Billiards.App.Rendering.HudInfo> Run(params string[] clicks)
+        {
+            var clock = new ManualClock();
+            var window = new FakeWindow { FramebufferSize = (1280, 720) };
+            var renderer = new RecordingRenderer();
+            var loop = new ClickingLoop(clock, window, renderer, clicks);
+            Billiards.Core.Physics.Simulation Create(Billiards.Core.Scenes.Scene scene)
+            {
+                games++;
+                return TestScenes.Create(scene);
+            }
+            Assert.Equal(0, PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), Create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true, SettingsPath = settings.Path }));
+            return [.. renderer.Frames.Select(f => f.Hud!)];
+        }
+
+        Run();
+        int oneGame = games; // the simulations one game makes
+        games = 0;
+        var first = Run("computer: watchable", "Start");
+        Assert.Contains(first[0].Buttons!, b => b.Label == "computer: watchable");
+        Assert.Equal(oneGame, games); // the pace alone made no new game
+        Assert.Contains("\"computer_pace\": \"fast\"", File.ReadAllText(settings.Path), StringComparison.Ordinal);
+        var second = Run();
+        Assert.Contains(second[0].Buttons!, b => b.Label == "computer: fast");
+        Assert.Equal(GameSettings.Default with { FastComputer = true }, GameSettings.Load(settings.Path));
     }
 
     // A settings file of the test's own, never the user's.

@@ -39,22 +39,38 @@ public class CameraTests
     }
 
     [Fact]
-    public void The_camera_looks_down_on_the_table_while_the_balls_roll_and_is_back_behind_the_cue_ball_after()
+    public void The_camera_follows_the_balls_while_they_roll_looks_down_on_the_table_on_its_key_and_is_back_behind_the_cue_ball_after()
     {
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
         var camera = game.World.Tree.Find<CameraNode>()!;
         var frame = game.Frame();
+        Assert.True(camera.Following);
+        Assert.False(camera.Overhead);
+        Assert.Equal(camera.Chase.Eye, frame.Eye);
+        // The shot runs along +x: the view looks after the balls from behind the shot's line, and
+        // its point of interest moves on with them.
+        var firstTarget = frame.Target;
+        for (int i = 0; i < 30; i++)
+        {
+            frame = game.Frame();
+        }
+        Assert.True(frame.Target.X > firstTarget.X + 0.05f, $"the view did not follow the balls: {firstTarget} to {frame.Target}");
+        Assert.True(frame.Eye.X < frame.Target.X, "the view is not behind the shot's line");
+        Assert.InRange(frame.Eye.Z, (float)(CueClearance.RailTop(game.Scene.Table) + CameraNode.RailMargin) - 1e-4f, (float)ChaseView.MaxHeight + 1e-4f);
+        game.Window.Press(CameraNode.OverheadKey);   // the key switches to the view from above
         Assert.True(camera.Overhead);
+        frame = game.Frame();
         var (eye, target) = CameraNode.OverheadView(game.Scene.Table, frame.Width, frame.Height, frame.FovYDegrees);
         Assert.Equal(eye, frame.Eye);
         Assert.Equal(target, frame.Target);
-        game.Window.Press(CameraNode.OverheadKey);   // the key toggles it
-        Assert.Equal(camera.Camera.Eye.ToVector3(), game.Frame().Eye);
-        game.Window.Press(CameraNode.OverheadKey);
-        Assert.True(camera.Overhead);
+        game.Window.Press(CameraNode.OverheadKey);   // and back to following
+        Assert.False(camera.Overhead);
+        frame = game.Frame();
+        Assert.Equal(camera.Chase.Eye, frame.Eye);
         game.RunUntilRest();
         frame = game.Frame();
         Assert.False(camera.Overhead);
+        Assert.False(camera.Following);
         Assert.Equal(game.World.Physics.CueBallPosition.ToVector3(), frame.Target);
         // Behind the cue ball: the cue ball lies between the eye and the aim, which still points along +x.
         Assert.True(frame.Eye.X < frame.Target.X);

@@ -1,6 +1,8 @@
 using System.Text.Json;
 using Billiards.App.Cli;
 using Billiards.App.Game;
+using Billiards.App.Hud;
+using Billiards.App.Rendering;
 using Billiards.App.Platform;
 using Billiards.App.Tests.Rendering;
 using Billiards.Core.Physics;
@@ -183,6 +185,64 @@ public class ScriptedGameWindowTests
         {
             File.Delete(record);
             File.Delete(stats);
+        }
+    }
+}
+
+/// <summary>
+/// A whole 8-ball game against the computer in a real GLFW window (under Xvfb when there is no
+/// display), from the shipped script that asks for a hint on each of the person's turns, waits for
+/// it and shoots it: the game ends with a winner and the result panel is on the screen, with the
+/// record's shots and Rematch and Menu under it.
+/// </summary>
+[Collection("GL")]
+public class GameAgainstTheComputerWindowTests
+{
+    public static string Script => Path.Combine(AssetFolder.Assets, "scripts", "game-against-the-computer.json");
+
+    [Fact]
+    public void A_whole_game_against_the_computer_plays_in_a_window_and_ends_with_the_result_panel()
+    {
+        TestDisplay.Ensure();
+        string record = Path.Combine(Path.GetTempPath(), $"record-{Guid.NewGuid():N}.json");
+        HudInfo? last = null;
+        try
+        {
+            int code = PlayCommand.Play(null, title =>
+            {
+                var platform = PlatformWiring.Open(title);
+                return platform with { Renderer = new Watching(platform.Renderer, frame => last = frame.Hud) };
+            }, options: new PlayCommand.PlayOptions(Script, null) { Rules = "eight-ball", Players = "Anna,cpu:3", Record = record });
+            Assert.Equal(0, code);
+            using var doc = JsonDocument.Parse(File.ReadAllText(record));
+            var shots = doc.RootElement.GetProperty("shots").EnumerateArray().ToList();
+            var rulings = shots.Select(s => s.GetProperty("ruling")).ToList();
+            Assert.True(rulings[^1].GetProperty("game_over").GetBoolean(), "the script ended before the game");
+            Assert.Contains(shots, s => s.GetProperty("game").GetProperty("shooter").GetInt32() == 1); // the computer played
+            var report = GameRecordFile.Verify(GameRecordFile.Parse(File.ReadAllText(record), record), out _);
+            Assert.Null(report.FirstDifference);
+
+            // The last frame on the screen: the result panel, its shots those of the record, and its buttons.
+            Assert.NotNull(last);
+            var panel = Assert.IsType<ResultPanel>(last!.Result);
+            Assert.Equal(shots.Count, panel.Stats.First.Shots + panel.Stats.Second.Shots);
+            int winner = rulings[^1].GetProperty("winner").GetInt32();
+            Assert.Contains(winner == 0 ? "Anna" : "Computer", panel.Title, StringComparison.Ordinal);
+            Assert.Contains(last.Buttons!, b => b.Label.StartsWith("Rematch", StringComparison.Ordinal));
+            Assert.Contains(last.Buttons!, b => b.Label.StartsWith("Menu", StringComparison.Ordinal));
+        }
+        finally
+        {
+            File.Delete(record);
+        }
+    }
+
+    private sealed class Watching(IFrameRenderer inner, Action<RenderFrame> seen) : IFrameRenderer
+    {
+        public void Draw(RenderFrame frame)
+        {
+            seen(frame);
+            inner.Draw(frame);
         }
     }
 }

@@ -244,6 +244,69 @@ public class OffscreenRenderTests(GlFixture gl, ITestOutputHelper output)
         Assert.True(outside < 0.85 * open, $"no shadow beside the ball: {outside:F1} against {open:F1} on open cloth");
     }
 
+    [Fact]
+    public void Render_ABallInTheAirCastsAFainterSofterShadowTheHigherItIs()
+    {
+        // A ball straight under the middle lamp at several heights, seen from above and to the
+        // side; each frame divided by the same frame without the ball. The shadow's darkest point
+        // lightens and the part of the bed in deep shadow (under 70 % of its light) shrinks as the
+        // ball rises, while its faint edge keeps its reach: an area light's shadow softening.
+        var frame = KnownFrame();
+        frame.Balls.Clear();
+        frame.Eye = new Vector3(0, -0.9f, 1.3f);
+        frame.Target = new Vector3(0, 0, 0);
+        var vp = RenderMath.ViewProjection(frame);
+        byte[] bare = gl.Renderer.Render(frame);
+        float r = frame.BallRadius;
+        var points = new List<Vector2>();
+        for (float y = -0.12f; y <= 0.12f; y += 0.004f)
+        {
+            for (float x = -0.12f; x <= 0.12f; x += 0.004f)
+            {
+                points.Add(new Vector2(x, y));
+            }
+        }
+        double[] heights = [r, 0.06, 0.12, 0.24];
+        var darkest = new double[heights.Length];
+        var deep = new int[heights.Length];
+        var touched = new int[heights.Length];
+        for (int k = 0; k < heights.Length; k++)
+        {
+            frame.Balls.Clear();
+            frame.Balls.Add(new BallVisual(new BallId(2), new Vector3(0, 0, (float)heights[k]), s_sideways));
+            byte[] pixels = gl.Renderer.Render(frame);
+            darkest[k] = 1;
+            foreach (var p in points)
+            {
+                var at = RenderMath.ToPixel(vp, new Vector3(p, 0), Width, Height)!.Value;
+                var (pr, pg, pb) = Pixel(pixels, (int)at.X, (int)at.Y);
+                if (Classify(pr, pg, pb) != Hue.Green)
+                {
+                    continue; // the ball itself
+                }
+                double ratio = pg / (double)Math.Max(1, Pixel(bare, (int)at.X, (int)at.Y).G);
+                darkest[k] = Math.Min(darkest[k], ratio);
+                deep[k] += ratio < 0.7 ? 1 : 0;
+                touched[k] += ratio < 0.97 ? 1 : 0;
+            }
+            output.WriteLine($"ball at {heights[k]:F3} m: darkest {darkest[k]:F2} of the light, {deep[k]} points in deep shadow, {touched[k]} darkened at all");
+        }
+        for (int k = 1; k < heights.Length; k++)
+        {
+            Assert.True(darkest[k] > darkest[k - 1], $"the shadow at {heights[k]} m is no fainter than at {heights[k - 1]} m");
+        }
+        // On the bed the ball hides the middle of its own shadow from this camera: the deep
+        // shadow's shrinking is counted from the first height in the air.
+        for (int k = 2; k < heights.Length; k++)
+        {
+            Assert.True(deep[k] < deep[k - 1] || deep[k] == 0, $"the deep shadow at {heights[k]} m ({deep[k]}) is not smaller than at {heights[k - 1]} m ({deep[k - 1]})");
+        }
+        // Softer, not gone: the lightened shadow still covers about as much of the bed.
+        Assert.True(touched[^1] > 0.8 * touched[1], $"the shadow at {heights[^1]} m covers {touched[^1]} points against {touched[1]} at {heights[1]} m");
+        // Still a shadow at 24 cm: the ball is not drawn without one.
+        Assert.True(darkest[^1] < 0.95, $"no shadow under the ball at {heights[^1]} m");
+    }
+
     private static (int R, int G, int B) Pixel(byte[] pixels, int x, int y)
     {
         int i = ((y * Width) + x) * 4;

@@ -46,6 +46,21 @@ public class RenderCommandTests : IDisposable
     }
 
     [Fact]
+    public void Render_draws_a_position_practice_saved()
+    {
+        // What practice's save key writes: the practice scene's balls with a shot, every field explicit.
+        var practice = Billiards.Core.Scenes.SceneLoader.Load(Billiards.Core.Scenes.AssetFolder.Scene("practice.json"));
+        string scene = Path.Combine(_folder, "saved.json");
+        File.WriteAllBytes(scene, Billiards.Core.Scenes.SceneWriter.ToUtf8(practice with { Rack = null, Shot = new Billiards.Core.Cue.ShotSpec(2.5, 12.5, 0.1, -0.2, 4) }));
+        string png = Path.Combine(_folder, "saved.png");
+        var (code, _, err) = Run("render", scene, "--out", png, "--width", "160", "--height", "100");
+        Assert.True(code == 0, err);
+        var (w, h, pixels) = PngDecoder.Decode(File.ReadAllBytes(png));
+        Assert.Equal((160, 100), (w, h));
+        Assert.Contains(pixels.Where((_, i) => i % 4 == 1), g => g > 80);
+    }
+
+    [Fact]
     public void Render_AcceptsACamera()
     {
         string scene = Scene(EightBall);

@@ -91,6 +91,28 @@ public sealed class StoredLayerTests : IDisposable
     }
 
     [Fact]
+    public void TheHudStaysStoredWhileTheAimLineFollowsAMovingView()
+    {
+        var at = new Vector3(0.3f, -0.3f, R);
+        RenderFrame WithAimLine(float x)
+        {
+            var frame = Frame(at);
+            frame.Hud = frame.Hud! with { ShowHelp = false, Aids = [new AidShape(new Vector2(x, 200), new Vector2(x + 200, 150), 0, Vector4.One)] };
+            return frame;
+        }
+        _renderer.Render(WithAimLine(100));
+        _renderer.Render(WithAimLine(110));
+        long hud = _renderer.Renderer.HudReused;
+        byte[] later = _renderer.Render(WithAimLine(120));
+
+        Assert.True(_renderer.Renderer.HudReused > hud, "a moved aim line redrew the stored HUD");
+        // The line is drawn where it now is: across its middle's column some pixel is near white
+        // (the cloth around it is green, its red channel low).
+        int reddest = Enumerable.Range(170, 11).Max(y => (int)later[((y * Width) + 220) * 4]);
+        Assert.True(reddest > 180, $"no aim line at its new place (red at most {reddest})");
+    }
+
+    [Fact]
     public void TheHelpOverlayOpensAgainFromItsStoredLayerAndTheHudStaysStored()
     {
         var at = new Vector3(0.3f, -0.3f, R);
@@ -146,8 +168,15 @@ public sealed class StoredLayerTests : IDisposable
             long reduced = renderer.ReducedFrames;
             byte[] moving = _renderer.Render(moved);
             Assert.Equal(reduced + 1, renderer.ReducedFrames);
+            // A view that stands still stays reduced for a moment (a dragged camera stands still
+            // between the mouse's reports), then is drawn sharp.
+            for (int k = 1; k < Renderer.StillFramesToSharpen; k++)
+            {
+                _renderer.Render(moved);
+            }
+            Assert.Equal(reduced + Renderer.StillFramesToSharpen, renderer.ReducedFrames);
             byte[] still = _renderer.Render(moved);
-            Assert.Equal(reduced + 1, renderer.ReducedFrames);
+            Assert.Equal(reduced + Renderer.StillFramesToSharpen, renderer.ReducedFrames);
             // The reduced frame is the same picture, softer: each ball in its place and colour.
             var vp = RenderMath.ViewProjection(moved);
             foreach (var ball in moved.Balls)
