@@ -11,14 +11,26 @@ using Billiards.Core.Scenes;
 // power, Space; a mouse drag in move mode with ball in hand) by playing the whole script so far
 // through the game itself, and keeps the best by the referee's ruling: a win, then a scratch once
 // (after the third shot), then a pot, then a legal miss. Deterministic: same code, same script.
-// Usage: dotnet run --project tools/game-script -c Release -- OUT.json [--check SCRIPT.json]
+// With --snooker it makes a whole snooker frame between two people (assets/scripts/snooker-frame.json):
+// the break-off from the D, pots of reds and of nominated colours while they are found (B to pick
+// the ball, which also nominates it, X, the power, Space), else the best legal shot found, and,
+// after four pots or sixteen turns, the player at the table misses on purpose and the other has the balls replaced
+// (key 3) until the third foul and a miss with a full view of the ball on ends the frame.
+// Usage: dotnet run --project tools/game-script -c Release -- [--snooker] OUT.json | [--snooker] --check SCRIPT.json
 internal static class Program
 {
     private const double Speed = 16;
-    private static readonly Scene s_scene = SceneLoader.Load(Path.Combine(AssetFolder.Assets, "scenes", "eight-ball.json"));
+    private static Scene s_scene = SceneLoader.Load(Path.Combine(AssetFolder.Assets, "scenes", "eight-ball.json"));
+    private static GameRules s_rules = GameRules.EightBall;
 
     private static int Main(string[] args)
     {
+        if (args.Length > 0 && args[0] == "--snooker")
+        {
+            s_scene = SceneLoader.Load(Path.Combine(AssetFolder.Assets, "scenes", "snooker.json"));
+            s_rules = GameRules.Snooker;
+            args = args[1..];
+        }
         if (args.Length == 2 && args[0] == "--check")
         {
             var script = InputScript.Load(args[1]);
@@ -38,7 +50,7 @@ internal static class Program
             Console.Error.WriteLine("usage: game-script OUT.json | --check SCRIPT.json");
             return 2;
         }
-        var events = Search();
+        var events = s_rules == GameRules.Snooker ? SnookerSearch() : Search();
         File.WriteAllText(args[0], ToJson(events));
         return 0;
     }
@@ -120,13 +132,103 @@ internal static class Program
         return events;
     }
 
+    // The snooker frame (see the file's head): the break-off, then each turn the best of the key
+    // sequences tried (a pot that keeps the player at the table, the most points first; else a
+    // legal shot), and from the fourth pot or the sixteenth turn on, the misses.
+    private static List<ScriptEvent> SnookerSearch()
+    {
+        var events = new List<ScriptEvent>();
+        int pots = 0;
+        int? misser = null;
+        for (int turn = 0; turn < 80; turn++)
+        {
+            var (match, host) = Run(events, 0.05);
+            if (match.IsOver)
+            {
+                Console.WriteLine($"frame over: {match.LastRuling!.Message}");
+                break;
+            }
+            double start = Math.Round((events.Count > 0 ? events[^1].Time : 0) + 0.3, 2);
+            if (match.PendingOptions.Count > 0)
+            {
+                // After the misses the other player has the balls replaced; after any other foul plays on.
+                var option = match.PendingOptions.Contains(RefereeOption.Replace) && misser is not null ? RefereeOption.Replace : RefereeOption.Play;
+                events = Choose(events, start, match.PendingOptions.ToList().IndexOf(option));
+                Console.WriteLine($"turn {turn}: {match.State.ShooterName} chooses {option.ToName()}");
+                continue;
+            }
+            if (misser is not null)
+            {
+                events = Shot(events, start, 0.5, 0, 0, null, aimAtGhost: true, match.Power, turnDegrees: 180);
+                Console.WriteLine($"turn {turn}: {match.State.ShooterName} misses");
+                continue;
+            }
+            var sim = host.World.Physics.Simulation;
+            int onTable = 0;
+            for (int i = 0; i < sim.Ids.Count; i++)
+            {
+                onTable += sim.Ids[i].Value != 0 && !sim.Balls[i].IsPocketed ? 1 : 0;
+            }
+            var candidates = new List<List<ScriptEvent>>();
+            // Each ball in turn (B), aimed at its ghost ball (X), at two powers: the break-off
+            // is played so too, firmly, into a red of the pack.
+            double[] powers = match.State.Shot == 0 ? [3.0, 4.5] : [1.5, 2.5];
+            for (int b = 0; b < onTable; b++)
+            {
+                foreach (double power in powers)
+                {
+                    candidates.Add(Shot(events, start, power, b, 0, null, aimAtGhost: true, match.Power));
+                }
+            }
+            double best = double.NegativeInfinity;
+            List<ScriptEvent>? bestEvents = null;
+            Ruling? bestRuling = null;
+            foreach (var candidate in candidates)
+            {
+                var (m, _) = Run(candidate, 0.05);
+                if (m.Rulings.Count != match.Rulings.Count + 1)
+                {
+                    continue;
+                }
+                var r = m.LastRuling!;
+                double score = r.GameOver ? -100 : r.Legal && r.Continue ? 10 + r.Points : r.Legal ? 1 : -10;
+                if (score > best)
+                {
+                    (best, bestEvents, bestRuling) = (score, candidate, r);
+                }
+            }
+            bool potted = bestRuling is { Legal: true, Continue: true };
+            if (turn > 0 && (pots >= 4 || turn >= 16))
+            {
+                // Nothing to pot, or enough pots: from here the player at the table misses.
+                misser = match.State.Shooter;
+                turn--;
+                continue;
+            }
+            pots += potted ? 1 : 0;
+            events = bestEvents!;
+            Console.WriteLine($"turn {turn}: {bestRuling!.Message}");
+        }
+        return events;
+    }
+
+    // The incoming player presses the option's key (1 for the first).
+    private static List<ScriptEvent> Choose(List<ScriptEvent> prefix, double start, int index)
+    {
+        var events = new List<ScriptEvent>(prefix);
+        var key = Key.D1 + index;
+        events.Add(new ScriptEvent(start, ScriptAction.KeyDown, Key: key));
+        events.Add(new ScriptEvent(Math.Round(start + 0.02, 2), ScriptAction.KeyUp, Key: key));
+        return events;
+    }
+
     private static (MatchNode Match, GameHost Host) Run(List<ScriptEvent> events, double frameSeconds)
     {
         var clock = new ManualClock();
         var scriptClock = new ScriptClock(clock);
         var script = new InputScript(events, (events.Count > 0 ? events[^1].Time : 0) + 0.1, Speed);
         var scripted = new ScriptedInput(new NoWindow(), script, scriptClock);
-        var match = new MatchSetup(GameRules.EightBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]);
+        var match = new MatchSetup(s_rules, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]);
         var host = new GameHost(s_scene, SimulationFactory.Create, scripted, scriptClock, match) { TimeScale = Speed };
         scripted.IsAtRest = () => host.IsSettled;
         bool warm = false;
@@ -147,7 +249,7 @@ internal static class Program
         return (host.Tree.Root.GetInTree<MatchNode>(), host);
     }
 
-    private static List<ScriptEvent> Shot(List<ScriptEvent> prefix, double start, double power, int ballPresses, int aimTweak, (int X, int Y)? drag, bool aimAtGhost, double powerNow)
+    private static List<ScriptEvent> Shot(List<ScriptEvent> prefix, double start, double power, int ballPresses, int aimTweak, (int X, int Y)? drag, bool aimAtGhost, double powerNow, int turnDegrees = 0)
     {
         var events = new List<ScriptEvent>(prefix);
         double t = start;
@@ -182,6 +284,7 @@ internal static class Program
             Press(Key.X);
         }
         Press(aimTweak > 0 ? Key.A : Key.D, Math.Abs(aimTweak));
+        Press(Key.Left, turnDegrees);
         int steps = (int)Math.Round((power - powerNow) / MatchNode.PowerStep);
         Press(steps > 0 ? Key.W : Key.Q, Math.Abs(steps));
         Press(Key.Space);

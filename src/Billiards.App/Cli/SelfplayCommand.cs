@@ -13,7 +13,7 @@ namespace Billiards.App.Cli;
 
 /// <summary>
 /// <c>selfplay --rules R --games N --levels A,B --seed S [--target P] [--shard K/N] [--threads N] [--out FILE.jsonl] [--summary FILE.json]</c>:
-/// the computer against itself on a 9 ft table; prints one summary JSON (<see cref="SelfPlaySummary"/>)
+/// the computer against itself on its game's table (a 9 ft pool table, snooker's 12 ft); prints one summary JSON (<see cref="SelfPlaySummary"/>)
 /// or writes it to <c>--summary</c>, writes one game record per line with <c>--out</c>
 /// (<see cref="GameRecordFile"/>'s record on one line, so each replays ruling for ruling), and
 /// reports progress on stderr. <c>--shard K/N</c> plays the games g of the run with g mod N = K
@@ -38,7 +38,7 @@ public static class SelfplayCommand
     public static Command Create(TextWriter stdout, TextWriter stderr)
     {
         // Not Required: --merge needs none of them (checked in the action).
-        var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball or straight-pool." };
+        var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball, straight-pool or snooker." };
         var games = new Option<int?>("--games") { Description = "Number of games of the whole run." };
         var levels = new Option<string?>("--levels") { Description = "The two players' levels, 1-5, e.g. 5,3 (the first is player 0)." };
         var seed = new Option<long?>("--seed") { Description = "Seed of every rack and every error." };
@@ -105,8 +105,9 @@ public static class SelfplayCommand
             var budget = Budget with { Threads = searchThreads };
             string? outPath = parse.GetValue(output) is { } o ? OutputFiles.Check("--out", o) : null;
 
-            var table = TableSpec.FromPreset("pool-9ft");
-            var physics = PhysicsParams.Default;
+            var ruleset = Ruleset.For(game);
+            var table = TableSpec.FromPreset(ruleset.TablePreset);
+            var physics = ruleset.BallSet.DefaultParams;
             var selfPlay = new SelfPlay(table, physics);
             int mine = part.GameCount(count);
             var played = new List<PlayedGame>(mine);

@@ -10,7 +10,7 @@ namespace Billiards.App.Game;
 
 /// <summary>
 /// Calling with the mouse: a click (press and release without a drag) on a ball calls that ball
-/// (with its easiest pocket), a click then on a pocket calls that pocket. A drag still orbits
+/// (with its easiest pocket; in snooker it nominates the ball), a click then on a pocket calls that pocket. A drag still orbits
 /// the camera; the click is told from it by moving less than <see cref="ClickSlopPixels"/>.
 /// </summary>
 public sealed class CallPickerNode : Node
@@ -59,7 +59,7 @@ public sealed class CallPickerNode : Node
     // The ball under the cursor calls that ball; else, with a ball called, the pocket under it.
     private bool Click(Vector2 at)
     {
-        if (_match is not { CanShoot: true, IsComputerActing: false } match || !match.NeedsCall || _physics is null || _size.Width == 0)
+        if (_match is not { CanShoot: true, IsComputerActing: false } match || !(match.NeedsCall || match.NeedsNomination) || _physics is null || _size.Width == 0)
         {
             return false;
         }
@@ -88,6 +88,11 @@ public sealed class CallPickerNode : Node
         {
             match.CallBall(ball);
             return true;
+        }
+        if (!match.NeedsCall)
+        {
+            // A nomination names a ball, never a pocket.
+            return false;
         }
         foreach (var pocket in _pockets)
         {

@@ -58,7 +58,7 @@ public sealed record MatchPlayer(string Name, int? ComputerLevel = null)
 /// match keeps and gives the cue ball in hand in its region. A game played here replays like any
 /// other (<see cref="Billiards.Core.Scenes.GameRecordFile"/>).
 /// Keys: Left/Right aim (A/D or Shift fine; held keys repeat, faster the longer they are held), W/Q power, Space shoots, 1-5 choose an offered option,
-/// O declares a push-out, C cycles the called pocket, B cycles the called ball, X aims at the call, Enter rematch.
+/// O declares a push-out, C cycles the called pocket, B cycles the called ball (in snooker the nominated colour or free ball), X aims at the call, Enter rematch.
 /// </summary>
 public sealed class MatchNode : Node
 {
@@ -292,10 +292,10 @@ public sealed class MatchNode : Node
         Say(ComputerPlayerNode.HintLine(hint));
     }
 
-    /// <summary>Calls a ball (a click on it): its easiest pocket until a pocket is called.</summary>
+    /// <summary>Calls a ball (a click on it): its easiest pocket until a pocket is called; in snooker it nominates the ball where the shooter may nominate it.</summary>
     public void CallBall(BallId ball)
     {
-        if (CanShoot)
+        if (CanShoot && (!NeedsNomination || _ruleset.MayCall(State, ball)))
         {
             _calledBall = ball;
             _calledPocket = null;
@@ -342,6 +342,32 @@ public sealed class MatchNode : Node
 
     /// <summary>True when the rules call this shot (<see cref="Ruleset.NeedsCall"/>).</summary>
     public bool NeedsCall => _ruleset.NeedsCall(State);
+
+    /// <summary>True when the shooter nominates a ball without a pocket (snooker's colour after a red, a free ball: <see cref="Ruleset.Nominates"/>).</summary>
+    public bool NeedsNomination => _ruleset.Nominates(State);
+
+    /// <summary>
+    /// The nomination the shooter makes now: the ball chosen (B, or a click), else the aimed ball,
+    /// else the nearest ball, among those the shooter may nominate; null where nothing is nominated.
+    /// </summary>
+    public Call? CurrentNomination
+    {
+        get
+        {
+            if (!NeedsNomination || _physics is null)
+            {
+                return null;
+            }
+            var may = Nominatable();
+            var aimed = Aim?.Ball;
+            var ball = _calledBall is { } c && may.Contains(c) ? c
+                : aimed is { } a && may.Contains(a) ? a
+                : Nearest(_physics.CueBallPosition with { Z = 0 }, may);
+            return ball is { } b ? Call.Nominate(b) : null;
+        }
+    }
+
+    private List<BallId> Nominatable() => [.. ObjectBallsOnTable().Where(b => _ruleset.MayCall(State, b)).OrderBy(b => b.Value)];
 
     /// <summary>True when the shooter may strike now: balls at rest, no option pending, the game on.</summary>
     public bool CanShoot => _physics is { IsRolling: false, HasCueBall: true } && PendingOptions.Count == 0 && !IsOver;
@@ -531,7 +557,7 @@ public sealed class MatchNode : Node
     {
         _beforeShots.Add((_match!.Snapshot(), State, GamesWon));
         bool inHand = _match.BallInHand != BallInHand.None;
-        var call = _hasAdoptedCall ? _adoptedCall : NeedsCall ? CurrentCall : null;
+        var call = _hasAdoptedCall ? _adoptedCall : NeedsCall ? CurrentCall : NeedsNomination ? CurrentNomination : null;
         var sim = _match.Strike(new GameShot(shot, call, inHand ? _physics!.CueBallPosition : null, State.PushOut));
         _shots.Add((_match.RunningShotState!, shot));
         _hasAdoptedCall = false;
@@ -587,11 +613,10 @@ public sealed class MatchNode : Node
         }
         else
         {
-            _physics!.GiveBallInHand(Region(hand));
+            _physics!.GiveBallInHand(hand.Region());
         }
     }
 
-    private static PlacementRegion Region(BallInHand hand) => hand == BallInHand.Kitchen ? PlacementRegion.Kitchen : PlacementRegion.Table;
 
     private void Turn(double degrees)
     {
@@ -740,12 +765,13 @@ public sealed class MatchNode : Node
         {
             return;
         }
-        var onTable = ObjectBallsOnTable();
+        // Nominating (snooker), B goes round the balls the shooter may nominate.
+        var onTable = NeedsNomination ? Nominatable() : ObjectBallsOnTable();
         if (onTable.Count == 0)
         {
             return;
         }
-        var current = _calledBall ?? Aim?.Ball;
+        var current = NeedsNomination ? CurrentNomination?.Ball : _calledBall ?? Aim?.Ball;
         int k = current is { } c ? onTable.IndexOf(c) : -1;
         _calledBall = onTable[(k + 1) % onTable.Count];
     }

@@ -287,7 +287,7 @@ public sealed class PhysicsNode : Node
 
     /// <summary>
     /// Where a scratched cue ball comes back: the head spot (a quarter of the length from the head
-    /// rail), or the free point nearest to it along the head string and then anywhere on the bed.
+    /// rail; in snooker's D the break-off's spot), or the free point nearest to it in the region.
     /// </summary>
     public Vec3 ReturnSpot()
     {
@@ -299,7 +299,10 @@ public sealed class PhysicsNode : Node
                 others.Add((_simulation.Ids[i], _simulation.Balls[i].Position));
             }
         }
-        return Placement.FreeSpotNear(Table, BallRadius, CueBall, Initializer.HeadSpot(Table, BallRadius), others, BallInHand ? HandRegion : PlacementRegion.Table);
+        var region = BallInHand ? HandRegion : PlacementRegion.Table;
+        // In snooker's D the ball comes back where the break-off starts, not to pool's head spot (outside the D).
+        var near = region == PlacementRegion.D ? Initializer.CueStart(RackGame.Snooker, Table, BallRadius) : Initializer.HeadSpot(Table, BallRadius);
+        return Placement.FreeSpotNear(Table, BallRadius, CueBall, near, others, region);
     }
 
     /// <summary>Puts every ball back where the scene had it (practice's restart); the scene's own shot is not played again.</summary>

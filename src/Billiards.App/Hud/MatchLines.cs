@@ -65,12 +65,13 @@ public static class MatchLines
         {
             if (physics.BallInHand)
             {
-                lines.Add($"Ball in hand ({(physics.HandRegion == Core.Setup.PlacementRegion.Kitchen ? "kitchen" : "anywhere")}): M and drag to place");
+                lines.Add($"Ball in hand ({HandWords(physics.HandRegion)}): M and drag to place");
             }
             string push = state.PushOut ? "  PUSH-OUT" : "";
             string pushKey = match.Ruleset.MayPushOut(state) ? "  O: push-out" : "";
             // Only a shot the rules call shows a call.
-            string call = !match.NeedsCall ? "" : match.CurrentCall is { } c ? $"Call: {physics.Simulation.BallSet.NameOf(c.Ball)} in {c.Pocket.ToName()} (B ball, C pocket)  " : "Call: none (B ball, C pocket)  ";
+            string call = match.NeedsNomination ? $"Nominate: {(match.CurrentNomination is { } n ? physics.Simulation.BallSet.NameOf(n.Ball) : "none")} (B)  "
+                : !match.NeedsCall ? "" : match.CurrentCall is { } c ? $"Call: {physics.Simulation.BallSet.NameOf(c.Ball)} in {c.Pocket.ToName()} (B ball, C pocket)  " : "Call: none (B ball, C pocket)  ";
             lines.Add(string.Create(CultureInfo.InvariantCulture, $"{call}Power {match.Power:0.00} m/s (Q/W, Space shoots, G hint){push}{pushKey}"));
         }
         // This game's: a rematch starts without the last game's ruling.
@@ -83,6 +84,14 @@ public static class MatchLines
             lines.Add(message);
         }
     }
+
+    /// <summary>Where a ball in hand goes, in a few words: "kitchen", "in the D", "anywhere".</summary>
+    public static string HandWords(Core.Setup.PlacementRegion region) => region switch
+    {
+        Core.Setup.PlacementRegion.Kitchen => "kitchen",
+        Core.Setup.PlacementRegion.D => "in the D",
+        _ => "anywhere",
+    };
 
     /// <summary>The object balls on the table (not pocketed).</summary>
     internal static List<BallId> OnTable(PhysicsNode physics)

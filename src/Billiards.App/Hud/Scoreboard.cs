@@ -105,11 +105,24 @@ public static class ScoreboardBuilder
         var shots = match.Game?.Shots ?? [];
         var fouls = FoulsInRow(match, shots);
         var cards = new PlayerCard[2];
+        bool snooker = state.Rules == GameRules.Snooker;
         for (int p = 0; p < 2; p++)
         {
             var target = match.Ruleset.Target(state, p, onTable);
             var detail = new List<string>();
-            if (match.Ruleset.HasScore)
+            if (snooker)
+            {
+                // Snooker: the target's words carry the score and the ball on; the break and the snookers needed beside them.
+                if (p == state.Shooter)
+                {
+                    detail.Add(string.Create(CultureInfo.InvariantCulture, $"break {SnookerLines.CurrentBreak(shots, p)}"));
+                }
+                if (SnookerLines.NeedsSnookers(state, p, onTable))
+                {
+                    detail.Add("needs snookers");
+                }
+            }
+            else if (match.Ruleset.HasScore)
             {
                 detail.Add(string.Create(CultureInfo.InvariantCulture, $"score {state.Score[p]} of {state.Target}"));
             }
@@ -121,7 +134,8 @@ public static class ScoreboardBuilder
             string name = match.Players[p].IsHuman || state.Players[p].StartsWith("Computer", StringComparison.Ordinal) ? state.Players[p] : $"{state.Players[p]} (computer)";
             cards[p] = new PlayerCard(name, p == state.Shooter && !match.IsOver, target.Text, [.. target.Balls.Select(b => b.Value)], string.Join("  ", detail));
         }
-        string title = $"{GameName(state.Rules)}  shot {state.Shot}  games {match.GamesWon.First}-{match.GamesWon.Second}{(paused ? "  PAUSED (P)" : "")}";
+        string remaining = snooker ? string.Create(CultureInfo.InvariantCulture, $"  remaining {SnookerLines.Remaining(state, onTable)}") : "";
+        string title = $"{GameName(state.Rules)}  shot {state.Shot}{remaining}  games {match.GamesWon.First}-{match.GamesWon.Second}{(paused ? "  PAUSED (P)" : "")}";
         string corner = sound is null ? "H help" : $"H help  {SoundWord(sound)}";
         var rulings = shots.Select(s => s.Ruling.Message).Reverse().Where(m => m != match.Message).Take(LogLength).ToList();
         return new Scoreboard(title, corner, cards, Status(match, physics, computerStatus), match.Message, rulings);
@@ -187,9 +201,14 @@ public static class ScoreboardBuilder
         {
             parts.Add(match.CurrentCall is { } c ? $"Call: {physics.Simulation.BallSet.NameOf(c.Ball)} in {c.Pocket.ToName()} (B, C)" : "Call: none (B, C)");
         }
+        if (match.NeedsNomination)
+        {
+            string ball = match.CurrentNomination is { } n ? BallSet.NameOfAny(n.Ball) : "none";
+            parts.Add(state.FreeBall ? $"FREE BALL: nominate {ball} (B, click a ball)" : $"Nominate: {ball} (B, click a ball)");
+        }
         if (physics.BallInHand)
         {
-            parts.Add($"ball in hand ({(physics.HandRegion == Core.Setup.PlacementRegion.Kitchen ? "kitchen" : "anywhere")}): M, drag");
+            parts.Add($"ball in hand ({MatchLines.HandWords(physics.HandRegion)}): M, drag");
         }
         if (state.PushOut)
         {
@@ -207,4 +226,34 @@ public static class ScoreboardBuilder
     // "Sound: off (no audio device)" and the like, shorter for the corner.
     private static string SoundWord(string sound) => sound.Replace("Sound: off (no audio device)", "no sound", StringComparison.Ordinal)
         .Replace("Sound: ", "sound ", StringComparison.Ordinal).Replace("audio device", "device", StringComparison.Ordinal);
+}
+
+/// <summary>Snooker's figures on the scoreboard: the break of the player at the table, the points remaining and who needs snookers (rules.md "Snooker").</summary>
+public static class SnookerLines
+{
+    /// <summary>
+    /// The points of <paramref name="player"/>'s visit now at the table (their break): the points of
+    /// their shots since the turn last came to them, 0 before they scored.
+    /// </summary>
+    public static int CurrentBreak(IReadOnlyList<MatchShot> shots, int player)
+    {
+        ArgumentNullException.ThrowIfNull(shots);
+        int points = 0;
+        for (int i = shots.Count - 1; i >= 0 && shots[i].Before.Shooter == player && shots[i].Ruling.Continue; i--)
+        {
+            points += shots[i].Ruling.Points;
+        }
+        return points;
+    }
+
+    /// <summary>The points still on the table for the player at the table (<see cref="SnookerRuleset.PointsRemaining"/>).</summary>
+    public static int Remaining(GameState state, IReadOnlyCollection<BallId> objectBalls) =>
+        SnookerRuleset.PointsRemaining(SnookerRuleset.BallOnOf(state), objectBalls);
+
+    /// <summary>True when <paramref name="player"/> is behind by more than the points remaining.</summary>
+    public static bool NeedsSnookers(GameState state, int player, IReadOnlyCollection<BallId> objectBalls)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        return state.Score[1 - player] - state.Score[player] > Remaining(state, objectBalls);
+    }
 }

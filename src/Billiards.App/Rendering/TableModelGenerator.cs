@@ -6,7 +6,9 @@ namespace Billiards.App.Rendering;
 /// <summary>
 /// Builds the table's mesh from a <see cref="TableSpec"/>: cloth bed with pocket holes,
 /// cushions with a real profile (nose at the spec's cushion height, undercut face, jaws cut at the
-/// spec's jaw angles), pocket cups, wooden rails with diamond sights, apron, legs and a floor.
+/// spec's jaw angles), pocket cups, wooden rails with diamond sights, apron, legs and a floor; a
+/// snooker table (<see cref="SnookerTable"/>) has its brighter cloth, the baulk line, the D and the
+/// six spots marked on the bed, and no sights (its rails carry none).
 /// Metres, z up, origin at the centre of the bed (Core's frame).
 /// </summary>
 /// <remarks>
@@ -36,6 +38,11 @@ public static class TableModelGenerator
     public static class Materials
     {
         public static readonly MeshMaterial Cloth = new("cloth", new(0.07f, 0.42f, 0.20f), new(0.03f, 0.03f, 0.03f), 6);
+        // Snooker's cloth is the brighter, yellower green of a championship baize.
+        public static readonly MeshMaterial SnookerCloth = new("cloth", new(0.10f, 0.50f, 0.16f), new(0.03f, 0.03f, 0.03f), 6);
+        public static readonly MeshMaterial SnookerCushion = new("cushion", new(0.09f, 0.45f, 0.15f), new(0.04f, 0.04f, 0.04f), 8);
+        // The chalked lines and spots of a snooker bed, a little off-white so the cue ball stands out on them.
+        public static readonly MeshMaterial Marking = new("marking", new(0.80f, 0.82f, 0.76f), new(0.03f, 0.03f, 0.03f), 6);
         public static readonly MeshMaterial Cushion = new("cushion", new(0.06f, 0.38f, 0.18f), new(0.04f, 0.04f, 0.04f), 8);
         public static readonly MeshMaterial Rail = new("rail", new(0.36f, 0.16f, 0.07f), new(0.12f, 0.1f, 0.09f), 120);
         public static readonly MeshMaterial Frame = new("frame", new(0.26f, 0.11f, 0.045f), new(0.1f, 0.09f, 0.08f), 80);
@@ -61,8 +68,9 @@ public static class TableModelGenerator
         float railTop = nose + 0.0065f;
         float inner = CushionDepth, outer = CushionDepth + RailWidth;
 
-        var cloth = new MeshBuilder(Materials.Cloth);
-        var cushion = new MeshBuilder(Materials.Cushion);
+        bool snooker = spec.Preset == SnookerTable.Preset;
+        var cloth = new MeshBuilder(snooker ? Materials.SnookerCloth : Materials.Cloth);
+        var cushion = new MeshBuilder(snooker ? Materials.SnookerCushion : Materials.Cushion);
         var rail = new MeshBuilder(Materials.Rail);
         var frame = new MeshBuilder(Materials.Frame);
         var sight = new MeshBuilder(Materials.Sight);
@@ -85,12 +93,18 @@ public static class TableModelGenerator
         BuildCushions(cushion, spec, hx, hy, nose, railTop);
         BuildRailTop(rail, pockets, hx, hy, railTop);
         BuildOuterRail(rail, frame, hx + outer, hy + outer, railTop);
-        BuildSights(sight, spec, hx, hy, railTop);
         foreach (var p in pockets)
         {
             BuildPocket(pocket, pocketFloor, trim, p, railTop);
         }
         BuildLegsAndFloor(frame, floor, hx + outer, hy + outer);
+        if (snooker)
+        {
+            var marking = new MeshBuilder(Materials.Marking);
+            BuildSnookerMarkings(marking, spec);
+            return [cloth, cushion, rail, frame, marking, pocket, pocketFloor, trim, floor];
+        }
+        BuildSights(sight, spec, hx, hy, railTop);
         return [cloth, cushion, rail, frame, sight, pocket, pocketFloor, trim, floor];
     }
 
@@ -392,6 +406,46 @@ public static class TableModelGenerator
             float y = k * hy / 2;
             Diamond(new Vector2(hx + offset, y), Vector2.UnitY);
             Diamond(new Vector2(-hx - offset, y), Vector2.UnitY);
+        }
+    }
+
+    /// <summary>Width of the baulk line and the D's arc on a snooker bed (m): a chalk line, drawn wide enough to read from the overhead view.</summary>
+    public const float MarkingWidth = 0.006f;
+
+    /// <summary>Radius of a marked colour spot (m).</summary>
+    public const float SpotRadius = 0.005f;
+
+    // The baulk line from cushion to cushion, the D's half circle on its baulk side and the six
+    // spots, just above the cloth (z 0.3 mm: above it in depth, far below a ball's contact).
+    private static void BuildSnookerMarkings(MeshBuilder mesh, TableSpec spec)
+    {
+        const float Z = 0.0003f;
+        float hy = (float)spec.HalfWidth;
+        float baulk = (float)SnookerTable.BaulkLineX(spec);
+        float w = MarkingWidth / 2;
+        mesh.Polygon([new(baulk - w, -hy), new(baulk + w, -hy), new(baulk + w, hy), new(baulk - w, hy)], Z);
+        float d = (float)SnookerTable.DRadius;
+        const int Segments = 48;
+        var c = new Vector2(baulk, 0);
+        for (int k = 0; k < Segments; k++)
+        {
+            // From the yellow spot's end (y < 0) round the baulk side (x < the line) to the green's.
+            float a0 = MathF.PI * ((k / (float)Segments) - 0.5f), a1 = MathF.PI * (((k + 1) / (float)Segments) - 0.5f);
+            var u0 = new Vector2(-MathF.Cos(a0), MathF.Sin(a0));
+            var u1 = new Vector2(-MathF.Cos(a1), MathF.Sin(a1));
+            mesh.Polygon([c + ((d - w) * u0), c + ((d + w) * u0), c + ((d + w) * u1), c + ((d - w) * u1)], Z);
+        }
+        foreach (string colour in Billiards.Core.Balls.BallSet.Colours)
+        {
+            var spot = SnookerTable.Spot(spec, colour, 0);
+            var centre = new Vector2((float)spot.X, (float)spot.Y);
+            var disc = new List<Vector2>();
+            for (int k = 0; k < 12; k++)
+            {
+                float a = 2 * MathF.PI * k / 12;
+                disc.Add(centre + (SpotRadius * new Vector2(MathF.Cos(a), MathF.Sin(a))));
+            }
+            mesh.Polygon(disc, Z + 0.0001f);
         }
     }
 

@@ -216,12 +216,56 @@ public sealed class PlannerTable
         return (best, second);
     }
 
-    /// <summary>The balls the shooter of <paramref name="state"/> may hit first (<see cref="Ruleset.LegalTargets"/>).</summary>
+    /// <summary>
+    /// The balls the shooter of <paramref name="state"/> may hit first (<see cref="Ruleset.LegalTargets"/>);
+    /// before a nomination, every ball the shooter may nominate (snooker's colours after a red, any
+    /// ball with a free ball), since the shot nominates the ball it strikes.
+    /// </summary>
     public static IReadOnlyList<BallId> LegalTargets(GameState state, TablePosition position)
     {
         ArgumentNullException.ThrowIfNull(state);
         ArgumentNullException.ThrowIfNull(position);
-        return Ruleset.For(state.Rules).LegalTargets(state, position.ObjectBalls);
+        var ruleset = Ruleset.For(state.Rules);
+        var objects = position.ObjectBalls;
+        if (state.Call is null && ruleset.Nominates(state))
+        {
+            return [.. objects.Where(b => ruleset.MayCall(state, b)).OrderBy(b => b.Value)];
+        }
+        return ruleset.LegalTargets(state, objects);
+    }
+
+    /// <summary>
+    /// True when the player at the table in <paramref name="state"/> is snookered in
+    /// <paramref name="position"/>: no straight line of the cue ball reaches any part of any ball
+    /// they may strike first (<see cref="Sightlines.AnyPart"/>, the referee's own test), in the
+    /// games whose rules know the snooker (<see cref="Ruleset.HasSnookers"/>); false without a cue ball.
+    /// </summary>
+    public bool Snookered(TablePosition position, GameState state)
+    {
+        ArgumentNullException.ThrowIfNull(position);
+        ArgumentNullException.ThrowIfNull(state);
+        if (!Ruleset.For(state.Rules).HasSnookers || position.Cue is not { } cue)
+        {
+            return false;
+        }
+        var targets = LegalTargets(state, position);
+        var obstacles = new List<Vec3>(position.Count);
+        foreach (var target in targets)
+        {
+            obstacles.Clear();
+            for (int i = 0; i < position.Count; i++)
+            {
+                if (position.Ids[i] != position.CueBall && position.Ids[i] != target)
+                {
+                    obstacles.Add(position.Positions[i]);
+                }
+            }
+            if (Sightlines.AnyPart(cue, position.Positions[position.IndexOf(target)], obstacles, R))
+            {
+                return false;
+            }
+        }
+        return targets.Count > 0;
     }
 
     /// <summary>True when a ball of <paramref name="position"/> (other than the cue ball and <paramref name="ignore"/>) lies within 2R of the segment.</summary>

@@ -11,7 +11,8 @@ public sealed partial class ShotPlanner
     {
         private List<Root> Roots()
         {
-            var region = state.Shot == 0 ? BallInHand.Kitchen : state.BallInHand;
+            var ruleset = Ruleset.For(state.Rules);
+            var region = state.Shot == 0 ? ruleset.BreakBallInHand : state.BallInHand;
             if (region == BallInHand.None && position.Cue is { } cue)
             {
                 return [new Root(position, cue, null)];
@@ -20,7 +21,7 @@ public sealed partial class ShotPlanner
             {
                 region = BallInHand.Table;
             }
-            var spots = state.Shot == 0 ? BreakSpots() : Placements(region);
+            var spots = state.Shot > 0 ? Placements(region) : ruleset.PowerBreak ? BreakSpots() : OpeningSpots(region);
             return [.. spots.Select(p => new Root(position.With(position.CueBall, p), p, p))];
         }
 
@@ -36,6 +37,39 @@ public sealed partial class ShotPlanner
                 spots.Add(new Vec3(x, -0.45 * t.HalfWidth, r));
             }
             return [.. spots.Where(p => position.CanPlace(p, BallInHand.Kitchen, t, r, position.CueBall))];
+        }
+
+        // An opening safety's spots (snooker's break-off from the D): across the region's front,
+        // the middle first, then out to either side.
+        private List<Vec3> OpeningSpots(BallInHand region)
+        {
+            var t = _table.Table;
+            double r = _table.R;
+            var spots = new List<Vec3>();
+            foreach (double y in (ReadOnlySpan<double>)[0.06, -0.06, 0.14, -0.14, 0.22, -0.22, 0.1, -0.1])
+            {
+                var p = FrontOf(region, y);
+                if (position.CanPlace(p, region, t, r, position.CueBall) && spots.Count < Math.Max(1, level.Placements))
+                {
+                    spots.Add(p);
+                }
+            }
+            return spots;
+        }
+
+        // The point of the region at the front of it (nearest the table's far end) at y (m): the
+        // baulk line for the D, the head string for the kitchen, a ball's width behind the line.
+        private Vec3 FrontOf(BallInHand region, double y)
+        {
+            var t = _table.Table;
+            double r = _table.R;
+            double x = region switch
+            {
+                BallInHand.D => Billiards.Core.Table.SnookerTable.BaulkLineX(t) - (1.5 * r),
+                BallInHand.Kitchen => Setup.Placement.HeadString(t) - (1.5 * r),
+                _ => 0,
+            };
+            return new Vec3(x, y, r);
         }
 
         private List<Vec3> Placements(BallInHand region)
@@ -101,6 +135,19 @@ public sealed partial class ShotPlanner
                             grid.Add(p);
                         }
                     }
+                }
+                if (region == BallInHand.D)
+                {
+                    // The D is too small for the table's grid: its own, along the line and round the arc.
+                    double baulk = Billiards.Core.Table.SnookerTable.BaulkLineX(t), d = Billiards.Core.Table.SnookerTable.DRadius - (2 * r);
+                    for (int k = -4; k <= 4; k++)
+                    {
+                        double a = k * Math.PI / 10;
+                        grid.Add(new Vec3(baulk - (2 * r), k * d / 4, r));
+                        grid.Add(new Vec3(baulk - (2 * r) - (0.5 * d * Math.Cos(a)), 0.5 * d * Math.Sin(a), r));
+                        grid.Add(new Vec3(baulk - (2 * r) - (d * Math.Cos(a)), d * Math.Sin(a), r));
+                    }
+                    grid.RemoveAll(p => !without.CanPlace(p, region, t, r, position.CueBall));
                 }
                 var targets = PlannerTable.LegalTargets(state, without);
                 chosen.AddRange(grid.Where(p => targets.Any(b => !_table.Blocked(without, p, without.Positions[without.IndexOf(b)], b))).Take(2));

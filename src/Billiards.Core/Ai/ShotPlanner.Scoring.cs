@@ -41,6 +41,24 @@ public sealed partial class ShotPlanner
     /// <summary>Weight of the opponent's best shot after a legal miss.</summary>
     public const double OpponentWeight = 0.4;
 
+    /// <summary>Weight of the opponent's best shot after a legal miss in a game with snookers (a leave there gives away a break).</summary>
+    public const double SnookerOpponentWeight = 0.6;
+
+    /// <summary>
+    /// Score of each point a shot scores, and (less) of each point of penalty a foul gives away,
+    /// in games that count points per shot (snooker's <see cref="Ruling.Points"/> and
+    /// <see cref="Ruling.Penalty"/>; 0 in the pool games): a pot of the black beats a pot of the
+    /// yellow of the same ease, a foul worth 7 is worse than one worth 4.
+    /// </summary>
+    public const double PointScore = 0.015, PenaltyScore = 0.005;
+
+    /// <summary>
+    /// Score added to a legal miss that leaves the opponent snookered (no straight line from the
+    /// cue ball to any part of any ball they may strike: <see cref="PlannerTable.Snookered"/>); a
+    /// snookered player fouls often and gives away a free ball's chances at most.
+    /// </summary>
+    public const double SnookerScore = 0.15;
+
     /// <summary>
     /// The score of a judged shot for the player who shot it (see the class remarks), with the
     /// balls after it in <paramref name="after"/>, as <paramref name="level"/> judges it: levels
@@ -75,13 +93,16 @@ public sealed partial class ShotPlanner
             // to a pocket costs a little, so that shots which free a cluster are preferred.
             double q = look ? Table.PositionQuality(after, ruling.Next, level.PositionAimStdDeg) : EvenScore;
             double problems = look ? ProblemBallCost * Table.ProblemBalls(after, ruling.Next) : 0;
-            return ContinueScore + PositionWeight * q - problems;
+            return ContinueScore + PositionWeight * q - problems + (PointScore * ruling.Points);
         }
         if (!ruling.Legal)
         {
-            return FoulScore;
+            return FoulScore - (PenaltyScore * ruling.Penalty);
         }
         double opponent = look ? Table.BestEase(after, ruling.Next, level.OpponentAimStdDeg) : EvenScore;
-        return SafetyScore - OpponentWeight * opponent;
+        double snookered = look && Table.Snookered(after, ruling.Next) ? SnookerScore : 0;
+        // In a game of points (snooker) an open table gives the opponent a break, not one shot: it costs more.
+        double weight = Ruleset.For(before.Rules).HasSnookers ? SnookerOpponentWeight : OpponentWeight;
+        return SafetyScore - weight * opponent + snookered;
     }
 }

@@ -9,6 +9,9 @@ namespace Billiards.Core.Ai;
 /// <summary>The variations the search simulates: each candidate at several speeds and spins, and the break.</summary>
 public sealed partial class ShotPlanner
 {
+    // The most safeties a position of a game with snookers gets at levels 3 to 5.
+    private const int MaxSnookerSafeties = 24;
+
     /// <summary>The most samples <see cref="Sensitivity"/> takes.</summary>
     public const int MaxSensitivitySamples = 1000;
 
@@ -60,29 +63,44 @@ public sealed partial class ShotPlanner
         private void AddVariations(int rootIndex, Root root, int candidates, List<Variation> variations)
         {
             var cue = root.Cue;
+            var ruleset = Ruleset.For(state.Rules);
             if (state.Shot == 0)
             {
-                AddBreak(rootIndex, root, variations);
+                if (ruleset.PowerBreak)
+                {
+                    AddBreak(rootIndex, root, variations);
+                }
+                else
+                {
+                    AddBreakOff(rootIndex, root, variations);
+                }
                 return;
             }
+            bool call = ruleset.NeedsCall(state);
+            bool nominates = ruleset.Nominates(state);
             var pots = CandidateGenerator.Pots(_table, state, root.Position, cue)
+                // A nominated ball must be the one struck first and the one potted (snooker).
+                .Where(c => !nominates || c.Called == c.Target)
                 .OrderByDescending(c => c.Prior).Take(candidates).ToList();
-            var safeties = CandidateGenerator.Safeties(_table, state, root.Position, cue)
-                .Take(level.Level >= 3 ? candidates / 2 + 2 : 2).ToList();
+            // Where the game knows the snooker, frames turn on safety exchanges: the stronger
+            // levels try two safeties a ball on (up to 24), not just one for the first few balls.
+            int safetyCount = level.Level < 3 ? 2
+                : ruleset.HasSnookers ? Math.Max(candidates / 2 + 2, Math.Min(MaxSnookerSafeties, 2 * PlannerTable.LegalTargets(state, root.Position).Count))
+                : candidates / 2 + 2;
+            var safeties = CandidateGenerator.Safeties(_table, state, root.Position, cue).Take(safetyCount).ToList();
             if (pots.Count == 0 && safeties.Count == 0)
             {
                 safeties = CandidateGenerator.LastResort(_table, state, root.Position, cue);
             }
-            bool call = Ruleset.For(state.Rules).NeedsCall(state);
             var before = state with { Placement = root.Place, PushOut = false };
             foreach (var c in pots)
             {
-                var withCall = before with { Call = call ? new Call(c.Called, c.Pocket) : null };
+                var withCall = before with { Call = call ? new Call(c.Called, c.Pocket) : ruleset.Nomination(state, c.Target) };
                 Vary(rootIndex, c, cue, withCall, level.Speeds, level.Spins, variations);
             }
             foreach (var c in safeties)
             {
-                var withCall = before with { Call = call ? Call.Safety : null };
+                var withCall = before with { Call = call ? Call.Safety : ruleset.Nomination(state, c.Target) };
                 Vary(rootIndex, c, cue, withCall, Math.Min(level.Speeds, 3), Math.Min(level.Spins, 3), variations);
             }
             AddJumps(rootIndex, root, before, call, variations);
@@ -121,6 +139,50 @@ public sealed partial class ShotPlanner
                     var d = aimPoint - root.Cue;
                     var shot = new ShotSpec(speed, Math.Atan2(d.Y, d.X) * 180 / Math.PI, 0, -0.2, 0);
                     variations.Add(new Variation(rootIndex, c, shot, before));
+                }
+            }
+        }
+
+        // An opening safety (snooker's break-off): the cue ball glances thinly off the outside of
+        // one of the pack's outermost balls as seen from the cue ball, at a few thicknesses, speeds
+        // and sides, to come back off the cushions and leave the pack barely disturbed.
+        private void AddBreakOff(int rootIndex, Root root, List<Variation> variations)
+        {
+            var balls = PlannerTable.LegalTargets(state, root.Position)
+                .Select(b => (Id: b, Position: root.Position.Positions[root.Position.IndexOf(b)])).ToList();
+            if (balls.Count == 0)
+            {
+                return;
+            }
+            var cue = root.Cue;
+            var centre = balls.Aggregate(Vec3.Zero, (sum, b) => sum + b.Position) * (1.0 / balls.Count);
+            var axis = (centre - cue).XY.Normalized();
+            double Across(Vec3 p) => Vec3.Cross(axis, (p - cue).XY.Normalized()).Z;
+            int each = level.Level >= 3 ? 2 : 1;
+            var outermost = balls.OrderByDescending(b => Across(b.Position)).Take(each)
+                .Concat(balls.OrderBy(b => Across(b.Position)).Take(each));
+            var before = state with { Placement = root.Place, Call = null, PushOut = false };
+            double[] offsets = level.Level >= 3 ? [1.45, 1.65, 1.85] : [1.65];
+            double[] speeds = level.Level >= 2 ? [3.2, 4.0, 4.8] : [4.0];
+            double[] sides = level.Level >= 3 ? [0, 0.3, -0.3] : [0];
+            foreach (var (id, o) in outermost)
+            {
+                var line = (o - cue).XY.Normalized();
+                // The side of the ball away from the pack's centre line.
+                var outward = new Vec3(-line.Y, line.X, 0) * Math.Sign(Across(o) == 0 ? 1 : Across(o));
+                foreach (double offset in offsets)
+                {
+                    var aimPoint = o + (outward * (offset * _table.R));
+                    var c = new Candidate(ShotKind.Safety, id, id, PocketId.None, o, Vec3.Zero, aimPoint, 4, 0.1);
+                    var d = aimPoint - cue;
+                    double aim = Math.Atan2(d.Y, d.X) * 180 / Math.PI;
+                    foreach (double speed in speeds)
+                    {
+                        foreach (double side in sides)
+                        {
+                            variations.Add(new Variation(rootIndex, c, new ShotSpec(speed, aim, side, 0.1, 0), before));
+                        }
+                    }
                 }
             }
         }

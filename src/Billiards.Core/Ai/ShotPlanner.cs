@@ -134,7 +134,32 @@ public sealed partial class ShotPlanner
         {
             return q >= 0.3 ? RefereeOption.Accept : RefereeOption.Rerack;
         }
+        if (options.Contains(RefereeOption.Play) && options.Contains(RefereeOption.PutBack))
+        {
+            return ChooseAfterFoul(ruling, position, q);
+        }
         return options[0];
+    }
+
+    /// <summary>The ease of a leave from which the incoming player takes the table after a foul (snooker's <c>play</c>).</summary>
+    public const double PlayEase = 0.3;
+
+    // After a foul (snooker): take a good shot as it lies; after a miss from a hard position, have
+    // the offender try it again (replace: a new penalty, and a third miss with a full view loses the
+    // frame); when the table lies badly for both, put the offender back in.
+    private RefereeOption ChooseAfterFoul(Ruling ruling, TablePosition position, double q)
+    {
+        if (q >= PlayEase)
+        {
+            return RefereeOption.Play;
+        }
+        if (ruling.Options.Contains(RefereeOption.Replace))
+        {
+            return RefereeOption.Replace;
+        }
+        var offender = ruling.Choose(RefereeOption.PutBack).Next;
+        double theirs = position.Cue is null ? 1 : Table.BestEase(position, offender);
+        return theirs < q ? RefereeOption.PutBack : RefereeOption.Play;
     }
 
     /// <summary>True when the ruling keeps <paramref name="shooter"/> at the table or gives them the game: the shot was made.</summary>
@@ -152,7 +177,8 @@ public sealed partial class ShotPlanner
     internal static (ShotKind Kind, PocketId Pocket, Call? Call) Declared(Candidate candidate, Call? call, int pots, int simulations)
     {
         return ShotKinds.IsPot(candidate.Kind, candidate.Pocket) && pots == 0 && simulations >= SafetyEvidence
-            ? (ShotKind.Safety, PocketId.None, call is null ? null : Call.Safety)
+            // A nomination (snooker) stays: it names the ball to strike first, not a pot.
+            ? (ShotKind.Safety, PocketId.None, call is null || call.IsNomination ? call : Call.Safety)
             : (candidate.Kind, candidate.Pocket, call);
     }
 

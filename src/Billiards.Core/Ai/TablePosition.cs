@@ -84,11 +84,16 @@ public sealed class TablePosition
         return new TablePosition(list, record.CueBall);
     }
 
-    /// <summary>A fresh rack of <paramref name="rack"/> with <paramref name="cueBall"/> on the head spot.</summary>
+    /// <summary>A fresh rack of <paramref name="rack"/> with <paramref name="cueBall"/> where the rack puts it (the head spot; snooker's rack has it in the D).</summary>
     public static TablePosition Rack(RackSpec rack, TableSpec table, double radius, BallId cueBall)
     {
-        var balls = new List<(BallId, Vec3)> { (cueBall, Initializer.HeadSpot(table, radius)) };
-        balls.AddRange(Initializer.Rack(rack, table, radius));
+        var racked = Initializer.Rack(rack, table, radius);
+        var balls = new List<(BallId, Vec3)>();
+        if (!racked.Any(b => b.Id == cueBall))
+        {
+            balls.Add((cueBall, Initializer.HeadSpot(table, radius)));
+        }
+        balls.AddRange(racked);
         return new TablePosition(balls, cueBall);
     }
 
@@ -114,8 +119,7 @@ public sealed class TablePosition
     public bool CanPlace(Vec3 p, BallInHand region, TableSpec table, double radius, BallId ignore)
     {
         ArgumentNullException.ThrowIfNull(table);
-        var where = region == BallInHand.Kitchen ? PlacementRegion.Kitchen : PlacementRegion.Table;
-        if (!Placement.FitsOnTable(table, radius, p, where, PlacementMargin))
+        if (!Placement.FitsOnTable(table, radius, p, region.Region(), PlacementMargin))
         {
             return false;
         }

@@ -186,6 +186,28 @@ public abstract class Ruleset
     /// <summary>What the HUD shows as <paramref name="player"/>'s target with <paramref name="objectBalls"/> on the table.</summary>
     public abstract HudTarget Target(GameState state, int player, IReadOnlyCollection<BallId> objectBalls);
 
+    /// <summary>
+    /// True when the shooter of <paramref name="state"/> nominates a ball without a pocket before
+    /// the shot (snooker's colour after a red, and a free ball); false in the pool games.
+    /// </summary>
+    public virtual bool Nominates(GameState state) => false;
+
+    /// <summary>
+    /// The call of a shot whose first ball is <paramref name="ball"/> where the game nominates
+    /// (<see cref="Nominates"/>): the nomination of that ball when the shooter may nominate it,
+    /// else null (no call).
+    /// </summary>
+    public Call? Nomination(GameState state, BallId ball) => Nominates(state) && MayCall(state, ball) ? Call.Nominate(ball) : null;
+
+    /// <summary>
+    /// True when the break is a power break into the rack (pool); false where the first shot is
+    /// an opening safety played like any other (snooker's break-off).
+    /// </summary>
+    public virtual bool PowerBreak => true;
+
+    /// <summary>True when the rules know the snooker (a player with no straight line to any ball on: snooker's miss and free ball).</summary>
+    public virtual bool HasSnookers => false;
+
     /// <summary>Orders balls by number.</summary>
     protected static List<BallId> Ordered(IEnumerable<BallId> balls) => [.. balls.OrderBy(b => b.Value)];
 }

@@ -55,8 +55,6 @@ public sealed class SnookerRuleset : Ruleset
     /// <inheritdoc />
     public override bool HasScore => true;
 
-    /// <summary>Not yet: the planner knows pool's games only.</summary>
-    public override bool HasComputerPlayer => false;
 
     /// <inheritdoc />
     public override IReferee Referee(TableSpec table, double ballRadius) => new SnookerReferee(table, ballRadius);
@@ -116,6 +114,19 @@ public sealed class SnookerRuleset : Ruleset
         ArgumentNullException.ThrowIfNull(state);
         return state.FreeBall ? !BallSet.IsCueBall(ball) : BallOnOf(state) == Colour && IsColour(ball);
     }
+
+    /// <summary>A colour is nominated after a potted red, and any ball with a free ball.</summary>
+    public override bool Nominates(GameState state)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        return state.FreeBall || BallOnOf(state) == Colour;
+    }
+
+    /// <summary>The break-off is a safety off the side of the pack, not a power break.</summary>
+    public override bool PowerBreak => false;
+
+    /// <summary>Snooker's miss and free ball turn on whether a player is snookered.</summary>
+    public override bool HasSnookers => true;
 
     /// <summary>A frame rarely lasts 300 shots; 600 leaves room for long safety exchanges.</summary>
     public override int MaxShots(GameState start) => 600;

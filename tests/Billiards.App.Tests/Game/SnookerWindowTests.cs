@@ -1,0 +1,144 @@
+using Billiards.App.Game;
+using Billiards.App.Hud;
+using Billiards.App.Platform;
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+using Billiards.Core.Setup;
+using Billiards.Core.Table;
+
+namespace Billiards.App.Tests.Game;
+
+/// <summary>Snooker in the window: the start menu, ball in hand in the D, nominating, the options as buttons, and the scoreboard's figures.</summary>
+public class SnookerWindowTests
+{
+    // The cue ball in baulk, one red, the blue and the black: a red on, 8 + 27 = 35 points remaining.
+    private const string Json = """
+        { "format": "billiards-scene/1", "table": { "preset": "snooker-12ft" }, "physics": { "dt": 0.00390625 },
+          "balls": [ { "id": "cue", "position": [-1.2, 0.1] }, { "id": "red-1", "position": [0.6, 0.3] },
+                     { "id": "blue", "position": [0.0, 0.0] }, { "id": "black", "position": [1.46, 0.0] } ] }
+        """;
+
+    private static readonly BallId Blue = BallSet.Colour("blue");
+    private static readonly BallId Black = BallSet.Colour("black");
+
+    private static TestGame Start(GameState state)
+    {
+        var scene = SceneLoader.Parse(Json, "s.json") with { Game = state with { Players = new PerPlayer<string>("Anna", "Ben") } };
+        return new TestGame(scene, new MatchSetup(GameRules.Snooker, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+    }
+
+    [Fact]
+    public void Snooker_is_a_game_of_the_start_menu()
+    {
+        using var game = new TestGame();
+        game.World.Menu.ShowStart();
+        game.Frame();
+        var centre = game.World.Menu.CentreOf("snooker");
+        Assert.NotNull(centre);
+        game.Window.MoveTo(centre!.Value.X, centre.Value.Y);
+        game.Window.Down();
+        game.Window.Up();
+        Assert.Equal(GameRules.Snooker, game.World.Menu.StartGame);
+        Assert.True(File.Exists(Billiards.App.Cli.PlayCommand.FindRulesScene(GameRules.Snooker)));
+    }
+
+    [Fact]
+    public void The_break_off_is_played_from_the_D_and_the_cue_ball_cannot_leave_it()
+    {
+        using var game = Start(new GameState(GameRules.Snooker));
+        game.Frame();
+        var physics = game.World.Physics;
+        Assert.True(physics.BallInHand);
+        Assert.Equal(PlacementRegion.D, physics.HandRegion);
+        Assert.True(SnookerTable.InD(physics.Table, physics.CueBallPosition), $"the cue ball starts at {physics.CueBallPosition}");
+        double baulk = SnookerTable.BaulkLineX(physics.Table), r = physics.BallRadius;
+        // In the D (behind the line, within its radius of the brown spot); just in front of the line, and beside the arc, refused.
+        Assert.True(physics.TryPlaceCueBall(new Vec3(baulk - 0.1, -0.2, r)));
+        Assert.False(physics.TryPlaceCueBall(new Vec3(baulk + 0.02, 0, r)));
+        Assert.False(physics.TryPlaceCueBall(new Vec3(baulk - 0.1, 0.29, r)));
+        Assert.Equal(new Vec3(baulk - 0.1, -0.2, r), physics.CueBallPosition);
+        Assert.Contains("in the D", game.Frame().Hud!.Board!.Status, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void After_a_red_B_and_a_click_nominate_a_colour_and_the_strike_carries_the_nomination()
+    {
+        using var game = Start(new GameState(GameRules.Snooker) { Shot = 3, BallOn = SnookerRuleset.Colour, Score = new PerPlayer<int>(1, 0) });
+        var match = game.World.Tree.Root.GetInTree<MatchNode>();
+        game.Frame();
+        Assert.True(match.NeedsNomination);
+        Assert.False(match.NeedsCall);
+        // B goes round the colours on the table only (never the red): the blue, then the black.
+        game.Window.Press(Key.B);
+        var first = match.CurrentNomination!.Ball;
+        game.Window.Press(Key.B);
+        var second = match.CurrentNomination!.Ball;
+        Assert.Equal(new HashSet<BallId> { Blue, Black }, new HashSet<BallId> { first, second });
+        Assert.Contains($"Nominate: {BallSet.NameOfAny(second)}", game.Frame().Hud!.Board!.Status, StringComparison.Ordinal);
+        // A click on the red nominates nothing (a red is not a colour); a click on a colour does.
+        match.CallBall(BallSet.Snooker.Ids.First(SnookerRuleset.IsRed));
+        Assert.Equal(second, match.CurrentNomination!.Ball);
+        match.CallBall(first);
+        Assert.Equal(first, match.CurrentNomination!.Ball);
+        game.Window.Press(Key.Space);
+        Assert.Equal(Call.Nominate(first), match.Shots[^1].Before.Call);
+    }
+
+    [Fact]
+    public void A_miss_offers_play_put_back_and_replace_as_buttons_and_replace_puts_the_balls_back()
+    {
+        using var game = Start(new GameState(GameRules.Snooker) { Shot = 3, BallOn = SnookerRuleset.Red });
+        var match = game.World.Tree.Root.GetInTree<MatchNode>();
+        game.Frame();
+        var before = game.World.Physics.CueBallPosition;
+        match.AimAt(180); // away from every ball: no contact, a foul and a miss
+        game.Window.Press(Key.Space);
+        game.RunUntilRest();
+        var hud = game.Frame().Hud!;
+        Assert.Equal([RefereeOption.Play, RefereeOption.PutBack, RefereeOption.Replace], match.PendingOptions);
+        Assert.Contains(hud.Buttons!, b => b.Label == "play [1]");
+        Assert.Contains(hud.Buttons!, b => b.Label == "put-back [2]");
+        Assert.Contains(hud.Buttons!, b => b.Label == "replace [3]");
+        Assert.Equal(1, match.State.Shooter);
+        Assert.Equal(4, match.State.Score[1]);
+
+        var centre = game.World.Menu.CentreOf("replace")!.Value;
+        game.Window.MoveTo(centre.X, centre.Y);
+        game.Window.Down();
+        game.Window.Up();
+        game.Frame();
+        Assert.Empty(match.PendingOptions);
+        Assert.Equal(0, match.State.Shooter);
+        Assert.Equal(before, game.World.Physics.CueBallPosition);
+    }
+
+    [Fact]
+    public void The_scoreboard_shows_the_break_the_points_remaining_the_ball_on_and_who_needs_snookers()
+    {
+        using var game = Start(new GameState(GameRules.Snooker) { Shot = 9, BallOn = SnookerRuleset.Red, Score = new PerPlayer<int>(0, 60) });
+        var board = game.Frame().Hud!.Board!;
+        Assert.Contains("remaining 35", board.Title, StringComparison.Ordinal);
+        Assert.Contains("on a red", board.Players[0].Target, StringComparison.Ordinal);
+        Assert.Contains("0", board.Players[0].Target, StringComparison.Ordinal);
+        Assert.Contains("60", board.Players[1].Target, StringComparison.Ordinal);
+        Assert.Contains("break 0", board.Players[0].Detail, StringComparison.Ordinal);
+        // 60 behind with 35 on the table: Anna needs snookers, Ben does not.
+        Assert.Contains("needs snookers", board.Players[0].Detail, StringComparison.Ordinal);
+        Assert.DoesNotContain("needs snookers", board.Players[1].Detail, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void The_break_is_the_points_of_the_visit_at_the_table()
+    {
+        var state = new GameState(GameRules.Snooker);
+        MatchShot Shot(int shooter, int points, bool go) => new(state with { Shooter = shooter }, new GameShot(new Billiards.Core.Cue.ShotSpec(1, 0, 0, 0)),
+            new Ruling(true, [], [], go, BallInHand.None, [], [], false, null, "", state) { Points = points }, []);
+        // Ben's visit ended; Anna then potted a red (1) and the black (7) and is still at the table.
+        var shots = new[] { Shot(1, 1, true), Shot(1, 0, false), Shot(0, 1, true), Shot(0, 7, true) };
+        Assert.Equal(8, SnookerLines.CurrentBreak(shots, 0));
+        Assert.Equal(0, SnookerLines.CurrentBreak(shots, 1));
+        Assert.Equal(0, SnookerLines.CurrentBreak([.. shots, Shot(0, 0, false)], 0));
+    }
+}
