@@ -192,7 +192,7 @@ public class StartMenuTests
     }
 
     [Fact]
-    public void The_computers_pace_is_chosen_in_the_start_menu_keeps_the_game_and_is_remembered()
+    public void TheComputersPaceIsChosenInTheStartMenuKeepsTheGameAndIsRemembered()
     {
         using var settings = new TempSettings();
         int games = 0;

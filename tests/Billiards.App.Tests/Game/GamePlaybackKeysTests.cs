@@ -42,7 +42,7 @@ public sealed class GamePlaybackKeysTests : IDisposable
     }
 
     [Fact]
-    public void The_shot_keys_go_forwards_and_back_and_every_shot_shown_gets_its_recorded_ruling()
+    public void TheShotKeysGoForwardsAndBackAndEveryShotShownGetsItsRecordedRuling()
     {
         string path = SelfplayRecords();
         var records = ReplayCommand.Load(path);
@@ -83,7 +83,7 @@ public sealed class GamePlaybackKeysTests : IDisposable
     }
 
     [Fact]
-    public void A_game_number_outside_the_file_is_one_line_and_exit_two()
+    public void AGameNumberOutsideTheFileIsOneLineAndExitTwo()
     {
         string path = SelfplayRecords();
         var (code, stdout, stderr) = Billiards.App.Tests.Cli.CliRun.Run("replay", path, "--game", "3");

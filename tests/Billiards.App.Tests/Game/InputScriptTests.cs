@@ -144,7 +144,7 @@ public class InputScriptTests
     }
 
     [Fact]
-    public void Stats_give_each_second_the_processor_time_of_its_frames_over_their_number()
+    public void StatsGiveEachSecondTheProcessorTimeOfItsFramesOverTheirNumber()
     {
         var stats = new FrameStats();
         // Frames every 10 ms; the process takes 4 ms of processor time a frame in the first

@@ -49,7 +49,7 @@ public class InstantReplayTests
     }
 
     [Fact]
-    public void The_script_replays_the_break_at_a_quarter_speed_and_the_replay_ends_where_the_break_ended()
+    public void TheScriptReplaysTheBreakAtAQuarterSpeedAndTheReplayEndsWhereTheBreakEnded()
     {
         var (samples, host) = Play(1.0 / 60);
         var replay = host.Tree.Root.GetInTree<InstantReplayNode>();

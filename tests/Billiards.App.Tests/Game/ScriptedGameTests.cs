@@ -201,7 +201,7 @@ public class GameAgainstTheComputerWindowTests
     public static string Script => Path.Combine(AssetFolder.Assets, "scripts", "game-against-the-computer.json");
 
     [Fact]
-    public void A_whole_game_against_the_computer_plays_in_a_window_and_ends_with_the_result_panel()
+    public void AWholeGameAgainstTheComputerPlaysInAWindowAndEndsWithTheResultPanel()
     {
         TestDisplay.Ensure();
         string record = Path.Combine(Path.GetTempPath(), $"record-{Guid.NewGuid():N}.json");

@@ -41,7 +41,7 @@ public class SnookerScriptedFrameTests
     }
 
     [Fact]
-    public void The_scripted_frame_ends_with_Ben_winning_on_the_three_miss_rule_behind_12_13_and_replays()
+    public void TheScriptedFrameEndsWithBenWinningOnTheThreeMissRuleBehind1213AndReplays()
     {
         string text = PlayHeadless(1.0 / 60);
         using var doc = JsonDocument.Parse(text);

@@ -30,7 +30,7 @@ public class SnookerWindowTests
     }
 
     [Fact]
-    public void Snooker_is_a_game_of_the_start_menu()
+    public void SnookerIsAGameOfTheStartMenu()
     {
         using var game = new TestGame();
         game.World.Menu.ShowStart();
@@ -45,7 +45,7 @@ public class SnookerWindowTests
     }
 
     [Fact]
-    public void The_break_off_is_played_from_the_D_and_the_cue_ball_cannot_leave_it()
+    public void TheBreakOffIsPlayedFromTheDAndTheCueBallCannotLeaveIt()
     {
         using var game = Start(new GameState(GameRules.Snooker));
         game.Frame();
@@ -63,7 +63,7 @@ public class SnookerWindowTests
     }
 
     [Fact]
-    public void After_a_red_B_and_a_click_nominate_a_colour_and_the_strike_carries_the_nomination()
+    public void AfterARedBAndAClickNominateAColourAndTheStrikeCarriesTheNomination()
     {
         using var game = Start(new GameState(GameRules.Snooker) { Shot = 3, BallOn = SnookerRuleset.Colour, Score = new PerPlayer<int>(1, 0) });
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
@@ -87,7 +87,7 @@ public class SnookerWindowTests
     }
 
     [Fact]
-    public void A_miss_offers_play_put_back_and_replace_as_buttons_and_replace_puts_the_balls_back()
+    public void AMissOffersPlayPutBackAndReplaceAsButtonsAndReplacePutsTheBallsBack()
     {
         using var game = Start(new GameState(GameRules.Snooker) { Shot = 3, BallOn = SnookerRuleset.Red });
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
@@ -115,7 +115,7 @@ public class SnookerWindowTests
     }
 
     [Fact]
-    public void The_scoreboard_shows_the_break_the_points_remaining_the_ball_on_and_who_needs_snookers()
+    public void TheScoreboardShowsTheBreakThePointsRemainingTheBallOnAndWhoNeedsSnookers()
     {
         using var game = Start(new GameState(GameRules.Snooker) { Shot = 9, BallOn = SnookerRuleset.Red, Score = new PerPlayer<int>(0, 60) });
         var board = game.Frame().Hud!.Board!;
@@ -130,7 +130,7 @@ public class SnookerWindowTests
     }
 
     [Fact]
-    public void The_break_is_the_points_of_the_visit_at_the_table()
+    public void TheBreakIsThePointsOfTheVisitAtTheTable()
     {
         var state = new GameState(GameRules.Snooker);
         MatchShot Shot(int shooter, int points, bool go) => new(state with { Shooter = shooter }, new GameShot(new Billiards.Core.Cue.ShotSpec(1, 0, 0, 0)),

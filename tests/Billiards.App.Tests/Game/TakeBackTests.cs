@@ -72,7 +72,7 @@ public class TakeBackTests
     }
 
     [Fact]
-    public void In_a_game_that_allows_take_backs_the_script_takes_the_break_back_and_the_balls_are_where_they_were_bit_for_bit()
+    public void InAGameThatAllowsTakeBacksTheScriptTakesTheBreakBackAndTheBallsAreWhereTheyWereBitForBit()
     {
         var run = Play("eight-ball.json", "Anna,Ben", takeBacks: true);
         var match = run.Match!;
@@ -87,7 +87,7 @@ public class TakeBackTests
     }
 
     [Fact]
-    public void Take_backs_are_off_by_default_and_Z_then_changes_nothing()
+    public void TakeBacksAreOffByDefaultAndZThenChangesNothing()
     {
         var run = Play("eight-ball.json", "Anna,Ben", takeBacks: false);
         var match = run.Match!;
@@ -99,7 +99,7 @@ public class TakeBackTests
     }
 
     [Fact]
-    public void In_practice_the_script_takes_the_scenes_break_back_to_the_scene_bit_for_bit()
+    public void InPracticeTheScriptTakesTheScenesBreakBackToTheSceneBitForBit()
     {
         // A scene without rules is practice: its own break plays at once, and Z takes it back.
         var run = Play("eight-ball-break.json", null, takeBacks: false);
@@ -113,7 +113,7 @@ public class TakeBackTests
     }
 
     [Fact]
-    public void Against_the_computer_its_shot_is_taken_back_too_and_it_plays_that_shot_again()
+    public void AgainstTheComputerItsShotIsTakenBackTooAndItPlaysThatShotAgain()
     {
         // The computer breaks (the script's stroke meets its turn and strikes nothing); once the
         // turn has passed, Z takes the computer's last shot back and it plays that shot again.

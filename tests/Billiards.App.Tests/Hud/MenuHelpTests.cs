@@ -44,7 +44,7 @@ public class MenuHelpTests
     }
 
     [Fact]
-    public void The_start_menu_sets_the_computers_pace_in_the_game_behind_it()
+    public void TheStartMenuSetsTheComputersPaceInTheGameBehindIt()
     {
         var scene = Billiards.Core.Scenes.SceneLoader.Load(Billiards.App.Cli.PlayCommand.FindRulesScene(Billiards.Core.Rules.GameRules.EightBall));
         using var game = new TestGame(scene, new Billiards.App.Game.MatchSetup(Billiards.Core.Rules.GameRules.EightBall, [new Billiards.App.Game.MatchPlayer("Anna"), new Billiards.App.Game.MatchPlayer("Computer L3", 3)]));

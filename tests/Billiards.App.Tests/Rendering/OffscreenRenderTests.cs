@@ -245,7 +245,7 @@ public class OffscreenRenderTests(GlFixture gl, ITestOutputHelper output)
     }
 
     [Fact]
-    public void Render_ABallInTheAirCastsAFainterSofterShadowTheHigherItIs()
+    public void RenderABallInTheAirCastsAFainterSofterShadowTheHigherItIs()
     {
         // A ball straight under the middle lamp at several heights, seen from above and to the
         // side; each frame divided by the same frame without the ball. The shadow's darkest point
