@@ -154,7 +154,7 @@ public sealed class AiCommandTests : IDisposable
     [Theory]
     [InlineData("--levels", "5", "--levels 5")]
     [InlineData("--levels", "5,9", "--levels 5,9")]
-    [InlineData("--rules", "snooker", "--rules snooker")]
+    [InlineData("--rules", "carom", "--rules carom")]
     [InlineData("--target", "0", "--target 0")]
     [InlineData("--games", "0", "--games 0")]
     public void SelfplayRefusesABadArgumentInOneLine(string option, string value, string expected)
