@@ -191,12 +191,12 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         Changed();
     }
 
-    /// <summary>Retry: the balls as they were before the last shot, and the cue set to it (aim, power, spin, elevation).</summary>
-    public void Retry()
+    /// <summary>Retry: the balls as they were before the last shot, and the cue set to it (aim, power, spin, elevation); false when there is no shot to retry or balls roll. It is practice's take-back too.</summary>
+    public bool Retry()
     {
         if (_physics is null || _physics.IsRolling || _before is null || LastShot is not { } shot)
         {
-            return;
+            return false;
         }
         // A drill's attempt starts again from the drill's position with its first shot, whatever
         // shot it had reached: a sequence is judged from its first ball.
@@ -210,6 +210,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         _physics.EndBallInHand();
         SetCue(cue);
         Say("Retry: the last shot's position and cue.");
+        return true;
     }
 
     /// <summary>Strikes the cue's shot of the moment (<see cref="CurrentShot"/>).</summary>

@@ -17,6 +17,7 @@ public sealed class TakeBackNode : Node
 
     private PhysicsNode? _physics;
     private MatchNode? _match;
+    private PracticeNode? _practice;
     private InstantReplayNode? _replay;
 
     /// <summary>What the last press said when it could not take a shot back, or null.</summary>
@@ -27,6 +28,7 @@ public sealed class TakeBackNode : Node
     {
         _physics = GetInTree<PhysicsNode>();
         _match = FindInTree<MatchNode>();
+        _practice = FindInTree<PracticeNode>();
         _replay = FindInTree<InstantReplayNode>();
         _physics.Struck += _ => Refusal = null;
     }
@@ -38,7 +40,8 @@ public sealed class TakeBackNode : Node
         {
             return false;
         }
-        bool done = _match is null ? _physics.Undo() : _match.TakeBack();
+        // Practice strikes through its own node, which keeps the position before the shot: its retry is the take-back.
+        bool done = _match is not null ? _match.TakeBack() : _practice is not null ? _practice.Retry() : _physics.Undo();
         Refusal = done ? null
             : _physics.IsRolling ? "No take-back while balls roll."
             : _match is { TakeBacks: false } ? "Take-backs are off in this game (start menu, or play --take-backs)."

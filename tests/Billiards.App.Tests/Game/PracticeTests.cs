@@ -207,6 +207,28 @@ public sealed class PracticeTests : IDisposable
     }
 
     [Fact]
+    public void ZTakesTheLastShotBackInPracticeTheBallsRestoredBitForBit()
+    {
+        using var game = Practice();
+        game.Frame();
+        var before = game.World.Physics.Simulation.Balls.ToArray();
+        game.Window.Press(Key.W);
+        game.Window.Press(Key.Space);
+        game.RunUntilRest();
+        Assert.NotEqual(before[0].Position, game.World.Physics.Simulation.Balls[0].Position);
+
+        game.Window.Press(TakeBackNode.UndoKey);
+        var restored = game.World.Physics.Simulation.Balls.ToArray();
+        Assert.Equal(before.Length, restored.Length);
+        for (int i = 0; i < before.Length; i++)
+        {
+            Assert.Equal(before[i].Position, restored[i].Position);
+            Assert.Equal(before[i].Velocity, restored[i].Velocity);
+        }
+        Assert.Null(game.Host.Tree.Root.GetInTree<TakeBackNode>().Refusal);
+    }
+
+    [Fact]
     public void TheSensitivityViewShowsHowOftenTheShotPotsAndDrawsEverySampleSEnding()
     {
         var drill = DrillLibrary.Load("straight-in");
