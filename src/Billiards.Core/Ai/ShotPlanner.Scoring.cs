@@ -32,6 +32,13 @@ public sealed partial class ShotPlanner
     /// <summary>Weight of the next shot's position quality when the shooter stays at the table.</summary>
     public const double PositionWeight = 0.3;
 
+    /// <summary>
+    /// Weight of the next shot's position quality when the shooter stays at the table in a game
+    /// with snookers; the score of a perfect position stays <see cref="ContinueScore"/> +
+    /// <see cref="PositionWeight"/>, a poor one scores less than in pool.
+    /// </summary>
+    public const double SnookerPositionWeight = 0.4;
+
     /// <summary>Cost of each ball left without a straight way to a pocket (<see cref="PlannerTable.ProblemBalls"/>).</summary>
     public const double ProblemBallCost = 0.04;
 
@@ -58,6 +65,16 @@ public sealed partial class ShotPlanner
     /// snookered player fouls often and gives away a free ball's chances at most.
     /// </summary>
     public const double SnookerScore = 0.15;
+
+    /// <summary>
+    /// Score a pot attempt loses, in the final choice, for each unit of pot chance (0-1) its
+    /// simulations fall short of the player's <see cref="SkillLevel.SurePotChance"/>, in the games
+    /// with snookers: a pot of chance p scores its mean less <c>ShortfallWeight * (sure - p)</c>.
+    /// </summary>
+    public const double ShortfallWeight = 1;
+
+    /// <summary>Safeties taken into the search's middle round besides its best variations, where pot attempts must be sure.</summary>
+    public const int ScreenedSafeties = 8;
 
     /// <summary>
     /// The score of a judged shot for the player who shot it (see the class remarks), with the
@@ -91,9 +108,14 @@ public sealed partial class ShotPlanner
             // Position counts, but less than the pot: for a strong player a moderate next shot is
             // still likely, and the pot in hand is certain. Each ball left without a straight way
             // to a pocket costs a little, so that shots which free a cluster are preferred.
+            // Where a player plays safe rather than attempt a pot that is not sure (snooker), a
+            // leave without a sure pot ends the break: the position weighs more.
+            bool snookers = Ruleset.For(before.Rules).HasSnookers;
+            double start = snookers ? ContinueScore + PositionWeight - SnookerPositionWeight : ContinueScore;
+            double positionWeight = snookers ? SnookerPositionWeight : PositionWeight;
             double q = look ? Table.PositionQuality(after, ruling.Next, level.PositionAimStdDeg) : EvenScore;
             double problems = look ? ProblemBallCost * Table.ProblemBalls(after, ruling.Next) : 0;
-            return ContinueScore + PositionWeight * q - problems + (PointScore * ruling.Points);
+            return start + (positionWeight * q) - problems + (PointScore * ruling.Points);
         }
         if (!ruling.Legal)
         {

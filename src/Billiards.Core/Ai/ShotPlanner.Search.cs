@@ -44,6 +44,12 @@ public sealed partial class ShotPlanner
         private int _simulations;
         private double[] _squares = [];
 
+        // The pot chance below which this player would rather play safe (0: none), and the
+        // search's pot counts once the middle round has given every field member enough samples.
+        private readonly double _sureChance = Ruleset.For(state.Rules).HasSnookers ? level.SurePotChance : 0;
+        private List<Variation> _variations = [];
+        private int[]? _pots;
+
         public Decision Run()
         {
             var roots = Roots();
@@ -51,7 +57,7 @@ public sealed partial class ShotPlanner
             {
                 r.Snapshot = r.Position.CreateSimulation(planner.Model).CreateSnapshot();
             }
-            var variations = new List<Variation>();
+            var variations = _variations = new List<Variation>();
             int perRoot = roots.Count > 1 ? Math.Max(3, level.Candidates / 2) : level.Candidates;
             for (int i = 0; i < roots.Count; i++)
             {
@@ -86,9 +92,10 @@ public sealed partial class ShotPlanner
             var field = Ranked(variations.Count, sum, count);
             if (level.ScreenTop > 0 && level.ScreenSamples > 0)
             {
-                field = field.Take(level.ScreenTop).ToList();
+                field = WithSafeties(field, level.ScreenTop);
                 Simulate(workers, variations, field, samples, level.ScreenSamples, sum, pots, count);
                 samples += level.ScreenSamples;
+                _pots = pots;
                 field = Ranked(field, sum, count);
             }
             var finalists = field.Take(Math.Max(1, level.RefineTop)).ToList();
@@ -178,14 +185,42 @@ public sealed partial class ShotPlanner
             double n = count[i];
             double mean = sum[i] / n;
             double variance = Math.Max(0, _squares[i] / n - mean * mean);
-            return mean - Math.Sqrt(variance / n);
+            return mean - Math.Sqrt(variance / n) - Shortfall(i, count);
         }
 
-        // Best mean first, ties by index (so the order never depends on the threads).
-        private static List<int> Ranked(IEnumerable<int> which, double[] sum, int[] count) =>
-            [.. which.Where(i => count[i] > 0).OrderByDescending(i => sum[i] / count[i]).ThenBy(i => i)];
+        private bool IsPot(int i) => ShotKinds.IsPot(_variations[i].Candidate.Kind, _variations[i].Candidate.Pocket);
 
-        private static List<int> Ranked(int n, double[] sum, int[] count) => Ranked(Enumerable.Range(0, n), sum, count);
+        // What a pot attempt loses for each unit of chance it falls short of the player's sure
+        // chance (SkillLevel.SurePotChance), judged once it has at least SafetyEvidence samples
+        // (the first round's two or three would throw good pots out by bad luck).
+        private double Shortfall(int i, int[] count)
+        {
+            if (_sureChance <= 0 || _pots is null || count[i] < SafetyEvidence || !IsPot(i))
+            {
+                return 0;
+            }
+            return ShortfallWeight * Math.Max(0, _sureChance - ((double)_pots[i] / count[i]));
+        }
+
+        // The middle round's field: the first round's best, and where pot attempts must be sure,
+        // the best safeties besides: the first round's few samples rank pots by their mean alone,
+        // and a field of pots only would leave the pot-or-safety choice no safety to choose.
+        private List<int> WithSafeties(List<int> ranked, int top)
+        {
+            var field = ranked.Take(top).ToList();
+            if (_sureChance > 0)
+            {
+                field.AddRange(ranked.Skip(top).Where(i => !IsPot(i)).Take(ScreenedSafeties));
+            }
+            return field;
+        }
+
+        // Best mean first (less a pot's shortfall once it counts), ties by index (so the order
+        // never depends on the threads).
+        private List<int> Ranked(IEnumerable<int> which, double[] sum, int[] count) =>
+            [.. which.Where(i => count[i] > 0).OrderByDescending(i => (sum[i] / count[i]) - Shortfall(i, count)).ThenBy(i => i)];
+
+        private List<int> Ranked(int n, double[] sum, int[] count) => Ranked(Enumerable.Range(0, n), sum, count);
 
         // Work items 0..count-1 shared out to the workers, one thread each, until the time cap: an
         // item is run whole by one worker, and the result says which ran (to reduce in item order,

@@ -43,6 +43,12 @@ namespace Billiards.Core.Ai;
 /// of the last round the best mean less its standard error wins, so that of two shots with nearly
 /// the same mean the surer one is played. A chosen pot that none of its (at least ten) simulations
 /// made is played, and called where the game calls, as a safety: it was chosen for what it leaves.</item>
+/// <item>Pot or safety (the games with snookers, where safety play is strong, at the levels with a
+/// <see cref="SkillLevel.SurePotChance"/>): from the middle round on, a pot attempt whose simulations pot
+/// less often than that chance loses <see cref="ShortfallWeight"/> of score per unit of chance short,
+/// and the middle round takes the first round's best safeties besides its best variations
+/// (<see cref="ScreenedSafeties"/>), so that a strong player attempts a pot when it is nearly sure,
+/// or when the alternatives are worse by more than what the shortfall costs, and else plays safe.</item>
 /// </list>
 /// Its jobs live in files of their own: the search's rounds (<c>ShotPlanner.Search.cs</c>), the
 /// cue-ball placements (<c>.Placements.cs</c>), the variations of each candidate (<c>.Variations.cs</c>;

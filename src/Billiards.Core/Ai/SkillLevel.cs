@@ -23,7 +23,8 @@ namespace Billiards.Core.Ai;
 /// samples of their own error; levels 1 and 2 judge a shot by the referee's ruling alone, levels
 /// 3 to 5 also by the next shot it leaves (one shot ahead), and a safety by the opponent's best reply;
 /// levels 3 to 5 also aim by trial (<see cref="AimTrials"/>): they know where a shot really goes,
-/// where levels 1 and 2 aim by the geometry.
+/// where levels 1 and 2 aim by the geometry. In the games with snookers level 5 attempts a pot only
+/// when it is nearly sure (<see cref="SurePotChance"/>) or nothing else is much better, and plays safe otherwise.
 /// </remarks>
 /// <param name="Level">1 to 5.</param>
 /// <param name="AimStdDeg">Standard deviation of the aim angle (deg).</param>
@@ -42,6 +43,11 @@ namespace Billiards.Core.Ai;
 /// <param name="AimTrials">
 /// Aims tried without error either side of each pot's geometric aim, <see cref="ShotPlanner.AimTrialStepDeg"/>
 /// apart, to play the middle of the range that pots (0: the geometric aim as it is).
+/// </param>
+/// <param name="SurePotChance">
+/// In the games with snookers (<see cref="Rules.Ruleset.HasSnookers"/>), the pot chance below which
+/// this player would rather play safe: a pot attempt loses <see cref="ShotPlanner.ShortfallWeight"/>
+/// of score per unit of chance short of it (0: none; the pool games never use it).
 /// </param>
 /// <param name="FirstRoundSimulations">
 /// Cap on the first round's simulations: with many variations (ball in hand searches several
@@ -63,7 +69,8 @@ public sealed record SkillLevel(
     int ScreenTop = 0,
     int ScreenSamples = 0,
     int AimTrials = 0,
-    int FirstRoundSimulations = 1500)
+    int FirstRoundSimulations = 1500,
+    double SurePotChance = 0)
 {
     /// <summary>
     /// The aim error (deg) a position is judged with when this player will shoot the next shot: the
@@ -102,7 +109,7 @@ public sealed record SkillLevel(
         new(2, 0.55, 0.08, 0.07, Candidates: 6, Speeds: 3, Spins: 1, Samples: 2, RefineTop: 3, RefineSamples: 4, LookAhead: 0, Placements: 3),
         new(3, 0.30, 0.05, 0.05, Candidates: 8, Speeds: 3, Spins: 3, Samples: 2, RefineTop: 6, RefineSamples: 8, LookAhead: 1, Placements: 4, AimTrials: 4),
         new(4, 0.16, 0.035, 0.03, Candidates: 10, Speeds: 4, Spins: 4, Samples: 3, RefineTop: 6, RefineSamples: 24, LookAhead: 1, Placements: 5, ScreenTop: 20, ScreenSamples: 6, AimTrials: 4),
-        new(5, 0.08, 0.02, 0.015, Candidates: 16, Speeds: 7, Spins: 10, Samples: 3, RefineTop: 10, RefineSamples: 60, LookAhead: 1, Placements: 6, ScreenTop: 40, ScreenSamples: 10, AimTrials: 4, FirstRoundSimulations: 4000),
+        new(5, 0.08, 0.02, 0.015, Candidates: 16, Speeds: 7, Spins: 10, Samples: 3, RefineTop: 10, RefineSamples: 60, LookAhead: 1, Placements: 6, ScreenTop: 40, ScreenSamples: 10, AimTrials: 4, FirstRoundSimulations: 4000, SurePotChance: 0.9),
     ];
 
     /// <summary>The level <paramref name="level"/> (1 to 5).</summary>

@@ -59,6 +59,40 @@ public class SnookerPlannerTests
         Assert.Equal(SnookerRuleset.ValueOf(decision.Target), ruling.Points);
     }
 
+    // Two reds at the far end, the cue ball in the baulk half near the side cushion: the best pot is
+    // long (about 2 m to the red, then 0.7 m) and level 5 makes it a fifth of the time.
+    private static TablePosition LongRedsFromBaulk() => new(
+        [(Cue, new Vec3(-0.9, 0.6, R)), (Red, new Vec3(0.9, -0.5, R)), (BallSet.Snooker.Ids.Where(SnookerRuleset.IsRed).ElementAt(1), new Vec3(1.2, 0.1, R)),
+         (BallSet.Colour("yellow"), SnookerTable.Spot(Table, "yellow", R)), (BallSet.Colour("green"), SnookerTable.Spot(Table, "green", R)),
+         (BallSet.Colour("brown"), SnookerTable.Spot(Table, "brown", R)), (Blue, SnookerTable.Spot(Table, "blue", R)),
+         (BallSet.Colour("pink"), SnookerTable.Spot(Table, "pink", R)), (Black, SnookerTable.Spot(Table, "black", R))], Cue);
+
+    [Fact]
+    public void ALongPotOfLowChanceIsNotAttemptedAtLevelFiveButASafetyIsPlayed()
+    {
+        var state = new GameState(GameRules.Snooker) { Shot = 10, BallOn = SnookerRuleset.Red };
+        var level = SkillLevel.Of(5);
+        var decision = Planner.Decide(state, LongRedsFromBaulk(), level, new PlannerBudget(60_000, 2), 1);
+
+        // Without the pot-or-safety choice the search's best mean was a pot of the far red with
+        // about a fifth of its samples potting: an open table for the opponent four times in five.
+        Assert.False(ShotKinds.IsPot(decision.Kind, decision.Pocket), $"a {decision.Kind} of {decision.Target} expected to pot {decision.ExpectedPot:P0}");
+        Assert.True(SnookerRuleset.IsRed(decision.Target));
+        Assert.True(decision.ExpectedPot < level.SurePotChance);
+    }
+
+    [Fact]
+    public void ASurePotIsStillAttemptedAtLevelFive()
+    {
+        var state = new GameState(GameRules.Snooker) { Shot = 8, BallOn = SnookerRuleset.Colour, Score = new PerPlayer<int>(1, 0) };
+        var level = SkillLevel.Of(5);
+        var decision = Planner.Decide(state, BlueStraightIn(), level, new PlannerBudget(60_000, 2), 5);
+
+        // The blue straight in, or the black off its spot (worth more): a pot either way.
+        Assert.True(ShotKinds.IsPot(decision.Kind, decision.Pocket), $"a {decision.Kind}");
+        Assert.True(decision.ExpectedPot >= level.SurePotChance, $"expected to pot {decision.ExpectedPot:P0}");
+    }
+
     [Fact]
     public void TheBreakOffIsPlayedFromTheDOffTheSideOfThePack()
     {
