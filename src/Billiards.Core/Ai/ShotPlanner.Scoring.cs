@@ -32,13 +32,6 @@ public sealed partial class ShotPlanner
     /// <summary>Weight of the next shot's position quality when the shooter stays at the table.</summary>
     public const double PositionWeight = 0.3;
 
-    /// <summary>
-    /// Weight of the next shot's position quality when the shooter stays at the table in a game
-    /// with snookers; the score of a perfect position stays <see cref="ContinueScore"/> +
-    /// <see cref="PositionWeight"/>, a poor one scores less than in pool.
-    /// </summary>
-    public const double SnookerPositionWeight = 0.4;
-
     /// <summary>Cost of each ball left without a straight way to a pocket (<see cref="PlannerTable.ProblemBalls"/>).</summary>
     public const double ProblemBallCost = 0.04;
 
@@ -108,14 +101,9 @@ public sealed partial class ShotPlanner
             // Position counts, but less than the pot: for a strong player a moderate next shot is
             // still likely, and the pot in hand is certain. Each ball left without a straight way
             // to a pocket costs a little, so that shots which free a cluster are preferred.
-            // Where a player plays safe rather than attempt a pot that is not sure (snooker), a
-            // leave without a sure pot ends the break: the position weighs more.
-            bool snookers = Ruleset.For(before.Rules).HasSnookers;
-            double start = snookers ? ContinueScore + PositionWeight - SnookerPositionWeight : ContinueScore;
-            double positionWeight = snookers ? SnookerPositionWeight : PositionWeight;
             double q = look ? Table.PositionQuality(after, ruling.Next, level.PositionAimStdDeg) : EvenScore;
             double problems = look ? ProblemBallCost * Table.ProblemBalls(after, ruling.Next) : 0;
-            return start + (positionWeight * q) - problems + (PointScore * ruling.Points);
+            return ContinueScore + PositionWeight * q - problems + (PointScore * ruling.Points);
         }
         if (!ruling.Legal)
         {
