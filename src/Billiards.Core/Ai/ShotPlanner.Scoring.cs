@@ -64,7 +64,7 @@ public sealed partial class ShotPlanner
     /// simulations fall short of the player's <see cref="SkillLevel.SurePotChance"/>, in the games
     /// with snookers: a pot of chance p scores its mean less <c>ShortfallWeight * (sure - p)</c>.
     /// </summary>
-    public const double ShortfallWeight = 1;
+    public const double ShortfallWeight = 0.5;
 
     /// <summary>Safeties taken into the search's middle round besides its best variations, where pot attempts must be sure.</summary>
     public const int ScreenedSafeties = 8;
