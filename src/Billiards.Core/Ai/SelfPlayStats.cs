@@ -25,7 +25,7 @@ namespace Billiards.Core.Ai;
 /// <param name="ScoringVisits">Of those, the visits with a break above 0.</param>
 /// <param name="BreakSum">
 /// The breaks of every visit summed, in <see cref="Ruleset.BreakUnit"/>: the points a visit
-/// scored in snooker, the object balls it pocketed on legal shots in pool (<see cref="Ruleset.BreakValue"/>).
+/// scored in snooker, the object balls it pocketed on legal shots that stayed down in pool (<see cref="Ruleset.BreakValue"/>).
 /// </param>
 /// <param name="HighestBreak">The highest break of one visit (same unit), 0 without a visit.</param>
 /// <param name="ExpectedPotSumE9">

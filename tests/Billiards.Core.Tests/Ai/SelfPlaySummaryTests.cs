@@ -106,8 +106,9 @@ public class SelfPlaySummaryTests
             Assert.Equal(read.Max(s => s.Players[p].HighestBreak), w.HighestBreak);
             Assert.Equal(read.Sum(s => s.Players[p].BreakSum), w.BreakSum);
             Assert.Equal(read.Sum(s => s.Players[p].Visits), w.Visits);
-            // Every shot lies in one visit: in pool the breaks add up to the balls pocketed on legal shots.
-            Assert.Equal(played.SelectMany(g => g.Shots).Where(s => s.Before.Shooter == p && s.Ruling.Legal).Sum(s => s.Ruling.Pocketed.Count), w.BreakSum);
+            // Every shot lies in one visit: in pool the breaks add up to the balls that stayed down on legal shots.
+            Assert.Equal(played.SelectMany(g => g.Shots).Where(s => s.Before.Shooter == p && s.Ruling.Legal)
+                .Sum(s => s.Ruling.Pocketed.Except(s.Ruling.Spot).Count()), w.BreakSum);
             Assert.True(w.Visits >= w.ScoringVisits && w.ScoringVisits > 0 && w.HighestBreak > 0);
         }
     }
@@ -142,20 +143,21 @@ public class SelfPlaySummaryTests
     }
 
     [Fact]
-    public void PoolBreaksAreTheBallsPocketedOnLegalShotsOfAVisit()
+    public void PoolBreaksAreTheBallsPocketedOnLegalShotsOfAVisitThatStayDown()
     {
         // P0 pockets 2 on the break and 1 more, then scratches with the 5 (not counted): 3.
-        // P1 pockets one and misses: 1. P0 pockets 1 and plays safe: 1.
-        var game = Game(GameRules.EightBall, "pool-9ft",
+        // P1 pockets one, then misses the call with the 10, which is spotted (not counted): 1.
+        // P0 pockets 1 and plays safe: 1.
+        var game = Game(GameRules.StraightPool, "pool-9ft",
             [Shot(0, true, true, 0, 1, 2), Shot(0, true, true, 0, 3), Shot(0, false, false, 0, 5),
-            Shot(1, true, true, 0, 9), Shot(1, true, false, 0),
+            Shot(1, true, true, 0, 9), Respotted(Shot(1, true, false, 0, 10)),
             Shot(0, true, true, 0, 4), Shot(0, true, false, 0)]);
 
         Assert.Equal([3, 1], SelfPlayStats.Visits(game, 0));
         Assert.Equal([1], SelfPlayStats.Visits(game, 1));
         var p0 = SelfPlayStats.Of([game], 0, 3);
         Assert.Equal((2, 2, 4, 3, 2.0), (p0.Visits, p0.ScoringVisits, p0.BreakSum, p0.HighestBreak, p0.MeanBreak));
-        var summary = SelfPlaySummary.Of(GameRules.EightBall, 3, new PerPlayer<int>(3, 3), GameState.DefaultTarget, 1, SelfPlayShard.Whole, [game], 0);
+        var summary = SelfPlaySummary.Of(GameRules.StraightPool, 3, new PerPlayer<int>(3, 3), GameState.DefaultTarget, 1, SelfPlayShard.Whole, [game], 0);
         Assert.Contains("\"break_unit\": \"balls\"", Encoding.UTF8.GetString(summary.ToUtf8()), StringComparison.Ordinal);
     }
 
@@ -176,6 +178,9 @@ public class SelfPlaySummaryTests
         };
         return new SelfPlayShot(before, null, Strike, Strike, ShotKind.Direct, ruling, null, 1, 1);
     }
+
+    // The shot with the balls it pocketed spotted again.
+    private static SelfPlayShot Respotted(SelfPlayShot shot) => shot with { Ruling = shot.Ruling with { Spot = shot.Ruling.Pocketed } };
 
     // A foul that scores nothing for the shooter.
     private static SelfPlayShot Fouled(int shooter) => Shot(shooter, false, false, 0);

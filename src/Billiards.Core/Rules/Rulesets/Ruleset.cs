@@ -147,13 +147,14 @@ public abstract class Ruleset
     /// <summary>
     /// What a shot adds to the shooter's break, the score of one visit to the table (a visit: the
     /// shots of one player from coming to the table until a shot that does not keep them there).
-    /// Pool: the object balls pocketed on a legal shot (balls; in 14.1 each is a point); a foul
-    /// adds nothing. Snooker overrides it with the shot's points.
+    /// Pool: the object balls pocketed on a legal shot that stay down (balls; in 14.1 each is a
+    /// point); a ball spotted again (14.1's balls of a shot that missed its call, 10-ball's 10
+    /// pocketed uncalled) and a foul add nothing. Snooker overrides it with the shot's points.
     /// </summary>
     public virtual int BreakValue(Ruling ruling)
     {
         ArgumentNullException.ThrowIfNull(ruling);
-        return ruling.Legal ? ruling.Pocketed.Count : 0;
+        return ruling.Legal ? ruling.Pocketed.Count(b => !ruling.Spot.Contains(b)) : 0;
     }
 
     /// <summary>What <see cref="BreakValue"/> counts: "balls" in pool, "points" in snooker.</summary>
