@@ -7,16 +7,17 @@ namespace Billiards.App.Game;
 /// <summary>
 /// After each shot, and when a new game starts, turns the view (and with it the cue) from the cue
 /// ball to the nearest ball the shooter may play (<see cref="Billiards.Core.Rules.Ruleset.LegalTargets"/>),
-/// rather than leaving the last shot's aim, which often looks at an empty rail. It turns once the
-/// balls rest and the shooter may shoot, on the frame after the ruling, so that the camera has
-/// followed the cue ball first.
+/// rather than leaving the last shot's aim, which often looks at an empty rail. It turns the moment
+/// the shooter may play (<see cref="MatchNode.ShooterToPlay"/>: the ruling, the choice after a
+/// foul, the new rack), not in a later frame: a key pressed in the same frame as the choice then
+/// turns from the new view, as it does a frame later, so a script plays the same at any frame rate.
+/// The first rack's view turns in the first frame, once every node is ready.
 /// </summary>
 public sealed class TargetViewNode : Node
 {
     private MatchNode? _match;
     private PhysicsNode? _physics;
     private bool _pending;
-    private bool _wasOver;
 
     /// <summary>The ball the view last turned to, or null.</summary>
     public BallId? LastTarget { get; private set; }
@@ -26,29 +27,23 @@ public sealed class TargetViewNode : Node
     {
         _match = GetInTree<MatchNode>();
         _physics = GetInTree<PhysicsNode>();
-        _match.Ruled += _ => _pending = true;
+        _match.ShooterToPlay += Turn;
         _pending = true; // the first game's break
     }
 
     /// <inheritdoc />
     protected override void Process(double dt)
     {
-        if (_match is null || _physics is null)
+        if (_pending && _match is { CanShoot: true })
         {
-            return;
+            Turn();
         }
-        // A rematch or a restart: the new rack.
-        if (_wasOver && !_match.IsOver)
-        {
-            _pending = true;
-        }
-        _wasOver = _match.IsOver;
-        if (!_pending || !_match.CanShoot)
-        {
-            return;
-        }
+    }
+
+    private void Turn()
+    {
         _pending = false;
-        if (NearestTarget(_match, _physics) is { } target)
+        if (_match is not null && _physics is not null && NearestTarget(_match, _physics) is { } target)
         {
             LastTarget = target.Id;
             var to = target.Position - _physics.CueBallPosition;

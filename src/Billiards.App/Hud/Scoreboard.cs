@@ -113,7 +113,7 @@ public static class ScoreboardBuilder
             if (snooker)
             {
                 // Snooker: the target's words carry the score and the ball on; the break and the snookers needed beside them.
-                if (p == state.Shooter)
+                if (p == state.Shooter && !match.IsOver)
                 {
                     detail.Add(string.Create(CultureInfo.InvariantCulture, $"break {SnookerLines.CurrentBreak(shots, p)}"));
                 }
@@ -132,6 +132,11 @@ public static class ScoreboardBuilder
                 detail.Add(string.Create(CultureInfo.InvariantCulture, $"fouls in a row {fouls[p]}"));
             }
             string name = match.Players[p].IsHuman || state.Players[p].StartsWith("Computer", StringComparison.Ordinal) ? state.Players[p] : $"{state.Players[p]} (computer)";
+            if (snooker && match.IsOver)
+            {
+                // The frame is over: the final score, no ball on.
+                target = new HudTarget(string.Create(CultureInfo.InvariantCulture, $"{state.Score[p]}"), []);
+            }
             cards[p] = new PlayerCard(name, p == state.Shooter && !match.IsOver, target.Text, [.. target.Balls.Select(b => b.Value)], string.Join("  ", detail));
         }
         string remaining = snooker ? string.Create(CultureInfo.InvariantCulture, $"  remaining {SnookerLines.Remaining(state, onTable)}") : "";
@@ -150,7 +155,12 @@ public static class ScoreboardBuilder
             return null;
         }
         var names = match.State.Players;
-        string title = match.Winner is int w ? $"{names[w]} wins the {GameName(match.Rules)} game" : $"The {GameName(match.Rules)} game ends without a winner";
+        var score = match.State.Score;
+        string title = match.Winner is int w
+            ? match.Rules == GameRules.Snooker
+                ? string.Create(CultureInfo.InvariantCulture, $"{names[w]} wins the frame {score[w]}-{score[1 - w]}")
+                : $"{names[w]} wins the {GameName(match.Rules)} game"
+            : $"The {GameName(match.Rules)} game ends without a winner";
         return new ResultPanel(title, names, PlayerStats.Of(game.Shots), match.GamesWon);
     }
 

@@ -8,13 +8,6 @@ namespace Billiards.App.Tests.Game;
 
 public class TargetViewTests
 {
-    // The 8 lies nearest the cue ball, but on an open table it is not a legal target: the 2 is the nearest that is.
-    private const string Json = """
-        { "format": "billiards-scene/1", "table": { "preset": "pool-9ft" }, "physics": { "dt": 0.00390625 },
-          "balls": [ { "id": "cue", "position": [-0.635, 0.0] }, { "id": "8", "position": [-0.5, 0.1] },
-                     { "id": "2", "position": [-0.2, -0.3] }, { "id": "1", "position": [0.635, 0.3] } ] }
-        """;
-
     private static double AimTo(TestGame game, BallId id)
     {
         var sim = game.World.Physics.Simulation;
@@ -26,8 +19,7 @@ public class TargetViewTests
     public void TheViewTurnsToTheNearestLegalBallAtTheStartAndAfterEveryShot()
     {
         // After the break (shot 1), so that a miss is a foul and not a bad break with options.
-        var scene = SceneLoader.Parse(Json, "t.json") with { Game = new GameState(GameRules.EightBall) { Shot = 1, Players = new PerPlayer<string>("Anna", "Ben") } };
-        using var game = new TestGame(scene, new MatchSetup(GameRules.EightBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+        using var game = FourBallGames.EightBall();
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
         var view = game.World.Tree.Root.GetInTree<TargetViewNode>();
         game.Frame();
@@ -54,17 +46,11 @@ public class TargetViewTests
     [Fact]
     public void OnARematchTheViewTurnsToTheNewRacksNearestLegalBall()
     {
-        var scene = SceneLoader.Parse(Json, "t.json") with { Game = new GameState(GameRules.EightBall) { Shot = 1, Players = new PerPlayer<string>("Anna", "Ben") } };
-        using var game = new TestGame(scene, new MatchSetup(GameRules.EightBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+        using var game = FourBallGames.EightBall();
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
         var view = game.World.Tree.Root.GetInTree<TargetViewNode>();
-        game.Frame();
         // The 8 goes down early: Anna loses, the game is over.
-        game.Window.Press(Key.Space);
-        game.Frame();
-        game.Simulation.Pocket(new BallId(8));
-        game.RunUntilRest();
-        game.Frame();
+        FourBallGames.PotTheEightEarly(game);
         Assert.True(match.IsOver);
         match.AimAt(150);
         match.Rematch();
