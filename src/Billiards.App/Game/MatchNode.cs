@@ -516,7 +516,14 @@ public sealed class MatchNode : Node
         State = _match.State;
         LoadLayout(_match);
         GiveHand(_match.BallInHand);
-        Say(State.Shot == 0 ? $"Rerack: {State.ShooterName} breaks." : $"{option.ToName()}: {State.ShooterName} to shoot.");
+        Say(State.Shot == 0 ? $"Rerack: {State.ShooterName} breaks." : option switch
+        {
+            // Snooker's choices in words: who plays, and from what.
+            RefereeOption.Play => $"{State.ShooterName} plays the balls as they lie{(State.FreeBall ? ", with a free ball" : "")}.",
+            RefereeOption.PutBack => $"Put back: {State.ShooterName} plays again.",
+            RefereeOption.Replace => $"The balls are replaced: {State.ShooterName} plays again.",
+            _ => $"{option.ToName()}: {State.ShooterName} to shoot.",
+        });
         ShooterToPlay?.Invoke();
     }
 

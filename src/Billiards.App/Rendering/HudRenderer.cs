@@ -261,12 +261,18 @@ internal sealed class HudRenderer : IDisposable
         float centreX = card + (2 * pad), centreW = width - (2 * centreX);
         int columns = Math.Max(12, (int)((centreW - (2 * pad)) / advance));
         // At most five lines, so that the band stays clear of the far rail from behind the cue: the
-        // game's line, who acts (one line), the message (wrapped, three lines at most), then the log to fill.
+        // game's line, who acts (wrapped, two lines at most: a free ball's nomination and the keys),
+        // the message (wrapped, three lines at most), then the log to fill.
         const int MaxRows = 5;
         var rows = new List<(string Text, Vector4 Colour)>();
         string title = board.Title;
         rows.Add((title, text));
-        rows.Add((Cut(board.Status, columns), Gold));
+        var status = Wrap([board.Status], columns);
+        rows.Add((status[0], Gold));
+        if (status.Count > 1)
+        {
+            rows.Add((Cut("  " + string.Join(" ", status.Skip(1).Select(l => l.Trim())), columns), Gold));
+        }
         if (board.Message is { } message)
         {
             var wrapped = Wrap([message], columns);

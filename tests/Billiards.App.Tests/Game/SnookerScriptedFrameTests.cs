@@ -131,6 +131,20 @@ public class SnookerScriptedFrameWindowTests
         int winner = score[0] > score[1] ? 0 : 1;
         var panel = Assert.IsType<ResultPanel>(last!.Result);
         Assert.Contains($"{SnookerScriptedFrameTests.Players[winner]} wins the frame {score[winner]}-{score[1 - winner]}", panel.Title, StringComparison.Ordinal);
-        Assert.Equal([$"{score[0]}", $"{score[1]}"], last.Board!.Players.Select(p => p.Target.Split(',')[0]));
+        Assert.Equal([$"{score[0]}", $"{score[1]}"], last.Board!.Players.Select(p => p.Target));
+        Assert.DoesNotContain(last.Board.Players, p => p.Detail.Contains("needs snookers", StringComparison.Ordinal));
+        // Snooker's figures: each player's highest break, the most points of one visit in the record.
+        var breaks = new int[2];
+        int visit = 0;
+        foreach (var shot in JsonDocument.Parse(record).RootElement.GetProperty("shots").EnumerateArray())
+        {
+            var ruling = shot.GetProperty("ruling");
+            int striker = shot.GetProperty("game").GetProperty("shooter").GetInt32();
+            visit += ruling.GetProperty("legal").GetBoolean() ? ruling.GetProperty("points").GetInt32() : 0;
+            breaks[striker] = Math.Max(breaks[striker], visit);
+            visit = ruling.GetProperty("continue").GetBoolean() ? visit : 0;
+        }
+        Assert.Contains(("Highest break", $"{breaks[0]}", $"{breaks[1]}"), panel.Rows);
+        Assert.Contains(("Frames won", winner == 0 ? "1" : "0", winner == 1 ? "1" : "0"), panel.Rows);
     }
 }
