@@ -43,6 +43,12 @@ public sealed class TargetViewNode : Node
     private void Turn()
     {
         _pending = false;
+        if (_match is { Rules: Billiards.Core.Rules.GameRules.Snooker } && _physics is not null && ReachableAim(_match, _physics) is { } reachable)
+        {
+            LastTarget = reachable.Id;
+            _match.AimAt(reachable.AimDegrees);
+            return;
+        }
         if (_match is not null && _physics is not null && NearestTarget(_match, _physics) is { } target)
         {
             LastTarget = target.Id;
@@ -78,5 +84,48 @@ public sealed class TargetViewNode : Node
             }
         }
         return best;
+    }
+
+    /// <summary>Lateral offsets tried at a ball on, in radii from its centre: full ball first, then thinner to either side.</summary>
+    private static readonly double[] Offsets = [0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5, 1.9, -1.9];
+
+    /// <summary>
+    /// Snooker's view: the aim (deg) at the nearest ball on whose centre, or a thinner contact on
+    /// it, the cue ball meets before any other ball: the colours on their spots hide reds (the pink
+    /// in front of the pack at the break-off, where the aim is then thin on an end red), and a
+    /// stranger's first Space should be no foul. Null when no ball on can be struck first in a
+    /// straight line (snookered): the view then turns to the nearest, as in pool.
+    /// </summary>
+    public static (BallId Id, double AimDegrees)? ReachableAim(MatchNode match, PhysicsNode physics)
+    {
+        ArgumentNullException.ThrowIfNull(match);
+        ArgumentNullException.ThrowIfNull(physics);
+        var sim = physics.Simulation;
+        var onTable = new List<BallId>();
+        for (int i = 0; i < sim.Balls.Length; i++)
+        {
+            if (!sim.Balls[i].IsPocketed && sim.Ids[i] != physics.CueBall)
+            {
+                onTable.Add(sim.Ids[i]);
+            }
+        }
+        var legal = match.Ruleset.LegalTargets(match.State, onTable);
+        var cue = physics.CueBallPosition with { Z = 0 };
+        int cueIndex = sim.IndexOf(physics.CueBall);
+        foreach (var id in legal.OrderBy(b => ((sim.Balls[sim.IndexOf(b)].Position with { Z = 0 }) - cue).LengthXY))
+        {
+            var centre = sim.Balls[sim.IndexOf(id)].Position with { Z = 0 };
+            var to = centre - cue;
+            var side = new Vec3(-to.Y, to.X, 0).Normalized();
+            foreach (double k in Offsets)
+            {
+                var aim = centre + (k * physics.BallRadius * side) - cue;
+                if (AimPreview.Compute(sim.Balls, sim.Ids, cueIndex, aim, physics.BallRadius, [], physics.Table.Pockets).Ball is { } first && legal.Contains(first))
+                {
+                    return (first, Math.Atan2(aim.Y, aim.X) * 180 / Math.PI);
+                }
+            }
+        }
+        return null;
     }
 }

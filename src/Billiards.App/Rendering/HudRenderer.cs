@@ -267,7 +267,7 @@ internal sealed class HudRenderer : IDisposable
         var rows = new List<(string Text, Vector4 Colour)>();
         string title = board.Title;
         rows.Add((title, text));
-        var status = Wrap([board.Status], columns);
+        var status = WrapStatus(board.Status, columns);
         rows.Add((status[0], Gold));
         if (status.Count > 1)
         {
@@ -327,6 +327,14 @@ internal sealed class HudRenderer : IDisposable
             Text(Cut(info, cardColumns), tx, pad + line + (4 * u) + icon, scale, Dim);
         }
         return bandH;
+    }
+
+    // The status line's parts are joined by ";  ": a long one breaks between parts where it can
+    // ("FREE BALL: nominate pink (B, click a ball);" / "Space shoots, G hint"), else at a space.
+    private static List<string> WrapStatus(string status, int columns)
+    {
+        int cut = status.Length > columns ? status.LastIndexOf(";  ", columns - 1, StringComparison.Ordinal) : -1;
+        return cut > 0 ? [status[..(cut + 1)], .. Wrap([status[(cut + 3)..]], columns)] : Wrap([status], columns);
     }
 
     private static string Cut(string text, int columns) => text.Length <= columns ? text : string.Concat(text.AsSpan(0, Math.Max(0, columns - 3)), "...");

@@ -64,3 +64,27 @@ public class TargetViewTests
         Assert.Equal(15, game.World.Physics.Simulation.Ids.Count(id => !PoolBalls.IsCue(id)));
     }
 }
+
+/// <summary>Snooker's view: the colours on their spots hide reds, so the view aims at a contact the cue ball makes first.</summary>
+public class SnookerTargetViewTests
+{
+    [Fact]
+    public void AtTheBreakOffTheViewAimsThinOnARedTheCueBallMeetsFirstNotThroughThePink()
+    {
+        var scene = SceneLoader.Load(AssetFolder.Scene("snooker.json"));
+        using var game = new TestGame(scene, new MatchSetup(GameRules.Snooker, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]), create: SimulationFactory.Create);
+        var match = game.World.Tree.Root.GetInTree<MatchNode>();
+        var physics = game.World.Physics;
+        game.Frame();
+        // The nearest red is the pack's apex, straight behind the pink: aimed at its centre the cue ball meets the pink.
+        var apex = TargetViewNode.NearestTarget(match, physics)!.Value;
+        var toApex = apex.Position - physics.CueBallPosition;
+        var sim = physics.Simulation;
+        Assert.Equal("pink", sim.BallSet.NameOf(AimPreview.Compute(sim.Balls, sim.Ids, sim.IndexOf(physics.CueBall), toApex, physics.BallRadius, [], physics.Table.Pockets).Ball!.Value));
+        // The view aims where the first ball met is a red.
+        var first = AimPreview.Compute(sim.Balls, sim.Ids, sim.IndexOf(physics.CueBall), game.World.Tree.Root.GetInTree<CueNode>().AimDirection, physics.BallRadius, [], physics.Table.Pockets).Ball;
+        Assert.NotNull(first);
+        Assert.StartsWith("red-", sim.BallSet.NameOf(first!.Value), StringComparison.Ordinal);
+        Assert.Equal(first, game.World.Tree.Root.GetInTree<TargetViewNode>().LastTarget);
+    }
+}
