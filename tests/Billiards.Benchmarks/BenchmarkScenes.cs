@@ -1,25 +1,42 @@
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
-using Billiards.Core.Physics;
-using Billiards.Core.Scenes;
 using Billiards.Core.Table;
 
 namespace Billiards.Benchmarks;
 
+/// <summary>
+/// A whole shot of a scene, the unit of the whole-shot benchmarks: the scene's simulation and its
+/// shot, rerun from the scene's start to rest by each <see cref="RunToRest"/>.
+/// </summary>
+/// <param name="Simulation">The scene's simulation.</param>
+/// <param name="Shot">The shot struck.</param>
+public sealed record SceneShot(Simulation Simulation, ShotSpec Shot)
+{
+    /// <summary>The scene's simulation with its shot, or with what <paramref name="change"/> makes of the shot.</summary>
+    public static SceneShot Of(Scene scene, Func<ShotSpec, ShotSpec>? change = null)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        var shot = scene.Shot ?? throw new ArgumentException($"the scene \"{scene.Name}\" has no shot", nameof(scene));
+        return new SceneShot(SimulationFactory.Create(scene), change is null ? shot : change(shot));
+    }
+
+    /// <summary>A shipped scene (assets/scenes/<paramref name="file"/>) with the standard model and <paramref name="integrator"/>.</summary>
+    public static SceneShot Load(string file, string integrator, Func<ShotSpec, ShotSpec>? change = null) =>
+        Of(BenchmarkScenes.Load(file, ModelRegistry.Standard.Name, integrator), change);
+
+    /// <summary>Back to the scene's start, strike, run to rest; returns the time at rest (s).</summary>
+    public double RunToRest()
+    {
+        Simulation.Reset();
+        Simulation.Strike(Shot);
+        Simulation.AdvanceTo(600);
+        return Simulation.Time;
+    }
+}
+
 /// <summary>Seeded scenes for the benchmarks; the whole-shot ones come from assets/scenes.</summary>
 public static class BenchmarkScenes
 {
-    /// <summary>Reruns a whole shot: back to the scene's start, strike, run to rest; returns the time at rest (s).</summary>
-    public static double RunToRest(Simulation sim, Core.Cue.ShotSpec shot)
-    {
-        ArgumentNullException.ThrowIfNull(sim);
-        ArgumentNullException.ThrowIfNull(shot);
-        sim.Reset();
-        sim.Strike(shot);
-        sim.AdvanceTo(600);
-        return sim.Time;
-    }
-
     /// <summary>A shipped scene with the given model and integrator.</summary>
     public static Scene Load(string file, string model, string integrator) =>
         SceneLoader.Load(AssetFolder.Scene(file), new SceneOverrides(model, integrator));

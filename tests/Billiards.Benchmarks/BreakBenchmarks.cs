@@ -1,8 +1,3 @@
-using BenchmarkDotNet.Attributes;
-using Billiards.Core.Cue;
-using Billiards.Core.Physics;
-using Billiards.Core.Scenes;
-
 namespace Billiards.Benchmarks;
 
 /// <summary>
@@ -10,14 +5,10 @@ namespace Billiards.Benchmarks;
 /// assets/scenes (cue at 8 m/s) with the standard model's exact integrator at the default step,
 /// and with the event-based solver.
 /// </summary>
-[MemoryDiagnoser]
-[MedianColumn]
 public class BreakBenchmarks
 {
-    private Simulation _eight = null!;
-    private Simulation _nine = null!;
-    private ShotSpec _eightShot = null!;
-    private ShotSpec _nineShot = null!;
+    private SceneShot _eight = null!;
+    private SceneShot _nine = null!;
 
     /// <summary>exact (fixed steps of 1/250 s) or event.</summary>
     [Params("exact", "event")]
@@ -26,17 +17,15 @@ public class BreakBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        var eight = BenchmarkScenes.Load("eight-ball-break.json", ModelRegistry.Standard.Name, Integrator);
-        var nine = BenchmarkScenes.Load("nine-ball-break.json", ModelRegistry.Standard.Name, Integrator);
-        (_eight, _eightShot) = (SimulationFactory.Create(eight), eight.Shot!);
-        (_nine, _nineShot) = (SimulationFactory.Create(nine), nine.Shot!);
+        _eight = SceneShot.Load("eight-ball-break.json", Integrator);
+        _nine = SceneShot.Load("nine-ball-break.json", Integrator);
     }
 
     /// <summary>8-ball break to rest.</summary>
     [Benchmark]
-    public double EightBallBreak() => BenchmarkScenes.RunToRest(_eight, _eightShot);
+    public double EightBallBreak() => _eight.RunToRest();
 
     /// <summary>9-ball break to rest.</summary>
     [Benchmark]
-    public double NineBallBreak() => BenchmarkScenes.RunToRest(_nine, _nineShot);
+    public double NineBallBreak() => _nine.RunToRest();
 }

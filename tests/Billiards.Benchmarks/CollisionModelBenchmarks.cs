@@ -1,9 +1,6 @@
-using BenchmarkDotNet.Attributes;
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
-using Billiards.Core.Physics;
 using Billiards.Core.Physics.Collisions;
-using Billiards.Core.Scenes;
 
 namespace Billiards.Benchmarks;
 
@@ -12,8 +9,6 @@ namespace Billiards.Benchmarks;
 /// 30 deg off its normal with natural follow and some side; a cue ball at 2 m/s with follow into a
 /// resting object ball, a 37 deg cut.
 /// </summary>
-[MemoryDiagnoser]
-[MedianColumn]
 public class CollisionModelBenchmarks
 {
     private static readonly PhysicsParams P = PhysicsParams.Default;
@@ -58,12 +53,9 @@ public class CollisionModelBenchmarks
 }
 
 /// <summary>The seeded 8-ball break (assets/scenes/models) from the strike to rest with each cushion model, exact integrator at 1/250 s.</summary>
-[MemoryDiagnoser]
-[MedianColumn]
 public class CushionModelBreakBenchmarks
 {
-    private Simulation _sim = null!;
-    private Core.Cue.ShotSpec _shot = null!;
+    private SceneShot _break = null!;
 
     /// <summary>The cushion model.</summary>
     [ParamsSource(nameof(CushionNames))]
@@ -72,19 +64,9 @@ public class CushionModelBreakBenchmarks
     public static IEnumerable<string> CushionNames() => ModelRegistry.BallCushionNames;
 
     [GlobalSetup]
-    public void Setup()
-    {
-        var scene = SceneLoader.Load(AssetFolder.Scene($"models/eight-ball-break-{Cushion}.json"));
-        (_sim, _shot) = (SimulationFactory.Create(scene), scene.Shot!);
-    }
+    public void Setup() => _break = SceneShot.Of(SceneLoader.Load(AssetFolder.Scene($"models/eight-ball-break-{Cushion}.json")));
 
     /// <summary>8-ball break to rest.</summary>
     [Benchmark]
-    public double EightBallBreak()
-    {
-        _sim.Reset();
-        _sim.Strike(_shot);
-        _sim.AdvanceTo(600);
-        return _sim.Time;
-    }
+    public double EightBallBreak() => _break.RunToRest();
 }

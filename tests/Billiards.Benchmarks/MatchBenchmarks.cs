@@ -1,7 +1,4 @@
-using BenchmarkDotNet.Attributes;
 using Billiards.Core.Ai;
-using Billiards.Core.Cue;
-using Billiards.Core.Physics;
 using Billiards.Core.Rules;
 using Billiards.Core.Table;
 
@@ -12,8 +9,6 @@ namespace Billiards.Benchmarks;
 /// planner's event integrator, judged and applied: what self-play pays once a shot, and paid twice
 /// before the match judged each shot once), and one whole self-play game of 9-ball at levels 1 and 1.
 /// </summary>
-[MemoryDiagnoser]
-[MedianColumn]
 public class MatchBenchmarks
 {
     private static readonly TableSpec Table = TableSpec.FromPreset("pool-9ft");

@@ -1,6 +1,3 @@
-using BenchmarkDotNet.Attributes;
-using Billiards.Core.Physics;
-using Billiards.Core.Scenes;
 
 namespace Billiards.Benchmarks;
 
@@ -8,8 +5,6 @@ namespace Billiards.Benchmarks;
 /// One exact step with every ball moving, on a table that grows with the ball count so that the
 /// density stays that of 16 balls on a 9 ft table: a broad phase keeps the cost near linear.
 /// </summary>
-[MemoryDiagnoser]
-[MedianColumn]
 public class ScalingBenchmarks
 {
     private const int StepsPerInvoke = 4;

@@ -1,9 +1,5 @@
 using Billiards.Core.Physics.Standard;
 using Billiards.Core.Physics.Thesis;
-using BenchmarkDotNet.Attributes;
-using Billiards.Core.Cue;
-using Billiards.Core.Physics;
-using Billiards.Core.Scenes;
 
 namespace Billiards.Benchmarks;
 
@@ -12,14 +8,12 @@ namespace Billiards.Benchmarks;
 /// pair cache full), and the computer opponent's unit of search: restore the position, strike,
 /// run to rest (the 8-ball break with the event integrator).
 /// </summary>
-[MemoryDiagnoser]
-[MedianColumn]
 public class SnapshotBenchmarks
 {
     private Simulation _sim = null!;
+    private ShotSpec _shot = null!;
     private SimulationSnapshot _moving = null!;
     private SimulationSnapshot _start = null!;
-    private ShotSpec _shot = null!;
 
     /// <summary>exact or event (the standard model), or fixed (the thesis model).</summary>
     [Params("event", "exact", "fixed")]
@@ -28,11 +22,9 @@ public class SnapshotBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        var scene = Integrator == Integrators.Fixed
+        (_sim, _shot) = SceneShot.Of(Integrator == Integrators.Fixed
             ? BenchmarkScenes.Load("thesis-eight-ball-break.json", ThesisModel.ModelName, Integrator)
-            : BenchmarkScenes.Load("eight-ball-break.json", StandardModel.ModelName, Integrator);
-        _sim = SimulationFactory.Create(scene);
-        _shot = scene.Shot!;
+            : BenchmarkScenes.Load("eight-ball-break.json", StandardModel.ModelName, Integrator));
         _start = _sim.CreateSnapshot();
         _sim.Strike(_shot);
         _sim.AdvanceTo(0.4);

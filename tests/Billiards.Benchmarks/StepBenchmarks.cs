@@ -1,6 +1,3 @@
-using BenchmarkDotNet.Attributes;
-using Billiards.Core.Physics;
-using Billiards.Core.Scenes;
 
 namespace Billiards.Benchmarks;
 
@@ -9,8 +6,6 @@ namespace Billiards.Benchmarks;
 /// model and integrator. Each invocation resets the table and takes 16 steps, so the reset (a
 /// copy of 16 states) is shared by 16 steps and the balls never run down.
 /// </summary>
-[MemoryDiagnoser]
-[MedianColumn]
 public class StepBenchmarks
 {
     private const int StepsPerInvoke = 16;

@@ -3,6 +3,8 @@ using Billiards.App.Game;
 using Billiards.App.Input;
 using Billiards.App.Nodes;
 using Billiards.App.Platform;
+using Billiards.Core.Balls;
+using Billiards.Core.Cue;
 using Billiards.Core.Physics;
 
 namespace Billiards.App.Audio;
@@ -15,6 +17,9 @@ namespace Billiards.App.Audio;
 /// game is silent when there is no audio device.
 /// </summary>
 /// <remarks>
+/// While a shot is shown played again (<see cref="IShowsShot"/>: the instant replay, a game
+/// record's playback), the sound is that shot's: its strike and collisions as the replay's time
+/// passes them, and its balls' rolling; scrubbing it voices nothing the scrub passes over.
 /// It may join a tree that has already started: on <see cref="Node.Ready"/> it voices the events
 /// logged in the last <see cref="CatchUp"/> seconds, so a scene's opening shot, struck when the
 /// physics node became ready, is heard.
@@ -35,6 +40,13 @@ public sealed class AudioNode(IAudioOutput output) : Node
     private double _feedbackLeft;
     private EventVoicing? _voicing;
     private Simulation? _simulation;
+    private readonly List<IShowsShot> _shows = [];
+    private bool _showsFound;
+    private ShotReplay? _shown;
+    private double _shownTime;
+    private int _shownEvent;
+    private int _shownSeeks;
+    private EventVoicing? _shownVoicing;
 
     /// <summary>The output the sounds go to.</summary>
     public IAudioOutput Output { get; } = output;
@@ -72,18 +84,112 @@ public sealed class AudioNode(IAudioOutput output) : Node
         }
     }
 
-    private static Core.Mathematics.Vec3 Position(Simulation sim, Core.Balls.BallId id) =>
+    private static Core.Mathematics.Vec3 Position(Simulation sim, BallId id) =>
         sim.IndexOf(id) is var i and >= 0 ? sim.Balls[i].Position : Core.Mathematics.Vec3.Zero;
 
     /// <inheritdoc />
     protected override void PhysicsProcess(double dt)
     {
         // After the physics node's step (it was added to the tree first).
+        if (Shown() is not null)
+        {
+            // The shot shown is heard instead, frame by frame as it is shown (Process).
+            return;
+        }
         var balls = _physics!.Simulation.Balls;
         for (int i = 0; i < balls.Length; i++)
         {
             Output.SetRolling(i, ShotAudio.RollingSpeed(balls[i]), balls[i].Position);
         }
+    }
+
+    private IShowsShot? Shown()
+    {
+        if (!_showsFound && Tree is { } tree)
+        {
+            // The nodes that show shots are made with the game, before the first frame.
+            _showsFound = true;
+            Collect(tree.Root, _shows);
+        }
+        foreach (var show in _shows)
+        {
+            if (show.ShownShot is not null)
+            {
+                return show;
+            }
+        }
+        return null;
+    }
+
+    private static void Collect(Node node, List<IShowsShot> found)
+    {
+        if (node is IShowsShot show)
+        {
+            found.Add(show);
+        }
+        foreach (var child in node.Children)
+        {
+            Collect(child, found);
+        }
+    }
+
+    // The shown shot's events from the time last heard to its time now, and its balls' rolling.
+    private void VoiceShown(ShotReplay replay, ShotSpec? strike, int seeks)
+    {
+        double now = replay.Time;
+        if (!ReferenceEquals(replay, _shown))
+        {
+            _shownSeeks = seeks;
+        }
+        bool fresh = !ReferenceEquals(replay, _shown) || now < _shownTime;
+        // Played on (at any speed): heard; scrubbed or stepped to a time: what it passed over is not.
+        bool heard = seeks == _shownSeeks;
+        _shownSeeks = seeks;
+        var current = replay.Current;
+        if (fresh)
+        {
+            _shown = replay;
+            _shownVoicing = new EventVoicing(replay.FeatureName);
+            _shownEvent = 0;
+            if (replay.StrikeEvent is { } hit)
+            {
+                Voice(replay, current, hit, strike, heard);
+            }
+        }
+        var events = replay.Events;
+        for (; _shownEvent < events.Count && replay.EventTime(events[_shownEvent]) <= now; _shownEvent++)
+        {
+            // A skipped event is voiced unheard: the variations of those after it stay the shot's own.
+            Voice(replay, current, events[_shownEvent], strike, heard);
+        }
+        // Paused (the time stands): no rolling; else the balls' as shown.
+        bool moving = now > _shownTime || fresh;
+        _shownTime = now;
+        for (int i = 0; i < current.Length; i++)
+        {
+            Output.SetRolling(i, moving ? ShotAudio.RollingSpeed(current[i]) : 0, current[i].Position);
+        }
+    }
+
+    private void Voice(ShotReplay replay, ReadOnlySpan<BallState> balls, in SimEvent e, ShotSpec? strike, bool heard)
+    {
+        var at = e.Kind == EventKind.BallBall ? (Position(replay, balls, e.A) + Position(replay, balls, e.B)) * 0.5 : Position(replay, balls, e.A);
+        if (_shownVoicing!.Voice(e, at, strike) is { } cue && heard)
+        {
+            Output.Play(cue);
+        }
+    }
+
+    private static Core.Mathematics.Vec3 Position(ShotReplay replay, ReadOnlySpan<BallState> balls, BallId id)
+    {
+        for (int i = 0; i < replay.Ids.Count; i++)
+        {
+            if (replay.Ids[i] == id)
+            {
+                return balls[i].Position;
+            }
+        }
+        return Core.Mathematics.Vec3.Zero;
     }
 
     /// <summary>
@@ -108,6 +214,14 @@ public sealed class AudioNode(IAudioOutput output) : Node
     /// <inheritdoc />
     protected override void Process(double dt)
     {
+        if (Shown() is { ShownShot: { } replay } show)
+        {
+            VoiceShown(replay, show.ShownStrike, show.ShownSeeks);
+        }
+        else
+        {
+            _shown = null;
+        }
         UpdateListener();
         _feedbackLeft -= dt;
     }

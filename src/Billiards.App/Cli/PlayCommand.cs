@@ -299,7 +299,7 @@ public static class PlayCommand
     }
 
     // No audio device (a server, CI): the game plays silently after one line on stderr.
-    private static IAudioOutput OpenAudio() => AudioOutputs.Open(Console.Error);
+    internal static IAudioOutput OpenAudio() => AudioOutputs.Open(Console.Error);
 
     // No display, no GL driver, no GLFW: an environment problem, one line and exit code 1.
     private static GamePlatform OpenOrExplain(Func<string, GamePlatform> openPlatform, string title)

@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.Globalization;
 using System.Text;
 using System.Text.Json;
+using Billiards.App.Audio;
 using Billiards.App.Game;
 using Billiards.App.Platform;
 using Billiards.Core.Balls;
@@ -59,7 +60,8 @@ public static class ReplayCommand
                 throw new CliException($"--speed {timeScale.ToString(CultureInfo.InvariantCulture)}: expected a number above 0, at most 100");
             }
             PlayCommand.RequireDisplay();
-            return Play(record, records.Count > 1 ? $"{path} game {chosen}" : path, first, timeScale, openPlatform ?? PlatformWiring.Open);
+            return Play(record, records.Count > 1 ? $"{path} game {chosen}" : path, first, timeScale, openPlatform ?? PlatformWiring.Open,
+                openAudio: openPlatform is null ? PlayCommand.OpenAudio : null);
         });
         return command;
     }
@@ -172,7 +174,8 @@ public static class ReplayCommand
     /// <param name="clock">The clock; the real one by default.</param>
     /// <param name="ruled">Told each shot's index and ruling as the window judges it.</param>
     /// <param name="started">Told the game once it is built (tests watch it).</param>
-    public static int Play(GameRecord record, string path, int first, double timeScale, Func<string, GamePlatform> openPlatform, IClock? clock = null, Action<int, Ruling>? ruled = null, Action<GameHost>? started = null)
+    /// <param name="openAudio">Opens the sound output (the shots are heard as they are shown); silence by default (tests).</param>
+    public static int Play(GameRecord record, string path, int first, double timeScale, Func<string, GamePlatform> openPlatform, IClock? clock = null, Action<int, Ruling>? ruled = null, Action<GameHost>? started = null, Func<IAudioOutput>? openAudio = null)
     {
         ArgumentNullException.ThrowIfNull(record);
         ArgumentNullException.ThrowIfNull(openPlatform);
@@ -183,6 +186,8 @@ public static class ReplayCommand
         using var platform = openPlatform($"{PlatformWiring.WindowTitle}: replay of {Path.GetFileName(path)}");
         using var host = new GameHost(scene, SimulationFactory.Create, platform.Window, clock ?? new StopwatchClock()) { TimeScale = timeScale };
         var replay = host.Tree.Root.AddChild(new ReplayNode(record, first, timeScale));
+        using var audio = openAudio?.Invoke() ?? new SilentAudio();
+        host.Tree.Root.AddChild(new AudioNode(audio));
         if (ruled is not null)
         {
             replay.Ruled += ruled;

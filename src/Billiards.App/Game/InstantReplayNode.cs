@@ -6,6 +6,7 @@ using Billiards.App.Nodes;
 using Billiards.App.Platform;
 using Billiards.App.Rendering;
 using Billiards.Core.Balls;
+using Billiards.Core.Cue;
 using Billiards.Core.Physics;
 
 namespace Billiards.App.Game;
@@ -21,7 +22,7 @@ namespace Billiards.App.Game;
 /// the last shot, drawn on the cloth with its collisions marked; shown (when on) after the shot
 /// and during the replay, growing with the replay's time.
 /// </summary>
-public sealed class InstantReplayNode : Node
+public sealed class InstantReplayNode : Node, IShowsShot
 {
     /// <summary>The key that starts the replay of the last shot, and leaves it.</summary>
     public const Key ReplayKey = Key.R;
@@ -68,6 +69,15 @@ public sealed class InstantReplayNode : Node
 
     /// <summary>The replay shown, or the last shot's when the lines are on (null before the first shot).</summary>
     public ShotReplay? Replay => _replay;
+
+    /// <inheritdoc />
+    public ShotReplay? ShownShot => IsActive ? _replay : null;
+
+    /// <inheritdoc />
+    public ShotSpec? ShownStrike => IsActive ? _physics?.LastShot : null;
+
+    /// <inheritdoc />
+    public int ShownSeeks { get; private set; }
 
     /// <summary>Signal: the replay started (true) or ended (false).</summary>
     public event Action<bool>? ActiveChanged;
@@ -168,6 +178,7 @@ public sealed class InstantReplayNode : Node
         if (_replay is { } r && IsActive)
         {
             r.Seek(time);
+            ShownSeeks++;
             IsPaused = true;
         }
     }

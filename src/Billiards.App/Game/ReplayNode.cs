@@ -1,6 +1,7 @@
 using Billiards.App.Input;
 using Billiards.App.Nodes;
 using Billiards.App.Platform;
+using Billiards.Core.Cue;
 using Billiards.Core.Physics;
 using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
@@ -20,7 +21,7 @@ namespace Billiards.App.Game;
 /// instant replay (R) and the tracking lines (K) work on each shot; the playback waits while the
 /// instant replay is shown.
 /// </summary>
-public sealed class ReplayNode(GameRecord record, int firstShot, double timeScale = 1) : Node
+public sealed class ReplayNode(GameRecord record, int firstShot, double timeScale = 1) : Node, IShowsShot
 {
     /// <summary>Seconds the table stands still between two shots.</summary>
     public const double PauseSeconds = 1.0;
@@ -50,6 +51,16 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
 
     /// <summary>The shot shown now or next (0 the break).</summary>
     public int Shot => _next;
+
+    /// <inheritdoc />
+    public ShotReplay? ShownShot => _instant is { IsActive: true } ? null : _showing;
+
+    /// <inheritdoc />
+    public ShotSpec? ShownStrike => _showing is null ? null : record.Shots[_next].Shot;
+
+    /// <inheritdoc />
+    /// <remarks>A record's shot is always shown from its strike to its end: never.</remarks>
+    public int ShownSeeks => 0;
 
     /// <summary>True while a shot is shown rolling.</summary>
     public bool IsShowing => _showing is not null;

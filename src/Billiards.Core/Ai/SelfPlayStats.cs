@@ -13,16 +13,27 @@ namespace Billiards.Core.Ai;
 /// <param name="PotAttempts">Shots meant to pot a ball (not breaks, safeties or push-outs).</param>
 /// <param name="Pots">Of those, the shots after which the player stayed at the table or won.</param>
 /// <param name="Fouls">Shots with a foul.</param>
-/// <param name="Breaks">Breaks taken.</param>
-/// <param name="PottingBreaks">Breaks that kept the breaker at the table.</param>
+/// <param name="Breaks">Break-offs taken: the first shots of a rack (the JSON's "breaks"; a break in the sense of <paramref name="BreakSum"/> is a visit's score).</param>
+/// <param name="PottingBreaks">Break-offs that kept the breaker at the table.</param>
 /// <param name="BreakAndRuns">Games won by the breaker's own shots without the opponent taking one.</param>
 /// <param name="RunOuts">Games won by the player's own last shot in a visit that started after the opponent had been at the table (the visit cleared what was left).</param>
+/// <param name="Visits">
+/// Visits to the table: the player's shots from coming to the table until a shot that does not
+/// keep them there (a foul, a miss, a safety, the end of the game; a visit cut off by the shot
+/// limit counts too). A put-back after a foul starts a new visit.
+/// </param>
+/// <param name="ScoringVisits">Of those, the visits with a break above 0.</param>
+/// <param name="BreakSum">
+/// The breaks of every visit summed, in <see cref="Ruleset.BreakUnit"/>: the points a visit
+/// scored in snooker, the object balls it pocketed on legal shots that stayed down in pool (<see cref="Ruleset.BreakValue"/>).
+/// </param>
+/// <param name="HighestBreak">The highest break of one visit (same unit), 0 without a visit.</param>
 /// <param name="ExpectedPotSumE9">
 /// The planner's expected pot probabilities summed over the attempted pots, in units of 1e-9, each
 /// rounded to a whole unit before it is added: a sum of integers, the same in any order.
 /// </param>
 /// <param name="Decisions">The decision times (wall clock, ms), binned.</param>
-public sealed record PlayerStats(int Level, int GamesWon, int Shots, int PotAttempts, int Pots, int Fouls, int Breaks, int PottingBreaks, int BreakAndRuns, int RunOuts, long ExpectedPotSumE9, DecisionHistogram Decisions)
+public sealed record PlayerStats(int Level, int GamesWon, int Shots, int PotAttempts, int Pots, int Fouls, int Breaks, int PottingBreaks, int BreakAndRuns, int RunOuts, int Visits, int ScoringVisits, int BreakSum, int HighestBreak, long ExpectedPotSumE9, DecisionHistogram Decisions)
 {
     /// <summary>Units of <see cref="ExpectedPotSumE9"/> in a probability of 1.</summary>
     public const double ExpectedPotUnit = 1e9;
@@ -39,6 +50,13 @@ public sealed record PlayerStats(int Level, int GamesWon, int Shots, int PotAtte
     /// <summary>The fraction of attempted pots made, 0 without an attempt.</summary>
     public double PotRate => PotAttempts > 0 ? (double)Pots / PotAttempts : 0;
 
+    /// <summary>
+    /// The mean break over the scoring visits (<see cref="BreakSum"/> / <see cref="ScoringVisits"/>),
+    /// 0 without one: snooker's "mean break" leaves out the visits that scored nothing, and so does
+    /// this in every game.
+    /// </summary>
+    public double MeanBreak => ScoringVisits > 0 ? (double)BreakSum / ScoringVisits : 0;
+
     /// <summary>The figures of this series and <paramref name="other"/> (the same player at the same level) together.</summary>
     /// <exception cref="ArgumentException">When the levels differ.</exception>
     public PlayerStats Plus(PlayerStats other)
@@ -50,7 +68,8 @@ public sealed record PlayerStats(int Level, int GamesWon, int Shots, int PotAtte
         }
         return new PlayerStats(Level, GamesWon + other.GamesWon, Shots + other.Shots, PotAttempts + other.PotAttempts, Pots + other.Pots,
             Fouls + other.Fouls, Breaks + other.Breaks, PottingBreaks + other.PottingBreaks, BreakAndRuns + other.BreakAndRuns,
-            RunOuts + other.RunOuts, ExpectedPotSumE9 + other.ExpectedPotSumE9, Decisions.Plus(other.Decisions));
+            RunOuts + other.RunOuts, Visits + other.Visits, ScoringVisits + other.ScoringVisits, BreakSum + other.BreakSum,
+            Math.Max(HighestBreak, other.HighestBreak), ExpectedPotSumE9 + other.ExpectedPotSumE9, Decisions.Plus(other.Decisions));
     }
 }
 
@@ -62,11 +81,19 @@ public static class SelfPlayStats
     {
         ArgumentNullException.ThrowIfNull(games);
         int won = 0, shots = 0, attempts = 0, pots = 0, fouls = 0, breaks = 0, pottingBreaks = 0, bnr = 0, runOuts = 0;
+        int visits = 0, scoringVisits = 0, breakSum = 0, highestBreak = 0;
         long expected = 0;
         var times = new long[DecisionHistogram.BinCount];
         foreach (var game in games)
         {
             won += game.Winner == player ? 1 : 0;
+            foreach (int visitBreak in Visits(game, player))
+            {
+                visits++;
+                scoringVisits += visitBreak > 0 ? 1 : 0;
+                breakSum += visitBreak;
+                highestBreak = Math.Max(highestBreak, visitBreak);
+            }
             foreach (var s in game.Shots.Where(s => s.Before.Shooter == player))
             {
                 shots++;
@@ -97,7 +124,49 @@ public static class SelfPlayStats
                 }
             }
         }
-        return new PlayerStats(level, won, shots, attempts, pots, fouls, breaks, pottingBreaks, bnr, runOuts, expected, new DecisionHistogram(times));
+        return new PlayerStats(level, won, shots, attempts, pots, fouls, breaks, pottingBreaks, bnr, runOuts,
+            visits, scoringVisits, breakSum, highestBreak, expected, new DecisionHistogram(times));
+    }
+
+    /// <summary>
+    /// The break of each of <paramref name="player"/>'s visits in <paramref name="game"/>, in order
+    /// (<see cref="PlayerStats.Visits"/>; a break of 0 for a visit that scored nothing). A visit
+    /// ends with a shot that does not keep the shooter at the table, whoever plays next: the
+    /// offender put back in after a foul starts a new one.
+    /// </summary>
+    public static IEnumerable<int> Visits(PlayedGame game, int player)
+    {
+        ArgumentNullException.ThrowIfNull(game);
+        var ruleset = Ruleset.For(game.Rules);
+        int? visitor = null;
+        int points = 0;
+        foreach (var s in game.Shots)
+        {
+            if (visitor != s.Before.Shooter)
+            {
+                // A shot by the other player without the visit having ended cannot happen; end it anyway.
+                if (visitor == player)
+                {
+                    yield return points;
+                }
+                visitor = s.Before.Shooter;
+                points = 0;
+            }
+            points += ruleset.BreakValue(s.Ruling);
+            if (!s.Ruling.Continue)
+            {
+                if (visitor == player)
+                {
+                    yield return points;
+                }
+                visitor = null;
+            }
+        }
+        // The last visit of a game cut off by the shot limit.
+        if (visitor == player)
+        {
+            yield return points;
+        }
     }
 
     /// <summary>The <paramref name="q"/> quantile of sorted values (nearest rank), 0 for none.</summary>

@@ -64,9 +64,11 @@ public readonly record struct SelfPlayShard(int Index, int Count)
 /// <summary>
 /// The summary of a self-play run or of one shard of it ("billiards-selfplay/1"): what the run
 /// was (rules, levels, seed, target, games), the shard, and per player counts that add up
-/// (<see cref="PlayerStats"/>). <see cref="Merge"/> turns the summaries of every shard of a run
-/// into the summary the unsharded run prints: every count equal, the decision-time quantiles from
-/// the summed histograms; only <see cref="Milliseconds"/> (wall clock) is a sum of the shards'.
+/// (<see cref="PlayerStats"/>: sums, and the highest break, a maximum); every rate and mean in it
+/// (pot rate, mean break, <see cref="MeanGameShots"/>) is derived from those counts. <see cref="Merge"/>
+/// turns the summaries of every shard of a run into the summary the unsharded run prints: every
+/// count equal, so every rate and mean, the decision-time quantiles from the summed histograms;
+/// only <see cref="Milliseconds"/> (wall clock) is a sum of the shards'.
 /// </summary>
 /// <param name="Rules">The game.</param>
 /// <param name="Seed">The run's seed.</param>
@@ -82,6 +84,15 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
 {
     /// <summary>The format tag of a summary.</summary>
     public const string Format = "billiards-selfplay/1";
+
+    /// <summary>The shots of every game counted, both players' (breaks included).</summary>
+    public int Shots => Players.First.Shots + Players.Second.Shots;
+
+    /// <summary>
+    /// The mean length of a game (a frame in snooker) in shots: <see cref="Shots"/> / <see cref="Games"/>,
+    /// over every game counted (an unfinished one with the shots it had), 0 without a game.
+    /// </summary>
+    public double MeanGameShots => Games > 0 ? (double)Shots / Games : 0;
 
     /// <summary>The summary of <paramref name="games"/>, the games shard <paramref name="shard"/> of the run played.</summary>
     public static SelfPlaySummary Of(GameRules rules, long seed, PerPlayer<int> levels, int target, int runGames, SelfPlayShard shard, IReadOnlyList<PlayedGame> games, double milliseconds)
@@ -176,6 +187,9 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
                 w.WriteEndObject();
             }
             w.WriteNumber("unfinished", Unfinished);
+            w.WriteNumber("shots", Shots);
+            w.WriteNumber("mean_game_shots", Round(MeanGameShots));
+            w.WriteString("break_unit", Ruleset.For(Rules).BreakUnit);
             w.WriteStartArray("players");
             for (int player = 0; player < 2; player++)
             {
@@ -206,6 +220,11 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
         w.WriteNumber("potting_breaks", s.PottingBreaks);
         w.WriteNumber("break_and_runs", s.BreakAndRuns);
         w.WriteNumber("run_outs", s.RunOuts);
+        w.WriteNumber("visits", s.Visits);
+        w.WriteNumber("scoring_visits", s.ScoringVisits);
+        w.WriteNumber("break_sum", s.BreakSum);
+        w.WriteNumber("mean_break", Round(s.MeanBreak));
+        w.WriteNumber("highest_break", s.HighestBreak);
         w.WriteStartObject("decision_ms");
         w.WriteNumber("median", Round(s.DecisionMedianMs));
         w.WriteNumber("p95", Round(s.DecisionP95Ms));
@@ -316,7 +335,8 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
         }
         return new PlayerStats(level, p.GetProperty("games_won").GetInt32(), p.GetProperty("shots").GetInt32(), p.GetProperty("pot_attempts").GetInt32(),
             p.GetProperty("pots").GetInt32(), p.GetProperty("fouls").GetInt32(), p.GetProperty("breaks").GetInt32(), p.GetProperty("potting_breaks").GetInt32(),
-            p.GetProperty("break_and_runs").GetInt32(), p.GetProperty("run_outs").GetInt32(), p.GetProperty("expected_pot_sum_e9").GetInt64(), new DecisionHistogram(counts));
+            p.GetProperty("break_and_runs").GetInt32(), p.GetProperty("run_outs").GetInt32(), p.GetProperty("visits").GetInt32(),
+            p.GetProperty("scoring_visits").GetInt32(), p.GetProperty("break_sum").GetInt32(), p.GetProperty("highest_break").GetInt32(), p.GetProperty("expected_pot_sum_e9").GetInt64(), new DecisionHistogram(counts));
     }
 
     private static double Round(double x) => Math.Round(x, 4);

@@ -101,6 +101,7 @@ public sealed class ShotReplay
         double end = _start + maxSeconds;
         // The strike's own event is in the log already; the collisions after it are the shot's.
         int firstEvent = _sim.Events.Count;
+        StrikeEvent = firstEvent > 0 && _sim.Events[firstEvent - 1] is { Kind: EventKind.CueStrike } strike ? strike : null;
         var paths = new List<PathPoint>[_sim.Ids.Count];
         for (int i = 0; i < paths.Length; i++)
         {
@@ -227,6 +228,12 @@ public sealed class ShotReplay
 
     /// <summary>The shot's collisions and pocket drops, in order.</summary>
     public IReadOnlyList<PathMark> Marks => _marks;
+
+    /// <summary>The strike's own event (the cue meeting the ball, at time 0 of the replay), or null when the snapshot's log holds none.</summary>
+    public SimEvent? StrikeEvent { get; }
+
+    /// <summary>The name of a cushion, jaw or pocket of the shot's table, as <see cref="Simulation.FeatureName"/> gives it.</summary>
+    public string FeatureName(EventKind kind, int feature) => _sim.FeatureName(kind, feature);
 
     /// <summary>Seconds after the strike of <paramref name="e"/>.</summary>
     public double EventTime(SimEvent e) => e.Time - _start;

@@ -6,8 +6,9 @@ using Billiards.Core.Table;
 namespace Billiards.Core.Rules;
 
 /// <summary>
-/// What the four pool referees share: reading the shot's facts, the fouls common to all games,
-/// the fouls-in-row count, and assembling the ruling and the next state.
+/// What the five referees share: checking the shot belongs to their game, reading the shot's
+/// facts, the fouls common to the pool games, the fouls-in-row count, and assembling the ruling
+/// and the next state. Each game's rules are one hook, <see cref="Rule"/>.
 /// </summary>
 internal abstract class RefereeBase(GameRules rules, TableSpec table, double ballRadius) : IReferee
 {
@@ -29,13 +30,16 @@ internal abstract class RefereeBase(GameRules rules, TableSpec table, double bal
             throw new ArgumentException($"a {Rules.ToName()} referee cannot judge a {before.Rules.ToName()} game", nameof(before));
         }
         var facts = new ShotFacts(before, shot, Table, BallRadius);
-        var ruling = new RulingBuilder(before, facts);
-        Judge(before, facts, ruling);
-        return ruling.Build();
+        return Rule(before, shot, facts, new RulingBuilder(before, facts));
     }
 
-    /// <summary>The game's rules on one shot: fill <paramref name="ruling"/>.</summary>
-    protected abstract void Judge(GameState before, ShotFacts facts, RulingBuilder ruling);
+    /// <summary>
+    /// The game's rules on one shot: fill <paramref name="ruling"/> from <paramref name="facts"/>
+    /// and return what it builds. <paramref name="shot"/> is there for the games whose rules read
+    /// more than the facts (snooker: the balls' positions before the shot, the cue ball's flight),
+    /// and a game may add to the built ruling (snooker's points, penalty and next ball on).
+    /// </summary>
+    protected abstract Ruling Rule(GameState before, ShotRecord shot, ShotFacts facts, RulingBuilder ruling);
 
     /// <summary>
     /// The fouls common to all games (rules.md): scratch, no contact, wrong ball first (when
@@ -64,7 +68,6 @@ internal abstract class RefereeBase(GameRules rules, TableSpec table, double bal
         }
     }
 
-    /// <summary>"the 3", "the 8".</summary>
     /// <summary>The <c>ball-off-table</c> foul, when a ball (cue or object) left the table over a rail.</summary>
     protected static void OffTableFoul(ShotFacts facts, RulingBuilder ruling)
     {

@@ -52,9 +52,12 @@ public sealed class AudioNodeTests
         return (world, audio);
     }
 
-    private static void RunUntilRest(GameWorld world)
+    private static void RunUntilRest(GameWorld world) => RunWhile(world, () => world.Physics.IsRolling);
+
+    // Frames (a physics step and a process each) while the condition holds, at most 250 s of them.
+    private static void RunWhile(GameWorld world, Func<bool> condition)
     {
-        for (int i = 0; i < 250 * 60 && world.Physics.IsRolling; i++)
+        for (int i = 0; i < 250 * 60 && condition(); i++)
         {
             world.Tree.PhysicsProcess(world.Loop.Dt);
             world.Tree.Process(world.Loop.Dt);
@@ -85,6 +88,74 @@ public sealed class AudioNodeTests
         var (world, audio) = Start("eight-ball-break.json");
         RunUntilRest(world);
         Assert.True(audio.MaxRollingSpeed > 1, "the break's balls roll fast");
+        Assert.All(audio.Rolling.Values, speed => Assert.Equal(0, speed));
+    }
+
+    // Plays the instant replay of the shot just run, frame by frame, until it ends.
+    private static void WatchReplay(GameWorld world, InstantReplayNode instant, Action? afterFirstFrame = null)
+    {
+        Assert.True(instant.Start());
+        world.Tree.Process(world.Loop.Dt);
+        afterFirstFrame?.Invoke();
+        RunWhile(world, () => instant.Time < instant.Duration);
+    }
+
+    [Fact]
+    public void TheInstantReplaySoundsAsTheShotDid()
+    {
+        var (world, audio) = Start("eight-ball-break.json");
+        RunUntilRest(world);
+        var shot = audio.Cues.ToList();
+        audio.Cues.Clear();
+        WatchReplay(world, world.Tree.Find<InstantReplayNode>()!);
+        // The same shot, re-simulated bit for bit: the same strike and collisions, voiced the same.
+        Assert.Equal(shot.Count, audio.Cues.Count);
+        for (int i = 0; i < shot.Count; i++)
+        {
+            Assert.Equal((shot[i].Time, shot[i].Kind, shot[i].Speed, shot[i].Rattle, shot[i].Seed), (audio.Cues[i].Time, audio.Cues[i].Kind, audio.Cues[i].Speed, audio.Cues[i].Rattle, audio.Cues[i].Seed));
+        }
+        Assert.True(audio.MaxRollingSpeed > 1, "the replayed balls roll");
+    }
+
+    [Fact]
+    public void AReplayScrubbedAheadVoicesOnlyWhatItShowsAfterTheScrub()
+    {
+        var (world, audio) = Start("eight-ball-break.json");
+        RunUntilRest(world);
+        var shot = audio.Cues.ToList();
+        audio.Cues.Clear();
+        var instant = world.Tree.Find<InstantReplayNode>()!;
+        const double scrubTo = 1.0;
+        double strikeTime = shot[0].Time;
+        WatchReplay(world, instant, () =>
+        {
+            instant.SeekTo(scrubTo);
+            instant.TogglePause();
+        });
+        // The strike and the first frame's events, then only those after the scrub's time.
+        var expected = shot.Where(c => c.Time - strikeTime <= world.Loop.Dt * 2 || c.Time - strikeTime > scrubTo).ToList();
+        Assert.True(expected.Count < shot.Count, "the scrub skips some of the break's collisions");
+        Assert.Equal(expected.Select(c => (c.Time, c.Kind, c.Seed)), audio.Cues.Select(c => (c.Time, c.Kind, c.Seed)));
+    }
+
+    [Fact]
+    public void ThePausedReplayIsSilent()
+    {
+        var (world, audio) = Start("eight-ball-break.json");
+        RunUntilRest(world);
+        var instant = world.Tree.Find<InstantReplayNode>()!;
+        Assert.True(instant.Start());
+        for (int i = 0; i < 30; i++)
+        {
+            world.Tree.Process(world.Loop.Dt);
+        }
+        Assert.True(audio.Rolling.Values.Any(v => v > 0), "the balls are heard rolling half a second in");
+        world.Tree.Input(new KeyInput(0, Key.Space, true));
+        Assert.True(instant.IsPaused);
+        int cues = audio.Cues.Count;
+        int frames = 0;
+        RunWhile(world, () => frames++ < 30);
+        Assert.Equal(cues, audio.Cues.Count);
         Assert.All(audio.Rolling.Values, speed => Assert.Equal(0, speed));
     }
 

@@ -83,6 +83,25 @@ public sealed class GamePlaybackKeysTests : IDisposable
     }
 
     [Fact]
+    public void EveryShotShownIsHeardFromItsStrikeAtAnySpeed()
+    {
+        string path = SelfplayRecords();
+        var record = ReplayCommand.Load(path)[0];
+        var clock = new ManualClock();
+        var window = new FakeWindow { FramebufferSize = (1280, 720) };
+        var audio = new Billiards.App.Tests.Audio.RecordingAudio();
+        int shown = 0;
+        // At 8 times real time a frame of 1/30 s passes 0.27 s of a shot: every collision is still heard.
+        int code = ReplayCommand.Play(record, path, 0, 8, _ => new GamePlatform(window, new KeyedLoop(clock, window, new Dictionary<int, Action>()), new WatchingRenderer(_ => { })), clock,
+            (_, _) => shown++, openAudio: () => audio);
+        Assert.Equal(0, code);
+        Assert.Equal(record.Shots.Count, shown);
+        Assert.Equal(shown, audio.Cues.Count(c => c.Kind is Billiards.App.Audio.SoundKind.CueStrike or Billiards.App.Audio.SoundKind.Miscue));
+        Assert.True(audio.Cues.Count(c => c.Kind == Billiards.App.Audio.SoundKind.BallClick) >= shown, "the shots' collisions are heard");
+        Assert.True(audio.MaxRollingSpeed > 0.5, "the shown balls are heard rolling");
+    }
+
+    [Fact]
     public void AGameNumberOutsideTheFileIsOneLineAndExitTwo()
     {
         string path = SelfplayRecords();

@@ -1,4 +1,5 @@
 using Billiards.Core.Balls;
+using Billiards.Core.Physics;
 using Billiards.Core.Table;
 
 namespace Billiards.Core.Rules;
@@ -12,7 +13,7 @@ internal sealed class EightBallReferee(TableSpec table, double ballRadius) : Ref
 {
     private static readonly BallId Eight = new(8);
 
-    protected override void Judge(GameState before, ShotFacts facts, RulingBuilder ruling)
+    protected override Ruling Rule(GameState before, ShotRecord shot, ShotFacts facts, RulingBuilder ruling)
     {
         if (facts.BadPlacement)
         {
@@ -33,6 +34,7 @@ internal sealed class EightBallReferee(TableSpec table, double ballRadius) : Ref
         {
             ruling.BallInHand = BallInHand.Table;
         }
+        return ruling.Build();
     }
 
     // Jumped object balls are spotted; the 8 off the table loses the game (rules.md).

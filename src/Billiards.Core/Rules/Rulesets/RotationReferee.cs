@@ -1,4 +1,5 @@
 using Billiards.Core.Balls;
+using Billiards.Core.Physics;
 using Billiards.Core.Table;
 
 namespace Billiards.Core.Rules;
@@ -15,7 +16,7 @@ internal sealed class RotationReferee(RotationRuleset ruleset, TableSpec table, 
 
     private BallId Money => ruleset.Money;
 
-    protected override void Judge(GameState before, ShotFacts facts, RulingBuilder ruling)
+    protected override Ruling Rule(GameState before, ShotRecord shot, ShotFacts facts, RulingBuilder ruling)
     {
         if (facts.BadPlacement)
         {
@@ -70,7 +71,7 @@ internal sealed class RotationReferee(RotationRuleset ruleset, TableSpec table, 
             {
                 ruling.Foul(Foul.ThreeFouls);
                 ruling.Win(before.Incoming, $"{before.IncomingName} wins.");
-                return;
+                return ruling.Build();
             }
             if (fouls == 2)
             {
@@ -93,5 +94,6 @@ internal sealed class RotationReferee(RotationRuleset ruleset, TableSpec table, 
                 ruling.SpotBall(Money);
             }
         }
+        return ruling.Build();
     }
 }

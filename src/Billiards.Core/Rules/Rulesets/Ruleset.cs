@@ -144,6 +144,22 @@ public abstract class Ruleset
     /// <summary>True when the shooter may call <paramref name="ball"/> for a pot.</summary>
     public virtual bool MayCall(GameState state, BallId ball) => true;
 
+    /// <summary>
+    /// What a shot adds to the shooter's break, the score of one visit to the table (a visit: the
+    /// shots of one player from coming to the table until a shot that does not keep them there).
+    /// Pool: the object balls pocketed on a legal shot that stay down (balls; in 14.1 each is a
+    /// point); a ball spotted again (14.1's balls of a shot that missed its call, 10-ball's 10
+    /// pocketed uncalled) and a foul add nothing. Snooker overrides it with the shot's points.
+    /// </summary>
+    public virtual int BreakValue(Ruling ruling)
+    {
+        ArgumentNullException.ThrowIfNull(ruling);
+        return ruling.Legal ? ruling.Pocketed.Count(b => !ruling.Spot.Contains(b)) : 0;
+    }
+
+    /// <summary>What <see cref="BreakValue"/> counts: "balls" in pool, "points" in snooker.</summary>
+    public virtual string BreakUnit => "balls";
+
     /// <summary>Shots after which a game between computers is abandoned without a winner.</summary>
     public virtual int MaxShots(GameState start) => 400;
 

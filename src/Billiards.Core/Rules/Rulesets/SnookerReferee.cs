@@ -23,30 +23,13 @@ namespace Billiards.Core.Rules;
 /// is a cue ball that left the bed before its first contact with an object ball lying on its
 /// straight line of flight short of the ball it struck.
 /// </remarks>
-internal sealed class SnookerReferee(TableSpec table, double ballRadius) : IReferee
+internal sealed class SnookerReferee(TableSpec table, double ballRadius) : RefereeBase(GameRules.Snooker, table, ballRadius)
 {
     // Snooker's one cue ball, the white.
     private static readonly BallId Cue = BallSet.Snooker.CueBalls[0];
 
-    public GameRules Rules => GameRules.Snooker;
-
-    public TableSpec Table { get; } = table;
-
-    public double BallRadius { get; } = ballRadius;
-
-    public Ruling Judge(GameState before, ShotRecord shot)
-    {
-        ArgumentNullException.ThrowIfNull(before);
-        ArgumentNullException.ThrowIfNull(shot);
-        if (before.Rules != Rules)
-        {
-            throw new ArgumentException($"a snooker referee cannot judge a {before.Rules.ToName()} game", nameof(before));
-        }
-        var facts = new ShotFacts(before, shot, Table, BallRadius);
-        var ruling = new RulingBuilder(before, facts);
-        var judged = new Judgement(this, before, shot, facts, ruling);
-        return judged.Rule();
-    }
+    protected override Ruling Rule(GameState before, ShotRecord shot, ShotFacts facts, RulingBuilder ruling) =>
+        new Judgement(this, before, shot, facts, ruling).Rule();
 
     // The work of one shot, with its facts at hand.
     private sealed class Judgement(SnookerReferee referee, GameState before, ShotRecord shot, ShotFacts facts, RulingBuilder ruling)

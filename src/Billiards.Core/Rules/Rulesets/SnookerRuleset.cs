@@ -131,6 +131,16 @@ public sealed class SnookerRuleset : Ruleset
     /// <summary>A frame rarely lasts 300 shots; 600 leaves room for long safety exchanges.</summary>
     public override int MaxShots(GameState start) => 600;
 
+    /// <summary>Snooker's break: the points the shot scored for the shooter (<see cref="Ruling.Points"/>; a penalty goes to the opponent and is no part of it).</summary>
+    public override int BreakValue(Ruling ruling)
+    {
+        ArgumentNullException.ThrowIfNull(ruling);
+        return ruling.Points;
+    }
+
+    /// <inheritdoc />
+    public override string BreakUnit => "points";
+
     /// <inheritdoc />
     public override HudTarget Target(GameState state, int player, IReadOnlyCollection<BallId> objectBalls)
     {

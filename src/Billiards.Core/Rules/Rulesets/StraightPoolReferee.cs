@@ -1,4 +1,5 @@
 using Billiards.Core.Balls;
+using Billiards.Core.Physics;
 using Billiards.Core.Table;
 
 namespace Billiards.Core.Rules;
@@ -21,7 +22,7 @@ internal sealed class StraightPoolReferee(TableSpec table, double ballRadius) : 
     /// <summary>Points lost, besides the foul's, for the third foul in a row.</summary>
     public const int ThreeFoulPenalty = 15;
 
-    protected override void Judge(GameState before, ShotFacts facts, RulingBuilder ruling)
+    protected override Ruling Rule(GameState before, ShotRecord shot, ShotFacts facts, RulingBuilder ruling)
     {
         int shooter = before.Shooter;
         if (facts.BadPlacement)
@@ -96,7 +97,7 @@ internal sealed class StraightPoolReferee(TableSpec table, double ballRadius) : 
         if (ruling.Score[shooter] >= before.Target)
         {
             ruling.Win(shooter, $"{before.ShooterName} reaches {ruling.Score[shooter]} points and wins.");
-            return;
+            return ruling.Build();
         }
         if (scores && facts.OnTableAfter.Count <= 1)
         {
@@ -107,5 +108,6 @@ internal sealed class StraightPoolReferee(TableSpec table, double ballRadius) : 
             }
             ruling.Outcome = $"{before.ShooterName} scores and goes on after a rerack of {ruling.Rerack.Count}.";
         }
+        return ruling.Build();
     }
 }
