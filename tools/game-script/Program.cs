@@ -1,7 +1,13 @@
 using System.Globalization;
 using System.Numerics;
 using System.Text;
+using Billiards.App.Camera;
 using Billiards.App.Game;
+using Billiards.App.Input.Modes;
+using Billiards.App.Rendering;
+using Billiards.Core.Ai;
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
 using Billiards.App.Platform;
 using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
@@ -11,15 +17,22 @@ using Billiards.Core.Scenes;
 // power, Space; a mouse drag in move mode with ball in hand) by playing the whole script so far
 // through the game itself, and keeps the best by the referee's ruling: a win, then a scratch once
 // (after the third shot), then a pot, then a legal miss. Deterministic: same code, same script.
-// With --snooker it makes a whole snooker frame between two people (assets/scripts/snooker-frame.json):
-// the break-off from the D, pots of reds and of nominated colours while they are found (B to pick
-// the ball, which also nominates it, X, the power, Space), else the best legal shot found, and,
-// after four pots or sixteen turns, the player at the table misses on purpose and the other has the balls replaced
-// (key 3) until the third foul and a miss with a full view of the ball on ends the frame.
-// Usage: dotnet run --project tools/game-script -c Release -- [--snooker] OUT.json | [--snooker] --check SCRIPT.json
+// With --snooker it makes a whole snooker frame between two people (assets/scripts/snooker-frame.json)
+// in one pass through one game that plays the script as it grows: each turn the computer player's
+// planner (level 4, centre ball only) picks the shot from the table as it stands, for a person to
+// play it through the real input: ball in hand dragged in move mode (M, V), the colour nominated
+// by a click on it from the view above the table (T) or by B, X to aim at its ghost ball, whole
+// degrees on Left/Right and the rest by a drag of the view, W/Q for the power, Space; after a
+// foul the option the planner would choose is clicked on its button. --seed picks the planner's
+// seeds (the frame shipped is seed 9: it ends on the black potted, with an in-off along the way).
+// Usage: dotnet run --project tools/game-script -c Release -- [--snooker] [--seed N] OUT.json | [--snooker] --check SCRIPT.json
 internal static class Program
 {
     private const double Speed = 16;
+
+    // The snooker frame plays at the script's top speed, its keys a hundredth of a second apart: a
+    // long frame in a short time.
+    private const double SnookerSpeed = 64, EventGap = 0.01;
     private static Scene s_scene = SceneLoader.Load(Path.Combine(AssetFolder.Assets, "scenes", "eight-ball.json"));
     private static GameRules s_rules = GameRules.EightBall;
 
@@ -31,12 +44,18 @@ internal static class Program
             s_rules = GameRules.Snooker;
             args = args[1..];
         }
+        ulong seed = 9;
+        if (args.Length > 2 && args[0] == "--seed" && ulong.TryParse(args[1], out ulong chosen))
+        {
+            seed = chosen;
+            args = args[2..];
+        }
         if (args.Length == 2 && args[0] == "--check")
         {
             var script = InputScript.Load(args[1]);
             foreach (double frame in new[] { 1.0 / 60, 0.05, 0.3 })
             {
-                var (match, _) = Run([.. script.Events], frame);
+                var (match, _) = Run([.. script.Events], frame, script.Speed);
                 Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"frames of {frame:0.000} s: {match.Rulings.Count} rulings, winner {match.Winner}"));
                 foreach (var r in match.Rulings)
                 {
@@ -50,8 +69,8 @@ internal static class Program
             Console.Error.WriteLine("usage: game-script OUT.json | --check SCRIPT.json");
             return 2;
         }
-        var events = s_rules == GameRules.Snooker ? SnookerSearch() : Search();
-        File.WriteAllText(args[0], ToJson(events));
+        var events = s_rules == GameRules.Snooker ? SnookerFrame(4, seed, 400) : Search();
+        File.WriteAllText(args[0], ToJson(events, s_rules == GameRules.Snooker ? SnookerSpeed : Speed, s_rules == GameRules.Snooker ? 4 : 2));
         return 0;
     }
 
@@ -132,124 +151,257 @@ internal static class Program
         return events;
     }
 
-    // The snooker frame (see the file's head): the break-off, then each turn the best of the key
-    // sequences tried (a pot that keeps the player at the table, the most points first; else a
-    // legal shot), and from the fourth pot or the sixteenth turn on, the misses.
-    private static List<ScriptEvent> SnookerSearch()
+    // The snooker frame (see the file's head), made in one pass through one game that plays the
+    // script as it grows: each turn the planner (centre ball, a person's skill) picks the shot from
+    // the table as it stands, and the turn is written as a person plays it, from the D, nominating,
+    // aiming, setting the power; after a foul the option the planner would choose is clicked.
+    private static List<ScriptEvent> SnookerFrame(int level, ulong seed, int maxShots)
     {
-        var events = new List<ScriptEvent>();
-        int pots = 0;
-        int? misser = null;
-        for (int turn = 0; turn < 80; turn++)
+        var live = new LiveGame();
+        var planner = new ShotPlanner(live.Physics.Table, live.Physics.Params, live.Physics.Models);
+        var skill = SkillLevel.Of(level) with { Spins = 1 };
+        int shots = 0, clicks = 0;
+        live.CatchUp();
+        while (!live.Match.IsOver && shots < maxShots)
         {
-            var (match, host) = Run(events, 0.05);
-            if (match.IsOver)
-            {
-                Console.WriteLine($"frame over: {match.LastRuling!.Message}");
-                break;
-            }
-            double start = Math.Round((events.Count > 0 ? events[^1].Time : 0) + 0.3, 2);
+            var match = live.Match;
             if (match.PendingOptions.Count > 0)
             {
-                // After the misses the other player has the balls replaced; after any other foul plays on.
-                var option = match.PendingOptions.Contains(RefereeOption.Replace) && misser is not null ? RefereeOption.Replace : RefereeOption.Play;
-                events = Choose(events, start, match.PendingOptions.ToList().IndexOf(option));
-                Console.WriteLine($"turn {turn}: {match.State.ShooterName} chooses {option.ToName()}");
+                var position = new TablePosition(match.Game!.Shots[^1].After, live.Physics.CueBall);
+                var option = planner.ChooseOption(match.LastRuling!, position);
+                // The option's button, clicked (its key says the same).
+                var at = live.Host.World.Menu.CentreOf(option.ToName())!.Value;
+                live.Pause(0.4);
+                live.Add(new ScriptEvent(0, ScriptAction.MouseMove, Vector: at));
+                live.Add(new ScriptEvent(0, ScriptAction.MouseDown, Button: MouseButton.Left));
+                live.Add(new ScriptEvent(0, ScriptAction.MouseUp, Button: MouseButton.Left));
+                string chooser = match.State.ShooterName;
+                live.CatchUp();
+                Console.WriteLine($"  {chooser} chooses {option.ToName()}");
                 continue;
             }
-            if (misser is not null)
+            var decision = planner.Decide(match.State, TablePosition.Of(live.Physics.Simulation, live.Physics.CueBall), skill, new PlannerBudget(600_000), PlannerRandom.Derive(seed, shots, 0));
+            live.Pause(0.3);
+            if (decision.Place is { } place && live.Physics.BallInHand)
             {
-                events = Shot(events, start, 0.5, 0, 0, null, aimAtGhost: true, match.Power, turnDegrees: 180);
-                Console.WriteLine($"turn {turn}: {match.State.ShooterName} misses");
-                continue;
+                PlaceByHand(live, place);
             }
-            var sim = host.World.Physics.Simulation;
-            int onTable = 0;
-            for (int i = 0; i < sim.Ids.Count; i++)
+            if (match.NeedsNomination && decision.Call is { IsNomination: true } call)
             {
-                onTable += sim.Ids[i].Value != 0 && !sim.Balls[i].IsPocketed ? 1 : 0;
-            }
-            var candidates = new List<List<ScriptEvent>>();
-            // Each ball in turn (B), aimed at its ghost ball (X), at two powers: the break-off
-            // is played so too, firmly, into a red of the pack.
-            double[] powers = match.State.Shot == 0 ? [3.0, 4.5] : [1.5, 2.5];
-            for (int b = 0; b < onTable; b++)
-            {
-                foreach (double power in powers)
+                // Every other nomination a click on the ball from the view above the table, else B.
+                if (clicks++ % 2 == 0)
                 {
-                    candidates.Add(Shot(events, start, power, b, 0, null, aimAtGhost: true, match.Power));
+                    ClickOnBall(live, call.Ball);
                 }
-            }
-            double best = double.NegativeInfinity;
-            List<ScriptEvent>? bestEvents = null;
-            Ruling? bestRuling = null;
-            foreach (var candidate in candidates)
-            {
-                var (m, _) = Run(candidate, 0.05);
-                if (m.Rulings.Count != match.Rulings.Count + 1)
+                for (int i = 0; i < 22 && match.CurrentNomination?.Ball != call.Ball; i++)
                 {
-                    continue;
+                    live.Press(Key.B);
+                    live.CatchUp();
                 }
-                var r = m.LastRuling!;
-                double score = r.GameOver ? -100 : r.Legal && r.Continue ? 10 + r.Points : r.Legal ? 1 : -10;
-                if (score > best)
+                if (match.CurrentNomination?.Ball != call.Ball)
                 {
-                    (best, bestEvents, bestRuling) = (score, candidate, r);
+                    throw new InvalidOperationException($"shot {shots}: could not nominate {call.Ball}");
                 }
+                live.Press(Key.X);
             }
-            bool potted = bestRuling is { Legal: true, Continue: true };
-            if (turn > 0 && (pots >= 4 || turn >= 16))
+            else if (decision.Kind != ShotKind.Break)
             {
-                // Nothing to pot, or enough pots: from here the player at the table misses.
-                misser = match.State.Shooter;
-                turn--;
-                continue;
+                live.Press(Key.X);
             }
-            pots += potted ? 1 : 0;
-            events = bestEvents!;
-            Console.WriteLine($"turn {turn}: {bestRuling!.Message}");
+            live.CatchUp();
+            Aim(live, decision.Shot.AimDeg);
+            double power = Math.Clamp(Math.Round(decision.Shot.Speed / MatchNode.PowerStep) * MatchNode.PowerStep, MatchNode.MinPower, MatchNode.MaxPower);
+            int steps = (int)Math.Round((power - match.Power) / MatchNode.PowerStep);
+            for (int i = 0; i < Math.Abs(steps); i++)
+            {
+                live.Press(steps > 0 ? Key.W : Key.Q);
+            }
+            live.Press(Key.Space);
+            live.Add(new ScriptEvent(0, ScriptAction.WaitRest));
+            live.CatchUp();
+            shots++;
+            var r = match.LastRuling!;
+            Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"shot {shots}: {decision.Kind} {decision.Target} at {power:0.00} m/s: {r.Message}"));
         }
-        return events;
-    }
-
-    // The incoming player presses the option's key (1 for the first).
-    private static List<ScriptEvent> Choose(List<ScriptEvent> prefix, double start, int index)
-    {
-        var events = new List<ScriptEvent>(prefix);
-        var key = Key.D1 + index;
-        events.Add(new ScriptEvent(start, ScriptAction.KeyDown, Key: key));
-        events.Add(new ScriptEvent(Math.Round(start + 0.02, 2), ScriptAction.KeyUp, Key: key));
-        return events;
-    }
-
-    private static (MatchNode Match, GameHost Host) Run(List<ScriptEvent> events, double frameSeconds)
-    {
-        var clock = new ManualClock();
-        var scriptClock = new ScriptClock(clock);
-        var script = new InputScript(events, (events.Count > 0 ? events[^1].Time : 0) + 0.1, Speed);
-        var scripted = new ScriptedInput(new NoWindow(), script, scriptClock);
-        var match = new MatchSetup(s_rules, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]);
-        var host = new GameHost(s_scene, SimulationFactory.Create, scripted, scriptClock, match) { TimeScale = Speed };
-        scripted.IsAtRest = () => host.IsSettled;
-        bool warm = false;
-        host.FrameStarting += now =>
+        if (!live.Match.IsOver)
         {
-            // As play does: the first frame loads the table, the script starts with the second.
-            if (warm)
-            {
-                scripted.Pump(now);
-            }
-            warm = true;
-        };
-        for (int i = 0; i < 1_000_000 && !scripted.Finished; i++)
-        {
-            clock.Advance(frameSeconds);
-            host.RunFrame();
+            throw new InvalidOperationException($"the frame did not end in {maxShots} shots");
         }
-        return (host.Tree.Root.GetInTree<MatchNode>(), host);
+        var played = live.Match.Game!.Shots;
+        var last = played[^1].Ruling;
+        Console.WriteLine($"summary: {played.Count} shots, {played.Count(p => p.Ruling.Fouls.Count > 0)} fouls, "
+            + $"{played.Count(p => p.Before.FreeBall)} free balls played, {played.Count(p => p.Ruling.FoulAndMiss)} misses, "
+            + $"{played.Count(p => p.Ruling.Fouls.Contains(Foul.CueBallPocketed))} in-offs, {clicks} nominations ({(clicks + 1) / 2} clicked), "
+            + $"ends: {(last.Fouls.Count > 0 ? "foul" : "pot")} on {string.Join(",", last.Pocketed)}: {last.Message}");
+        return live.Events;
     }
 
-    private static List<ScriptEvent> Shot(List<ScriptEvent> prefix, double start, double power, int ballPresses, int aimTweak, (int X, int Y)? drag, bool aimAtGhost, double powerNow, int turnDegrees = 0)
+    // Ball in hand: move mode (M), a drag that carries the cue ball to the place (in the default
+    // view the ball moves along the aim and across it, a centimetre a pixel), back to the view (V).
+    // Not only in the D: with ball in hand the aim keys and the drag do the same anywhere.
+    private static void PlaceByHand(LiveGame live, Vec3 place)
+    {
+        var physics = live.Physics;
+        var cue = live.Host.World.Tree.Root.GetInTree<CueNode>();
+        var d = place - physics.CueBallPosition;
+        var f = cue.AimDirection;
+        var side = ViewMath.BedRight(f);
+        double k = SeedControls.MoveMetresPerPixel;
+        var drag = new Vector2((float)(Vec3.Dot(d, side) / k), (float)(-Vec3.Dot(d, f) / k));
+        live.Press(Key.M);
+        live.Add(new ScriptEvent(0, ScriptAction.MouseMove, Vector: new Vector2(640, 600)));
+        live.Add(new ScriptEvent(0, ScriptAction.MouseDown, Button: MouseButton.Left));
+        // One move: a drag in steps could meet a colour on its spot on the way, and stop there.
+        live.Add(new ScriptEvent(0, ScriptAction.MouseMoveBy, Vector: drag));
+        live.Add(new ScriptEvent(0, ScriptAction.MouseUp, Button: MouseButton.Left));
+        live.Press(Key.V);
+        live.CatchUp();
+        double off = (physics.CueBallPosition - place).LengthXY;
+        Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  placed in hand {off * 1000:0.000} mm from the plan "));
+    }
+
+    // T looks down on the table; a click on the ball nominates it; T again.
+    private static void ClickOnBall(LiveGame live, BallId ball)
+    {
+        live.Press(CameraNode.OverheadKey);
+        live.CatchUp();
+        var camera = live.Host.World.Tree.Root.GetInTree<CameraNode>();
+        var (eye, target) = camera.View(1280, 720);
+        var vp = RenderMath.View(eye, target) * RenderMath.Projection(CameraNode.FovYDegrees, 1280f / 720);
+        var sim = live.Physics.Simulation;
+        var pixel = RenderMath.ToPixel(vp, sim.Balls[sim.IndexOf(ball)].Position.ToVector3(), 1280, 720)!.Value;
+        live.Add(new ScriptEvent(0, ScriptAction.MouseMove, Vector: new Vector2(MathF.Round(pixel.X), MathF.Round(pixel.Y))));
+        live.Add(new ScriptEvent(0, ScriptAction.MouseDown, Button: MouseButton.Left));
+        live.Add(new ScriptEvent(0, ScriptAction.MouseUp, Button: MouseButton.Left));
+        live.Press(CameraNode.OverheadKey);
+        live.CatchUp();
+    }
+
+    // The aim: whole degrees on the keys (Left, Right), the rest by a drag of the view (3 to 4
+    // degrees, more than a click's slop), exact to the planner's angle.
+    private static void Aim(LiveGame live, double aimDeg)
+    {
+        var match = live.Match;
+        double delta = Math.IEEERemainder(aimDeg - match.AimDegrees, 360);
+        int degrees = (int)Math.Floor(delta - 3);
+        for (int i = 0; i < Math.Abs(degrees); i++)
+        {
+            live.Press(degrees > 0 ? Key.Left : Key.Right);
+        }
+        live.CatchUp();
+        double rest = Math.IEEERemainder(aimDeg - match.AimDegrees, 360);
+        var camera = live.Host.World.Tree.Root.GetInTree<CameraNode>().Camera;
+        float dx = (float)(rest * Math.PI / 180 / OrbitCamera.OrbitRadiansPerPixel / camera.Sensitivity);
+        // Over the HUD's band, where no ball is: the drag's press and release are no click on a ball.
+        live.Add(new ScriptEvent(0, ScriptAction.MouseMove, Vector: new Vector2(900, 60)));
+        live.Add(new ScriptEvent(0, ScriptAction.MouseDown, Button: MouseButton.Left));
+        live.Add(new ScriptEvent(0, ScriptAction.MouseMoveBy, Vector: new Vector2(dx / 2, 0)));
+        live.Add(new ScriptEvent(0, ScriptAction.MouseMoveBy, Vector: new Vector2(dx - (dx / 2), 0)));
+        live.Add(new ScriptEvent(0, ScriptAction.MouseUp, Button: MouseButton.Left));
+        live.CatchUp();
+        double error = Math.IEEERemainder(aimDeg - match.AimDegrees, 360);
+        if (Math.Abs(error) > 1e-3)
+        {
+            throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"the aim is {error} deg off the plan"));
+        }
+    }
+
+    // One game playing a script: a whole one (Run), or one that grows: events are added in the
+    // script's future, and the game runs until it has raised them all and rests (CatchUp).
+    private sealed class LiveGame
+    {
+        private readonly double _frame;
+        private readonly ManualClock _clock = new();
+        private readonly ScriptedInput _scripted;
+
+        public LiveGame(List<ScriptEvent>? events = null, double duration = double.MaxValue, double frameSeconds = 0.05, double speed = SnookerSpeed)
+        {
+            _frame = frameSeconds;
+            Events = events ?? [];
+            var scriptClock = new ScriptClock(_clock);
+            _scripted = new ScriptedInput(new NoWindow(), new InputScript(Events, duration, speed), scriptClock);
+            var match = new MatchSetup(s_rules, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]);
+            Host = new GameHost(s_scene, SimulationFactory.Create, _scripted, scriptClock, match) { TimeScale = speed };
+            _scripted.IsAtRest = () => Host.IsSettled;
+            bool warm = false;
+            Host.FrameStarting += now =>
+            {
+                if (warm)
+                {
+                    _scripted.Pump(now);
+                }
+                warm = true;
+            };
+            Match = Host.Tree.Root.GetInTree<MatchNode>();
+            // The first frame loads the table (the view turns to the ball on), the second starts the script.
+            for (int i = 0; i < 2; i++)
+            {
+                _clock.Advance(_frame);
+                Host.RunFrame();
+            }
+        }
+
+        public List<ScriptEvent> Events { get; }
+
+        public GameHost Host { get; }
+
+        public MatchNode Match { get; }
+
+        public PhysicsNode Physics => Host.World.Physics;
+
+        private double _next = 0.5;
+
+        // The script's clock now: events go after it.
+        private double Now => _clock.Now - (_scripted.Start ?? _clock.Now) - _scripted.Waited;
+
+        public void Pause(double seconds) => _next = Canon(Math.Max(_next, Now + _frame) + seconds);
+
+        public void Add(ScriptEvent e)
+        {
+            _next = Canon(Math.Max(_next, Now + _frame));
+            // As the file will give it back: the game played here is the one the script plays.
+            Events.Add(e with { Time = _next, Vector = new Vector2(Canon(e.Vector.X), Canon(e.Vector.Y)) });
+            _next = Canon(_next + EventGap);
+        }
+
+        public void Press(Key key)
+        {
+            _next = Canon(Math.Max(_next, Now + _frame));
+            Events.Add(new ScriptEvent(_next, ScriptAction.KeyDown, Key: key));
+            Add(new ScriptEvent(0, ScriptAction.KeyUp, Key: key));
+        }
+
+        private static double Canon(double t) => double.Parse(t.ToString("0.00", CultureInfo.InvariantCulture), CultureInfo.InvariantCulture);
+
+        private static float Canon(float v) => (float)double.Parse(v.ToString(CultureInfo.InvariantCulture), CultureInfo.InvariantCulture);
+
+        public void CatchUp()
+        {
+            for (int i = 0; i < 10_000_000 && !(_scripted.CaughtUp && Host.IsSettled); i++)
+            {
+                _clock.Advance(_frame);
+                Host.RunFrame();
+            }
+        }
+
+        public void RunToTheEnd()
+        {
+            for (int i = 0; i < 1_000_000 && !_scripted.Finished; i++)
+            {
+                _clock.Advance(_frame);
+                Host.RunFrame();
+            }
+        }
+    }
+
+    private static (MatchNode Match, GameHost Host) Run(List<ScriptEvent> events, double frameSeconds, double speed = Speed)
+    {
+        var live = new LiveGame(events, (events.Count > 0 ? events[^1].Time : 0) + 0.1, frameSeconds, speed);
+        live.RunToTheEnd();
+        return (live.Match, live.Host);
+    }
+
+    private static List<ScriptEvent> Shot(List<ScriptEvent> prefix, double start, double power, int ballPresses, int aimTweak, (int X, int Y)? drag, bool aimAtGhost, double powerNow)
     {
         var events = new List<ScriptEvent>(prefix);
         double t = start;
@@ -284,7 +436,6 @@ internal static class Program
             Press(Key.X);
         }
         Press(aimTweak > 0 ? Key.A : Key.D, Math.Abs(aimTweak));
-        Press(Key.Left, turnDegrees);
         int steps = (int)Math.Round((power - powerNow) / MatchNode.PowerStep);
         Press(steps > 0 ? Key.W : Key.Q, Math.Abs(steps));
         Press(Key.Space);
@@ -292,12 +443,13 @@ internal static class Program
         return events;
     }
 
-    private static string ToJson(List<ScriptEvent> events)
+    // The script closes the game tail seconds after its last event (the end of the game on the screen a while).
+    private static string ToJson(List<ScriptEvent> events, double speed, double tail)
     {
         var c = CultureInfo.InvariantCulture;
         var sb = new StringBuilder();
-        sb.Append("{\n  \"format\": \"billiards-input-script/1\",\n  \"speed\": 16,\n");
-        sb.Append(c, $"  \"duration\": {events[^1].Time + 2:0.00},\n  \"events\": [\n");
+        sb.Append(c, $"{{\n  \"format\": \"billiards-input-script/1\",\n  \"speed\": {speed},\n");
+        sb.Append(c, $"  \"duration\": {events[^1].Time + tail:0.00},\n  \"events\": [\n");
         for (int i = 0; i < events.Count; i++)
         {
             var e = events[i];

@@ -191,20 +191,27 @@ public sealed class CameraNode : Node
     protected override void Draw(FrameBuilder frame)
     {
         frame.Frame.FovYDegrees = FovYDegrees;
+        (frame.Frame.Eye, frame.Frame.Target) = View(frame.Frame.Width, frame.Frame.Height);
         if (Overhead && _physics is not null)
         {
-            (frame.Frame.Eye, frame.Frame.Target) = OverheadView(_physics.Table, frame.Frame.Width, frame.Frame.Height, FovYDegrees);
             double tan = Math.Tan(FovYDegrees * Math.PI / 360);
             OverheadMetresPerPixel = 2 * (frame.Frame.Eye.Z - _physics.BallRadius) * tan / Math.Max(1, frame.Frame.Height);
-            return;
         }
-        if (Following)
+    }
+
+    /// <summary>
+    /// The eye and the point looked at as the next frame of <paramref name="width"/> x
+    /// <paramref name="height"/> pixels shows them, from the camera as it is now: a click is seen in
+    /// the view of its moment (a key that switched the view just before it counts), not in the last
+    /// frame drawn.
+    /// </summary>
+    public (Vector3 Eye, Vector3 Target) View(int width, int height)
+    {
+        if (Overhead && _physics is not null)
         {
-            (frame.Frame.Eye, frame.Frame.Target) = (_chase.Eye, _chase.Target);
-            return;
+            return OverheadView(_physics.Table, width, height, FovYDegrees);
         }
-        frame.Frame.Eye = Camera.Eye.ToVector3();
-        frame.Frame.Target = Camera.Centre.ToVector3();
+        return Following ? (_chase.Eye, _chase.Target) : (Camera.Eye.ToVector3(), Camera.Centre.ToVector3());
     }
 
     /// <summary>

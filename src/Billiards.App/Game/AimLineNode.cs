@@ -125,7 +125,14 @@ public sealed class AimLineNode : Node
     public IReadOnlyList<AidShape> CallShapes(RenderFrame frame)
     {
         ArgumentNullException.ThrowIfNull(frame);
-        if (_match is not { NeedsCall: true, CurrentCall: { } call } || _cue is not { IsVisible: true } || _physics is not { } physics)
+        // A call marks its ball and pocket; a snooker nomination (a colour, a free ball) its ball.
+        var call = _match switch
+        {
+            { NeedsCall: true, CurrentCall: { } c } => c,
+            { NeedsNomination: true, CurrentNomination: { } n } => n,
+            _ => null,
+        };
+        if (call is null || _cue is not { IsVisible: true } || _physics is not { } physics)
         {
             return [];
         }

@@ -20,6 +20,7 @@ public sealed class CallPickerNode : Node
 
     private MatchNode? _match;
     private PhysicsNode? _physics;
+    private Camera.CameraNode? _camera;
     private PocketSet _pocketSet = PocketSet.None;
     private PocketCircle[] _pockets = [];
     private Matrix4x4 _viewProjection;
@@ -31,6 +32,7 @@ public sealed class CallPickerNode : Node
     {
         _match = GetInTree<MatchNode>();
         _physics = GetInTree<PhysicsNode>();
+        _camera = FindInTree<Camera.CameraNode>();
         _pockets = TableGeometry.Build(_physics.Table, _physics.BallRadius).Pockets.ToArray();
         _pocketSet = _physics.Table.Pockets;
     }
@@ -62,6 +64,12 @@ public sealed class CallPickerNode : Node
         if (_match is not { CanShoot: true, IsComputerActing: false } match || !(match.NeedsCall || match.NeedsNomination) || _physics is null || _size.Width == 0)
         {
             return false;
+        }
+        if (_camera is not null)
+        {
+            // The view of the click's moment: a view switched (T) in the same frame counts.
+            var (eye, target) = _camera.View(_size.Width, _size.Height);
+            _viewProjection = RenderMath.View(eye, target) * RenderMath.Projection(Camera.CameraNode.FovYDegrees, (float)_size.Width / Math.Max(1, _size.Height));
         }
         var sim = _physics.Simulation;
         float r = (float)_physics.BallRadius;
@@ -134,7 +142,7 @@ public sealed class CallPickerNode : Node
     /// <inheritdoc />
     protected override void Draw(FrameBuilder frame)
     {
-        // The camera has drawn: this frame's view is the one the next click is seen in.
+        // The size clicks are seen in (and, without a camera node, the view).
         _viewProjection = RenderMath.ViewProjection(frame.Frame);
         _size = (frame.Frame.Width, frame.Frame.Height);
     }

@@ -378,6 +378,14 @@ public sealed class MatchNode : Node
     /// <summary>Signal: the referee ruled on a shot.</summary>
     public event Action<Ruling>? Ruled;
 
+    /// <summary>
+    /// Signal: the game moved on and the shooter may play (a ruling with nothing to choose, a choice
+    /// made, a new game). Raised at once, within the change, so that what reacts to it (the view
+    /// turning to the ball on) has done so before the next input, however the frames fall: an
+    /// input script plays the same game at any frame rate.
+    /// </summary>
+    public event Action? ShooterToPlay;
+
     /// <inheritdoc />
     protected override void Ready()
     {
@@ -508,7 +516,15 @@ public sealed class MatchNode : Node
         State = _match.State;
         LoadLayout(_match);
         GiveHand(_match.BallInHand);
-        Say(State.Shot == 0 ? $"Rerack: {State.ShooterName} breaks." : $"{option.ToName()}: {State.ShooterName} to shoot.");
+        Say(State.Shot == 0 ? $"Rerack: {State.ShooterName} breaks." : option switch
+        {
+            // Snooker's choices in words: who plays, and from what.
+            RefereeOption.Play => $"{State.ShooterName} plays the balls as they lie{(State.FreeBall ? ", with a free ball" : "")}.",
+            RefereeOption.PutBack => $"Put back: {State.ShooterName} plays again.",
+            RefereeOption.Replace => $"The balls are replaced: {State.ShooterName} plays again.",
+            _ => $"{option.ToName()}: {State.ShooterName} to shoot.",
+        });
+        ShooterToPlay?.Invoke();
     }
 
     /// <summary>A new game after the last one ended: the balls reracked, the other player breaks.</summary>
@@ -549,6 +565,7 @@ public sealed class MatchNode : Node
         LoadLayout(_match);
         GiveHand(_match.BallInHand);
         Say($"{what}: {State.ShooterName} breaks.");
+        ShooterToPlay?.Invoke();
     }
 
     // The physics node asks for the shot's simulation: the match makes it from the balls at rest,
@@ -577,8 +594,7 @@ public sealed class MatchNode : Node
         var played = match.Judge(_physics.Simulation);
         var ruling = played.Ruling;
         _rulings.Add(ruling);
-        // A game that ended shows how it stood at the end (groups, fouls, score), not the next game's blank state.
-        State = ruling.GameOver ? played.Before with { Shot = played.Before.Shot + 1, Call = null, Placement = null, PushOut = false, BallInHand = BallInHand.None } : match.State;
+        State = ruling.GameOver ? EndState(played.Before, ruling) : match.State;
         LoadLayout(match);
         Say(ruling.Message);
         if (ruling.GameOver)
@@ -603,6 +619,24 @@ public sealed class MatchNode : Node
             GiveHand(match.BallInHand);
         }
         Ruled?.Invoke(ruling);
+        if (CanShoot)
+        {
+            ShooterToPlay?.Invoke();
+        }
+    }
+
+    // A game that ended shows how it stood at the end (groups, fouls, score), not the next game's
+    // blank state; in snooker with the last shot's points in the score (the black that won the
+    // frame, or a foul's penalty), as the referee's last message gives it.
+    private static GameState EndState(GameState before, Ruling ruling)
+    {
+        var end = before with { Shot = before.Shot + 1, Call = null, Placement = null, PushOut = false, BallInHand = BallInHand.None, FreeBall = false };
+        if (before.Rules != GameRules.Snooker)
+        {
+            return end;
+        }
+        int striker = before.Shooter, other = 1 - before.Shooter;
+        return end with { Score = before.Score.With(striker, before.Score[striker] + ruling.Points).With(other, before.Score[other] + ruling.Penalty) };
     }
 
     private void GiveHand(BallInHand hand)

@@ -63,6 +63,9 @@ public sealed class ScriptedInput : IGameWindow, IDisposable
     /// <summary>True once the script's duration has passed: the game should close.</summary>
     public bool Finished { get; private set; }
 
+    /// <summary>True once every event of the script has been raised (or, a wait, waited out) so far: a script that grows as it plays (a maker's) has caught up.</summary>
+    public bool CaughtUp => _next >= _script.Events.Count;
+
     /// <summary>Clock time of the script's zero (the first frame), or null before it.</summary>
     public double? Start => _start;
 

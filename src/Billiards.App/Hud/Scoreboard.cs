@@ -36,12 +36,15 @@ public sealed record CueGauges(System.Numerics.Vector2 Spin, float ElevationDegr
 /// <param name="BestRun">The most balls pocketed in one visit to the table.</param>
 public readonly record struct PlayerStats(int Shots, int Pots, int Fouls, int BestRun)
 {
+    /// <summary>The most points scored in one visit (snooker's highest break).</summary>
+    public int HighestBreak { get; init; }
+
     /// <summary>Each player's numbers from a game's shots.</summary>
     public static PerPlayer<PlayerStats> Of(IReadOnlyList<MatchShot> shots)
     {
         ArgumentNullException.ThrowIfNull(shots);
         var stats = new PlayerStats[2];
-        int run = 0;
+        int run = 0, points = 0;
         int? visitor = null;
         foreach (var shot in shots)
         {
@@ -49,12 +52,13 @@ public readonly record struct PlayerStats(int Shots, int Pots, int Fouls, int Be
             if (visitor != p)
             {
                 visitor = p;
-                run = 0;
+                (run, points) = (0, 0);
             }
             int pots = shot.Ruling.Legal ? shot.Ruling.Pocketed.Count : 0;
             run += pots;
+            points += shot.Ruling.Legal ? shot.Ruling.Points : 0;
             var s = stats[p];
-            stats[p] = new PlayerStats(s.Shots + 1, s.Pots + pots, s.Fouls + (shot.Ruling.Legal ? 0 : 1), Math.Max(s.BestRun, run));
+            stats[p] = new PlayerStats(s.Shots + 1, s.Pots + pots, s.Fouls + (shot.Ruling.Legal ? 0 : 1), Math.Max(s.BestRun, run)) { HighestBreak = Math.Max(s.HighestBreak, points) };
             if (!shot.Ruling.Continue)
             {
                 visitor = null;
@@ -71,14 +75,19 @@ public readonly record struct PlayerStats(int Shots, int Pots, int Fouls, int Be
 /// <param name="Games">The games each has won in the match.</param>
 public sealed record ResultPanel(string Title, PerPlayer<string> Names, PerPlayer<PlayerStats> Stats, PerPlayer<int> Games)
 {
+    /// <summary>True for snooker: the panel speaks of breaks (points in a visit) and frames.</summary>
+    public bool Snooker { get; init; }
+
     /// <summary>The panel's rows: a label and each player's figure.</summary>
     public IReadOnlyList<(string Label, string First, string Second)> Rows =>
     [
         ("Shots", Text(Stats.First.Shots), Text(Stats.Second.Shots)),
         ("Pots", Text(Stats.First.Pots), Text(Stats.Second.Pots)),
         ("Fouls", Text(Stats.First.Fouls), Text(Stats.Second.Fouls)),
-        ("Best run", Text(Stats.First.BestRun), Text(Stats.Second.BestRun)),
-        ("Games won", Text(Games.First), Text(Games.Second)),
+        Snooker
+            ? ("Highest break", Text(Stats.First.HighestBreak), Text(Stats.Second.HighestBreak))
+            : ("Best run", Text(Stats.First.BestRun), Text(Stats.Second.BestRun)),
+        (Snooker ? "Frames won" : "Games won", Text(Games.First), Text(Games.Second)),
     ];
 
     private static string Text(int n) => n.ToString(CultureInfo.InvariantCulture);
@@ -109,15 +118,23 @@ public static class ScoreboardBuilder
         for (int p = 0; p < 2; p++)
         {
             var target = match.Ruleset.Target(state, p, onTable);
+            if (snooker && p == state.Shooter && match.CurrentNomination is { } nominated)
+            {
+                // The colour or the free ball nominated now, before the strike makes it the state's call.
+                string ballName = BallSet.NameOfAny(nominated.Ball);
+                target = state.FreeBall
+                    ? target with { Text = string.Create(CultureInfo.InvariantCulture, $"{state.Score[p]}, free ball: {ballName}") }
+                    : match.Ruleset.Target(state with { Call = nominated }, p, onTable);
+            }
             var detail = new List<string>();
             if (snooker)
             {
                 // Snooker: the target's words carry the score and the ball on; the break and the snookers needed beside them.
-                if (p == state.Shooter)
+                if (p == state.Shooter && !match.IsOver)
                 {
                     detail.Add(string.Create(CultureInfo.InvariantCulture, $"break {SnookerLines.CurrentBreak(shots, p)}"));
                 }
-                if (SnookerLines.NeedsSnookers(state, p, onTable))
+                if (!match.IsOver && SnookerLines.NeedsSnookers(state, p, onTable))
                 {
                     detail.Add("needs snookers");
                 }
@@ -132,10 +149,15 @@ public static class ScoreboardBuilder
                 detail.Add(string.Create(CultureInfo.InvariantCulture, $"fouls in a row {fouls[p]}"));
             }
             string name = match.Players[p].IsHuman || state.Players[p].StartsWith("Computer", StringComparison.Ordinal) ? state.Players[p] : $"{state.Players[p]} (computer)";
+            if (snooker && match.IsOver)
+            {
+                // The frame is over: the final score, no ball on.
+                target = new HudTarget(string.Create(CultureInfo.InvariantCulture, $"{state.Score[p]}"), []);
+            }
             cards[p] = new PlayerCard(name, p == state.Shooter && !match.IsOver, target.Text, [.. target.Balls.Select(b => b.Value)], string.Join("  ", detail));
         }
         string remaining = snooker ? string.Create(CultureInfo.InvariantCulture, $"  remaining {SnookerLines.Remaining(state, onTable)}") : "";
-        string title = $"{GameName(state.Rules)}  shot {state.Shot}{remaining}  games {match.GamesWon.First}-{match.GamesWon.Second}{(paused ? "  PAUSED (P)" : "")}";
+        string title = $"{GameName(state.Rules)}  shot {state.Shot}{remaining}  {(snooker ? "frames" : "games")} {match.GamesWon.First}-{match.GamesWon.Second}{(paused ? "  PAUSED (P)" : "")}";
         string corner = sound is null ? "H help" : $"H help  {SoundWord(sound)}";
         var rulings = shots.Select(s => s.Ruling.Message).Reverse().Where(m => m != match.Message).Take(LogLength).ToList();
         return new Scoreboard(title, corner, cards, Status(match, physics, computerStatus), match.Message, rulings);
@@ -150,8 +172,13 @@ public static class ScoreboardBuilder
             return null;
         }
         var names = match.State.Players;
-        string title = match.Winner is int w ? $"{names[w]} wins the {GameName(match.Rules)} game" : $"The {GameName(match.Rules)} game ends without a winner";
-        return new ResultPanel(title, names, PlayerStats.Of(game.Shots), match.GamesWon);
+        var score = match.State.Score;
+        string title = match.Winner is int w
+            ? match.Rules == GameRules.Snooker
+                ? string.Create(CultureInfo.InvariantCulture, $"{names[w]} wins the frame {score[w]}-{score[1 - w]}")
+                : $"{names[w]} wins the {GameName(match.Rules)} game"
+            : $"The {GameName(match.Rules)} game ends without a winner";
+        return new ResultPanel(title, names, PlayerStats.Of(game.Shots), match.GamesWon) { Snooker = match.Rules == GameRules.Snooker };
     }
 
     /// <summary>The game's short name.</summary>

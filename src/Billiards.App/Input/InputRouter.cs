@@ -42,11 +42,16 @@ public sealed class InputRouter : IDisposable
     /// <summary>True while a Shift key is held.</summary>
     public bool IsShiftHeld => _shift;
 
-    /// <summary>Sends the repeats of held keys that fell due by now (called once a frame, before the frame's work).</summary>
+    /// <summary>
+    /// Sends the repeats of held keys that fell due by now: once a frame, before the frame's work,
+    /// and before every event, so that they keep their time order with it (a key held in a script
+    /// repeats as often whether its release comes in the same frame or frames later).
+    /// </summary>
     public void Repeat() => _repeat.Due(_clock.Now, _pressAgain);
 
     private void OnKeyDown(Key key)
     {
+        Repeat();
         double now = _clock.Now;
         _shift |= key == Key.Shift;
         _repeat.Down(key, now);
@@ -55,6 +60,7 @@ public sealed class InputRouter : IDisposable
 
     private void OnKeyUp(Key key)
     {
+        Repeat();
         _shift &= key != Key.Shift;
         _repeat.Up(key);
         _sink(new KeyInput(_clock.Now, key, false) { Shift = _shift });
@@ -62,17 +68,30 @@ public sealed class InputRouter : IDisposable
 
     private void OnMouseMove(Vector2 position)
     {
+        Repeat();
         // The first report has nothing to compare with: a zero delta rather than a jump from (0, 0).
         var delta = _lastPosition is { } last ? position - last : Vector2.Zero;
         _lastPosition = position;
         _sink(new MouseMoveInput(_clock.Now, position, delta) { Shift = _shift });
     }
 
-    private void OnMouseDown(MouseButton button) => _sink(new MouseButtonInput(_clock.Now, button, true, CursorPosition) { Shift = _shift });
+    private void OnMouseDown(MouseButton button)
+    {
+        Repeat();
+        _sink(new MouseButtonInput(_clock.Now, button, true, CursorPosition) { Shift = _shift });
+    }
 
-    private void OnMouseUp(MouseButton button) => _sink(new MouseButtonInput(_clock.Now, button, false, CursorPosition) { Shift = _shift });
+    private void OnMouseUp(MouseButton button)
+    {
+        Repeat();
+        _sink(new MouseButtonInput(_clock.Now, button, false, CursorPosition) { Shift = _shift });
+    }
 
-    private void OnScroll(float amount) => _sink(new ScrollInput(_clock.Now, amount) { Shift = _shift });
+    private void OnScroll(float amount)
+    {
+        Repeat();
+        _sink(new ScrollInput(_clock.Now, amount) { Shift = _shift });
+    }
 
     /// <summary>Unsubscribes from the window.</summary>
     public void Dispose()

@@ -261,12 +261,18 @@ internal sealed class HudRenderer : IDisposable
         float centreX = card + (2 * pad), centreW = width - (2 * centreX);
         int columns = Math.Max(12, (int)((centreW - (2 * pad)) / advance));
         // At most five lines, so that the band stays clear of the far rail from behind the cue: the
-        // game's line, who acts (one line), the message (wrapped, three lines at most), then the log to fill.
+        // game's line, who acts (wrapped, two lines at most: a free ball's nomination and the keys),
+        // the message (wrapped, three lines at most), then the log to fill.
         const int MaxRows = 5;
         var rows = new List<(string Text, Vector4 Colour)>();
         string title = board.Title;
         rows.Add((title, text));
-        rows.Add((Cut(board.Status, columns), Gold));
+        var status = WrapStatus(board.Status, columns);
+        rows.Add((status[0], Gold));
+        if (status.Count > 1)
+        {
+            rows.Add((Cut("  " + string.Join(" ", status.Skip(1).Select(l => l.Trim())), columns), Gold));
+        }
         if (board.Message is { } message)
         {
             var wrapped = Wrap([message], columns);
@@ -321,6 +327,14 @@ internal sealed class HudRenderer : IDisposable
             Text(Cut(info, cardColumns), tx, pad + line + (4 * u) + icon, scale, Dim);
         }
         return bandH;
+    }
+
+    // The status line's parts are joined by ";  ": a long one breaks between parts where it can
+    // ("FREE BALL: nominate pink (B, click a ball);" / "Space shoots, G hint"), else at a space.
+    private static List<string> WrapStatus(string status, int columns)
+    {
+        int cut = status.Length > columns ? status.LastIndexOf(";  ", columns - 1, StringComparison.Ordinal) : -1;
+        return cut > 0 ? [status[..(cut + 1)], .. Wrap([status[(cut + 3)..]], columns)] : Wrap([status], columns);
     }
 
     private static string Cut(string text, int columns) => text.Length <= columns ? text : string.Concat(text.AsSpan(0, Math.Max(0, columns - 3)), "...");

@@ -27,25 +27,7 @@ public class ScriptedGameTests
     internal static JsonDocument PlayHeadless(double frameSeconds) => JsonDocument.Parse(PlayHeadlessText(frameSeconds));
 
     /// <summary>Plays the script headless; returns the game record as written.</summary>
-    internal static string PlayHeadlessText(double frameSeconds)
-    {
-        string record = Path.Combine(Path.GetTempPath(), $"record-{Guid.NewGuid():N}.json");
-        try
-        {
-            var clock = new ManualClock();
-            var window = new FakeWindow { FramebufferSize = (1280, 720) };
-            var loop = new UntilClosedLoop(clock, window, frameSeconds);
-            int code = PlayCommand.Play(null, _ => new GamePlatform(window, loop, new NullRenderer()), SimulationFactory.Create, clock,
-                new PlayCommand.PlayOptions(Script, null) { Rules = "eight-ball", Players = string.Join(',', Players), Record = record });
-            Assert.Equal(0, code);
-            Assert.True(window.Closed, "the script never ended");
-            return File.ReadAllText(record);
-        }
-        finally
-        {
-            File.Delete(record);
-        }
-    }
+    internal static string PlayHeadlessText(double frameSeconds) => ScriptedGames.PlayHeadless(Script, "eight-ball", string.Join(',', Players), frameSeconds);
 
     [Fact]
     public void TheScriptedGameIsTheSameGameAt60FpsAndAt3Fps()
@@ -63,11 +45,8 @@ public class ScriptedGameTests
     public void TheScriptedGameSRecordReplaysShotForShot()
     {
         string text = PlayHeadlessText(1.0 / 60);
-        var record = GameRecordFile.Parse(text, "w.json");
-        var report = GameRecordFile.Verify(record, out _);
-        Assert.Null(report.FirstDifference);
-        Assert.Equal(record.Shots.Count, report.Same);
-        Assert.True(report.Shots >= 4);
+        ScriptedGames.AssertReplays(text);
+        Assert.True(GameRecordFile.Parse(text, "w.json").Shots.Count >= 4);
     }
 
     [Fact]
@@ -79,7 +58,7 @@ public class ScriptedGameTests
         var window = new FakeWindow { FramebufferSize = (1280, 720) };
         var rulings = new List<(int Shot, string Ruling)>();
         const int first = 2;
-        int code = ReplayCommand.Play(record, "w.json", first, 16, _ => new GamePlatform(window, new UntilClosedLoop(clock, window, 1.0 / 30), new NullRenderer()), clock,
+        int code = ReplayCommand.Play(record, "w.json", first, 16, _ => new GamePlatform(window, new UntilClosedLoop(clock, window, 1.0 / 30), new NullFrameRenderer()), clock,
             (k, ruling) => rulings.Add((k, System.Text.Encoding.UTF8.GetString(GameBlockWriter.RulingToUtf8(ruling)))));
         Assert.Equal(0, code);
         Assert.True(window.Closed, "the playback never ended");
@@ -138,12 +117,6 @@ public class ScriptedGameTests
         Assert.Contains(Players[winner], last.GetProperty("message").GetString(), StringComparison.Ordinal);
     }
 
-    private sealed class NullRenderer : IFrameRenderer
-    {
-        public void Draw(Billiards.App.Rendering.RenderFrame frame)
-        {
-        }
-    }
 }
 
 /// <summary>The shipped game in a real GLFW window (under Xvfb when there is no display).</summary>
@@ -153,27 +126,16 @@ public class ScriptedGameWindowTests
     [Fact]
     public void TheScriptedGamePlaysInAWindowToAWinnerTheRefereeDeclares()
     {
-        TestDisplay.Ensure();
-        string record = Path.Combine(Path.GetTempPath(), $"record-{Guid.NewGuid():N}.json");
         string stats = Path.Combine(Path.GetTempPath(), $"stats-{Guid.NewGuid():N}.json");
         try
         {
-            int code = PlayCommand.Play(null, PlatformWiring.Open, options: new PlayCommand.PlayOptions(ScriptedGameTests.Script, stats)
-            {
-                Rules = "eight-ball",
-                Players = "Anna,Ben",
-                Record = record,
-            });
-            Assert.Equal(0, code);
-            string text = File.ReadAllText(record);
+            string text = ScriptedGames.PlayInWindow(ScriptedGameTests.Script, "eight-ball", "Anna,Ben", stats: stats);
             using var doc = JsonDocument.Parse(text);
             ScriptedGameTests.AssertGame(doc.RootElement);
             // The window played the same game as the headless run, and its record replays.
             using var headless = ScriptedGameTests.PlayHeadless(1.0 / 30);
             Assert.Equal(headless.RootElement.GetProperty("shots").GetRawText(), doc.RootElement.GetProperty("shots").GetRawText());
-            var report = GameRecordFile.Verify(GameRecordFile.Parse(text, record), out _);
-            Assert.Null(report.FirstDifference);
-            Assert.Equal(report.Shots, report.Same);
+            ScriptedGames.AssertReplays(text);
 
             // Every input reached the screen on the frame after it was due, waits and all.
             using var s = JsonDocument.Parse(File.ReadAllText(stats));
@@ -183,7 +145,6 @@ public class ScriptedGameWindowTests
         }
         finally
         {
-            File.Delete(record);
             File.Delete(stats);
         }
     }
@@ -203,59 +164,22 @@ public class GameAgainstTheComputerWindowTests
     [Fact]
     public void AWholeGameAgainstTheComputerPlaysInAWindowAndEndsWithTheResultPanel()
     {
-        TestDisplay.Ensure();
-        string record = Path.Combine(Path.GetTempPath(), $"record-{Guid.NewGuid():N}.json");
         HudInfo? last = null;
-        try
-        {
-            int code = PlayCommand.Play(null, title =>
-            {
-                var platform = PlatformWiring.Open(title);
-                return platform with { Renderer = new Watching(platform.Renderer, frame => last = frame.Hud) };
-            }, options: new PlayCommand.PlayOptions(Script, null) { Rules = "eight-ball", Players = "Anna,cpu:3", Record = record });
-            Assert.Equal(0, code);
-            using var doc = JsonDocument.Parse(File.ReadAllText(record));
-            var shots = doc.RootElement.GetProperty("shots").EnumerateArray().ToList();
-            var rulings = shots.Select(s => s.GetProperty("ruling")).ToList();
-            Assert.True(rulings[^1].GetProperty("game_over").GetBoolean(), "the script ended before the game");
-            Assert.Contains(shots, s => s.GetProperty("game").GetProperty("shooter").GetInt32() == 1); // the computer played
-            var report = GameRecordFile.Verify(GameRecordFile.Parse(File.ReadAllText(record), record), out _);
-            Assert.Null(report.FirstDifference);
+        string text = ScriptedGames.PlayInWindow(Script, "eight-ball", "Anna,cpu:3", frame => last = frame.Hud);
+        using var doc = JsonDocument.Parse(text);
+        var shots = doc.RootElement.GetProperty("shots").EnumerateArray().ToList();
+        var rulings = shots.Select(s => s.GetProperty("ruling")).ToList();
+        Assert.True(rulings[^1].GetProperty("game_over").GetBoolean(), "the script ended before the game");
+        Assert.Contains(shots, s => s.GetProperty("game").GetProperty("shooter").GetInt32() == 1); // the computer played
+        ScriptedGames.AssertReplays(text);
 
-            // The last frame on the screen: the result panel, its shots those of the record, and its buttons.
-            Assert.NotNull(last);
-            var panel = Assert.IsType<ResultPanel>(last!.Result);
-            Assert.Equal(shots.Count, panel.Stats.First.Shots + panel.Stats.Second.Shots);
-            int winner = rulings[^1].GetProperty("winner").GetInt32();
-            Assert.Contains(winner == 0 ? "Anna" : "Computer", panel.Title, StringComparison.Ordinal);
-            Assert.Contains(last.Buttons!, b => b.Label.StartsWith("Rematch", StringComparison.Ordinal));
-            Assert.Contains(last.Buttons!, b => b.Label.StartsWith("Menu", StringComparison.Ordinal));
-        }
-        finally
-        {
-            File.Delete(record);
-        }
-    }
-
-    private sealed class Watching(IFrameRenderer inner, Action<RenderFrame> seen) : IFrameRenderer
-    {
-        public void Draw(RenderFrame frame)
-        {
-            seen(frame);
-            inner.Draw(frame);
-        }
-    }
-}
-
-/// <summary>A frame loop that runs frames of a fixed length on a manual clock until the window closes.</summary>
-internal sealed class UntilClosedLoop(ManualClock clock, FakeWindow window, double frameSeconds, int maxFrames = 1_000_000) : IFrameLoop
-{
-    public void Run(Action frame)
-    {
-        for (int i = 0; i < maxFrames && !window.Closed; i++)
-        {
-            clock.Advance(frameSeconds);
-            frame();
-        }
+        // The last frame on the screen: the result panel, its shots those of the record, and its buttons.
+        Assert.NotNull(last);
+        var panel = Assert.IsType<ResultPanel>(last!.Result);
+        Assert.Equal(shots.Count, panel.Stats.First.Shots + panel.Stats.Second.Shots);
+        int winner = rulings[^1].GetProperty("winner").GetInt32();
+        Assert.Contains(winner == 0 ? "Anna" : "Computer", panel.Title, StringComparison.Ordinal);
+        Assert.Contains(last.Buttons!, b => b.Label.StartsWith("Rematch", StringComparison.Ordinal));
+        Assert.Contains(last.Buttons!, b => b.Label.StartsWith("Menu", StringComparison.Ordinal));
     }
 }

@@ -8,13 +8,6 @@ namespace Billiards.App.Tests.Game;
 
 public class TargetViewTests
 {
-    // The 8 lies nearest the cue ball, but on an open table it is not a legal target: the 2 is the nearest that is.
-    private const string Json = """
-        { "format": "billiards-scene/1", "table": { "preset": "pool-9ft" }, "physics": { "dt": 0.00390625 },
-          "balls": [ { "id": "cue", "position": [-0.635, 0.0] }, { "id": "8", "position": [-0.5, 0.1] },
-                     { "id": "2", "position": [-0.2, -0.3] }, { "id": "1", "position": [0.635, 0.3] } ] }
-        """;
-
     private static double AimTo(TestGame game, BallId id)
     {
         var sim = game.World.Physics.Simulation;
@@ -26,8 +19,7 @@ public class TargetViewTests
     public void TheViewTurnsToTheNearestLegalBallAtTheStartAndAfterEveryShot()
     {
         // After the break (shot 1), so that a miss is a foul and not a bad break with options.
-        var scene = SceneLoader.Parse(Json, "t.json") with { Game = new GameState(GameRules.EightBall) { Shot = 1, Players = new PerPlayer<string>("Anna", "Ben") } };
-        using var game = new TestGame(scene, new MatchSetup(GameRules.EightBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+        using var game = FourBallGames.EightBall();
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
         var view = game.World.Tree.Root.GetInTree<TargetViewNode>();
         game.Frame();
@@ -54,17 +46,11 @@ public class TargetViewTests
     [Fact]
     public void OnARematchTheViewTurnsToTheNewRacksNearestLegalBall()
     {
-        var scene = SceneLoader.Parse(Json, "t.json") with { Game = new GameState(GameRules.EightBall) { Shot = 1, Players = new PerPlayer<string>("Anna", "Ben") } };
-        using var game = new TestGame(scene, new MatchSetup(GameRules.EightBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+        using var game = FourBallGames.EightBall();
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
         var view = game.World.Tree.Root.GetInTree<TargetViewNode>();
-        game.Frame();
         // The 8 goes down early: Anna loses, the game is over.
-        game.Window.Press(Key.Space);
-        game.Frame();
-        game.Simulation.Pocket(new BallId(8));
-        game.RunUntilRest();
-        game.Frame();
+        FourBallGames.PotTheEightEarly(game);
         Assert.True(match.IsOver);
         match.AimAt(150);
         match.Rematch();
@@ -76,5 +62,29 @@ public class TargetViewTests
         Assert.Equal(nearest.Id, view.LastTarget);
         Assert.Equal(AimTo(game, nearest.Id), match.AimDegrees, 9);
         Assert.Equal(15, game.World.Physics.Simulation.Ids.Count(id => !PoolBalls.IsCue(id)));
+    }
+}
+
+/// <summary>Snooker's view: the colours on their spots hide reds, so the view aims at a contact the cue ball makes first.</summary>
+public class SnookerTargetViewTests
+{
+    [Fact]
+    public void AtTheBreakOffTheViewAimsThinOnARedTheCueBallMeetsFirstNotThroughThePink()
+    {
+        var scene = SceneLoader.Load(AssetFolder.Scene("snooker.json"));
+        using var game = new TestGame(scene, new MatchSetup(GameRules.Snooker, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]), create: SimulationFactory.Create);
+        var match = game.World.Tree.Root.GetInTree<MatchNode>();
+        var physics = game.World.Physics;
+        game.Frame();
+        // The nearest red is the pack's apex, straight behind the pink: aimed at its centre the cue ball meets the pink.
+        var apex = TargetViewNode.NearestTarget(match, physics)!.Value;
+        var toApex = apex.Position - physics.CueBallPosition;
+        var sim = physics.Simulation;
+        Assert.Equal("pink", sim.BallSet.NameOf(AimPreview.Compute(sim.Balls, sim.Ids, sim.IndexOf(physics.CueBall), toApex, physics.BallRadius, [], physics.Table.Pockets).Ball!.Value));
+        // The view aims where the first ball met is a red.
+        var first = AimPreview.Compute(sim.Balls, sim.Ids, sim.IndexOf(physics.CueBall), game.World.Tree.Root.GetInTree<CueNode>().AimDirection, physics.BallRadius, [], physics.Table.Pockets).Ball;
+        Assert.NotNull(first);
+        Assert.StartsWith("red-", sim.BallSet.NameOf(first!.Value), StringComparison.Ordinal);
+        Assert.Equal(first, game.World.Tree.Root.GetInTree<TargetViewNode>().LastTarget);
     }
 }

@@ -10,35 +10,12 @@ namespace Billiards.App.Tests.Hud;
 
 public class ScoreboardTests
 {
-    private const string Json = """
-        { "format": "billiards-scene/1", "table": { "preset": "pool-9ft" }, "physics": { "dt": 0.00390625 },
-          "balls": [ { "id": "cue", "position": [-0.635, 0.0] }, { "id": "8", "position": [-0.5, 0.1] },
-                     { "id": "2", "position": [-0.2, -0.3] }, { "id": "11", "position": [0.635, 0.3] } ] }
-        """;
-
-    private static TestGame Start(GameState state)
-    {
-        var scene = SceneLoader.Parse(Json, "t.json") with { Game = state };
-        return new TestGame(scene, new MatchSetup(state.Rules, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
-    }
-
-    // Anna strikes; the fake table pockets the 8 during the shot: an early 8, Anna loses.
-    private static void LoseOnTheEight(TestGame game)
-    {
-        game.Frame();
-        game.Window.Press(Key.Space);
-        game.Frame();
-        game.Simulation.Pocket(new BallId(8));
-        game.RunUntilRest();
-        game.Frame();
-    }
-
     [Fact]
     public void TheResultPanelCountsEachPlayersGameAndRematchClearsTheLastGamesRulings()
     {
-        using var game = Start(new GameState(GameRules.EightBall) { Shot = 1, Players = new PerPlayer<string>("Anna", "Ben") });
+        using var game = FourBallGames.EightBall();
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
-        LoseOnTheEight(game);
+        FourBallGames.PotTheEightEarly(game);
         Assert.True(match.IsOver);
         var hud = game.Frame().Hud!;
         var result = hud.Result!;
@@ -74,7 +51,7 @@ public class ScoreboardTests
         // The session's record keeps the first game; the rematch joins it once it has a shot, a line each.
         Assert.Equal(2, match.Games.Count);
         Assert.Equal([match.Games[0]], match.RecordedGames);
-        LoseOnTheEight(game);
+        FourBallGames.PotTheEightEarly(game);
         Assert.Equal(match.Games, match.RecordedGames);
         string[] lines = System.Text.Encoding.UTF8.GetString(GameRecordFile.ToJsonLines(match.RecordedGames)).Split('\n', StringSplitOptions.RemoveEmptyEntries);
         Assert.Equal(2, lines.Length);
@@ -85,7 +62,7 @@ public class ScoreboardTests
     [Fact]
     public void EightBallShowsNoFoulsInARowAndNineBallShowsThreeAfterTheThird()
     {
-        using (var eight = Start(new GameState(GameRules.EightBall) { Shot = 3, FoulsInRow = new PerPlayer<int>(2, 0), Players = new PerPlayer<string>("Anna", "Ben") }))
+        using (var eight = FourBallGames.Start(new GameState(GameRules.EightBall) { Shot = 3, FoulsInRow = new PerPlayer<int>(2, 0), Players = new PerPlayer<string>("Anna", "Ben") }))
         {
             var board = eight.Frame().Hud!.Board!;
             Assert.DoesNotContain("fouls", board.Players[0].Detail, StringComparison.Ordinal);

@@ -46,6 +46,42 @@ public class KeyRepeatTests
         Assert.Equal(at60, Repeats(Key.W, 2, 0.25));
     }
 
+    // Presses of Left (the first and its repeats) through the router, for a key held from 0 to
+    // 1 s and frames `frame` seconds apart; the release comes at the start of the frame after it.
+    private static int HeldLeftPresses(double frame)
+    {
+        var window = new FakeWindow();
+        var clock = new ManualClock();
+        int presses = 0;
+        using var router = new InputRouter(window, clock, e => presses += e is KeyInput { Pressed: true, Key: Key.Left } ? 1 : 0);
+        window.Hold(Key.Left);
+        while (clock.Now < 1 - 1e-9)
+        {
+            clock.Now = Math.Min(1, clock.Now + frame);
+            if (clock.Now >= 1 - 1e-9)
+            {
+                break;
+            }
+            router.Repeat();
+        }
+        // As a script raises it: at the start of the frame, before the frame's repeats.
+        window.Release(Key.Left);
+        router.Repeat();
+        return presses;
+    }
+
+    [Fact]
+    public void AKeyHeldRepeatsAsOftenWhetherItsReleaseComesInTheFrameOfItsLastRepeatsOrFramesLater()
+    {
+        // The press and every repeat due before 1 s at 60 FPS, and as many when the release comes frames late.
+        int at60 = HeldLeftPresses(1.0 / 60);
+        Assert.Equal(1 + KeyRepeatTimesBefore(1), at60);
+        Assert.Equal(at60, HeldLeftPresses(0.3));
+        Assert.Equal(at60, HeldLeftPresses(1));
+    }
+
+    private static int KeyRepeatTimesBefore(double until) => Repeats(Key.Left, until - 1e-9, 1e-3).Count;
+
     [Fact]
     public void KeysThatDoNotStepAValueNeverRepeatAndAReleasedKeyStops()
     {
