@@ -1,6 +1,6 @@
 using Billiards.Core.Physics;
-using Billiards.Core.Tests.Physics.Stability;
-using static Billiards.Core.Tests.Physics.Stability.StabilityKit;
+using Billiards.Core.Tests.Physics.Standard;
+using static Billiards.Core.Tests.Physics.Standard.StabilityKit;
 
 namespace Billiards.Core.Tests.Physics.Standard.Events;
 

@@ -4,9 +4,9 @@ using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
 using Billiards.Core.Table;
-using static Billiards.Core.Tests.Physics.Stability.StabilityKit;
+using static Billiards.Core.Tests.Physics.Standard.StabilityKit;
 
-namespace Billiards.Core.Tests.Physics.Stability;
+namespace Billiards.Core.Tests.Physics.Standard;
 
 /// <summary>
 /// Balls thrown about: 16 balls on the pocketless 9 ft table (the bed check holds balls inside the

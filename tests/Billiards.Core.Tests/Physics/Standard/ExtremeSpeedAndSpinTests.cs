@@ -2,9 +2,9 @@ using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
-using static Billiards.Core.Tests.Physics.Stability.StabilityKit;
+using static Billiards.Core.Tests.Physics.Standard.StabilityKit;
 
-namespace Billiards.Core.Tests.Physics.Stability;
+namespace Billiards.Core.Tests.Physics.Standard;
 
 /// <summary>Speeds and spins at the extremes: a ball nudged at 1e-9 m/s, and 500 rad/s of spin in place.</summary>
 public class ExtremeSpeedAndSpinTests

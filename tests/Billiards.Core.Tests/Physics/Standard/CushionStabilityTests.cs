@@ -1,7 +1,7 @@
 using Billiards.Core.Physics;
-using static Billiards.Core.Tests.Physics.Stability.StabilityKit;
+using static Billiards.Core.Tests.Physics.Standard.StabilityKit;
 
-namespace Billiards.Core.Tests.Physics.Stability;
+namespace Billiards.Core.Tests.Physics.Standard;
 
 /// <summary>
 /// Balls frozen to a cushion (centre exactly R from the nose) and a ball into a corner, on the

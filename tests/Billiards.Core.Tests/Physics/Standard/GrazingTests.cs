@@ -1,7 +1,7 @@
 using Billiards.Core.Physics;
-using static Billiards.Core.Tests.Physics.Stability.StabilityKit;
+using static Billiards.Core.Tests.Physics.Standard.StabilityKit;
 
-namespace Billiards.Core.Tests.Physics.Stability;
+namespace Billiards.Core.Tests.Physics.Standard;
 
 /// <summary>
 /// Grazing hits at a cut angle of 90 deg +- 0.001 deg. The cue ball starts at (-0.3, 0) moving

@@ -1,7 +1,7 @@
 using Billiards.Core.Cue;
-using static Billiards.Core.Tests.Physics.Stability.StabilityKit;
+using static Billiards.Core.Tests.Physics.Standard.StabilityKit;
 
-namespace Billiards.Core.Tests.Physics.Stability;
+namespace Billiards.Core.Tests.Physics.Standard;
 
 /// <summary>
 /// Extreme masse strokes: cue elevated 80-85 deg, large side offset, 5 m/s cue speed, from the

@@ -5,9 +5,9 @@ using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
 using Billiards.Core.Setup;
-using static Billiards.Core.Tests.Physics.Stability.StabilityKit;
+using static Billiards.Core.Tests.Physics.Standard.StabilityKit;
 
-namespace Billiards.Core.Tests.Physics.Stability;
+namespace Billiards.Core.Tests.Physics.Standard;
 
 /// <summary>
 /// The cap on events at one instant (physics-standard-model.md, "Ties and frozen balls"). The

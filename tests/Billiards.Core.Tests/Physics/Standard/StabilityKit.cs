@@ -5,7 +5,7 @@ using Billiards.Core.Physics.Standard;
 using Billiards.Core.Scenes;
 using Billiards.Core.Table;
 
-namespace Billiards.Core.Tests.Physics.Stability;
+namespace Billiards.Core.Tests.Physics.Standard;
 
 /// <summary>
 /// Shared pieces of the stiff and extreme stability suite: scenes built in code, the three step

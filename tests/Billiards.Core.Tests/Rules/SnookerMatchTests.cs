@@ -5,7 +5,7 @@ using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
 using Billiards.Core.Table;
 
-namespace Billiards.Core.Tests.Snooker;
+namespace Billiards.Core.Tests.Rules;
 
 /// <summary>Core's match drives snooker frames with real physics: the break-off, the options after a foul, replace, and records that replay.</summary>
 public class SnookerMatchTests

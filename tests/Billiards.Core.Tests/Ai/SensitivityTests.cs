@@ -5,7 +5,7 @@ using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Table;
 
-namespace Billiards.Core.Tests.Practice;
+namespace Billiards.Core.Tests.Ai;
 
 /// <summary>The planner's variation sampler turned on a person's shot (<see cref="ShotPlanner.Sensitivity"/>).</summary>
 public class SensitivityTests

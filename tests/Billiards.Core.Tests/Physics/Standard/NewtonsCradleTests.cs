@@ -1,7 +1,7 @@
 using Billiards.Core.Physics;
-using static Billiards.Core.Tests.Physics.Stability.StabilityKit;
+using static Billiards.Core.Tests.Physics.Standard.StabilityKit;
 
-namespace Billiards.Core.Tests.Physics.Stability;
+namespace Billiards.Core.Tests.Physics.Standard;
 
 /// <summary>
 /// Newton's cradle on the bed: five balls in a line along x, each exactly 2R from the next

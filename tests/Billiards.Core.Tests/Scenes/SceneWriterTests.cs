@@ -1,6 +1,6 @@
 using Billiards.Core.Scenes;
 
-namespace Billiards.Core.Tests.Practice;
+namespace Billiards.Core.Tests.Scenes;
 
 /// <summary>A scene written by <see cref="SceneWriter"/> reads back to the same scene and plays the same shot bit for bit.</summary>
 public class SceneWriterTests
