@@ -311,7 +311,12 @@ internal sealed class HudRenderer : IDisposable
                 Rect(x, pad, 2 * u, cardH - (2 * pad), Gold);
             }
             float tx = x + pad;
-            Text(Cut(player.Name, cardColumns), tx, pad, scale, player.AtTable ? Gold : text);
+            var (nameRow, besideName, infoRow) = CardRows(player, cardColumns);
+            Text(nameRow, tx, pad, scale, player.AtTable ? Gold : text);
+            if (besideName is not null)
+            {
+                Text(besideName, x + card - pad - (besideName.Length * advance), pad, scale, Dim);
+            }
             int fit = Math.Max(1, (int)((card - (2 * pad)) / icon));
             int shown = player.Balls.Count > fit ? fit - 1 : player.Balls.Count;
             float iy = pad + line + (2 * u) + (icon / 2);
@@ -323,10 +328,27 @@ internal sealed class HudRenderer : IDisposable
             {
                 Text($"+{player.Balls.Count - shown}", tx + (shown * icon), iy - (line / 2), scale, text);
             }
-            string info = player.Detail.Length > 0 ? $"{player.Target}  {player.Detail}" : player.Target;
-            Text(Cut(info, cardColumns), tx, pad + line + (4 * u) + icon, scale, Dim);
+            Text(infoRow, tx, pad + line + (4 * u) + icon, scale, Dim);
         }
         return bandH;
+    }
+
+    /// <summary>
+    /// A player card's text in <paramref name="columns"/>: the name row, what stands right-aligned
+    /// beside the name (or null), and the row under the balls. The target and the detail share
+    /// the lower row where they fit; where they do not ("71, free ball: black" and "break 12"), the
+    /// detail moves up beside the name rather than be cut off.
+    /// </summary>
+    public static (string Name, string? BesideName, string Info) CardRows(Hud.PlayerCard player, int columns)
+    {
+        ArgumentNullException.ThrowIfNull(player);
+        string name = Cut(player.Name, columns);
+        string joined = player.Detail.Length > 0 ? $"{player.Target}  {player.Detail}" : player.Target;
+        if (joined.Length <= columns || player.Detail.Length == 0 || player.Name.Length + 2 + player.Detail.Length > columns)
+        {
+            return (name, null, Cut(joined, columns));
+        }
+        return (name, player.Detail, Cut(player.Target, columns));
     }
 
     // The status line's parts are joined by ";  ": a long one breaks between parts where it can

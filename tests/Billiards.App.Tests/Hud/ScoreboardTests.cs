@@ -90,4 +90,18 @@ public class ScoreboardTests
         Assert.True(match.IsOver);
         Assert.Contains("fouls in a row 3", nine.Frame().Hud!.Board!.Players[0].Detail, StringComparison.Ordinal);
     }
+
+    [Fact]
+    public void ACardWhoseTargetAndDetailDoNotFitShowsTheDetailBesideTheNameUncut()
+    {
+        var card = new PlayerCard("Ben", true, "71, free ball: black", [], "break 12");
+        var (name, beside, info) = Billiards.App.Rendering.HudRenderer.CardRows(card, 24);
+        Assert.Equal(("Ben", "break 12", "71, free ball: black"), (name, beside, info));
+        // Where both fit they share the row under the balls; where the name leaves no room, the row is cut as before.
+        Assert.Equal(("Ben", null, "71, on a red  break 12"), Billiards.App.Rendering.HudRenderer.CardRows(card with { Target = "71, on a red" }, 24));
+        var crowded = Billiards.App.Rendering.HudRenderer.CardRows(card with { Name = "Computer L5 (thinking)" }, 24);
+        Assert.Null(crowded.BesideName);
+        Assert.Equal(24, crowded.Info.Length);
+        Assert.EndsWith("...", crowded.Info, StringComparison.Ordinal);
+    }
 }
