@@ -77,15 +77,11 @@ public sealed class AudioNode(IAudioOutput output) : Node
             _simulation = sim;
             _voicing = new EventVoicing(sim.FeatureName);
         }
-        var position = e.Kind == EventKind.BallBall ? (Position(sim, e.A) + Position(sim, e.B)) * 0.5 : Position(sim, e.A);
-        if (_voicing!.Voice(e, position, _physics.LastShot) is { } cue)
+        if (_voicing!.Voice(e, Where(e, sim.IndexOf(e.A), sim.IndexOf(e.B), sim.Balls), _physics.LastShot) is { } cue)
         {
             Output.Play(cue);
         }
     }
-
-    private static Core.Mathematics.Vec3 Position(Simulation sim, BallId id) =>
-        sim.IndexOf(id) is var i and >= 0 ? sim.Balls[i].Position : Core.Mathematics.Vec3.Zero;
 
     /// <inheritdoc />
     protected override void PhysicsProcess(double dt)
@@ -137,14 +133,11 @@ public sealed class AudioNode(IAudioOutput output) : Node
     private void VoiceShown(ShotReplay replay, ShotSpec? strike, int seeks)
     {
         double now = replay.Time;
-        if (!ReferenceEquals(replay, _shown))
-        {
-            _shownSeeks = seeks;
-        }
-        bool fresh = !ReferenceEquals(replay, _shown) || now < _shownTime;
+        bool another = !ReferenceEquals(replay, _shown);
         // Played on (at any speed): heard; scrubbed or stepped to a time: what it passed over is not.
-        bool heard = seeks == _shownSeeks;
+        bool heard = another || seeks == _shownSeeks;
         _shownSeeks = seeks;
+        bool fresh = another || now < _shownTime;
         var current = replay.Current;
         if (fresh)
         {
@@ -173,24 +166,18 @@ public sealed class AudioNode(IAudioOutput output) : Node
 
     private void Voice(ShotReplay replay, ReadOnlySpan<BallState> balls, in SimEvent e, ShotSpec? strike, bool heard)
     {
-        var at = e.Kind == EventKind.BallBall ? (Position(replay, balls, e.A) + Position(replay, balls, e.B)) * 0.5 : Position(replay, balls, e.A);
-        if (_shownVoicing!.Voice(e, at, strike) is { } cue && heard)
+        if (_shownVoicing!.Voice(e, Where(e, replay.IndexOf(e.A), replay.IndexOf(e.B), balls), strike) is { } cue && heard)
         {
             Output.Play(cue);
         }
     }
 
-    private static Core.Mathematics.Vec3 Position(ShotReplay replay, ReadOnlySpan<BallState> balls, BallId id)
-    {
-        for (int i = 0; i < replay.Ids.Count; i++)
-        {
-            if (replay.Ids[i] == id)
-            {
-                return balls[i].Position;
-            }
-        }
-        return Core.Mathematics.Vec3.Zero;
-    }
+    // Where an event sounds (m): between the two balls of a click, else at its ball; the balls at
+    // indexes a and b (-1: none) of those as they stand now.
+    private static Core.Mathematics.Vec3 Where(in SimEvent e, int a, int b, ReadOnlySpan<BallState> balls) =>
+        e.Kind == EventKind.BallBall ? (At(balls, a) + At(balls, b)) * 0.5 : At(balls, a);
+
+    private static Core.Mathematics.Vec3 At(ReadOnlySpan<BallState> balls, int i) => i >= 0 ? balls[i].Position : Core.Mathematics.Vec3.Zero;
 
     /// <summary>
     /// The sound's line on the HUD, or null: the volume or mute just set (for

@@ -205,6 +205,9 @@ public sealed class ShotReplay
     /// <summary>The balls' ids, index-aligned with <see cref="Current"/>, <see cref="Previous"/> and <see cref="Paths"/>.</summary>
     public IReadOnlyList<BallId> Ids => _sim.Ids;
 
+    /// <summary>Index of a ball in <see cref="Ids"/> (and <see cref="Current"/>), or -1.</summary>
+    public int IndexOf(BallId id) => _sim.IndexOf(id);
+
     /// <summary>The ball radius (m).</summary>
     public double BallRadius => _sim.BallRadius;
 
