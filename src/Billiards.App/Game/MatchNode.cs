@@ -367,7 +367,7 @@ public sealed class MatchNode : Node
         }
     }
 
-    private List<BallId> Nominatable() => [.. ObjectBallsOnTable().Where(b => _ruleset.MayCall(State, b)).OrderBy(b => b.Value)];
+    private List<BallId> Nominatable() => [.. _physics!.ObjectBallsOnTable().Where(b => _ruleset.MayCall(State, b)).OrderBy(b => b.Value)];
 
     /// <summary>True when the shooter may strike now: balls at rest, no option pending, the game on.</summary>
     public bool CanShoot => _physics is { IsRolling: false, HasCueBall: true } && PendingOptions.Count == 0 && !IsOver;
@@ -730,7 +730,7 @@ public sealed class MatchNode : Node
         {
             return null;
         }
-        var legal = _ruleset.LegalTargets(State, ObjectBallsOnTable());
+        var legal = _ruleset.LegalTargets(State, _physics!.ObjectBallsOnTable());
         return aim?.Ball is { } aimed && legal.Contains(aimed) ? aimed : Nearest(_physics.CueBallPosition with { Z = 0 }, legal);
     }
 
@@ -739,20 +739,6 @@ public sealed class MatchNode : Node
     {
         _physics!.CueBall = match.Ruleset.CueBall(match.State);
         _physics.Load(match.Layout());
-    }
-
-    private List<BallId> ObjectBallsOnTable()
-    {
-        var sim = _physics!.Simulation;
-        var onTable = new List<BallId>();
-        for (int i = 0; i < sim.Ids.Count; i++)
-        {
-            if (sim.Ids[i] != _physics.CueBall && !sim.Balls[i].IsPocketed)
-            {
-                onTable.Add(sim.Ids[i]);
-            }
-        }
-        return onTable;
     }
 
     private BallId? Nearest(Vec3 from, IReadOnlyList<BallId>? among = null)
@@ -800,7 +786,7 @@ public sealed class MatchNode : Node
             return;
         }
         // Nominating (snooker), B goes round the balls the shooter may nominate.
-        var onTable = NeedsNomination ? Nominatable() : ObjectBallsOnTable();
+        var onTable = NeedsNomination ? Nominatable() : _physics!.ObjectBallsOnTable();
         if (onTable.Count == 0)
         {
             return;

@@ -50,6 +50,21 @@ public sealed class PhysicsNode : Node
     /// </summary>
     public BallId CueBall { get; set; }
 
+    /// <summary>The object balls on the table now (not pocketed, not the <see cref="CueBall"/>), in the simulation's order.</summary>
+    public List<BallId> ObjectBallsOnTable()
+    {
+        var list = new List<BallId>();
+        var sim = Simulation;
+        for (int i = 0; i < sim.Ids.Count; i++)
+        {
+            if (sim.Ids[i] != CueBall && !sim.Balls[i].IsPocketed)
+            {
+                list.Add(sim.Ids[i]);
+            }
+        }
+        return list;
+    }
+
     /// <summary>Makes a simulation of a scene: what the node was made with (a match makes its shots with it too).</summary>
     public Func<Scene, Simulation> CreateSimulation { get; }
 

@@ -63,7 +63,7 @@ public sealed class TargetViewNode : Node
         ArgumentNullException.ThrowIfNull(match);
         ArgumentNullException.ThrowIfNull(physics);
         var sim = physics.Simulation;
-        var onTable = ObjectBallsOnTable(physics);
+        var onTable = physics.ObjectBallsOnTable();
         var cue = physics.CueBallPosition;
         (BallId Id, Vec3 Position)? best = null;
         double nearest = double.PositiveInfinity;
@@ -77,20 +77,6 @@ public sealed class TargetViewNode : Node
             }
         }
         return best;
-    }
-
-    private static List<BallId> ObjectBallsOnTable(PhysicsNode physics)
-    {
-        var sim = physics.Simulation;
-        var onTable = new List<BallId>();
-        for (int i = 0; i < sim.Balls.Length; i++)
-        {
-            if (!sim.Balls[i].IsPocketed && sim.Ids[i] != physics.CueBall)
-            {
-                onTable.Add(sim.Ids[i]);
-            }
-        }
-        return onTable;
     }
 
     /// <summary>Lateral offsets tried at a ball on, in radii from its centre: full ball first, then thinner to either side.</summary>
@@ -108,7 +94,7 @@ public sealed class TargetViewNode : Node
         ArgumentNullException.ThrowIfNull(match);
         ArgumentNullException.ThrowIfNull(physics);
         var sim = physics.Simulation;
-        var onTable = ObjectBallsOnTable(physics);
+        var onTable = physics.ObjectBallsOnTable();
         var legal = match.Ruleset.LegalTargets(match.State, onTable);
         var cue = physics.CueBallPosition with { Z = 0 };
         int cueIndex = sim.IndexOf(physics.CueBall);

@@ -21,7 +21,7 @@ public static class MatchLines
         ArgumentNullException.ThrowIfNull(match);
         ArgumentNullException.ThrowIfNull(physics);
         var state = match.State;
-        var onTable = OnTable(physics);
+        var onTable = physics.ObjectBallsOnTable();
         lines.Add($"{state.Rules.ToName()}  shot {state.Shot}  games {match.GamesWon.First}-{match.GamesWon.Second}");
         for (int p = 0; p < 2; p++)
         {
@@ -92,19 +92,4 @@ public static class MatchLines
         Core.Setup.PlacementRegion.D => "in the D",
         _ => "anywhere",
     };
-
-    /// <summary>The object balls on the table (not pocketed).</summary>
-    internal static List<BallId> OnTable(PhysicsNode physics)
-    {
-        var list = new List<BallId>();
-        var sim = physics.Simulation;
-        for (int i = 0; i < sim.Ids.Count; i++)
-        {
-            if (sim.Ids[i] != physics.CueBall && !sim.Balls[i].IsPocketed)
-            {
-                list.Add(sim.Ids[i]);
-            }
-        }
-        return list;
-    }
 }

@@ -110,7 +110,7 @@ public static class ScoreboardBuilder
         ArgumentNullException.ThrowIfNull(match);
         ArgumentNullException.ThrowIfNull(physics);
         var state = match.State;
-        var onTable = MatchLines.OnTable(physics);
+        var onTable = physics.ObjectBallsOnTable();
         var shots = match.Game?.Shots ?? [];
         var fouls = FoulsInRow(match, shots);
         var cards = new PlayerCard[2];
