@@ -626,17 +626,22 @@ public sealed class MatchNode : Node
     }
 
     // A game that ended shows how it stood at the end (groups, fouls, score), not the next game's
-    // blank state; in snooker with the last shot's points in the score (the black that won the
-    // frame, or a foul's penalty), as the referee's last message gives it.
+    // blank state; with the last shot's points and penalty in the score (snooker's black that won
+    // the frame, or a foul's penalty: the games that score no points have 0 of each), as the
+    // referee's last message gives it.
     private static GameState EndState(GameState before, Ruling ruling)
     {
-        var end = before with { Shot = before.Shot + 1, Call = null, Placement = null, PushOut = false, BallInHand = BallInHand.None, FreeBall = false };
-        if (before.Rules != GameRules.Snooker)
-        {
-            return end;
-        }
         int striker = before.Shooter, other = 1 - before.Shooter;
-        return end with { Score = before.Score.With(striker, before.Score[striker] + ruling.Points).With(other, before.Score[other] + ruling.Penalty) };
+        return before with
+        {
+            Shot = before.Shot + 1,
+            Call = null,
+            Placement = null,
+            PushOut = false,
+            BallInHand = BallInHand.None,
+            FreeBall = false,
+            Score = before.Score.With(striker, before.Score[striker] + ruling.Points).With(other, before.Score[other] + ruling.Penalty),
+        };
     }
 
     private void GiveHand(BallInHand hand)

@@ -43,7 +43,7 @@ public sealed class TargetViewNode : Node
     private void Turn()
     {
         _pending = false;
-        if (_match is { Rules: Billiards.Core.Rules.GameRules.Snooker } && _physics is not null && ReachableAim(_match, _physics) is { } reachable)
+        if (_match is { Ruleset.HasSnookers: true } && _physics is not null && ReachableAim(_match, _physics) is { } reachable)
         {
             LastTarget = reachable.Id;
             _match.AimAt(reachable.AimDegrees);
@@ -83,7 +83,7 @@ public sealed class TargetViewNode : Node
     private static readonly double[] Offsets = [0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5, 1.9, -1.9];
 
     /// <summary>
-    /// Snooker's view: the aim (deg) at the nearest ball on whose centre, or a thinner contact on
+    /// The view in the games with snookers (<see cref="Billiards.Core.Rules.Ruleset.HasSnookers"/>): the aim (deg) at the nearest ball on whose centre, or a thinner contact on
     /// it, the cue ball meets before any other ball: the colours on their spots hide reds (the pink
     /// in front of the pack at the break-off, where the aim is then thin on an end red), and a
     /// stranger's first Space should be no foul. Null when no ball on can be struck first in a
