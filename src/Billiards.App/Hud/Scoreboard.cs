@@ -33,36 +33,24 @@ public sealed record CueGauges(System.Numerics.Vector2 Spin, float ElevationDegr
 /// <param name="Shots">Shots struck.</param>
 /// <param name="Pots">Object balls pocketed on legal shots.</param>
 /// <param name="Fouls">Fouls committed.</param>
-/// <param name="BestRun">The most balls pocketed in one visit to the table.</param>
-public readonly record struct PlayerStats(int Shots, int Pots, int Fouls, int BestRun)
+/// <param name="HighestBreak">The best of the player's visits to the table by the ruleset's break (<see cref="Ruleset.Visits"/>): pool's balls that stayed down, snooker's points.</param>
+public readonly record struct PlayerStats(int Shots, int Pots, int Fouls, int HighestBreak)
 {
-    /// <summary>The most points scored in one visit (snooker's highest break).</summary>
-    public int HighestBreak { get; init; }
-
-    /// <summary>Each player's numbers from a game's shots.</summary>
-    public static PerPlayer<PlayerStats> Of(IReadOnlyList<MatchShot> shots)
+    /// <summary>Each player's numbers from a game's shots under <paramref name="ruleset"/>.</summary>
+    public static PerPlayer<PlayerStats> Of(Ruleset ruleset, IReadOnlyList<MatchShot> shots)
     {
+        ArgumentNullException.ThrowIfNull(ruleset);
         ArgumentNullException.ThrowIfNull(shots);
         var stats = new PlayerStats[2];
-        int run = 0, points = 0;
-        int? visitor = null;
         foreach (var shot in shots)
         {
             int p = shot.Before.Shooter;
-            if (visitor != p)
-            {
-                visitor = p;
-                (run, points) = (0, 0);
-            }
-            int pots = shot.Ruling.Legal ? shot.Ruling.Pocketed.Count : 0;
-            run += pots;
-            points += shot.Ruling.Legal ? shot.Ruling.Points : 0;
             var s = stats[p];
-            stats[p] = new PlayerStats(s.Shots + 1, s.Pots + pots, s.Fouls + (shot.Ruling.Legal ? 0 : 1), Math.Max(s.BestRun, run)) { HighestBreak = Math.Max(s.HighestBreak, points) };
-            if (!shot.Ruling.Continue)
-            {
-                visitor = null;
-            }
+            stats[p] = s with { Shots = s.Shots + 1, Pots = s.Pots + (shot.Ruling.Legal ? shot.Ruling.Pocketed.Count : 0), Fouls = s.Fouls + (shot.Ruling.Legal ? 0 : 1) };
+        }
+        foreach (var visit in ruleset.Visits(shots.Select(s => (s.Before.Shooter, s.Ruling))))
+        {
+            stats[visit.Player] = stats[visit.Player] with { HighestBreak = Math.Max(stats[visit.Player].HighestBreak, visit.Break) };
         }
         return new PerPlayer<PlayerStats>(stats[0], stats[1]);
     }
@@ -75,8 +63,11 @@ public readonly record struct PlayerStats(int Shots, int Pots, int Fouls, int Be
 /// <param name="Games">The games each has won in the match.</param>
 public sealed record ResultPanel(string Title, PerPlayer<string> Names, PerPlayer<PlayerStats> Stats, PerPlayer<int> Games)
 {
-    /// <summary>True for snooker: the panel speaks of breaks (points in a visit) and frames.</summary>
-    public bool Snooker { get; init; }
+    /// <summary>The ruleset's word for a visit's score (<see cref="Ruleset.BreakWord"/>): "run", snooker's "break".</summary>
+    public string BreakWord { get; init; } = "run";
+
+    /// <summary>The ruleset's word for a game (<see cref="Ruleset.GameWord"/>): "game", snooker's "frame".</summary>
+    public string GameWord { get; init; } = "game";
 
     /// <summary>The panel's rows: a label and each player's figure.</summary>
     public IReadOnlyList<(string Label, string First, string Second)> Rows =>
@@ -84,10 +75,8 @@ public sealed record ResultPanel(string Title, PerPlayer<string> Names, PerPlaye
         ("Shots", Text(Stats.First.Shots), Text(Stats.Second.Shots)),
         ("Pots", Text(Stats.First.Pots), Text(Stats.Second.Pots)),
         ("Fouls", Text(Stats.First.Fouls), Text(Stats.Second.Fouls)),
-        Snooker
-            ? ("Highest break", Text(Stats.First.HighestBreak), Text(Stats.Second.HighestBreak))
-            : ("Best run", Text(Stats.First.BestRun), Text(Stats.Second.BestRun)),
-        (Snooker ? "Frames won" : "Games won", Text(Games.First), Text(Games.Second)),
+        ($"Highest {BreakWord}", Text(Stats.First.HighestBreak), Text(Stats.Second.HighestBreak)),
+        ($"{char.ToUpperInvariant(GameWord[0])}{GameWord[1..]}s won", Text(Games.First), Text(Games.Second)),
     ];
 
     private static string Text(int n) => n.ToString(CultureInfo.InvariantCulture);
@@ -114,50 +103,48 @@ public static class ScoreboardBuilder
         var shots = match.Game?.Shots ?? [];
         var fouls = FoulsInRow(match, shots);
         var cards = new PlayerCard[2];
-        bool snooker = state.Rules == GameRules.Snooker;
+        var ruleset = match.Ruleset;
+        int? remaining = ruleset.PointsRemaining(state, onTable);
         for (int p = 0; p < 2; p++)
         {
-            var target = match.Ruleset.Target(state, p, onTable);
-            if (snooker && p == state.Shooter && match.CurrentNomination is { } nominated)
+            var target = ruleset.Target(state, p, onTable);
+            if (p == state.Shooter && match.CurrentNomination is { } nominated)
             {
                 // The colour or the free ball nominated now, before the strike makes it the state's call.
                 string ballName = BallSet.NameOfAny(nominated.Ball);
                 target = state.FreeBall
                     ? target with { Text = string.Create(CultureInfo.InvariantCulture, $"{state.Score[p]}, free ball: {ballName}") }
-                    : match.Ruleset.Target(state with { Call = nominated }, p, onTable);
+                    : ruleset.Target(state with { Call = nominated }, p, onTable);
             }
             var detail = new List<string>();
-            if (snooker)
-            {
-                // Snooker: the target's words carry the score and the ball on; the break and the snookers needed beside them.
-                if (p == state.Shooter && !match.IsOver)
-                {
-                    detail.Add(string.Create(CultureInfo.InvariantCulture, $"break {SnookerLines.CurrentBreak(shots, p)}"));
-                }
-                if (!match.IsOver && SnookerLines.NeedsSnookers(state, p, onTable))
-                {
-                    detail.Add("needs snookers");
-                }
-            }
-            else if (match.Ruleset.HasScore)
+            // A game with a ball on (snooker) has the score in the target's words; 14.1 beside them.
+            if (ruleset.HasScore && !ruleset.HasBallOn)
             {
                 detail.Add(string.Create(CultureInfo.InvariantCulture, $"score {state.Score[p]} of {state.Target}"));
             }
+            if (ruleset.HasScore && p == state.Shooter && !match.IsOver)
+            {
+                detail.Add(string.Create(CultureInfo.InvariantCulture, $"{ruleset.BreakWord} {CurrentBreak(ruleset, shots, p)}"));
+            }
+            if (!match.IsOver && ruleset.HasSnookers && remaining is int left && state.Score[1 - p] - state.Score[p] > left)
+            {
+                detail.Add("needs snookers");
+            }
             // Only where a third foul in a row costs something (not 8-ball).
-            if (match.Ruleset.HasThreeFouls && fouls[p] > 0)
+            if (ruleset.HasThreeFouls && fouls[p] > 0)
             {
                 detail.Add(string.Create(CultureInfo.InvariantCulture, $"fouls in a row {fouls[p]}"));
             }
             string name = match.Players[p].IsHuman || state.Players[p].StartsWith("Computer", StringComparison.Ordinal) ? state.Players[p] : $"{state.Players[p]} (computer)";
-            if (snooker && match.IsOver)
+            if (ruleset.HasBallOn && match.IsOver)
             {
-                // The frame is over: the final score, no ball on.
+                // The game is over: the final score, no ball on.
                 target = new HudTarget(string.Create(CultureInfo.InvariantCulture, $"{state.Score[p]}"), []);
             }
             cards[p] = new PlayerCard(name, p == state.Shooter && !match.IsOver, target.Text, [.. target.Balls.Select(b => b.Value)], string.Join("  ", detail));
         }
-        string remaining = snooker ? string.Create(CultureInfo.InvariantCulture, $"  remaining {SnookerLines.Remaining(state, onTable)}") : "";
-        string title = $"{GameName(state.Rules)}  shot {state.Shot}{remaining}  {(snooker ? "frames" : "games")} {match.GamesWon.First}-{match.GamesWon.Second}{(paused ? "  PAUSED (P)" : "")}";
+        string points = remaining is int r ? string.Create(CultureInfo.InvariantCulture, $"  remaining {r}") : "";
+        string title = $"{GameName(state.Rules)}  shot {state.Shot}{points}  {ruleset.GameWord}s {match.GamesWon.First}-{match.GamesWon.Second}{(paused ? "  PAUSED (P)" : "")}";
         string corner = sound is null ? "H help" : $"H help  {SoundWord(sound)}";
         var rulings = shots.Select(s => s.Ruling.Message).Reverse().Where(m => m != match.Message).Take(LogLength).ToList();
         return new Scoreboard(title, corner, cards, Status(match, physics, computerStatus), match.Message, rulings);
@@ -173,12 +160,25 @@ public static class ScoreboardBuilder
         }
         var names = match.State.Players;
         var score = match.State.Score;
+        var ruleset = match.Ruleset;
         string title = match.Winner is int w
-            ? match.Rules == GameRules.Snooker
-                ? string.Create(CultureInfo.InvariantCulture, $"{names[w]} wins the frame {score[w]}-{score[1 - w]}")
-                : $"{names[w]} wins the {GameName(match.Rules)} game"
-            : $"The {GameName(match.Rules)} game ends without a winner";
-        return new ResultPanel(title, names, PlayerStats.Of(game.Shots), match.GamesWon) { Snooker = match.Rules == GameRules.Snooker };
+            ? ruleset.HasScore
+                ? string.Create(CultureInfo.InvariantCulture, $"{names[w]} wins {ruleset.TheGame} {score[w]}-{score[1 - w]}")
+                : $"{names[w]} wins {ruleset.TheGame}"
+            : $"{char.ToUpperInvariant(ruleset.TheGame[0])}{ruleset.TheGame[1..]} ends without a winner";
+        return new ResultPanel(title, names, PlayerStats.Of(ruleset, game.Shots), match.GamesWon) { BreakWord = ruleset.BreakWord, GameWord = ruleset.GameWord };
+    }
+
+    /// <summary>
+    /// The break of <paramref name="player"/>'s visit now at the table: 0 before they scored, or when
+    /// the turn is not theirs (<see cref="Ruleset.Visits"/>).
+    /// </summary>
+    public static int CurrentBreak(Ruleset ruleset, IReadOnlyList<MatchShot> shots, int player)
+    {
+        ArgumentNullException.ThrowIfNull(ruleset);
+        ArgumentNullException.ThrowIfNull(shots);
+        var last = ruleset.Visits(shots.Select(s => (s.Before.Shooter, s.Ruling))).LastOrDefault();
+        return last.Open && last.Player == player ? last.Break : 0;
     }
 
     /// <summary>The game's short name.</summary>
@@ -253,34 +253,4 @@ public static class ScoreboardBuilder
     // "Sound: off (no audio device)" and the like, shorter for the corner.
     private static string SoundWord(string sound) => sound.Replace("Sound: off (no audio device)", "no sound", StringComparison.Ordinal)
         .Replace("Sound: ", "sound ", StringComparison.Ordinal).Replace("audio device", "device", StringComparison.Ordinal);
-}
-
-/// <summary>Snooker's figures on the scoreboard: the break of the player at the table, the points remaining and who needs snookers (rules.md "Snooker").</summary>
-public static class SnookerLines
-{
-    /// <summary>
-    /// The points of <paramref name="player"/>'s visit now at the table (their break): the points of
-    /// their shots since the turn last came to them, 0 before they scored.
-    /// </summary>
-    public static int CurrentBreak(IReadOnlyList<MatchShot> shots, int player)
-    {
-        ArgumentNullException.ThrowIfNull(shots);
-        int points = 0;
-        for (int i = shots.Count - 1; i >= 0 && shots[i].Before.Shooter == player && shots[i].Ruling.Continue; i--)
-        {
-            points += shots[i].Ruling.Points;
-        }
-        return points;
-    }
-
-    /// <summary>The points still on the table for the player at the table (<see cref="SnookerRuleset.PointsRemaining"/>).</summary>
-    public static int Remaining(GameState state, IReadOnlyCollection<BallId> objectBalls) =>
-        SnookerRuleset.PointsRemaining(SnookerRuleset.BallOnOf(state), objectBalls);
-
-    /// <summary>True when <paramref name="player"/> is behind by more than the points remaining.</summary>
-    public static bool NeedsSnookers(GameState state, int player, IReadOnlyCollection<BallId> objectBalls)
-    {
-        ArgumentNullException.ThrowIfNull(state);
-        return state.Score[1 - player] - state.Score[player] > Remaining(state, objectBalls);
-    }
 }

@@ -137,36 +137,7 @@ public static class SelfPlayStats
     public static IEnumerable<int> Visits(PlayedGame game, int player)
     {
         ArgumentNullException.ThrowIfNull(game);
-        var ruleset = Ruleset.For(game.Rules);
-        int? visitor = null;
-        int points = 0;
-        foreach (var s in game.Shots)
-        {
-            if (visitor != s.Before.Shooter)
-            {
-                // A shot by the other player without the visit having ended cannot happen; end it anyway.
-                if (visitor == player)
-                {
-                    yield return points;
-                }
-                visitor = s.Before.Shooter;
-                points = 0;
-            }
-            points += ruleset.BreakValue(s.Ruling);
-            if (!s.Ruling.Continue)
-            {
-                if (visitor == player)
-                {
-                    yield return points;
-                }
-                visitor = null;
-            }
-        }
-        // The last visit of a game cut off by the shot limit.
-        if (visitor == player)
-        {
-            yield return points;
-        }
+        return Ruleset.For(game.Rules).Visits(game.Shots.Select(s => (s.Before.Shooter, s.Ruling))).Where(v => v.Player == player).Select(v => v.Break);
     }
 
     /// <summary>The <paramref name="q"/> quantile of sorted values (nearest rank), 0 for none.</summary>

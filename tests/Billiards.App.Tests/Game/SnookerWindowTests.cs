@@ -137,8 +137,9 @@ public class SnookerWindowTests
             new Ruling(true, [], [], go, BallInHand.None, [], [], false, null, "", state) { Points = points }, []);
         // Ben's visit ended; Anna then potted a red (1) and the black (7) and is still at the table.
         var shots = new[] { Shot(1, 1, true), Shot(1, 0, false), Shot(0, 1, true), Shot(0, 7, true) };
-        Assert.Equal(8, SnookerLines.CurrentBreak(shots, 0));
-        Assert.Equal(0, SnookerLines.CurrentBreak(shots, 1));
-        Assert.Equal(0, SnookerLines.CurrentBreak([.. shots, Shot(0, 0, false)], 0));
+        var snooker = Ruleset.For(GameRules.Snooker);
+        Assert.Equal(8, ScoreboardBuilder.CurrentBreak(snooker, shots, 0));
+        Assert.Equal(0, ScoreboardBuilder.CurrentBreak(snooker, shots, 1));
+        Assert.Equal(0, ScoreboardBuilder.CurrentBreak(snooker, [.. shots, Shot(0, 0, false)], 0));
     }
 }

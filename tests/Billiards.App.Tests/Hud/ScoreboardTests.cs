@@ -104,4 +104,29 @@ public class ScoreboardTests
         Assert.Equal(24, crowded.Info.Length);
         Assert.EndsWith("...", crowded.Info, StringComparison.Ordinal);
     }
+
+    [Fact]
+    public void TheResultPanelsHighestRunIsTheBestVisitInBallsThatStayedDownAndSnookersIsInPoints()
+    {
+        var state = new GameState(GameRules.StraightPool);
+        MatchShot Shot(int shooter, bool legal, bool go, int[] pocketed, int[] spotted, int points = 0) => new(state with { Shooter = shooter },
+            new GameShot(new Billiards.Core.Cue.ShotSpec(1, 0, 0, 0)),
+            new Ruling(legal, [], [.. pocketed.Select(b => new BallId(b))], go, BallInHand.None, [.. spotted.Select(b => new BallId(b))], [], false, null, "", state) { Points = points }, []);
+        // Anna: 3 balls in a visit, then 1; Ben: 2 pocketed of which 1 spotted, then a foul that pockets 2.
+        MatchShot[] shots =
+        [
+            Shot(0, true, true, [1, 2], [], 2), Shot(0, true, true, [3], [], 1), Shot(0, true, false, [], []),
+            Shot(1, true, true, [4, 5], [5], 1), Shot(1, false, false, [6, 7], []),
+            Shot(0, true, true, [8], [], 1),
+        ];
+        var pool = PlayerStats.Of(Ruleset.For(GameRules.StraightPool), shots);
+        Assert.Equal(new PlayerStats(4, 4, 0, 3), pool.First);
+        Assert.Equal(new PlayerStats(2, 2, 1, 1), pool.Second);
+        // Snooker's break is the visit's points: Anna's 3, Ben's 1 (a foul's points are the opponent's).
+        Assert.Equal((3, 1), (PlayerStats.Of(Ruleset.For(GameRules.Snooker), shots).First.HighestBreak, PlayerStats.Of(Ruleset.For(GameRules.Snooker), shots).Second.HighestBreak));
+        var panel = new ResultPanel("Anna wins the 14.1 game 100-62", new PerPlayer<string>("Anna", "Ben"), pool, new PerPlayer<int>(1, 0));
+        Assert.Contains(("Highest run", "3", "1"), panel.Rows);
+        Assert.Contains(("Games won", "1", "0"), panel.Rows);
+        Assert.Contains(("Frames won", "1", "0"), (panel with { GameWord = "frame" }).Rows);
+    }
 }

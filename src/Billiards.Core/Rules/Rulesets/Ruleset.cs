@@ -10,6 +10,13 @@ namespace Billiards.Core.Rules;
 /// <param name="Balls">The balls the player still needs, in number order.</param>
 public sealed record HudTarget(string Text, IReadOnlyList<BallId> Balls);
 
+/// <summary>One visit to the table (<see cref="Ruleset.Visits"/>).</summary>
+/// <param name="Player">The player at the table, 0 or 1.</param>
+/// <param name="Shots">The shots of the visit.</param>
+/// <param name="Break">Its break (<see cref="Ruleset.BreakValue"/> summed over its shots).</param>
+/// <param name="Open">True when its last shot kept the player at the table: the visit goes on.</param>
+public readonly record struct Visit(int Player, int Shots, int Break, bool Open);
+
 /// <summary>
 /// Everything one game knows, as one object (conventions.md: "a game is a ruleset object"): its
 /// balls and rack, its referee, the next shot's constraints (legal targets, whether the shot is
@@ -159,6 +166,66 @@ public abstract class Ruleset
 
     /// <summary>What <see cref="BreakValue"/> counts: "balls" in pool, "points" in snooker.</summary>
     public virtual string BreakUnit => "balls";
+
+    /// <summary>
+    /// The word for one visit's score on the scoreboard and the result panel: "run" in pool (the
+    /// balls of one visit), "break" in snooker (its points).
+    /// </summary>
+    public virtual string BreakWord => "run";
+
+    /// <summary>The word for one game of a match: "game", snooker's "frame".</summary>
+    public virtual string GameWord => "game";
+
+    /// <summary>The game named in a sentence: "the 8-ball game", snooker's "the frame".</summary>
+    public virtual string TheGame => $"the {ShortName} game";
+
+    /// <summary>
+    /// The points still on the table for the shooter of <paramref name="state"/> with
+    /// <paramref name="objectBalls"/> on it, or null where a game does not count them (pool).
+    /// </summary>
+    public virtual int? PointsRemaining(GameState state, IReadOnlyCollection<BallId> objectBalls) => null;
+
+    /// <summary>
+    /// The visits to the table in <paramref name="shots"/> (each shot's shooter and ruling, in
+    /// order), each with its break by <see cref="BreakValue"/>. A visit is the shots of one player
+    /// from coming to the table until a shot that does not keep them there, whoever plays next:
+    /// the offender put back in after a foul starts a new one. The last visit is open when its
+    /// last shot kept the shooter at the table (the visit now at the table, or a game cut off).
+    /// </summary>
+    public IEnumerable<Visit> Visits(IEnumerable<(int Shooter, Ruling Ruling)> shots)
+    {
+        ArgumentNullException.ThrowIfNull(shots);
+        return Walk(shots);
+
+        IEnumerable<Visit> Walk(IEnumerable<(int Shooter, Ruling Ruling)> all)
+        {
+            int? visitor = null;
+            int points = 0, count = 0;
+            foreach (var (shooter, ruling) in all)
+            {
+                if (visitor != shooter)
+                {
+                    // A shot by the other player without the visit having ended cannot happen; end it anyway.
+                    if (visitor is int open)
+                    {
+                        yield return new Visit(open, count, points, false);
+                    }
+                    (visitor, points, count) = (shooter, 0, 0);
+                }
+                points += BreakValue(ruling);
+                count++;
+                if (!ruling.Continue)
+                {
+                    yield return new Visit(shooter, count, points, false);
+                    visitor = null;
+                }
+            }
+            if (visitor is int last)
+            {
+                yield return new Visit(last, count, points, true);
+            }
+        }
+    }
 
     /// <summary>Shots after which a game between computers is abandoned without a winner.</summary>
     public virtual int MaxShots(GameState start) => 400;

@@ -142,6 +142,19 @@ public sealed class SnookerRuleset : Ruleset
     public override string BreakUnit => "points";
 
     /// <inheritdoc />
+    public override string BreakWord => "break";
+
+    /// <inheritdoc />
+    public override string GameWord => "frame";
+
+    /// <inheritdoc />
+    public override string TheGame => "the frame";
+
+    /// <inheritdoc />
+    public override int? PointsRemaining(GameState state, IReadOnlyCollection<BallId> objectBalls) =>
+        PointsRemaining(BallOnOf(state), objectBalls);
+
+    /// <inheritdoc />
     public override HudTarget Target(GameState state, int player, IReadOnlyCollection<BallId> objectBalls)
     {
         ArgumentNullException.ThrowIfNull(state);

@@ -88,4 +88,28 @@ public class RulesetTests
         Assert.Equal("on the 2", Ruleset.For(GameRules.NineBall).Target(new GameState(GameRules.NineBall), 0, Some).Text);
         Assert.Equal("5 balls on the table", Ruleset.For(GameRules.StraightPool).Target(new GameState(GameRules.StraightPool), 0, Some).Text);
     }
+
+    [Fact]
+    public void AVisitEndsWithAShotThatDoesNotKeepTheShooterAtTheTableAndItsBreakIsTheBallsThatStayedDown()
+    {
+        var state = new GameState(GameRules.StraightPool);
+        (int, Ruling) Shot(int shooter, bool legal, bool go, int[] pocketed, int[] spotted) =>
+            (shooter, new Ruling(legal, [], [.. pocketed.Select(b => new BallId(b))], go, BallInHand.None, [.. spotted.Select(b => new BallId(b))], [], false, null, "", state));
+        var shots = new[]
+        {
+            // Anna: two balls, then a miss (2).
+            Shot(0, true, true, [3, 5], []), Shot(0, true, false, [], []),
+            // Ben: a ball, then a ball pocketed with the one he called spotted (1), then a foul (no ball counts).
+            Shot(1, true, true, [7], []), Shot(1, true, true, [9, 10], [10]), Shot(1, false, false, [11], []),
+            // Anna put back in after the foul: a new visit, still at the table when the shots end.
+            Shot(0, true, true, [12], []),
+        };
+        var visits = Ruleset.For(GameRules.StraightPool).Visits(shots).ToList();
+        Assert.Equal([new Visit(0, 2, 2, false), new Visit(1, 3, 2, false), new Visit(0, 1, 1, true)], visits);
+        // Snooker counts points, not balls: the same shots' rulings have no points.
+        Assert.All(Ruleset.For(GameRules.Snooker).Visits(shots), v => Assert.Equal(0, v.Break));
+        Assert.Equal("the 14.1 game", Ruleset.For(GameRules.StraightPool).TheGame);
+        Assert.Equal(("break", "frame", "the frame"), (Ruleset.For(GameRules.Snooker).BreakWord, Ruleset.For(GameRules.Snooker).GameWord, Ruleset.For(GameRules.Snooker).TheGame));
+        Assert.Null(Ruleset.For(GameRules.EightBall).PointsRemaining(new GameState(GameRules.EightBall), Some));
+    }
 }
