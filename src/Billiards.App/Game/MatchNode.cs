@@ -626,12 +626,10 @@ public sealed class MatchNode : Node
     }
 
     // A game that ended shows how it stood at the end (groups, fouls, score), not the next game's
-    // blank state; with the last shot's points and penalty in the score (snooker's black that won
-    // the frame, or a foul's penalty: the games that score no points have 0 of each), as the
-    // referee's last message gives it.
+    // blank state; with the score after the last shot (14.1's winning balls, snooker's black that
+    // won the frame or a foul's penalty), as the referee's last message gives it.
     private static GameState EndState(GameState before, Ruling ruling)
     {
-        int striker = before.Shooter, other = 1 - before.Shooter;
         return before with
         {
             Shot = before.Shot + 1,
@@ -640,7 +638,7 @@ public sealed class MatchNode : Node
             PushOut = false,
             BallInHand = BallInHand.None,
             FreeBall = false,
-            Score = before.Score.With(striker, before.Score[striker] + ruling.Points).With(other, before.Score[other] + ruling.Penalty),
+            Score = ruling.Score,
         };
     }
 

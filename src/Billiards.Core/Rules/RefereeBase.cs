@@ -181,6 +181,7 @@ internal sealed class RulingBuilder(GameState before, ShotFacts facts)
             next)
         {
             Rerack = [.. Rerack],
+            Score = Score,
         };
     }
 

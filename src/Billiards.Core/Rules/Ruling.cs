@@ -38,6 +38,12 @@ public sealed record Ruling(
     /// </summary>
     public IReadOnlyList<BallId> Rerack { get; init; } = [];
 
+    /// <summary>
+    /// The score after the shot (14.1's and snooker's points; 0-0 in the other games). When the
+    /// game is over it is the final score, which <see cref="Next"/>, the next game's start, does not carry.
+    /// </summary>
+    public PerPlayer<int> Score { get; init; }
+
     /// <summary>Snooker: points scored by the shooter on this shot.</summary>
     public int Points { get; init; }
 

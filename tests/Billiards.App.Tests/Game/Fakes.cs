@@ -78,14 +78,17 @@ internal sealed class FakeSimulation : Simulation
         _balls[cue].State = MotionState.Sliding;
     }
 
-    /// <summary>Drops a ball into pocket 0 and logs the event.</summary>
-    public void Pocket(BallId id)
+    /// <summary>Logs a collision of ball <paramref name="a"/> with ball <paramref name="b"/> (the balls do not move).</summary>
+    public void Hit(BallId a, BallId b) => Events.Add(new SimEvent(Time, EventKind.BallBall, a, b, 0, 1));
+
+    /// <summary>Drops a ball into pocket <paramref name="pocket"/> (by default the first) and logs the event.</summary>
+    public void Pocket(BallId id, int pocket = 0)
     {
         int i = IndexOf(id);
         _balls[i].State = MotionState.Pocketed;
         _balls[i].Velocity = Vec3.Zero;
-        _balls[i].Pocket = 0;
-        Events.Add(new SimEvent(Time, EventKind.BallPocket, id, id, 0, 0));
+        _balls[i].Pocket = pocket;
+        Events.Add(new SimEvent(Time, EventKind.BallPocket, id, id, pocket, 0));
     }
 
     public void StopAll()

@@ -129,4 +129,25 @@ public class ScoreboardTests
         Assert.Contains(("Games won", "1", "0"), panel.Rows);
         Assert.Contains(("Frames won", "1", "0"), (panel with { GameWord = "frame" }).Rows);
     }
+
+    [Fact]
+    public void A141GameWonOnItsLastBallShowsTheWinningScoreOnTheCardsAndThePanel()
+    {
+        using var game = FourBallGames.Start(new GameState(GameRules.StraightPool) { Shot = 5, Target = 100, Score = new PerPlayer<int>(99, 40), Players = new PerPlayer<string>("Anna", "Ben") });
+        var match = game.World.Tree.Root.GetInTree<MatchNode>();
+        game.Frame();
+        var call = Assert.IsType<Call>(match.CurrentCall);
+        game.Window.Press(Key.Space);
+        game.Frame();
+        // The cue ball hits the called ball, which drops in the called pocket: a legal pot, the 100th point.
+        game.Simulation.Hit(PoolBalls.Cue, call.Ball);
+        game.Simulation.Pocket(call.Ball, call.Pocket.Index);
+        game.RunUntilRest();
+        var hud = game.Frame().Hud!;
+        Assert.True(match.IsOver);
+        Assert.Equal("Anna wins the 14.1 game 100-40", hud.Result!.Title);
+        Assert.StartsWith("score 100 of 100", hud.Board!.Players[0].Detail, StringComparison.Ordinal);
+        Assert.StartsWith("score 40 of 100", hud.Board.Players[1].Detail, StringComparison.Ordinal);
+        Assert.Contains(("Highest run", "1", "0"), hud.Result.Rows);
+    }
 }

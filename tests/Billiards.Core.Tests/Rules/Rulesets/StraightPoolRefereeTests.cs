@@ -43,6 +43,9 @@ public class StraightPoolRefereeTests
         var before = Later with { Score = new(20, 49), Shooter = 1, Target = 50, Call = Calls(3, PoolPockets.HeadLeft) };
         var r = Judge(before, Shot().Hit(3).Pocket(3, PoolPockets.HeadLeft));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 1, gameOver: true, winner: 1);
+        // The final score is the ruling's; its next state starts the next game.
+        Assert.Equal(new PerPlayer<int>(20, 50), r.Score);
+        Assert.Equal(new PerPlayer<int>(0, 0), r.Next.Score);
     }
 
     [Fact]
