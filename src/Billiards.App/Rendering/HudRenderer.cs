@@ -311,7 +311,7 @@ internal sealed class HudRenderer : IDisposable
                 Rect(x, pad, 2 * u, cardH - (2 * pad), Gold);
             }
             float tx = x + pad;
-            var (nameRow, besideName, infoRow) = CardRows(player, cardColumns);
+            var (nameRow, besideName, ballRow, infoRow) = CardRows(player, cardColumns);
             Text(nameRow, tx, pad, scale, player.AtTable ? Gold : text);
             if (besideName is not null)
             {
@@ -328,6 +328,10 @@ internal sealed class HudRenderer : IDisposable
             {
                 Text($"+{player.Balls.Count - shown}", tx + (shown * icon), iy - (line / 2), scale, text);
             }
+            if (ballRow is not null)
+            {
+                Text(ballRow, tx, iy - (line / 2), scale, text);
+            }
             Text(infoRow, tx, pad + line + (4 * u) + icon, scale, Dim);
         }
         return bandH;
@@ -335,20 +339,28 @@ internal sealed class HudRenderer : IDisposable
 
     /// <summary>
     /// A player card's text in <paramref name="columns"/>: the name row, what stands right-aligned
-    /// beside the name (or null), and the row under the balls. The target and the detail share
-    /// the lower row where they fit; where they do not ("71, free ball: black" and "break 12"), the
-    /// detail moves up beside the name rather than be cut off.
+    /// beside the name (or null), the text in the balls' row of a card without balls (or null),
+    /// and the row under the balls. The target and the detail share the lower row where they fit;
+    /// where they do not ("71, free ball: black" and "break 12"), the detail moves up beside the
+    /// name, or, where the name leaves no room and the card draws no balls (14.1's "3 balls on the
+    /// table" and "score 99 of 100  run 4"), the target takes the balls' row, rather than be cut off.
     /// </summary>
-    public static (string Name, string? BesideName, string Info) CardRows(Hud.PlayerCard player, int columns)
+    public static (string Name, string? BesideName, string? BallRow, string Info) CardRows(Hud.PlayerCard player, int columns)
     {
         ArgumentNullException.ThrowIfNull(player);
         string name = Cut(player.Name, columns);
         string joined = player.Detail.Length > 0 ? $"{player.Target}  {player.Detail}" : player.Target;
-        if (joined.Length <= columns || player.Detail.Length == 0 || player.Name.Length + 2 + player.Detail.Length > columns)
+        if (joined.Length <= columns || player.Detail.Length == 0)
         {
-            return (name, null, Cut(joined, columns));
+            return (name, null, null, Cut(joined, columns));
         }
-        return (name, player.Detail, Cut(player.Target, columns));
+        if (player.Name.Length + 2 + player.Detail.Length <= columns)
+        {
+            return (name, player.Detail, null, Cut(player.Target, columns));
+        }
+        return player.Balls.Count == 0
+            ? (name, null, Cut(player.Target, columns), Cut(player.Detail, columns))
+            : (name, null, null, Cut(joined, columns));
     }
 
     // The status line's parts are joined by ";  ": a long one breaks between parts where it can

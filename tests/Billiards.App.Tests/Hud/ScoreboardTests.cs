@@ -92,15 +92,20 @@ public class ScoreboardTests
     }
 
     [Fact]
-    public void ACardWhoseTargetAndDetailDoNotFitShowsTheDetailBesideTheNameUncut()
+    public void ACardWhoseTargetAndDetailDoNotFitShowsTheDetailBesideTheNameOrTheTargetInTheEmptyBallRowUncut()
     {
         var card = new PlayerCard("Ben", true, "71, free ball: black", [], "break 12");
-        var (name, beside, info) = Billiards.App.Rendering.HudRenderer.CardRows(card, 24);
-        Assert.Equal(("Ben", "break 12", "71, free ball: black"), (name, beside, info));
-        // Where both fit they share the row under the balls; where the name leaves no room, the row is cut as before.
-        Assert.Equal(("Ben", null, "71, on a red  break 12"), Billiards.App.Rendering.HudRenderer.CardRows(card with { Target = "71, on a red" }, 24));
-        var crowded = Billiards.App.Rendering.HudRenderer.CardRows(card with { Name = "Computer L5 (thinking)" }, 24);
+        var (name, beside, ballRow, info) = Billiards.App.Rendering.HudRenderer.CardRows(card, 24);
+        Assert.Equal(("Ben", "break 12", null, "71, free ball: black"), (name, beside, ballRow, info));
+        // Where both fit they share the row under the balls.
+        Assert.Equal(("Ben", null, null, "71, on a red  break 12"), Billiards.App.Rendering.HudRenderer.CardRows(card with { Target = "71, on a red" }, 24));
+        // Where the name leaves no room: a card without balls puts the target in the balls' row (14.1's score stays whole) ...
+        var pool = new PlayerCard("Player 2", false, "3 balls on the table", [], "score 99 of 100  run 4");
+        Assert.Equal(("Player 2", null, "3 balls on the table", "score 99 of 100  run 4"), Billiards.App.Rendering.HudRenderer.CardRows(pool, 24));
+        // ... and one with balls cuts the row as before.
+        var crowded = Billiards.App.Rendering.HudRenderer.CardRows(card with { Name = "Computer L5 (thinking)", Balls = [7] }, 24);
         Assert.Null(crowded.BesideName);
+        Assert.Null(crowded.BallRow);
         Assert.Equal(24, crowded.Info.Length);
         Assert.EndsWith("...", crowded.Info, StringComparison.Ordinal);
     }
