@@ -93,10 +93,12 @@ public sealed class MatchNode : Node
         _rules = rules;
         _ruleset = Ruleset.For(rules);
         Players = players;
-        // A scene's game block keeps its players' names; a fresh game names the seats.
+        // A scene's game block keeps the players' names it gives; one that names none (the
+        // defaults), and a fresh game, take the seats' names (play --players).
+        var seats = new PerPlayer<string>(players[0].Name, players[1].Name);
         _opening = opening is { } o && o.Rules == rules
-            ? o
-            : new GameState(rules) { Players = new PerPlayer<string>(players[0].Name, players[1].Name) };
+            ? o.Players == GameState.DefaultPlayers ? o with { Players = seats } : o
+            : new GameState(rules) { Players = seats };
         State = _opening;
     }
 

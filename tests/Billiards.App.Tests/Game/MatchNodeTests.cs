@@ -187,4 +187,19 @@ public class MatchPlayerTests
     [InlineData("a name far longer than twenty-four characters")]
     [InlineData("tab\there")]
     public void AnythingElseIsRefused(string text) => Assert.Null(MatchPlayer.Parse(text, 0));
+
+    [Fact]
+    public void ASceneGameBlockWithoutNamesTakesThePlayersNamesAndOneWithNamesKeepsThem()
+    {
+        // FourBallGames seats Anna and Ben (play --players Anna,Ben).
+        using (var unnamed = FourBallGames.Start(new GameState(GameRules.StraightPool) { Shot = 5, Score = new PerPlayer<int>(99, 40) }))
+        {
+            var match = unnamed.World.Tree.Root.GetInTree<MatchNode>();
+            Assert.Equal(new PerPlayer<string>("Anna", "Ben"), match.State.Players);
+            Assert.Equal(new PerPlayer<int>(99, 40), match.State.Score);
+            Assert.StartsWith("Anna", unnamed.Frame().Hud!.Board!.Players[0].Name, StringComparison.Ordinal);
+        }
+        using var named = FourBallGames.Start(new GameState(GameRules.StraightPool) { Shot = 5, Players = new PerPlayer<string>("Cleo", "Dan") });
+        Assert.Equal(new PerPlayer<string>("Cleo", "Dan"), named.World.Tree.Root.GetInTree<MatchNode>().State.Players);
+    }
 }
