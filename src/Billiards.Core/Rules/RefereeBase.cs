@@ -83,7 +83,7 @@ internal abstract class RefereeBase(GameRules rules, TableSpec table, double bal
 internal sealed class RulingBuilder(GameState before, ShotFacts facts)
 {
     private readonly List<Foul> _fouls = [];
-    private readonly SortedSet<int> _spot = [];
+    private readonly BallNumbers _spot = new(0);
     private readonly List<string> _reasons = [];
 
     public GameState Before { get; } = before;

@@ -46,6 +46,8 @@ internal sealed class ShotFacts
 
         var ids = shot.Ids;
         var after = shot.BallsAfter;
+        OnTableBefore = new BallNumbers(ids.Length);
+        OnTableAfter = new BallNumbers(ids.Length);
         for (int i = 0; i < ids.Length; i++)
         {
             if (ids[i] == cue)
@@ -93,10 +95,10 @@ internal sealed class ShotFacts
     public int ObjectBallsToCushion { get; }
 
     /// <summary>Numbers of the object balls on the table before the shot.</summary>
-    public SortedSet<int> OnTableBefore { get; } = [];
+    public BallNumbers OnTableBefore { get; }
 
     /// <summary>Numbers of the object balls on the table after the shot.</summary>
-    public SortedSet<int> OnTableAfter { get; } = [];
+    public BallNumbers OnTableAfter { get; }
 
     /// <summary>The ball in hand was placed outside its region or on a ball.</summary>
     public bool BadPlacement { get; }

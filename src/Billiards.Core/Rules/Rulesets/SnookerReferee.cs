@@ -37,6 +37,9 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
         private readonly double _r = referee.BallRadius;
         private readonly TableSpec _table = referee.Table;
 
+        // The balls in the way of one sightline, filled anew for each (Obstacles).
+        private readonly List<Vec3> _obstacles = new(shot.Ids.Length);
+
         public Ruling Rule()
         {
             int shooter = before.Shooter, incoming = before.Incoming;
@@ -166,7 +169,8 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
                 miss = !lastBlack && !snookersNeeded && !SnookeredAndReached(positionsBefore, firstOn);
             }
             misses = misses.With(shooter, miss ? misses[shooter] + 1 : 0);
-            bool fullView = miss && positionsBefore.TryGetValue(Cue, out var cueBefore)
+            // The full view matters only from a second miss in a row on.
+            bool fullView = miss && misses[shooter] >= 2 && positionsBefore.TryGetValue(Cue, out var cueBefore)
                 && firstOn.Any(b => positionsBefore.TryGetValue(b, out var p) && Sightlines.BothSides(cueBefore, p, Obstacles(positionsBefore, b), _r));
             if (miss && fullView && misses[shooter] >= 3)
             {
@@ -181,8 +185,10 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
             }
 
             // Free ball for the incoming player, snookered after a foul; snookering behind a free ball is a foul itself.
-            bool incomingSnookered = !cueInHand && Snookered(afterTable, nextOn);
-            if (ruling.Legal && freeBall && !scoring && incomingSnookered && !OnlyPinkAndBlack(objectsAfter)
+            // Only a foul (a free ball) or a safety off a free ball asks; the sightlines are not looked at for other shots.
+            bool freeBallSafety = ruling.Legal && freeBall && !scoring;
+            bool incomingSnookered = (!ruling.Legal || freeBallSafety) && !cueInHand && Snookered(afterTable, nextOn);
+            if (freeBallSafety && incomingSnookered && !OnlyPinkAndBlack(objectsAfter)
                 && !Snookered(Without(afterTable, nominated!.Value), nextOn))
             {
                 ruling.Foul(Foul.SnookeredByFreeBall, $"{before.IncomingName} was left snookered behind the free ball");
@@ -283,6 +289,8 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
                 return false;
             }
             var targets = on.Where(positions.ContainsKey).ToList();
+            // The nearest first: the answer does not depend on the order, and a near ball is the likeliest in view.
+            targets.Sort((a, b) => (positions[a] - cue).LengthXY.CompareTo((positions[b] - cue).LengthXY));
             if (targets.Count == 0 || targets.Exists(b => Sightlines.AnyPart(cue, positions[b], Obstacles(positions, b), _r)))
             {
                 return false;
@@ -300,8 +308,27 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
             {
                 return false;
             }
-            var on = BallsOn(ballOn, null, [.. table.Keys.Where(b => b != Cue)]).ToList();
-            return on.Count > 0 && !on.Exists(b => Sightlines.BothSides(cue, table[b], Obstacles(table, b), _r));
+            // The balls on as BallsOn has them, looked at where they lie: snookered when there is one and none is in full view.
+            BallId? named = ballOn is SnookerRuleset.Red or SnookerRuleset.Colour ? null : BallOnBall(ballOn);
+            bool any = false;
+            foreach (var (id, position) in table)
+            {
+                bool on = id != Cue && ballOn switch
+                {
+                    SnookerRuleset.Red => SnookerRuleset.IsRed(id),
+                    SnookerRuleset.Colour => SnookerRuleset.IsColour(id),
+                    _ => id == named,
+                };
+                if (on)
+                {
+                    if (Sightlines.BothSides(cue, position, Obstacles(table, id), _r))
+                    {
+                        return false;
+                    }
+                    any = true;
+                }
+            }
+            return any;
         }
 
         private static Dictionary<BallId, Vec3> Without(Dictionary<BallId, Vec3> table, BallId ball)
@@ -311,8 +338,20 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
             return copy;
         }
 
-        private static List<Vec3> Obstacles(Dictionary<BallId, Vec3> table, BallId target) =>
-            [.. table.Where(b => b.Key != Cue && b.Key != target).Select(b => b.Value)];
+        // Every ball but the cue ball and the target, in one list reused for each sightline: a
+        // caller reads it before it asks for the next.
+        private List<Vec3> Obstacles(Dictionary<BallId, Vec3> table, BallId target)
+        {
+            _obstacles.Clear();
+            foreach (var (id, position) in table)
+            {
+                if (id != Cue && id != target)
+                {
+                    _obstacles.Add(position);
+                }
+            }
+            return _obstacles;
+        }
 
         // The cue ball left the bed before its first contact and passed over a ball lying on its
         // straight line of flight short of the ball it struck.
@@ -351,8 +390,8 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
 
         private Dictionary<BallId, Vec3> Positions(ReadOnlySpan<BallState> balls)
         {
-            var table = new Dictionary<BallId, Vec3>();
             var ids = shot.Ids;
+            var table = new Dictionary<BallId, Vec3>(ids.Length);
             for (int i = 0; i < balls.Length && i < ids.Length; i++)
             {
                 if (!balls[i].IsOutOfPlay)
@@ -386,8 +425,12 @@ public static class Sightlines
     /// <summary>True when some straight line of the cue ball from <paramref name="cue"/> strikes <paramref name="target"/> past <paramref name="obstacles"/>.</summary>
     public static bool AnyPart(Vec3 cue, Vec3 target, IReadOnlyList<Vec3> obstacles, double radius)
     {
-        for (int k = 0; k < PartSamples; k++)
+        // The full-ball line first, then outwards on alternate sides: the answer is the same in any
+        // order, and an open ball is seen at the first line.
+        const int Middle = (PartSamples - 1) / 2;
+        for (int j = 0; j < PartSamples; j++)
         {
+            int k = Middle + ((j & 1) == 0 ? j / 2 : -((j + 1) / 2));
             double f = Extremity * ((2.0 * k / (PartSamples - 1)) - 1);
             if (Clear(cue, target, f, obstacles, radius))
             {
@@ -416,9 +459,9 @@ public static class Sightlines
         var u = (along * cos) - (side * sin);
         double travel = (length * cos) - Math.Sqrt((contact * contact) - (s * s));
         var end = cue + (u * travel);
-        foreach (var o in obstacles)
+        for (int i = 0; i < obstacles.Count; i++)
         {
-            if (DistanceToSegment(o, cue, end) < contact - 1e-9)
+            if (DistanceToSegment(obstacles[i], cue, end) < contact - 1e-9)
             {
                 return false;
             }
