@@ -158,8 +158,11 @@ public sealed class MatchNode : Node
     /// <summary>Games won by each player in this match.</summary>
     public PerPlayer<int> GamesWon { get; private set; }
 
+    /// <summary>The keyboard power at the start (m/s), and where it comes back to after a power break.</summary>
+    public const double DefaultPower = 3.0;
+
     /// <summary>The keyboard power (m/s).</summary>
-    public double Power { get; private set; } = 3.0;
+    public double Power { get; private set; } = DefaultPower;
 
     /// <summary>
     /// The aim preview (first ball, ghost ball, object direction, easiest pocket), or null without
@@ -471,6 +474,11 @@ public sealed class MatchNode : Node
                 return true;
             case Key.Space when CanShoot && _cue is not null:
                 _physics!.Strike(_cue.MakeShot(Power));
+                if (State.Shot == 0 && _ruleset.PowerBreak)
+                {
+                    // The break's power is the break's alone: the next shot does not start at 8 m/s.
+                    Power = Math.Min(Power, DefaultPower);
+                }
                 return true;
             case Key.Left or Key.Right or Key.A or Key.D:
                 Turn(key.Key switch

@@ -202,4 +202,24 @@ public class MatchPlayerTests
         using var named = FourBallGames.Start(new GameState(GameRules.StraightPool) { Shot = 5, Players = new PerPlayer<string>("Cleo", "Dan") });
         Assert.Equal(new PerPlayer<string>("Cleo", "Dan"), named.World.Tree.Root.GetInTree<MatchNode>().State.Players);
     }
+
+    [Theory]
+    [InlineData(GameRules.EightBall, 0, MatchNode.DefaultPower)]
+    [InlineData(GameRules.EightBall, 3, MatchNode.MaxPower)]
+    [InlineData(GameRules.Snooker, 0, MatchNode.MaxPower)]
+    public void APowerBreakLeavesTheNextShotAtTheStartingPowerAndOtherShotsKeepTheirs(GameRules rules, int shot, double after)
+    {
+        // FourBallGames' pool table; snooker's break-off is not a power break, whatever the table.
+        using var game = FourBallGames.Start(new GameState(rules) { Shot = shot, Players = new PerPlayer<string>("Anna", "Ben") });
+        var match = game.World.Tree.Root.GetInTree<MatchNode>();
+        game.Frame();
+        while (match.Power < MatchNode.MaxPower)
+        {
+            game.Window.Press(Key.W);
+        }
+        game.Window.Press(Key.Space);
+        game.Frame();
+        Assert.Equal(MatchNode.MaxPower, game.Simulation.Strikes[^1].Speed, 12);
+        Assert.Equal(after, match.Power);
+    }
 }
