@@ -76,7 +76,7 @@ public sealed record ResultPanel(string Title, PerPlayer<string> Names, PerPlaye
         ("Pots", Text(Stats.First.Pots), Text(Stats.Second.Pots)),
         ("Fouls", Text(Stats.First.Fouls), Text(Stats.Second.Fouls)),
         ($"Highest {BreakWord}", Text(Stats.First.HighestBreak), Text(Stats.Second.HighestBreak)),
-        ($"{char.ToUpperInvariant(GameWord[0])}{GameWord[1..]}s won", Text(Games.First), Text(Games.Second)),
+        ($"{ScoreboardBuilder.Capitalised(GameWord)}s won", Text(Games.First), Text(Games.Second)),
     ];
 
     private static string Text(int n) => n.ToString(CultureInfo.InvariantCulture);
@@ -126,7 +126,7 @@ public static class ScoreboardBuilder
             {
                 detail.Add(string.Create(CultureInfo.InvariantCulture, $"{ruleset.BreakWord} {CurrentBreak(ruleset, shots, p)}"));
             }
-            if (!match.IsOver && ruleset.HasSnookers && remaining is int left && state.Score[1 - p] - state.Score[p] > left)
+            if (!match.IsOver && ruleset.NeedsSnookers(state, p, onTable))
             {
                 detail.Add("needs snookers");
             }
@@ -165,7 +165,7 @@ public static class ScoreboardBuilder
             ? ruleset.HasScore
                 ? string.Create(CultureInfo.InvariantCulture, $"{names[w]} wins {ruleset.TheGame} {score[w]}-{score[1 - w]}")
                 : $"{names[w]} wins {ruleset.TheGame}"
-            : $"{char.ToUpperInvariant(ruleset.TheGame[0])}{ruleset.TheGame[1..]} ends without a winner";
+            : $"{Capitalised(ruleset.TheGame)} ends without a winner";
         return new ResultPanel(title, names, PlayerStats.Of(ruleset, game.Shots), match.GamesWon) { BreakWord = ruleset.BreakWord, GameWord = ruleset.GameWord };
     }
 
@@ -180,6 +180,9 @@ public static class ScoreboardBuilder
         var last = ruleset.Visits(shots.Select(s => (s.Before.Shooter, s.Ruling))).LastOrDefault();
         return last.Open && last.Player == player ? last.Break : 0;
     }
+
+    /// <summary>The words with their first letter in capitals ("the frame" to "The frame").</summary>
+    internal static string Capitalised(string words) => words.Length == 0 ? words : string.Concat(words[..1].ToUpperInvariant(), words.AsSpan(1));
 
     /// <summary>The game's short name.</summary>
     public static string GameName(GameRules rules) => Ruleset.For(rules).ShortName;

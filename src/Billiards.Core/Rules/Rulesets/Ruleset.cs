@@ -186,6 +186,16 @@ public abstract class Ruleset
     public virtual int? PointsRemaining(GameState state, IReadOnlyCollection<BallId> objectBalls) => null;
 
     /// <summary>
+    /// True where the game knows snookers (<see cref="HasSnookers"/>) and <paramref name="player"/>
+    /// is behind by more than the points remaining (<see cref="PointsRemaining"/>).
+    /// </summary>
+    public bool NeedsSnookers(GameState state, int player, IReadOnlyCollection<BallId> objectBalls)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        return HasSnookers && PointsRemaining(state, objectBalls) is int left && state.Score[1 - player] - state.Score[player] > left;
+    }
+
+    /// <summary>
     /// The visits to the table in <paramref name="shots"/> (each shot's shooter and ruling, in
     /// order), each with its break by <see cref="BreakValue"/>. A visit is the shots of one player
     /// from coming to the table until a shot that does not keep them there, whoever plays next:

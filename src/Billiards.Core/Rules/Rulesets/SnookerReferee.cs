@@ -262,11 +262,15 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
 
         private static BallId? BallOnBall(string ballOn) => BallSet.Snooker.TryParse(ballOn, out var b) && SnookerRuleset.IsColour(b) ? b : null;
 
-        private static IEnumerable<BallId> BallsOn(string ballOn, BallId? nominated, List<BallId> onTable) => ballOn switch
+        private static IEnumerable<BallId> BallsOn(string ballOn, BallId? nominated, List<BallId> onTable) =>
+            ballOn == SnookerRuleset.Colour && nominated is { } n ? [n] : onTable.Where(b => IsOn(ballOn, b));
+
+        // A ball on before any nomination: a red, any colour, or the colour in turn.
+        private static bool IsOn(string ballOn, BallId ball) => ballOn switch
         {
-            SnookerRuleset.Red => onTable.Where(SnookerRuleset.IsRed),
-            SnookerRuleset.Colour => nominated is { } n ? [n] : onTable.Where(SnookerRuleset.IsColour),
-            var name => onTable.Where(b => b.ToString() == name),
+            SnookerRuleset.Red => SnookerRuleset.IsRed(ball),
+            SnookerRuleset.Colour => SnookerRuleset.IsColour(ball),
+            var name => ball == BallOnBall(name),
         };
 
         private static string OnText(string ballOn, BallId? nominated, bool freeBall) =>
@@ -308,18 +312,11 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
             {
                 return false;
             }
-            // The balls on as BallsOn has them, looked at where they lie: snookered when there is one and none is in full view.
-            BallId? named = ballOn is SnookerRuleset.Red or SnookerRuleset.Colour ? null : BallOnBall(ballOn);
+            // The balls on where they lie: snookered when there is one and none is in full view.
             bool any = false;
             foreach (var (id, position) in table)
             {
-                bool on = id != Cue && ballOn switch
-                {
-                    SnookerRuleset.Red => SnookerRuleset.IsRed(id),
-                    SnookerRuleset.Colour => SnookerRuleset.IsColour(id),
-                    _ => id == named,
-                };
-                if (on)
+                if (id != Cue && IsOn(ballOn, id))
                 {
                     if (Sightlines.BothSides(cue, position, Obstacles(table, id), _r))
                     {
