@@ -36,7 +36,7 @@ public static class CommandLine
     {
         try
         {
-            var root = new RootCommand("Billiards: a pool game and billiards physics engine.")
+            var root = new RootCommand(VerbHelp.Root)
             {
                 SimulateCommand.Create(stdout, stderr),
                 RenderCommand.Create(stdout),

@@ -39,7 +39,7 @@ public static class PlayCommand
         var data = new Option<string?>("--data") { Description = $"The folder for drill results and saved positions (default ${DataFolder.Variable}, else the user's data folder)." };
         var save = new Option<string?>("--save") { Description = "Where practice saves its position (F5) and loads it from (F9); default practice/position.json in the data folder." };
         var takeBacks = new Option<bool>("--take-backs") { Description = $"The players allow take-backs: {TakeBackNode.UndoKey} puts the game back before the last shot (off by default; practice always allows them)." };
-        var command = new Command("play", "Play a scene in a window (the default verb).") { scene, script, stats, rules, players, record, cap, fast, practice, drill, data, save, takeBacks };
+        var command = new Command("play", VerbHelp.Verb("Play a game, practice or a drill in a window (the default verb).", "play")) { scene, script, stats, rules, players, record, cap, fast, practice, drill, data, save, takeBacks };
         command.SetAction(parse => Play(parse.GetValue(scene), title => PlatformWiring.Open(title, FrameCap(parse.GetValue(cap))), options: new PlayOptions(parse.GetValue(script), parse.GetValue(stats))
         {
             Rules = parse.GetValue(rules),

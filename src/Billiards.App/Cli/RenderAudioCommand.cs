@@ -23,7 +23,7 @@ public static class RenderAudioCommand
         var scene = new Argument<string>("scene") { Description = "The scene file (billiards-scene/1 JSON)." };
         var output = new Option<string>("--out") { Description = "The WAV file to write.", Required = true };
         var rate = new Option<int?>("--rate") { Description = $"Sample rate in Hz (default {DefaultRate})." };
-        var command = new Command("render-audio", "Render the sound of a scene's shot into a WAV file.") { scene, output, rate };
+        var command = new Command("render-audio", VerbHelp.Verb("Render the sound of a scene's shot into a WAV file.", "render-audio")) { scene, output, rate };
         command.SetAction(parse =>
         {
             string outPath = parse.GetValue(output)!;

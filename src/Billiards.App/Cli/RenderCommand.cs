@@ -27,7 +27,7 @@ public static class RenderCommand
         var camera = new Option<string?>("--camera") { Description = "Eye and target in metres, optionally the vertical field of view in degrees: x,y,z,tx,ty,tz[,fov]. Default: behind the head rail, above." };
         var model = new Option<string?>("--model") { Description = "A table model file to load through Assimp instead of the table's own (metres, z up)." };
 
-        var command = new Command("render", "Draw a scene offscreen into a PNG file.")
+        var command = new Command("render", VerbHelp.Verb("Draw a scene offscreen into a PNG file.", "render"))
         {
             scene, output, at, width, height, camera, model,
         };

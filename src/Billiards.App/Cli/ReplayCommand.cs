@@ -34,7 +34,7 @@ public static class ReplayCommand
         var shot = new Option<int?>("--shot") { Description = "Playback: the first shot to show (0 the break; earlier shots are played at once)." };
         var speed = new Option<double?>("--speed") { Description = "Playback: how fast time runs (1 real time, default 1)." };
         var game = new Option<int?>("--game") { Description = "Playback of a file of several records (selfplay --out): the game to show, 1 the first (default 1)." };
-        var command = new Command("replay", "Verify a recorded game, or play it back in the window (PageUp/PageDown: previous/next shot; R: instant replay).") { file, verify, shot, speed, game };
+        var command = new Command("replay", VerbHelp.Verb("Verify a recorded game headless, or play it back in the window shot by shot.", "replay")) { file, verify, shot, speed, game };
         command.SetAction(parse =>
         {
             string path = parse.GetValue(file)!;

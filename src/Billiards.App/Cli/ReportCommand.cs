@@ -20,7 +20,7 @@ public static class ReportCommand
     {
         var output = new Option<string>("--out") { Description = "Folder for accuracy.csv, accuracy.svg and accuracy.md.", DefaultValueFactory = _ => "out/accuracy" };
         var scenes = new Option<string?>("--scenes") { Description = "Folder of the scene suite (default: assets/scenes/accuracy)." };
-        var accuracy = new Command("accuracy", "Measure each integrator and step against the event-based reference solver.") { output, scenes };
+        var accuracy = new Command("accuracy", VerbHelp.Verb("Measure each integrator and step against the event-based reference solver.", "report-accuracy")) { output, scenes };
         accuracy.SetAction(parse =>
         {
             // Everything is checked before the first measurement: the suite, every scene in every
@@ -60,7 +60,7 @@ public static class ReportCommand
         });
 
         var cushionOutput = new Option<string>("--out") { Description = "Folder for cushions.md and its plots.", DefaultValueFactory = _ => "out/accuracy" };
-        var cushions = new Command("cushions", "Draw the cushion models' rebounds side by side (the accuracy report's cushion page).") { cushionOutput };
+        var cushions = new Command("cushions", VerbHelp.Verb("Draw the cushion models' rebounds side by side (the accuracy report's cushion page).", "report-cushions")) { cushionOutput };
         cushions.SetAction(parse =>
         {
             string dir = OutputFiles.CheckFolder("--out", parse.GetValue(cushionOutput)!, [.. CushionReport.FileNames]);
@@ -74,7 +74,7 @@ public static class ReportCommand
         var level = new Option<int>("--level") { Description = "The computer player's level (1-5).", DefaultValueFactory = _ => 4 };
         var tries = new Option<int>("--tries") { Description = "Strikes of each decision with the level's error.", DefaultValueFactory = _ => 5 };
         var seed = new Option<ulong>("--seed") { Description = "Seed of the positions and of the player's error.", DefaultValueFactory = _ => 1 };
-        var snookers = new Command("snookers", "The computer player from snookered 8-ball positions, without and with jump shots: fouls, no-contact fouls, jumps played.") { count, level, tries, seed };
+        var snookers = new Command("snookers", VerbHelp.Verb("Play snookered 8-ball positions without and with jump shots and count the fouls.", "report-snookers")) { count, level, tries, seed };
         snookers.SetAction(parse =>
         {
             int n = parse.GetValue(count), l = parse.GetValue(level), k = parse.GetValue(tries);
@@ -93,6 +93,6 @@ public static class ReportCommand
             stdout.Write(SnookerReport.Run(n, l, k, parse.GetValue(seed), stderr));
             return 0;
         });
-        return new Command("report", "Reports about the physics and the computer player.") { accuracy, cushions, snookers };
+        return new Command("report", VerbHelp.Verb("Write a report about the physics or the computer player.", "report")) { accuracy, cushions, snookers };
     }
 }

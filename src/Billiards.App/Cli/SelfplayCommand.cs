@@ -48,7 +48,7 @@ public static class SelfplayCommand
         var summary = new Option<string?>("--summary") { Description = "Write the summary JSON to FILE instead of standard output." };
         var threads = new Option<int?>("--threads") { Description = "The threads each decision's search runs on (default: every core); the games are the same at any count." };
         var merge = new Option<string[]>("--merge") { Description = "Merge the summaries of every shard of one run into the run's summary.", AllowMultipleArgumentsPerToken = true, Arity = ArgumentArity.OneOrMore };
-        var command = new Command("selfplay", "Play the computer against itself and print a summary JSON.")
+        var command = new Command("selfplay", VerbHelp.Verb("Play the computer against itself and print a summary JSON.", "selfplay"))
         {
             rules, games, levels, seed, target, shard, output, summary, threads, merge,
         };

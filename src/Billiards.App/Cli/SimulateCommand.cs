@@ -27,7 +27,7 @@ public static class SimulateCommand
         var batch = new Option<string?>("--batch") { Description = "Simulate every scene of IN.jsonl (one scene per line) into --out, one result per line in the same order." };
         var threads = new Option<int?>("--threads") { Description = "With --batch: the threads that run scenes (default: every core)." };
 
-        var command = new Command("simulate", "Simulate a scene headless and print its result JSON.")
+        var command = new Command("simulate", VerbHelp.Verb("Simulate a scene headless and print its result JSON.", "simulate"))
         {
             scene, model, integrator, dt, until, sample, output, maxWall, batch, threads,
         };

@@ -32,7 +32,7 @@ public static class SuggestCommand
         var scene = new Argument<string>("scene") { Description = "The scene file (billiards-scene/1 JSON)." };
         var level = new Option<int?>("--level") { Description = "The player's level, 1 (beginner) to 5 (strong professional); default 3." };
         var budget = new Option<int?>("--budget-ms") { Description = "Cap on the decision's wall-clock time (ms); default 3000." };
-        var command = new Command("suggest", "Print the computer player's shot for a scene.") { scene, level, budget };
+        var command = new Command("suggest", VerbHelp.Verb("Print the computer player's shot for a scene.", "suggest")) { scene, level, budget };
         command.SetAction(parse =>
         {
             int levelValue = parse.GetValue(level) ?? DefaultLevel;
