@@ -58,6 +58,18 @@ namespace Billiards.Core.Ai;
 /// the variation's and sample's indices, and results are reduced in index order, so the threads
 /// (and their number) do not change the decision unless the time cap cuts the search short.
 /// </remarks>
+/// <example>
+/// The computer's shot for the player at the table, struck with its level's error and played:
+/// <code language="csharp">
+/// var match = new Match(GameSetup.Of(GameRules.EightBall, seed: 7));
+/// var planner = new ShotPlanner(match.Setup.Table, match.Setup.Physics.Params);   // once per table
+/// Decision d = planner.Decide(match.State, match.Layout(), level: 3, budgetMs: 3000, seed: 7);
+/// ShotSpec struck = SkillLevel.Of(3).Execute(d.Shot, new PlannerRandom(8));    // the player's error
+/// MatchShot shot = match.Play(new GameShot(struck, d.Call, d.Place, d.PushOut));
+/// Console.WriteLine($"{d.Kind}, expected to pot {d.ExpectedPot:P0}: {shot.Ruling.Message}");
+/// </code>
+/// A hint is the same call for a person's turn: draw <c>d.Shot</c>'s aim line and take its placement and call.
+/// </example>
 public sealed partial class ShotPlanner
 {
     private const double MaxShotTime = 120;

@@ -10,6 +10,23 @@ namespace Billiards.Core.Physics;
 /// (<see cref="AdvanceTo"/>, which the event integrator reaches exactly). State is exposed in SI through
 /// <see cref="Balls"/>, whatever units the model keeps inside.
 /// </summary>
+/// <example>
+/// A scene's simulation stepped by hand, as the game does one fixed step a frame
+/// (<see cref="Scenes.SimulationRunner.Run"/> does the same to rest, bounded):
+/// <code language="csharp">
+/// Scene scene = SceneLoader.Load("assets/scenes/eight-ball-break.json");
+/// Simulation sim = SimulationFactory.Create(scene);
+/// sim.Strike(scene.Shot!);
+/// while (!sim.IsAtRest &amp;&amp; sim.Time &lt; 60)
+/// {
+///     sim.Step();
+/// }
+/// for (int i = 0; i &lt; sim.Ids.Count; i++)
+/// {
+///     Console.WriteLine($"{sim.Ids[i]}: {sim.Balls[i].State} at {sim.Balls[i].Position}");
+/// }
+/// </code>
+/// </example>
 public abstract partial class Simulation
 {
     /// <summary>Creates the common part of a simulation.</summary>

@@ -79,6 +79,19 @@ public sealed record MatchShot(GameState Before, GameShot Input, Ruling Ruling, 
 /// stepped (a window steps one fixed step per tick, a replay runs to rest at once: the same steps).
 /// Balls out of play are left out of the shot's simulation.
 /// </remarks>
+/// <example>
+/// A 9-ball game from its seeded rack: the break struck, simulated to rest and judged in one call
+/// (<see cref="Strike"/>, <see cref="RunToRest"/> and <see cref="Judge"/> are its three steps):
+/// <code language="csharp">
+/// var match = new Match(GameSetup.Of(GameRules.NineBall, seed: 1));
+/// MatchShot shot = match.Play(new GameShot(new ShotSpec(Speed: 8, AimDeg: 0)));
+/// Console.WriteLine(shot.Ruling.Message);          // a sentence: who is at the table, or the foul
+/// if (match.PendingOptions.Count &gt; 0)
+/// {
+///     match.Choose(match.PendingOptions[0]);        // the incoming player's choice, when offered
+/// }
+/// </code>
+/// </example>
 public sealed class Match
 {
     private readonly Func<Scene, Simulation> _createSimulation;

@@ -18,6 +18,17 @@ public sealed record SceneOverrides(string? Model = null, string? Integrator = n
 /// <see cref="SceneException"/> naming the file, the JSON path and what is wrong; unknown fields
 /// and values are refused rather than ignored, so that a typo never silently changes a shot.
 /// </summary>
+/// <example>
+/// Load a scene, run its shot to rest and read what ended the run:
+/// <code language="csharp">
+/// Scene scene = SceneLoader.Load("assets/scenes/eight-ball-break.json");
+/// RunOutcome outcome = SimulationRunner.Run(scene, new RunOptions());
+/// Console.WriteLine($"{outcome.Simulation.Events.Count} events, stopped by {outcome.Stop} at {outcome.Simulation.Time:0.000} s");
+/// </code>
+/// A scene in a string is read by <see cref="Parse"/>, with a name for its error messages:
+/// <c>SceneLoader.Parse(json, "shot.json")</c>. A bad scene throws one <see cref="SceneException"/>
+/// whose message names the file, the JSON path and the problem.
+/// </example>
 public static class SceneLoader
 {
     /// <summary>The format tag of a scene file.</summary>

@@ -62,6 +62,15 @@ public static class SimulationRunner
     private const double Chunk = 10;
 
     /// <summary>Runs the scene with the options.</summary>
+    /// <example>
+    /// Run a scene's shot to rest, or to a time, with samples of the balls' positions:
+    /// <code language="csharp">
+    /// Scene scene = SceneLoader.Load("assets/scenes/eight-ball-break.json");
+    /// RunOutcome rest = SimulationRunner.Run(scene, new RunOptions());
+    /// RunOutcome firstSecond = SimulationRunner.Run(scene, new RunOptions(Until: 1.0, SampleDt: 0.1));
+    /// Console.WriteLine($"{rest.Stop} at {rest.Simulation.Time:0.000} s; {firstSecond.Samples.Count} samples");
+    /// </code>
+    /// </example>
     /// <exception cref="ArgumentOutOfRangeException">When <see cref="RunOptions.Until"/> is not in [0, <see cref="RunOptions.MaxUntil"/>].</exception>
     /// <exception cref="SceneException">When the scene has a game block but no shot for it to judge (a position for <c>suggest</c>).</exception>
     public static RunOutcome Run(Scene scene, RunOptions options)

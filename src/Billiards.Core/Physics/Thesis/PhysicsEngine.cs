@@ -48,6 +48,15 @@ public enum ShotEnd : byte
 /// Events (ball-ball, ball-cushion, ball-pocket) go to <see cref="Events"/> when one is given,
 /// stamped with the time at the end of the step that found them. Nothing allocates per step.</para>
 /// </remarks>
+/// <example>
+/// The engine runs behind <see cref="Simulation"/> when a scene asks for the thesis model
+/// (<c>"physics": {"model": "thesis"}</c>), like any other model:
+/// <code language="csharp">
+/// Scene scene = SceneLoader.Load("assets/scenes/thesis-eight-ball-break.json");
+/// Simulation sim = SimulationRunner.Run(scene, new RunOptions()).Simulation;
+/// Console.WriteLine($"{sim.Model}: {sim.Events.Count} events, at rest at {sim.Time:0.000} s");
+/// </code>
+/// </example>
 public sealed partial class PhysicsEngine
 {
     /// <summary>The seed's physics rate (steps per second, seed 4.1.4).</summary>

@@ -32,6 +32,14 @@ public abstract class Ruleset
     public static IReadOnlyList<Ruleset> All => Rulesets;
 
     /// <summary>The ruleset of <paramref name="game"/>.</summary>
+    /// <example>
+    /// Ask the game, not which game it is:
+    /// <code language="csharp">
+    /// Ruleset nineBall = Ruleset.For(GameRules.NineBall);
+    /// bool called = nineBall.CallsShots;      // false: 9-ball calls no shot
+    /// bool threeFouls = nineBall.HasThreeFouls; // true: three fouls in a row lose
+    /// </code>
+    /// </example>
     public static Ruleset For(GameRules game) => (int)game >= 0 && (int)game < Rulesets.Length
         ? Rulesets[(int)game]
         : throw new ArgumentOutOfRangeException(nameof(game), game, "no such game");
