@@ -30,6 +30,22 @@ public sealed class DocsLinkTests : IDisposable
         Assert.Empty(Markdown.BrokenLinks(file));
     }
 
+    [Theory]
+    [MemberData(nameof(Pages))]
+    public void EveryPictureNamesTheCommandThatMakesIt(string page)
+    {
+        // In its caption (a command in backquotes), or, for the pages a report writes with its
+        // plots, in the page's own "Made by `billiards report ...`".
+        string text = File.ReadAllText(Path.Combine(Markdown.Root, page));
+        bool madeByReport = text.Contains("Made by `billiards report", StringComparison.Ordinal);
+        foreach (var (alt, target) in Markdown.Pictures(text))
+        {
+            Assert.True(madeByReport || s_command.IsMatch(alt), $"{page}: the picture {target} names no command that makes it again: \"{alt}\"");
+        }
+    }
+
+    private static readonly System.Text.RegularExpressions.Regex s_command = new("`(billiards |python3 |tools/docs/)[^`]*`");
+
     [Fact]
     public void TheManualIsThere()
     {

@@ -95,6 +95,10 @@ internal static partial class Markdown
         return links;
     }
 
+    /// <summary>Every picture outside fenced code: its alt text and its target.</summary>
+    public static List<(string Alt, string Target)> Pictures(string text) =>
+        [.. ProseLines(text).SelectMany(l => Picture().Matches(l.Text)).Select(m => (m.Groups[1].Value, m.Groups[2].Value))];
+
     /// <summary>
     /// The broken relative links of a Markdown file: a target that does not exist, or an anchor
     /// that no heading of the target (or of the file itself, for "#anchor") has. Web addresses and
@@ -152,6 +156,9 @@ internal static partial class Markdown
         }
         throw new InvalidOperationException("the repository (Billiards.sln) is not above the test assembly");
     }
+
+    [GeneratedRegex(@"!\[((?:[^\]`]|`[^`]*`)*)\]\(([^)\s]+)\)")]
+    private static partial Regex Picture();
 
     [GeneratedRegex(@"^(#{1,6})\s+(.*?)\s*#*\s*$")]
     private static partial Regex HeadingLine();
