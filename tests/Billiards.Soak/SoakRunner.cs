@@ -63,7 +63,8 @@ public sealed record SoakOptions(string Model, string Integrator, double Dt, lon
 /// <param name="Events">Events of the shot.</param>
 /// <param name="TEnd">Simulated time when it came to rest (s).</param>
 /// <param name="Description">The shot, for reproducing it.</param>
-public sealed record ShotOutcome(long Shot, int Nan, int Escapes, int InsideCushion, int OffTable, int Overlaps, double MaxOverlap, bool AtRest, int Events, double TEnd, string Description);
+/// <param name="ElevationDeg">The cue's elevation (deg).</param>
+public sealed record ShotOutcome(long Shot, int Nan, int Escapes, int InsideCushion, int OffTable, int Overlaps, double MaxOverlap, bool AtRest, int Events, double TEnd, string Description, double ElevationDeg = 0);
 
 /// <summary>
 /// Makes and runs seeded random legal shots: a racked 8-ball or 9-ball table or a random scatter
@@ -265,7 +266,7 @@ public sealed class SoakRunner(SoakOptions options)
         var s = scene.Shot!;
         string description = string.Create(CultureInfo.InvariantCulture,
             $"shot {shot}: {scene.Table.Preset}, {(scene.Rack is { } rk ? $"{rk.Game} rack seed {rk.Seed}" : $"{scene.Balls.Count} balls scattered")}, speed {s.Speed:0.###} aim {s.AimDeg:0.##} tip [{s.TipSide:0.###}, {s.TipHeight:0.###}] elevation {s.ElevationDeg:0.#}");
-        return new ShotOutcome(shot, nan, escapes, insideCushion, offTable, overlaps, maxOverlap, sim.IsAtRest, sim.Events.Count, sim.Time, description);
+        return new ShotOutcome(shot, nan, escapes, insideCushion, offTable, overlaps, maxOverlap, sim.IsAtRest, sim.Events.Count, sim.Time, description, s.ElevationDeg);
     }
 
     private static bool Finite(Vec3 v) => double.IsFinite(v.X) && double.IsFinite(v.Y) && double.IsFinite(v.Z);
@@ -276,6 +277,10 @@ public sealed class SoakReport
 {
     private long _shots, _nan, _escapes, _escapeShots, _insideCushion, _offTable, _offTableShots, _overlaps, _nonTerminating;
     private double _maxOverlap;
+
+    // Shots and shots with a ball off the table, by the cue's elevation in bands of 10 deg (0-10, ..., 80-90).
+    private readonly long[] _bandShots = new long[9];
+    private readonly long[] _bandOffTable = new long[9];
     private ShotOutcome? _maxEvents, _maxTEnd, _firstFailure, _firstEscape;
 
     /// <summary>Shots with a NaN, an escape (outside the table or inside a cushion), an overlap or no rest.</summary>
@@ -291,6 +296,9 @@ public sealed class SoakReport
         _insideCushion += o.InsideCushion;
         _offTable += o.OffTable;
         _offTableShots += o.OffTable > 0 ? 1 : 0;
+        int band = Math.Clamp((int)(o.ElevationDeg / 10), 0, _bandShots.Length - 1);
+        _bandShots[band]++;
+        _bandOffTable[band] += o.OffTable > 0 ? 1 : 0;
         _overlaps += o.Overlaps;
         _maxOverlap = Math.Max(_maxOverlap, o.MaxOverlap);
         _nonTerminating += o.AtRest ? 0 : 1;
@@ -319,9 +327,13 @@ public sealed class SoakReport
         model {options.Model}, integrator {options.Integrator}, dt {options.Dt:0.######}, seed {options.Seed}, mix {options.Mix}, shots from {options.First}
         shots {_shots}, NaN {_nan}, escapes {_escapes} (in {_escapeShots} shots), inside a cushion {_insideCushion}, overlaps {_overlaps} (max {_maxOverlap * 1000:0.###} mm), non-terminating {_nonTerminating}
         off the table {_offTable} balls in {_offTableShots} shots ({(_shots > 0 ? 100.0 * _offTableShots / _shots : 0):0.###} % of shots; counted apart, not escapes)
+        shots with a ball off the table by elevation: {Bands()}
         max events per shot {_maxEvents?.Events} ({_maxEvents?.Description})
         max t_end {_maxTEnd?.TEnd:0.###} s ({_maxTEnd?.Description})
         first failure: {_firstFailure?.Description ?? "none"}
         first escape: {_firstEscape?.Description ?? "none"}
         """);
+
+    private string Bands() => string.Join(", ", Enumerable.Range(0, _bandShots.Length).Where(k => _bandShots[k] > 0).Select(k =>
+        string.Create(CultureInfo.InvariantCulture, $"{10 * k}-{10 * k + 10} deg {100.0 * _bandOffTable[k] / _bandShots[k]:0.#} % of {_bandShots[k]}")));
 }
