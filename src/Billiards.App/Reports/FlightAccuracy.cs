@@ -80,11 +80,15 @@ public static class FlightAccuracy
             // Touching the 1 while the cue ball hops over it would be a contact before its landing.
             rows.Add(new FlightRow("jump: contacts with the 1 before the hop lands (0)", series, hit < firstLanding ? 1 : 0, 0, hit < firstLanding ? 1 : 0, "contacts"));
 
-            // The 5 tossed over the foot rail: it leaves where its centre crosses the noses' line.
+            // The 5 tossed over the foot rail: it leaves the table where it comes down to the rails'
+            // top H beyond them (docs/flight.md), z0 + vz t - g t^2 / 2 = H + R, on the floor.
             var over = Run(folder, "eight-ball-over-the-foot-rail.json", integrator, dt, out var overScene);
             var five = overScene.Balls.First(b => b.Id.Value == 5);
-            double noses = overScene.Table.HalfLength;
-            Add("ball over the foot rail: ball-off-table at (L/2 - x0) / vx", Time(Events(over, EventKind.BallOffTable), 0), (noses - five.Position.X) / five.Velocity.X, "s");
+            double vz = five.Velocity.Z, fall = overScene.Table.RailHeight + r - five.Position.Z;
+            double down = (vz + Math.Sqrt(vz * vz - 2 * g * fall)) / g;
+            Add("ball over the foot rail: ball-off-table coming down to the rails' top, (vz + sqrt(vz^2 - 2 g (H + R - z0))) / g", Time(Events(over, EventKind.BallOffTable), 0), down, "s");
+            int fiveIndex = over.IndexOf(five.Id);
+            Add("ball over the foot rail: off the table at x0 + vx t, beyond the rail", over.Balls[fiveIndex].Position.X, five.Position.X + five.Velocity.X * down, "m");
 
             // The energy (kinetic, rotational and the height's) across every landing of these shots;
             // not for euler, whose explicit step of gravity gains m g^2 dt^2 / 2 a step in the air by design.

@@ -1,6 +1,8 @@
 using Billiards.Core.Physics.Collisions;
 using Billiards.Core.Physics.Collisions.BallBall;
 using Billiards.Core.Physics.Collisions.BallCushion;
+using Billiards.Core.Physics.Collisions.BallPocket;
+using Billiards.Core.Physics.Collisions.BallTable;
 using Billiards.Core.Physics.Standard;
 using Billiards.Core.Physics.Thesis;
 
@@ -8,7 +10,8 @@ namespace Billiards.Core.Physics;
 
 /// <summary>
 /// The one registry of physics models: name to model (factory, integrators, ball radius, debug
-/// geometry), to integrator, and to the resolver of each interaction (cushion, ball-ball), as
+/// geometry), to integrator, and to the resolver of each interaction (cushion, ball-ball,
+/// ball-table, ball-pocket), as
 /// pooltool keeps <c>physics/resolve/&lt;interaction&gt;/&lt;model&gt;/</c>. The only place that
 /// turns a name into a model, an integrator or a resolver.
 /// </summary>
@@ -68,11 +71,29 @@ public static class ModelRegistry
     public static IReadOnlyList<IBallBallModel> BallBallModels { get; } =
         [FrictionalInelastic.Instance, FrictionalMathavan.Instance];
 
+    /// <summary>Every ball-table resolver (landings on the bed and on a rail's top), the default first.</summary>
+    public static IReadOnlyList<IBallTableModel> BallTableModels { get; } = [FrictionalLanding.Instance];
+
+    /// <summary>Every ball-pocket resolver (a ball dropping into a hole), the default first.</summary>
+    public static IReadOnlyList<IBallPocketModel> BallPocketModels { get; } = [CanonicalPocket.Instance];
+
     /// <summary>The names of <see cref="BallCushionModels"/>.</summary>
     public static IReadOnlyList<string> BallCushionNames { get; } = [.. BallCushionModels.Select(m => m.Name)];
 
     /// <summary>The names of <see cref="BallBallModels"/>.</summary>
     public static IReadOnlyList<string> BallBallNames { get; } = [.. BallBallModels.Select(m => m.Name)];
+
+    /// <summary>The names of <see cref="BallTableModels"/>.</summary>
+    public static IReadOnlyList<string> BallTableNames { get; } = [.. BallTableModels.Select(m => m.Name)];
+
+    /// <summary>The names of <see cref="BallPocketModels"/>.</summary>
+    public static IReadOnlyList<string> BallPocketNames { get; } = [.. BallPocketModels.Select(m => m.Name)];
+
+    /// <summary>The ball-table resolver called <paramref name="name"/>, or null.</summary>
+    public static IBallTableModel? FindBallTable(string? name) => BallTableModels.FirstOrDefault(m => m.Name == name);
+
+    /// <summary>The ball-pocket resolver called <paramref name="name"/>, or null.</summary>
+    public static IBallPocketModel? FindBallPocket(string? name) => BallPocketModels.FirstOrDefault(m => m.Name == name);
 
     /// <summary>The ball-cushion resolver called <paramref name="name"/>, or null.</summary>
     public static IBallCushionModel? FindBallCushion(string? name) => BallCushionModels.FirstOrDefault(m => m.Name == name);

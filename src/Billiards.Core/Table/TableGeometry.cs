@@ -52,7 +52,7 @@ public readonly record struct PocketCircle(Vec3 Centre, double Radius, int Pocke
 /// its centre is past the mouth line and more than half of it hangs over the hole, or it rattles
 /// off a jaw first.
 /// </remarks>
-public sealed class TableGeometry
+public sealed partial class TableGeometry
 {
     /// <summary>Radius of the rounded jaw tips (m).</summary>
     public const double NoseRadius = 0.005;
@@ -66,8 +66,9 @@ public sealed class TableGeometry
     private readonly string[] _cushionNames;
     private readonly CushionId[] _cushionIds;
 
-    private TableGeometry(TableSpec spec, double ballRadius, List<CushionSegment> segments, List<CushionNose> noses, List<PocketCircle> pockets, List<string> names, List<CushionId> ids)
+    private TableGeometry(TableSpec spec, double ballRadius, List<CushionSegment> segments, List<CushionNose> noses, List<PocketCircle> pockets, List<string> names, List<CushionId> ids, List<CushionSegment>[] jaws)
     {
+        _jaws = [.. jaws.Select(j => j.ToArray())];
         _ballRadius = ballRadius;
         _cushionIds = [.. ids];
         Spec = spec;
@@ -137,7 +138,8 @@ public sealed class TableGeometry
         (a == b &&
          Bits(a.Length) == Bits(b.Length) && Bits(a.Width) == Bits(b.Width) &&
          Bits(a.CushionHeight) == Bits(b.CushionHeight) && Bits(a.SightOffset) == Bits(b.SightOffset) &&
-         Bits(a.RailHeight) == Bits(b.RailHeight) && Bits(a.JawNoseRadius) == Bits(b.JawNoseRadius));
+         Bits(a.RailHeight) == Bits(b.RailHeight) && Bits(a.JawNoseRadius) == Bits(b.JawNoseRadius) &&
+         Bits(a.RailWidth) == Bits(b.RailWidth));
 
     private static long Bits(double x) => BitConverter.DoubleToInt64Bits(x);
 
@@ -228,7 +230,7 @@ public sealed class TableGeometry
             var across = new Vec3(-outward.Y, outward.X, 0);
             pockets.Add(new PocketCircle(centre, Math.Max(ballRadius, ChannelHalfWidth(jaws[i], centre, across, ballRadius)), i));
         }
-        return new TableGeometry(spec, ballRadius, segments, noses, pockets, names, ids);
+        return new TableGeometry(spec, ballRadius, segments, noses, pockets, names, ids, jaws);
     }
 
     /// <summary>

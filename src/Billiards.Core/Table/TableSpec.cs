@@ -22,6 +22,11 @@ namespace Billiards.Core.Table;
 /// Radius of the rounded tips where a rail turns into a pocket's jaw (m): pool's sharp 5 mm
 /// (<see cref="TableGeometry.NoseRadius"/>), snooker's rounded pockets more.
 /// </param>
+/// <param name="RailWidth">
+/// Width of a rail from the cushion's nose to the rail's outer edge, cushion included (m): a ball
+/// in the air that comes down beyond it lands on the floor, off the table. Default
+/// <see cref="DefaultRailWidth"/>.
+/// </param>
 public sealed record TableSpec(
     string Preset,
     double Length,
@@ -30,8 +35,16 @@ public sealed record TableSpec(
     PocketSet Pockets,
     double SightOffset,
     double RailHeight = TableSpec.DefaultRailHeight,
-    double JawNoseRadius = TableGeometry.NoseRadius)
+    double JawNoseRadius = TableGeometry.NoseRadius,
+    double RailWidth = TableSpec.DefaultRailWidth)
 {
+    /// <summary>
+    /// Default width of a rail, cushion included: 5.5 in (139.7 mm) from the cushion's nose to the
+    /// rail's outer edge, every preset's (ours: the WPA asks for 4 to 7.5 in; the sights, 93.7 mm
+    /// behind the nose, sit on the rail cap inside it).
+    /// </summary>
+    public const double DefaultRailWidth = 5.5 * 0.0254;
+
     /// <summary>
     /// Default top of the rails: 1.75 in (44.45 mm) above the bed, every preset's (ours: the WPA
     /// gives no figure; the rail cap of a pool table stands a little above the cushion's nose, at

@@ -13,8 +13,8 @@ public sealed class FlightAccuracyTests(ITestOutputHelper output)
         FlightAccuracy.Validate(folder);
         var rows = FlightAccuracy.Measure(folder);
         output.WriteLine(FlightAccuracy.ToMarkdown(rows));
-        // Four configurations, seven timed checks and the jump's contacts each, the energy for three (not euler).
-        Assert.Equal((4 * 8) + 3, rows.Count);
+        // Four configurations, seven timed checks, the off-table position and the jump's contacts each, the energy for three (not euler).
+        Assert.Equal((4 * 9) + 3, rows.Count);
         foreach (var row in rows.Where(r => !r.Series.StartsWith("euler", StringComparison.Ordinal)))
         {
             // Exact contact times: the analytic roots to round-off (1 us is the bound);

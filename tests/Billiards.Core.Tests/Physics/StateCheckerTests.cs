@@ -44,4 +44,23 @@ public class StateCheckerTests
         var nan = Assert.Throws<InvalidOperationException>(() => CheckByReflection(Make(new Vec3(double.NaN, 0, 0)), r, overlap: true));
         Assert.Contains("non-finite", nan.Message, StringComparison.Ordinal);
     }
+
+    /// <summary>
+    /// The table-bound guarantee at rest: a ball on the bed is on the bed, one half a radius into
+    /// the foot cushion is inside it, one in the foot-left pocket's mouth is on the bed, and ones at
+    /// the bed's height over the rail or the floor (which no physics puts there) are outside.
+    /// </summary>
+    [Fact]
+    public void PlaceOfTellsTheBedACushionAMouthAndOutsideApart()
+    {
+        var table = TableSpec.FromPreset("pool-9ft");
+        double r = PhysicsParams.DefaultRadius;
+        var mouth = table.Pockets[4].MouthMiddle(table);
+        Vec3[] positions = [new(0.3, -0.2, r), new(table.HalfLength - r / 2, 0, r), mouth with { Z = r }, new(table.HalfLength + 0.05, 0, r), new(5, 0, r)];
+        var sim = SimulationFactory.Create(new Scene("place", null, table, PhysicsConfig.Default, null,
+            [.. positions.Select((p, i) => new BallSetup(new BallId(i), p, Vec3.Zero, Vec3.Zero))], null, null));
+        Assert.Equal(
+            [BallPlace.Bed, BallPlace.InsideCushion, BallPlace.Bed, BallPlace.Outside, BallPlace.Outside],
+            Enumerable.Range(0, positions.Length).Select(i => StateChecker.PlaceOf(sim, i)));
+    }
 }

@@ -9,8 +9,11 @@ public interface IBallBallModel
     string Name { get; }
 
     /// <summary>
-    /// Resolves the collision of two touching balls (centres 2R apart, approaching). Changes only
-    /// velocity and spin; the balls stay on the bed (no z velocity). Allocates nothing.
+    /// Resolves the collision of two touching balls (centres 2R apart, approaching), in space: with
+    /// both on the bed the line of centres is horizontal and they stay there (no z velocity); with
+    /// one or both in the air (<see cref="MotionState.Airborne"/>) it leaves the bed plane, a ball
+    /// in the air has no contact with the table, and the impulse may lift a ball or drive it into
+    /// the bed. Changes only velocity and spin. Allocates nothing.
     /// </summary>
     void Resolve(ref BallState a, ref BallState b, PhysicsParams p);
 }

@@ -1,7 +1,6 @@
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics.Collisions;
-using Billiards.Core.Physics.Collisions.BallTable;
 using Billiards.Core.Table;
 
 namespace Billiards.Core.Physics.Standard;
@@ -25,23 +24,25 @@ public sealed class EulerStepper
     private readonly IBallBallModel _ballBall;
     private readonly IBallCushionModel _ballCushion;
     private readonly EventLog _log;
+    private readonly Landing _landing;
     private readonly Vec3[] _start;
 
     // How far behind a face or inside a circle a ball may start and still count as touching it (m).
     private const double ContactSlack = 1e-9;
 
-    /// <summary>Creates a stepper over the balls (shared, changed in place).</summary>
-    public EulerStepper(BallState[] balls, IReadOnlyList<BallId> ids, PhysicsParams parameters, TableGeometry geometry,
-        IBallBallModel ballBall, IBallCushionModel ballCushion, EventLog log)
+    /// <summary>Creates a stepper over the balls (shared, changed in place) on <paramref name="model"/>'s table, with its collision models.</summary>
+    public EulerStepper(BallState[] balls, IReadOnlyList<BallId> ids, StandardTableModel model, EventLog log)
     {
+        ArgumentNullException.ThrowIfNull(model);
         _balls = balls;
         _ids = [.. ids];
-        _params = parameters;
-        _k = new MotionConstants(parameters);
-        _geometry = geometry;
-        _ballBall = ballBall;
-        _ballCushion = ballCushion;
+        _params = model.Parameters;
+        _k = model.Constants;
+        _geometry = model.Geometry;
+        _ballBall = model.BallBall;
+        _ballCushion = model.BallCushion;
         _log = log;
+        _landing = new Landing(model, _ids, log);
         _start = new Vec3[balls.Length];
         for (int i = 0; i < balls.Length; i++)
         {
@@ -90,10 +91,9 @@ public sealed class EulerStepper
             if (BallMotion.IsActive(_balls[i].State))
             {
                 Integrate(ref _balls[i], dt);
-                if (_balls[i].State == MotionState.Airborne && _balls[i].Position.Z <= _k.R)
+                if (_balls[i].State == MotionState.Airborne)
                 {
-                    // Found by overlap, like every contact here: the step that went below the bed.
-                    Land(i, timeAfter);
+                    ComeDown(ref _balls[i], i, timeAfter);
                 }
                 translating |= BallMotion.Translates(_balls[i].State);
             }
@@ -105,7 +105,30 @@ public sealed class EulerStepper
         }
     }
 
-    private void Land(int i, double time) => FrictionalLanding.LandLogged(ref _balls[i], _k, _log, _ids[i], time);
+    // Found by overlap, like every contact here: the step that took a ball in the air below the
+    // rails' top decides what it comes down on there (where its straight path crossed that
+    // height), and the step that took it below the bed lands it.
+    private void ComeDown(ref BallState b, int i, double time)
+    {
+        double top = _landing.RailTop;
+        var p0 = _start[i];
+        if (p0.Z >= top && b.Position.Z < top)
+        {
+            double s = (p0.Z - top) / (p0.Z - b.Position.Z);
+            var at = p0 + (b.Position - p0) * s;
+            var surface = _geometry.SurfaceUnder(at);
+            if (surface.Kind != SurfaceKind.Bed)
+            {
+                b.Position = new Vec3(at.X, at.Y, top);
+                _landing.OnSurface(ref b, i, surface, time);
+                return;
+            }
+        }
+        if (b.Position.Z <= _k.R)
+        {
+            _landing.OnBed(ref b, i, time);
+        }
+    }
 
     private void Integrate(ref BallState b, double dt)
     {
@@ -197,10 +220,11 @@ public sealed class EulerStepper
                 }
                 _ballBall.Resolve(ref a, ref b, _params);
                 // Overlap detection finds balls inside each other: put them back in touch, half
-                // each along the line of centres (as the thesis model's Formel 11 does).
+                // each along the line of centres (as the thesis model's Formel 11 does); a ball on
+                // the bed stays on it.
                 var correction = n * (0.5 * (2 * r - d.Length));
-                a.Position -= correction;
-                b.Position += correction;
+                a.Position -= a.State == MotionState.Airborne ? correction : correction.XY;
+                b.Position += b.State == MotionState.Airborne ? correction : correction.XY;
                 BallMotion.Classify(ref a, _k);
                 BallMotion.Classify(ref b, _k);
                 _log.Add(new SimEvent(time, EventKind.BallBall, _ids[i], _ids[j], -1, approach));
@@ -214,18 +238,7 @@ public sealed class EulerStepper
             {
                 continue;
             }
-            bool high = b.State == MotionState.Airborne && b.Position.Z - r >= _geometry.Spec.RailHeight;
-            bool beyond = Math.Abs(b.Position.X) > _geometry.Spec.HalfLength || Math.Abs(b.Position.Y) > _geometry.Spec.HalfWidth;
-            // Past the noses' line in the air it is gone: above the rails, or come down on one
-            // (anywhere but over a pocket's mouth).
-            if (b.State == MotionState.Airborne && beyond && (high || !TableBounds.Contains(_geometry.Spec, b.Position, r)))
-            {
-                _log.Add(new SimEvent(time, EventKind.BallOffTable, _ids[i], _ids[i], -1, b.Velocity.Length));
-                b.Velocity = Vec3.Zero;
-                b.Spin = Vec3.Zero;
-                b.State = MotionState.OffTable;
-                continue;
-            }
+            bool high = b.State == MotionState.Airborne && b.Position.Z >= _landing.RailTop;
             if (high)
             {
                 continue; // above the rails: no cushion, jaw or hole reaches it
@@ -421,15 +434,7 @@ public sealed class EulerStepper
         return s <= 1 ? s : double.PositiveInfinity;
     }
 
-    private void Drop(ref BallState b, int i, int pocket, double time)
-    {
-        double dropSpeed = b.Velocity.Length;
-        b.Velocity = Vec3.Zero;
-        b.Spin = Vec3.Zero;
-        b.State = MotionState.Pocketed;
-        b.Pocket = pocket;
-        _log.Add(new SimEvent(time, EventKind.BallPocket, _ids[i], _ids[i], pocket, dropSpeed));
-    }
+    private void Drop(ref BallState b, int i, int pocket, double time) => _landing.Drop(ref b, i, pocket, time);
 
     private void Cushion(ref BallState b, int i, Vec3 normal, int feature, double approach, double time)
     {

@@ -165,7 +165,7 @@ internal sealed class EulerIntegrator : StandardIntegrator
 
     /// <inheritdoc />
     public override IStepper Start(BallState[] balls, IReadOnlyList<BallId> ids, StandardTableModel model, EventLog log) =>
-        new Stepper(new EulerStepper(balls, ids, model.Parameters, model.Geometry, model.BallBall, model.BallCushion, log));
+        new Stepper(new EulerStepper(balls, ids, model, log));
 
     private sealed class Stepper(EulerStepper euler) : IStepper
     {

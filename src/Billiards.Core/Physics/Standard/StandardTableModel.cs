@@ -21,6 +21,8 @@ public sealed class StandardTableModel : TableModel
         Geometry = TableGeometry.Build(table, Parameters.R);
         BallBall = physics.Models.BallBall;
         BallCushion = physics.Models.BallCushion;
+        BallTable = physics.Models.BallTable;
+        BallPocket = physics.Models.BallPocket;
         Features = new FeatureBoxes(Geometry, Parameters.R);
     }
 
@@ -38,6 +40,12 @@ public sealed class StandardTableModel : TableModel
 
     /// <summary>Ball-cushion collision model.</summary>
     public IBallCushionModel BallCushion { get; }
+
+    /// <summary>Ball-table model: landings on the bed and on the rails' top.</summary>
+    public IBallTableModel BallTable { get; }
+
+    /// <summary>Ball-pocket model: drops into the holes.</summary>
+    public IBallPocketModel BallPocket { get; }
 
     internal FeatureBoxes Features { get; }
 

@@ -150,8 +150,10 @@ internal static class StabilityKit
     }
 
     /// <summary>
-    /// Every ball not in a pocket has its centre inside the cushion lines less R (to
-    /// <see cref="BedTolerance"/>) and z = R, or, when it flies, above R over that area.
+    /// Every ball not in a pocket or off the table has its centre inside the cushion lines less R
+    /// (to <see cref="BedTolerance"/>) or in a pocket's mouth clear of the jaws, and z = R, or, when it flies, z at least R and, wherever a
+    /// ball on the bed would not fit under it (over a cushion, a rail, a hole or the floor), its
+    /// bottom above the rails' top: nothing of the table is inside a ball in the air.
     /// </summary>
     public static void AssertOnBed(Simulation sim, string where)
     {
@@ -159,22 +161,45 @@ internal static class StabilityKit
         double r = RadiusOf(sim);
         double xMax = sim.Table.HalfLength - r + BedTolerance;
         double yMax = sim.Table.HalfWidth - r + BedTolerance;
+        var geometry = TableGeometry.Build(sim.Table, r);
+        double railTop = sim.Table.RailHeight + r;
         for (int i = 0; i < balls.Length; i++)
         {
-            if (balls[i].IsPocketed || balls[i].State == MotionState.OffTable)
+            if (balls[i].IsOutOfPlay)
             {
                 continue;
             }
             var p = balls[i].Position;
-            bool height = balls[i].State == MotionState.Airborne ? p.Z >= r - BedTolerance : Math.Abs(p.Z - r) <= BedTolerance;
-            // In the air a ball may pass over the cushions, up to their noses' line.
-            double slack = balls[i].State == MotionState.Airborne ? r : 0;
-            Assert.True(Math.Abs(p.X) <= xMax + slack && Math.Abs(p.Y) <= yMax + slack && height,
-                $"{where}: ball {sim.Ids[i]} left the bed at t = {sim.Time:R}: {Fmt(p)} (limits |x| <= {xMax:R}, |y| <= {yMax:R})");
+            if (balls[i].State == MotionState.Airborne)
+            {
+                bool overBed = geometry.SurfaceUnder(p).Kind == SurfaceKind.Bed;
+                Assert.True(p.Z >= (overBed ? r : railTop) - BedTolerance,
+                    $"{where}: ball {sim.Ids[i]} in the air at t = {sim.Time:R} is inside the table at {Fmt(p)} (over {geometry.SurfaceUnder(p).Kind}, rails' top {railTop:R})");
+                continue;
+            }
+            // Inside the noses' lines less R, or in a pocket's mouth, and in no cushion or jaw.
+            bool onBed = (Math.Abs(p.X) <= xMax && Math.Abs(p.Y) <= yMax)
+                || (TableBounds.Contains(sim.Table, p, r) && geometry.CushionDepth(p) <= StateChecker.CushionTolerance);
+            Assert.True(onBed && Math.Abs(p.Z - r) <= BedTolerance,
+                $"{where}: ball {sim.Ids[i]} left the bed at t = {sim.Time:R}: {Fmt(p)} (limits |x| <= {xMax:R}, |y| <= {yMax:R}, or a pocket's mouth; {geometry.CushionDepth(p):E3} m into a cushion)");
         }
     }
 
-    /// <summary>No two balls on the table overlap by more than <see cref="OverlapTolerance"/>.</summary>
+    /// <summary>
+    /// The table-bound guarantee at rest (<see cref="StateChecker.PlaceOf"/>): every ball is on the
+    /// bed, in a pocket or off the table, none outside the table nor inside a cushion.
+    /// </summary>
+    public static void AssertAtRestOnTheTable(Simulation sim, string where)
+    {
+        for (int i = 0; i < sim.Balls.Length; i++)
+        {
+            var place = StateChecker.PlaceOf(sim, i);
+            Assert.True(place is BallPlace.Bed or BallPlace.Pocket or BallPlace.OffTable,
+                $"{where}: ball {sim.Ids[i]} ended {place} at {Fmt(sim.Balls[i].Position)}, {sim.Balls[i].State}");
+        }
+    }
+
+    /// <summary>No two balls in play (in space) overlap by more than <see cref="OverlapTolerance"/>.</summary>
     public static void AssertNoOverlap(Simulation sim, string where)
     {
         var balls = sim.Balls;
@@ -183,11 +208,12 @@ internal static class StabilityKit
         {
             for (int j = i + 1; j < balls.Length; j++)
             {
-                if (balls[i].IsPocketed || balls[j].IsPocketed)
+                if (balls[i].IsOutOfPlay || balls[j].IsOutOfPlay)
                 {
                     continue;
                 }
-                double d = (balls[i].Position - balls[j].Position).LengthXY;
+                // In space: a ball in the air may pass over another.
+                double d = (balls[i].Position - balls[j].Position).Length;
                 Assert.True(d >= 2 * r - OverlapTolerance,
                     $"{where}: balls {sim.Ids[i]} and {sim.Ids[j]} overlap by {2 * r - d:E3} m at t = {sim.Time:R}");
             }

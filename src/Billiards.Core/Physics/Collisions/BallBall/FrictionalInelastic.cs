@@ -24,18 +24,15 @@ public sealed class FrictionalInelastic : IBallBallModel
     /// <inheritdoc />
     public string Name => "frictional-inelastic";
 
-    /// <inheritdoc />
-    public void Resolve(ref BallState a, ref BallState b, PhysicsParams p) => Resolve(ref a, ref b, p, inSpace: false);
-
     /// <summary>
-    /// The same impact for balls that touch off the bed plane (one or both in the air): the line of
-    /// centres is taken in space and the vertical impulse is kept, so a ball struck from above is
-    /// driven down (into the bed, which then returns it) and one struck from below is lifted.
+    /// Resolves the impact. With a ball in the air the line of centres is taken in space and the
+    /// vertical impulse is kept, so a ball struck from above is driven down (into the bed, which
+    /// then returns it) and one struck from below is lifted.
     /// </summary>
-    public static void ResolveInSpace(ref BallState a, ref BallState b, PhysicsParams p) => Instance.Resolve(ref a, ref b, p, inSpace: true);
-
-    private void Resolve(ref BallState a, ref BallState b, PhysicsParams p, bool inSpace)
+    public void Resolve(ref BallState a, ref BallState b, PhysicsParams p)
     {
+        ArgumentNullException.ThrowIfNull(p);
+        bool inSpace = a.State == MotionState.Airborne || b.State == MotionState.Airborne;
         double r = p.R;
         var n = inSpace ? (b.Position - a.Position).Normalized() : (b.Position - a.Position).XY.Normalized();
         double v1n = Vec3.Dot(a.Velocity, n);

@@ -32,6 +32,9 @@ namespace Billiards.Core.Physics.Collisions.BallBall;
 /// (<c>BallBallModelTests.TheMathavanStepLeavesTheStatedError</c>): 9.6e-5 of the speed in
 /// velocity (bound <see cref="StepErrorBound"/>); it falls about as 1/N (4.8e-5 at N = 100). About
 /// 4-8 µs a collision on the reference machine. No state is kept and nothing is allocated.</para>
+/// <para>With a ball in the air the line of centres is taken in space and the balls move in space:
+/// a ball in the air has no table friction, one on the bed has it only while the impact presses
+/// it into the cloth.</para>
 /// </remarks>
 public sealed class FrictionalMathavan : IBallBallModel
 {
@@ -55,18 +58,21 @@ public sealed class FrictionalMathavan : IBallBallModel
     {
         ArgumentNullException.ThrowIfNull(p);
         ArgumentOutOfRangeException.ThrowIfLessThan(steps, 1);
-        var n = (b.Position - a.Position).XY.Normalized();
-        var state = new Pair(a.Velocity.XY, a.Spin, b.Velocity.XY, b.Spin);
+        // With a ball in the air the line of centres leaves the bed plane (see Impact.Slopes).
+        var air = (a.State == MotionState.Airborne, b.State == MotionState.Airborne);
+        bool inSpace = air.Item1 || air.Item2;
+        var n = inSpace ? (b.Position - a.Position).Normalized() : (b.Position - a.Position).XY.Normalized();
+        var state = inSpace ? new Pair(a.Velocity, a.Spin, b.Velocity, b.Spin) : new Pair(a.Velocity.XY, a.Spin, b.Velocity.XY, b.Spin);
         double approach = Vec3.Dot(state.Va - state.Vb, n);
         if (approach <= 0)
         {
             return; // separating: no impact
         }
         double step = 0.5 * p.M * approach / steps;
-        state = ImpulseIntegration.Run(state, new Impact(n, p, step), step, p.EB);
-        a.Velocity = state.Va.XY;
+        state = ImpulseIntegration.Run(state, new Impact(n, p, step, inSpace, air.Item1, air.Item2), step, p.EB);
+        a.Velocity = inSpace ? state.Va : state.Va.XY;
         a.Spin = state.Wa;
-        b.Velocity = state.Vb.XY;
+        b.Velocity = inSpace ? state.Vb : state.Vb.XY;
         b.Spin = state.Wb;
     }
 
@@ -76,7 +82,7 @@ public sealed class FrictionalMathavan : IBallBallModel
     // Below the slips of one step of full friction (the balls' relative slip has inverse mass 7/m,
     // a table contact 7/2m), friction falls in proportion to the slip, so that a sticking contact
     // settles instead of chattering and the result depends smoothly on the balls' state.
-    private readonly struct Impact(Vec3 n, PhysicsParams p, double step) : IImpact<Pair>
+    private readonly struct Impact(Vec3 n, PhysicsParams p, double step, bool inSpace, bool airA, bool airB) : IImpact<Pair>
     {
         public double Approach(in Pair s) => Vec3.Dot(s.Va - s.Vb, n);
 
@@ -95,18 +101,40 @@ public sealed class FrictionalMathavan : IBallBallModel
             double d = Math.Max(slip, 7 * mu * step / p.M);
             var fa = d > 0 ? u * (-mu / d) : Vec3.Zero; // friction on a
 
-            // The vertical part of the friction presses one ball into the cloth, whose reaction brings
-            // table friction on that ball; it lifts the other, which then has no table contact.
-            var ta = fa.Z < 0 ? TableFriction(s.Va, s.Wa, -fa.Z) : Vec3.Zero;
-            var tb = fa.Z > 0 ? TableFriction(s.Vb, s.Wb, fa.Z) : Vec3.Zero;
+            Vec3 ta, tb, forceA, forceB;
+            if (inSpace)
+            {
+                // The line of centres in space (a ball in the air): each ball takes the whole force
+                // of the normal impulse and the balls' friction, in space; a ball on the bed that
+                // this force presses into the cloth gets the cloth's reaction (it stays on the bed)
+                // and the table's friction with it; a ball in the air, or one the force lifts, has
+                // no table contact.
+                forceA = fa - n;
+                forceB = n - fa;
+                bool pressedA = !airA && forceA.Z < 0 && s.Va.Z <= 0;
+                bool pressedB = !airB && forceB.Z < 0 && s.Vb.Z <= 0;
+                ta = pressedA ? TableFriction(s.Va, s.Wa, -forceA.Z) : Vec3.Zero;
+                tb = pressedB ? TableFriction(s.Vb, s.Wb, -forceB.Z) : Vec3.Zero;
+                forceA = pressedA ? (forceA + ta).XY : forceA;
+                forceB = pressedB ? (forceB + tb).XY : forceB;
+            }
+            else
+            {
+                // The vertical part of the friction presses one ball into the cloth, whose reaction brings
+                // table friction on that ball; it lifts the other, which then has no table contact.
+                ta = fa.Z < 0 ? TableFriction(s.Va, s.Wa, -fa.Z) : Vec3.Zero;
+                tb = fa.Z > 0 ? TableFriction(s.Vb, s.Wb, fa.Z) : Vec3.Zero;
+                forceA = (fa + ta - n).XY;
+                forceB = (tb - fa + n).XY;
+            }
 
             double invM = 1 / p.M, invI = 1 / p.Inertia;
             var down = new Vec3(0, 0, -r);
             var torqueBalls = Vec3.Cross(n * r, fa); // the same on both balls: (-R n) x (-fa)
             return new Pair(
-                (fa + ta - n).XY * invM,
+                forceA * invM,
                 (torqueBalls + Vec3.Cross(down, ta)) * invI,
-                (tb - fa + n).XY * invM,
+                forceB * invM,
                 (torqueBalls + Vec3.Cross(down, tb)) * invI);
         }
 

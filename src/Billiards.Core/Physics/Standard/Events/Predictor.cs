@@ -16,8 +16,10 @@ internal enum RailKind : byte
     Nose,
     /// <summary>A pocket's capture circle.</summary>
     Pocket,
-    /// <summary>The line of the cushion noses, crossed in the air above the rails: the ball leaves the table.</summary>
+    /// <summary>Coming down from above the rails' top over the floor, beyond the rails: the ball leaves the table.</summary>
     OffTable,
+    /// <summary>Coming down from above onto the top of a cushion or rail (the index is the nearest cushion feature).</summary>
+    RailTop,
 }
 
 /// <summary>
@@ -44,7 +46,7 @@ internal sealed class Predictor
     private readonly MotionConstants _k;
     private readonly double _r;
     private readonly TableGeometry _geometry;
-    private readonly double _railHeight;
+    private readonly double _railTop;
     private readonly BroadPhase _grid;
 
     private readonly FeatureBoxes _features;
@@ -69,7 +71,7 @@ internal sealed class Predictor
         _k = model.Constants;
         _r = _k.R;
         _geometry = model.Geometry;
-        _railHeight = model.Geometry.Spec.RailHeight;
+        _railTop = model.Geometry.Spec.RailHeight + _r;
         _features = model.Features;
         _grid = grid;
 
@@ -137,6 +139,19 @@ internal sealed class Predictor
         bool airborne = b.State == MotionState.Airborne;
         Coefficients c = default;
         double best = double.PositiveInfinity;
+        if (airborne && ComesDownOffTheBed(b, horizon, out double down, out var surface))
+        {
+            // Nothing below the rails' top meets a ball above it, so this is its first contact.
+            best = down;
+            (_railKind[i], _railIndex[i]) = surface.Kind switch
+            {
+                SurfaceKind.Pocket => (RailKind.Pocket, surface.Index),
+                SurfaceKind.Rail => (RailKind.RailTop, surface.Index),
+                _ => (RailKind.OffTable, -1),
+            };
+            horizon = down;
+            box = PathBox(b.Position, b.Velocity, acc, horizon);
+        }
 
         var segments = _geometry.Segments;
         for (int s = 0; s < segments.Length; s++)
@@ -204,16 +219,6 @@ internal sealed class Predictor
                 _railIndex[i] = s;
             }
         }
-        if (airborne)
-        {
-            double t = OffTableTime(b);
-            if (t < best && t <= horizon && (Clears(b, t) || !OverAMouth(b, t)))
-            {
-                best = t;
-                _railKind[i] = RailKind.OffTable;
-                _railIndex[i] = -1;
-            }
-        }
         _railTime[i] = time + best;
         PredictWindow(i, Math.Min(duration, best), time);
     }
@@ -221,33 +226,31 @@ internal sealed class Predictor
     // True when a ball in the air is, t seconds on, with its bottom above the rails' top: it
     // passes over the cushions and jaws there, and over the pockets' holes.
     private bool Clears(in BallState b, double t) =>
-        b.Position.Z + b.Velocity.Z * t - 0.5 * _k.G * t * t - _r >= _railHeight;
+        b.Position.Z + b.Velocity.Z * t - 0.5 * _k.G * t * t >= _railTop;
 
-    // True when a ball in the air crosses the noses' line t seconds on into a pocket's mouth (a
-    // millimetre on it is still over the table's bounds), where a low ball goes on to the hole. A
-    // low ball crossing elsewhere passed over the cushion's face high and came down on the rail.
-    private bool OverAMouth(in BallState b, double t)
+    // When a ball in the air comes down to the rails' top (the later root of a quadratic; none
+    // when it never gets so high) over something other than the bed, and what: a hole, a rail or
+    // the floor (TableGeometry.SurfaceUnder). Over the bed it falls on, between the cushions, to
+    // the bed's own landing.
+    private bool ComesDownOffTheBed(in BallState b, double horizon, out double t, out TableSurface surface)
     {
-        var p = b.Position + b.Velocity * t;
-        var step = b.Velocity.XY.Normalized() * 1e-3;
-        return TableBounds.Contains(_geometry.Spec, p + step, _r);
-    }
-
-    // When a ball in the air, moving in a straight line over the bed, first has its centre on the
-    // rectangle of the cushion noses (a root of a linear polynomial per side), or +infinity when it
-    // is already outside it (in a pocket's mouth) or never gets there.
-    private double OffTableTime(in BallState b)
-    {
-        double hx = _geometry.Spec.HalfLength, hy = _geometry.Spec.HalfWidth;
-        var p = b.Position;
-        var v = b.Velocity;
-        if (Math.Abs(p.X) > hx || Math.Abs(p.Y) > hy)
+        surface = default;
+        double c0 = b.Position.Z - _railTop, vz = b.Velocity.Z, g = _k.G;
+        t = double.PositiveInfinity;
+        double disc = vz * vz + 2 * g * c0;
+        if (disc < 0 || (c0 < 0 && vz <= 0))
         {
-            return double.PositiveInfinity;
+            return false;
         }
-        double tx = v.X > 0 ? (hx - p.X) / v.X : v.X < 0 ? (-hx - p.X) / v.X : double.PositiveInfinity;
-        double ty = v.Y > 0 ? (hy - p.Y) / v.Y : v.Y < 0 ? (-hy - p.Y) / v.Y : double.PositiveInfinity;
-        return Math.Min(tx, ty);
+        // c0 + vz t - g t^2 / 2 = 0, its later root, in the form without cancellation.
+        double root = Math.Sqrt(disc);
+        t = vz > 0 ? (vz + root) / g : root - vz > 0 ? 2 * c0 / (root - vz) : 0;
+        if (!(t <= horizon))
+        {
+            return false;
+        }
+        surface = _geometry.SurfaceUnder(b.Position + b.Velocity * t);
+        return surface.Kind != SurfaceKind.Bed;
     }
 
     /// <summary>

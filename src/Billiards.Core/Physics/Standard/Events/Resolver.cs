@@ -1,8 +1,6 @@
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics.Collisions;
-using Billiards.Core.Physics.Collisions.BallBall;
-using Billiards.Core.Physics.Collisions.BallTable;
 using Billiards.Core.Table;
 
 namespace Billiards.Core.Physics.Standard.Events;
@@ -25,6 +23,7 @@ internal sealed class Resolver
     private readonly IBallCushionModel _ballCushion;
     private readonly ContactMemory _contacts;
     private readonly EventLog _log;
+    private readonly Landing _landing;
 
     /// <summary>A resolver over the balls (changed in place), logging to <paramref name="log"/>.</summary>
     public Resolver(BallState[] balls, BallId[] ids, StandardTableModel model, ContactMemory contacts, EventLog log)
@@ -41,6 +40,7 @@ internal sealed class Resolver
         _ballCushion = model.BallCushion;
         _contacts = contacts;
         _log = log;
+        _landing = new Landing(model, ids, log);
     }
 
     /// <summary>Balls i and j collide at <paramref name="time"/> (s).</summary>
@@ -48,20 +48,12 @@ internal sealed class Resolver
     {
         ref var a = ref _balls[i];
         ref var b = ref _balls[j];
-        // In the air the line of centres leaves the bed plane; the bed's models (Mathavan's included)
-        // assume it horizontal, so such contacts take the frictional-inelastic impact in space.
+        // In the air the line of centres leaves the bed plane; the model takes it in space.
         bool inSpace = a.State == MotionState.Airborne || b.State == MotionState.Airborne;
         var n = inSpace ? (b.Position - a.Position).Normalized() : (b.Position - a.Position).XY.Normalized();
         double approach = Vec3.Dot(a.Velocity - b.Velocity, n);
         bool repeat = _contacts.IsRepeat(i, j, time) || _contacts.IsRepeat(j, i, time);
-        if (inSpace)
-        {
-            FrictionalInelastic.ResolveInSpace(ref a, ref b, repeat ? _elastic : _params);
-        }
-        else
-        {
-            _ballBall.Resolve(ref a, ref b, repeat ? _elastic : _params);
-        }
+        _ballBall.Resolve(ref a, ref b, repeat ? _elastic : _params);
         double separation = Vec3.Dot(b.Velocity - a.Velocity, n);
         if (repeat && separation < EventEngine.RepeatSeparationSpeed)
         {
@@ -80,7 +72,7 @@ internal sealed class Resolver
         LogLift(j, stateB, time);
     }
 
-    /// <summary>Ball i meets the face, nose or pocket <paramref name="index"/> at <paramref name="time"/> (s).</summary>
+    /// <summary>Ball i meets the face, nose, pocket or rail top <paramref name="index"/> at <paramref name="time"/> (s), or comes down off the table.</summary>
     public void Rail(int i, RailKind kind, int index, double time)
     {
         switch (kind)
@@ -99,10 +91,13 @@ internal sealed class Resolver
                     break;
                 }
             case RailKind.Pocket:
-                Pocket(i, _geometry.Pockets[index].Pocket, time);
+                _landing.Drop(ref _balls[i], i, _geometry.Pockets[index].Pocket, time);
+                break;
+            case RailKind.RailTop:
+                _landing.OnRail(ref _balls[i], i, index, time);
                 break;
             case RailKind.OffTable:
-                LeaveTable(i, time);
+                _landing.OffTable(ref _balls[i], i, time);
                 break;
         }
     }
@@ -132,10 +127,7 @@ internal sealed class Resolver
     }
 
     /// <summary>Ball i, in the air, reaches the bed at <paramref name="time"/> (s): it lands, and may bounce.</summary>
-    public void Land(int i, double time)
-    {
-        FrictionalLanding.LandLogged(ref _balls[i], _k, _log, _ids[i], time);
-    }
+    public void Land(int i, double time) => _landing.OnBed(ref _balls[i], i, time);
 
     // Logs a ball that a contact lifted off the bed.
     private void LogLift(int i, MotionState before, double time)
@@ -145,27 +137,5 @@ internal sealed class Resolver
         {
             _log.Add(new SimEvent(time, EventKind.BallAirborne, _ids[i], _ids[i], -1, ball.Velocity.Z));
         }
-    }
-
-    // Over the rails in the air: the ball is out of play where it crossed the cushions' line.
-    private void LeaveTable(int i, double time)
-    {
-        ref var ball = ref _balls[i];
-        double speed = ball.Velocity.Length;
-        ball.Velocity = Vec3.Zero;
-        ball.Spin = Vec3.Zero;
-        ball.State = MotionState.OffTable;
-        _log.Add(new SimEvent(time, EventKind.BallOffTable, _ids[i], _ids[i], -1, speed));
-    }
-
-    private void Pocket(int i, int pocket, double time)
-    {
-        ref var ball = ref _balls[i];
-        double dropSpeed = ball.Velocity.Length;
-        ball.Velocity = Vec3.Zero;
-        ball.Spin = Vec3.Zero;
-        ball.State = MotionState.Pocketed;
-        ball.Pocket = pocket;
-        _log.Add(new SimEvent(time, EventKind.BallPocket, _ids[i], _ids[i], pocket, dropSpeed));
     }
 }

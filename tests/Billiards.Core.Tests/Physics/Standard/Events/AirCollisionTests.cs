@@ -25,16 +25,18 @@ public class AirCollisionTests
     [InlineData(Integrators.Exact, 1.0 / 30)]
     public void ABallTossedOverTheFootRailLeavesTheTable(string integrator, double dt)
     {
-        // From x = 1.0 at 2 m/s along +x and 2.5 m/s up: the centre reaches the noses' line
-        // x = L/2 after (L/2 - 1) / 2 s, its bottom 0.25 m up, far above the rails.
+        // From x = 1.0 at 2 m/s along +x and 2.5 m/s up: it crosses the noses' line x = L/2 after
+        // (L/2 - 1) / 2 s, its bottom 0.25 m up, far above the rails, and comes down to the rails'
+        // top H when 2.5 t - g t^2 / 2 = H, at x = 1 + 2 t, beyond the rails: on the floor.
         var spec = TableSpec.FromPreset("pool-9ft");
         var sim = Create(integrator, dt, Table, null, "", Ball3("cue", 1.0, 0, R, 2, 0, 2.5));
         RunToRest(sim);
         var off = First(sim, EventKind.BallOffTable);
-        double t = (spec.HalfLength - 1.0) / 2;
+        double t = (2.5 + Math.Sqrt(2.5 * 2.5 - 2 * G * spec.RailHeight)) / G;
         Assert.True(Math.Abs(off.Time - t) < 1e-12, $"left at {off.Time:R} s, expected {t:R} s");
         Assert.Equal(MotionState.OffTable, sim.Balls[0].State);
-        Assert.Equal(spec.HalfLength, sim.Balls[0].Position.X, 12);
+        Assert.Equal(1.0 + 2 * t, sim.Balls[0].Position.X, 12);
+        Assert.True(sim.Balls[0].Position.X > spec.HalfLength + spec.RailWidth);
         Assert.DoesNotContain(Events(sim), e => e.Kind is EventKind.BallCushion or EventKind.BallPocket);
     }
 
