@@ -201,7 +201,7 @@ public static class PlayCommand
         {
             var matchNode = host.Tree.Root.GetInTree<MatchNode>();
             // One record per game of the session, one per line, as self-play writes them.
-            OutputFiles.Write(recordPath, GameRecordFile.ToJsonLines(matchNode.RecordedGames));
+            OutputFiles.Write(recordPath, GameRecordFile.ToJsonLines(matchNode.Session.RecordedGames));
         }
         return 0;
     }
@@ -229,7 +229,7 @@ public static class PlayCommand
     {
         var current = first;
         // A match (rules and players), or practice (a drill's name, or null for free practice).
-        (GameRules? Rules, MatchPlayer[]? Players, string? Drill, GameSettings Settings)? pending = null;
+        (GameRules? Rules, Seat[]? Players, string? Drill, GameSettings Settings)? pending = null;
         var drills = DrillLibrary.All().Select(d => (d.Name, d.Title)).ToList();
         void Listen(GameHost h)
         {
@@ -384,11 +384,11 @@ public static class PlayCommand
         {
             throw new CliException($"--players {players}: expected two players A,B (each human or computer:LEVEL)");
         }
-        var seats = new MatchPlayer[2];
+        var seats = new Seat[2];
         for (int i = 0; i < 2; i++)
         {
-            seats[i] = MatchPlayer.Parse(parts[i], i)
-                ?? throw new CliException($"--players {players}: \"{parts[i]}\" is not a player (a name of 1-{MatchPlayer.MaxNameLength} characters, human, or computer:LEVEL with LEVEL 1-5)");
+            seats[i] = Seat.Parse(parts[i], i)
+                ?? throw new CliException($"--players {players}: \"{parts[i]}\" is not a player (a name of 1-{Seat.MaxNameLength} characters, human, or computer:LEVEL with LEVEL 1-5)");
         }
         return new MatchSetup(g, seats);
     }

@@ -70,9 +70,11 @@ public sealed class PhysicsNode : Node
 
     /// <summary>
     /// When set (a match), a strike asks it for the shot's simulation, struck already, and runs
-    /// that one: the match makes every shot from the balls at rest, as a replay does.
+    /// that one: the match makes every shot from the balls at rest, as a replay does. A null
+    /// answer refuses the shot (not this seat's turn, an option to choose, the game over): nothing
+    /// is struck.
     /// </summary>
-    public Func<ShotSpec, Simulation>? StrikeThrough { get; set; }
+    public Func<ShotSpec, Simulation?>? StrikeThrough { get; set; }
 
     /// <summary>
     /// Shows and runs <paramref name="simulation"/> from now on (a match's table between shots);
@@ -333,7 +335,7 @@ public sealed class PhysicsNode : Node
         EndBallInHand();
     }
 
-    /// <summary>Strikes the cue ball; refused while balls roll.</summary>
+    /// <summary>Strikes the cue ball; refused while balls roll, and where <see cref="StrikeThrough"/> refuses it.</summary>
     /// <exception cref="InvalidOperationException">When balls are still rolling or there is no cue ball.</exception>
     public void Strike(ShotSpec shot)
     {
@@ -349,7 +351,10 @@ public sealed class PhysicsNode : Node
         if (StrikeThrough is { } strike)
         {
             // Asked before ball in hand ends: the match reads where the ball was placed.
-            var struck = strike(shot);
+            if (strike(shot) is not { } struck)
+            {
+                return;
+            }
             EndBallInHand();
             Swap(struck);
             _eventsSeen = 0;

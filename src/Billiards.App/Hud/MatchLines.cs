@@ -45,8 +45,8 @@ public static class MatchLines
         }
         if (match.IsOver)
         {
-            string next = match.RematchIn is double left ? $"Next game in {Math.Max(1, (int)Math.Ceiling(left))} s" : "Enter: rematch";
-            lines.Add(match.Winner is int w ? $"GAME OVER: {state.Players[w]} wins. {next}" : $"GAME OVER. {next}");
+            string next = match.Session.RematchIn is double left ? $"Next game in {Math.Max(1, (int)Math.Ceiling(left))} s" : "Enter: rematch";
+            lines.Add(match.Session.Winner is int w ? $"GAME OVER: {state.Players[w]} wins. {next}" : $"GAME OVER. {next}");
         }
         else if (computerStatus is not null)
         {

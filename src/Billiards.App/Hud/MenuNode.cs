@@ -54,7 +54,7 @@ public sealed class MenuNode : Node
     public event Action<GameSettings>? SettingsChosen;
 
     /// <summary>Signal: the start menu asks for a new game of these rules between these players.</summary>
-    public event Action<GameRules, MatchPlayer[]>? StartRequested;
+    public event Action<GameRules, Seat[]>? StartRequested;
 
     /// <summary>Signal: the start menu asks for practice: free (null) or the drill of this name.</summary>
     public event Action<string?>? PracticeRequested;
@@ -104,8 +104,8 @@ public sealed class MenuNode : Node
             PlayedSettings = StartSettings;
             return;
         }
-        var opponent = StartOpponent is int level ? new MatchPlayer($"Computer L{level}", level) : new MatchPlayer("Player 2");
-        StartRequested?.Invoke(StartGame, [new MatchPlayer("Player 1"), opponent]);
+        var opponent = StartOpponent is int level ? new Seat($"Computer L{level}", level) : new Seat("Player 2");
+        StartRequested?.Invoke(StartGame, [new Seat("Player 1"), opponent]);
     }
 
     /// <inheritdoc />
@@ -154,7 +154,7 @@ public sealed class MenuNode : Node
             case MenuPage.None when key == Key.Escape:
                 Open();
                 return true;
-            case MenuPage.None when key == MenuKey && _match is { IsOver: true, RematchIn: null }:
+            case MenuPage.None when key == MenuKey && _match is { IsOver: true, Session.RematchIn: null }:
                 ShowStart();
                 return true;
             case MenuPage.None:
@@ -295,7 +295,7 @@ public sealed class MenuNode : Node
                 y = height / 2f;
                 break;
             default:
-                if (_match is { IsOver: true, RematchIn: null } over)
+                if (_match is { IsOver: true, Session.RematchIn: null } over)
                 {
                     // Under the result panel (HudRenderer draws it above 0.64 of the height).
                     items.Add(("Rematch [Enter]", over.Rematch));

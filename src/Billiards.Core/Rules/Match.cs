@@ -136,6 +136,9 @@ public sealed class Match
     /// <summary>The state the referee will judge the running shot by (with its call, push-out and placement), or null.</summary>
     public GameState? RunningShotState => _struck?.Before;
 
+    /// <summary>The running shot: the state it is judged by and what the player did; null between shots.</summary>
+    public (GameState Before, GameShot Input)? RunningShot => _struck;
+
     /// <summary>Where the next shooter may place the cue ball (the break places behind the head string, in snooker in the D).</summary>
     public BallInHand BallInHand => State.Shot == 0 ? Ruleset.BreakBallInHand : State.BallInHand;
 

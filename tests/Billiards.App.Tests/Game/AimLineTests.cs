@@ -99,7 +99,7 @@ public class AimLineTests
     [InlineData("computer:1", "Ben", true)]
     public void InAMatchItStartsOnOnlyAgainstAComputerOfLevelTwoOrLess(string a, string b, bool on)
     {
-        var players = new[] { MatchPlayer.Parse(a, 0)!, MatchPlayer.Parse(b, 1)! };
+        var players = new[] { Seat.Parse(a, 0)!, Seat.Parse(b, 1)! };
         var scene = TestScenes.TwoBalls(rules: "eight-ball");
         using var host = new GameHost(scene, TestScenes.Create, new FakeWindow(), new ManualClock(), new MatchSetup(GameRules.EightBall, players));
         Assert.Equal(on, host.Tree.Root.GetInTree<AimLineNode>().Visible);
@@ -116,7 +116,7 @@ public class CallLineTests
     [InlineData("ten-ball", GameRules.TenBall, 3, true)]
     public void TheHudShowsACallOnlyWhereTheRulesCallTheShot(string name, GameRules rules, int shot, bool shown)
     {
-        var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
+        var players = new[] { new Seat("Anna"), new Seat("Ben") };
         // A scene's game block sets the shot number.
         var scene = TestScenes.TwoBalls(rules: name) with { Game = new GameState(rules) { Shot = shot, Players = new PerPlayer<string>("Anna", "Ben") } };
         using var host = new GameHost(scene, TestScenes.Create, new FakeWindow(), new ManualClock(), new MatchSetup(rules, players));
@@ -132,7 +132,7 @@ public class CallPickerTests
     [Fact]
     public void AClickOnABallCallsItAndAClickOnAPocketCallsThatPocketADragCallsNothing()
     {
-        var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
+        var players = new[] { new Seat("Anna"), new Seat("Ben") };
         var scene = TestScenes.TwoBalls(rules: "eight-ball") with { Game = new GameState(GameRules.EightBall) { Shot = 3, Players = new PerPlayer<string>("Anna", "Ben") } };
         var window = new FakeWindow { FramebufferSize = (1280, 720) };
         var clock = new ManualClock();
@@ -180,7 +180,7 @@ public class CallPickerTests
     [Fact]
     public void AClickOnTheDarkHoleOfAPocketCallsItNotOnlyAClickInItsMouth()
     {
-        var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
+        var players = new[] { new Seat("Anna"), new Seat("Ben") };
         var scene = TestScenes.TwoBalls(rules: "eight-ball") with { Game = new GameState(GameRules.EightBall) { Shot = 3, Players = new PerPlayer<string>("Anna", "Ben") } };
         var window = new FakeWindow { FramebufferSize = (1280, 720) };
         using var host = new GameHost(scene, TestScenes.Create, window, new ManualClock(), new MatchSetup(GameRules.EightBall, players));

@@ -26,7 +26,7 @@ public class SnookerWindowTests
     private static TestGame Start(GameState state)
     {
         var scene = SceneLoader.Parse(Json, "s.json") with { Game = state with { Players = new PerPlayer<string>("Anna", "Ben") } };
-        return new TestGame(scene, new MatchSetup(GameRules.Snooker, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+        return new TestGame(scene, new MatchSetup(GameRules.Snooker, [new Seat("Anna"), new Seat("Ben")]));
     }
 
     [Fact]
@@ -83,7 +83,7 @@ public class SnookerWindowTests
         match.CallBall(first);
         Assert.Equal(first, match.CurrentNomination!.Ball);
         game.Window.Press(Key.Space);
-        Assert.Equal(Call.Nominate(first), match.Shots[^1].Before.Call);
+        Assert.Equal(Call.Nominate(first), match.Session.Shots[^1].Before.Call);
     }
 
     [Fact]

@@ -21,7 +21,7 @@ public class StaleLineTests
     {
         var scene = SceneLoader.Load(AssetFolder.Scene("eight-ball.json"));
         Assert.Equal("8-ball for two players", scene.Name);
-        var setup = new MatchSetup(rules, [MatchPlayer.Parse(a, 0)!, MatchPlayer.Parse(b, 1)!]);
+        var setup = new MatchSetup(rules, [Seat.Parse(a, 0)!, Seat.Parse(b, 1)!]);
         Assert.Equal(expected, PlayCommand.TitleFor(scene, setup));
         Assert.Equal("Billiards: 8-ball for two players", PlayCommand.TitleFor(scene, null));
     }

@@ -38,7 +38,7 @@ public class TurnGateTests
         var window = new FakeWindow();
         var clock = new ManualClock();
         using var host = new GameHost(scene, SimulationFactory.Create, window, clock,
-            new MatchSetup(GameRules.EightBall, [new MatchPlayer("Computer L1", 1), new MatchPlayer("Anna")]));
+            new MatchSetup(GameRules.EightBall, [new Seat("Computer L1", 1), new Seat("Anna")]));
         var match = host.Tree.Root.GetInTree<MatchNode>();
         host.Tree.Root.GetInTree<ComputerPlayerNode>().BudgetMs = 120_000;
         string? before = match.Message;
@@ -58,7 +58,7 @@ public class TurnGateTests
         var window = new FakeWindow();
         var clock = new ManualClock();
         using var host = new GameHost(scene, SimulationFactory.Create, window, clock,
-            new MatchSetup(GameRules.EightBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+            new MatchSetup(GameRules.EightBall, [new Seat("Anna"), new Seat("Ben")]));
         var match = host.Tree.Root.GetInTree<MatchNode>();
         void Frame()
         {
@@ -112,7 +112,7 @@ public class TurnGateTests
         var window = new FakeWindow();
         var clock = new ManualClock();
         using var host = new GameHost(scene, SimulationFactory.Create, window, clock,
-            new MatchSetup(GameRules.EightBall, [new MatchPlayer("Computer L1", 1), new MatchPlayer("Computer L2", 2)]));
+            new MatchSetup(GameRules.EightBall, [new Seat("Computer L1", 1), new Seat("Computer L2", 2)]));
         var match = host.Tree.Root.GetInTree<MatchNode>();
         var computer = host.Tree.Root.GetInTree<ComputerPlayerNode>();
         computer.BudgetMs = 120_000; // never cut short: the same decisions every run
