@@ -166,20 +166,9 @@ public sealed class Match
         return sim;
     }
 
-    /// <summary>Plays one shot headless (strike, run to rest, judge) and applies its ruling; an offered option defaults to the first.</summary>
-    /// <exception cref="InvalidOperationException">After the game is over, or when placing the cue ball without ball in hand.</exception>
-    public MatchShot Play(GameShot input)
-    {
-        var sim = Strike(input);
-        RunToRest(sim);
-        Judge(sim);
-        if (PendingOptions.Count > 0)
-        {
-            Choose(PendingOptions[0]);
-        }
-        // After a choice the last shot carries it.
-        return _shots[^1];
-    }
+    /// <summary>Plays one shot headless through the one shot loop (<see cref="Session.Play"/>: strike, run to rest, judge) and applies its ruling; an offered option defaults to the first.</summary>
+    /// <exception cref="InvalidOperationException">After the game is over, with an option pending, or when placing the cue ball without ball in hand.</exception>
+    public MatchShot Play(GameShot input) => Session.Over(this).Play(input, SeatKind.Script);
 
     /// <summary>Plays a whole game from its shots.</summary>
     public static Match PlayAll(GameSetup setup, IEnumerable<GameShot> shots)

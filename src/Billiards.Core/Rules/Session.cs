@@ -57,6 +57,23 @@ public sealed class Session
         NewMatch(_first);
     }
 
+    // A session over a game already made (Match.Play's one shot): script seats, the game's own simulations.
+    private Session(Match game)
+    {
+        Seats = Seat.Of(game.Setup.Start.Players, SeatKind.Script);
+        _first = game.Setup;
+        _opening = game.Setup.Start;
+        Game = game;
+        _games.Add(game);
+    }
+
+    /// <summary>A session that plays on <paramref name="game"/> as it stands, from script seats (a test's or a tool's shots).</summary>
+    public static Session Over(Match game)
+    {
+        ArgumentNullException.ThrowIfNull(game);
+        return new Session(game);
+    }
+
     /// <summary>
     /// A session on a scene's table: its physics, its rack's seed and its game block (for
     /// <paramref name="rules"/>; another game's block is ignored), from the balls of
@@ -165,7 +182,7 @@ public sealed class Session
     /// </summary>
     public long Turn { get; private set; }
 
-    /// <summary>True when the players allow take-backs (off by default).</summary>
+    /// <summary>True when the players allow take-backs (off by default); the timeline keeps the shots struck while it is on.</summary>
     public bool TakeBacks { get; set; }
 
     /// <summary>Shots taken back in this session.</summary>
@@ -227,9 +244,13 @@ public sealed class Session
             Message = refusal;
             return null;
         }
-        var snapshot = Game.Snapshot();
+        // The timeline is kept where take-backs are allowed (a headless game never takes one back).
+        var snapshot = TakeBacks ? Game.Snapshot() : null;
         var sim = Game.Strike(shot);
-        _timeline.Add((snapshot, GamesWon));
+        if (snapshot is not null)
+        {
+            _timeline.Add((snapshot, GamesWon));
+        }
         Message = null;
         Turn++;
         return sim;
