@@ -169,7 +169,7 @@ public sealed class ComputerPlayerNode : Node
             Status = null;
             return;
         }
-        int level = _match.Shooter.ComputerLevel ?? HintLevel;
+        int level = _match.Session.Shooter.ComputerLevel ?? HintLevel;
         if (_match.PendingOptions.Count > 0)
         {
             ChooseOption();
@@ -267,7 +267,7 @@ public sealed class ComputerPlayerNode : Node
         {
             LastHint = done.Result;
             _match.Adopt(done.Result, exactCall: false);
-            _match.SayHint(done.Result);
+            _match.Session.Say(HintLine(done.Result));
         }
     }
 }

@@ -30,9 +30,6 @@ public sealed class MatchNode : Node
     /// <summary>The keyboard power at the start (m/s), and where it comes back to after a power break.</summary>
     public const double DefaultPower = 3.0;
 
-    /// <summary>Seconds a game between two computers stays over before the next one starts by itself.</summary>
-    public const double AutoRematchSeconds = Session.AutoRematchSeconds;
-
     private readonly ShotCall _call;
     private PhysicsNode? _physics;
     private CueNode? _cue;
@@ -48,7 +45,7 @@ public sealed class MatchNode : Node
         Session = session;
         _call = new ShotCall(this);
         // Subscribed first: the table is shown as the session left it before anyone else hears of it.
-        session.Ruled += OnRuled;
+        session.Ruled += _ => ShowTable();
         session.TableReplaced += ShowTable;
         session.ShooterToPlay += () => _call.Clear();
     }
@@ -61,9 +58,6 @@ public sealed class MatchNode : Node
 
     /// <summary>The game's ruleset.</summary>
     public Ruleset Ruleset => Session.Ruleset;
-
-    /// <summary>The game being played.</summary>
-    public GameRules Rules => Session.Rules;
 
     /// <summary>The two seats.</summary>
     public IReadOnlyList<Seat> Players => Session.Seats;
@@ -85,9 +79,6 @@ public sealed class MatchNode : Node
 
     /// <summary>True while the computer is to move.</summary>
     public bool IsComputerActing => Session.IsComputerActing;
-
-    /// <summary>The shooter's seat.</summary>
-    public Seat Shooter => Session.Shooter;
 
     /// <summary>True when the players allow take-backs (<see cref="Session.TakeBacks"/>).</summary>
     public bool TakeBacks { get => Session.TakeBacks; set => Session.TakeBacks = value; }
@@ -146,11 +137,8 @@ public sealed class MatchNode : Node
     /// <summary>True when the shooter nominates a ball without a pocket.</summary>
     public bool NeedsNomination => Ruleset.Nominates(State);
 
-    /// <summary>Calls a ball (a click on it).</summary>
-    public void CallBall(BallId ball) => _call.CallBall(ball);
-
-    /// <summary>Calls a pocket (a click on it) for the called ball, or for the aimed one.</summary>
-    public void CallPocket(PocketId pocket) => _call.CallPocket(pocket);
+    /// <summary>The call being picked for the next shot (B, C, a click, a plan's).</summary>
+    public ShotCall Call => _call;
 
     /// <summary>Turns the cue to <paramref name="degrees"/> exactly (the camera's azimuth behind the cue ball).</summary>
     public void AimAt(double degrees)
@@ -202,27 +190,14 @@ public sealed class MatchNode : Node
         AimAt(decision.Shot.AimDeg);
     }
 
-    /// <summary>Shows what a hint suggests.</summary>
-    public void SayHint(Billiards.Core.Ai.Decision hint)
-    {
-        ArgumentNullException.ThrowIfNull(hint);
-        Session.Say(ComputerPlayerNode.HintLine(hint));
-    }
-
     /// <summary>Strikes a shot the computer plays (its plan with its own error), with the call it adopted; the session refuses it when it is not the computer's turn.</summary>
     public void StrikeAsComputer(ShotSpec shot)
     {
         if (CanShoot)
         {
             _computerStrikes = true;
-            try
-            {
-                _physics!.Strike(_cue?.Playable(shot) ?? shot);
-            }
-            finally
-            {
-                _computerStrikes = false;
-            }
+            _physics!.Strike(_cue?.Playable(shot) ?? shot);
+            _computerStrikes = false;
         }
     }
 
@@ -346,22 +321,9 @@ public sealed class MatchNode : Node
         return sim;
     }
 
-    // The ruling shown: the table as the ruling left it, and the cue ball in hand where it gives it.
-    private void OnRuled(Ruling ruling)
-    {
-        if (IsOver || PendingOptions.Count > 0)
-        {
-            // The table waits as the shot left it until the incoming player chooses.
-            LoadLayout();
-            _physics?.EndBallInHand();
-        }
-        else
-        {
-            ShowTable();
-        }
-    }
-
-    // The table between shots, the ball the next shooter strikes on it, and their ball in hand.
+    // The table between shots (after a ruling, a choice, a take-back, a new game), the ball the
+    // next shooter strikes on it, and their ball in hand; with an option pending or the game over
+    // the table waits as the shot left it.
     private void ShowTable()
     {
         PushOut = false;
@@ -372,8 +334,9 @@ public sealed class MatchNode : Node
         {
             return;
         }
-        LoadLayout();
-        if (Session.BallInHand == BallInHand.None || IsOver)
+        _physics.CueBall = Ruleset.CueBall(Game.State);
+        _physics.Load(Game.Layout());
+        if (Session.BallInHand == BallInHand.None || IsOver || PendingOptions.Count > 0)
         {
             _physics.EndBallInHand();
         }
@@ -381,11 +344,5 @@ public sealed class MatchNode : Node
         {
             _physics.GiveBallInHand(Session.BallInHand.Region());
         }
-    }
-
-    private void LoadLayout()
-    {
-        _physics!.CueBall = Ruleset.CueBall(Game.State);
-        _physics.Load(Game.Layout());
     }
 }

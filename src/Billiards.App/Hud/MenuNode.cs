@@ -79,7 +79,7 @@ public sealed class MenuNode : Node
     {
         if (_match is not null)
         {
-            StartGame = _match.Rules;
+            StartGame = _match.Session.Rules;
             StartOpponent = _match.Players[1].ComputerLevel;
         }
         Open();
@@ -93,7 +93,7 @@ public sealed class MenuNode : Node
         {
             SettingsChosen?.Invoke(StartSettings);
         }
-        if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings.Physics == PlayedSettings.Physics)
+        if (_match is not null && _match.Session.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings.Physics == PlayedSettings.Physics)
         {
             // The game behind the menu is the one chosen; a new pace or take-back setting takes effect in it at once.
             if (FindInTree<ComputerPlayerNode>() is { } computer)

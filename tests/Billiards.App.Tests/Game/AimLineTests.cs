@@ -203,7 +203,7 @@ public class CallPickerTests
         Assert.True(Vector2.Distance(holePixel, capturePixel) > MathF.Max(1.5f * Vector2.Distance(capturePixel, captureEdge), 12),
             $"the hole's middle is {Vector2.Distance(holePixel, capturePixel)} px from the capture circle's");
 
-        match.CallBall(new BallId(1));
+        match.Call.CallBall(new BallId(1));
         window.MoveTo(holePixel.X, holePixel.Y);
         window.Down();
         window.Up();

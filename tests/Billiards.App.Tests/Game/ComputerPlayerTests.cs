@@ -150,8 +150,8 @@ public class ComputerPlayerTests
         using (host)
         {
             Assert.Equal(0, match.Session.Winner);
-            Assert.InRange(match.Session.RematchIn!.Value, MatchNode.AutoRematchSeconds - 0.1, MatchNode.AutoRematchSeconds);
-            for (int i = 0; i < 30 * (MatchNode.AutoRematchSeconds - 1); i++)
+            Assert.InRange(match.Session.RematchIn!.Value, Session.AutoRematchSeconds - 0.1, Session.AutoRematchSeconds);
+            for (int i = 0; i < 30 * (Session.AutoRematchSeconds - 1); i++)
             {
                 frame();
             }
@@ -174,7 +174,7 @@ public class ComputerPlayerTests
         using (host)
         {
             Assert.Null(match.Session.RematchIn);
-            for (int i = 0; i < 30 * (MatchNode.AutoRematchSeconds + 2); i++)
+            for (int i = 0; i < 30 * (Session.AutoRematchSeconds + 2); i++)
             {
                 frame();
             }

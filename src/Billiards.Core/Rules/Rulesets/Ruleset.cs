@@ -26,21 +26,57 @@ public readonly record struct Visit(int Player, int Shots, int Break, bool Open)
 /// </summary>
 public abstract class Ruleset
 {
-    private static readonly Ruleset[] Rulesets = [new EightBallRuleset(), new NineBallRuleset(), new TenBallRuleset(), new StraightPoolRuleset(), new SnookerRuleset()];
+    private static readonly Lock RegistryLock = new();
+    private static Ruleset[] _registered = [new EightBallRuleset(), new NineBallRuleset(), new TenBallRuleset(), new StraightPoolRuleset(), new SnookerRuleset()];
 
-    /// <summary>Every ruleset, in <see cref="GameRules"/> order.</summary>
-    public static IReadOnlyList<Ruleset> All => Rulesets;
+    /// <summary>Every registered ruleset, in the order of registration (the shipped five first).</summary>
+    public static IReadOnlyList<Ruleset> All => Volatile.Read(ref _registered);
+
+    /// <summary>
+    /// Registers a game (its ruleset by its name): from then on scenes, records, <c>selfplay
+    /// --rules</c> and the window know it. Registering the same ruleset type again does nothing.
+    /// </summary>
+    /// <exception cref="ArgumentException">When another ruleset already has the name.</exception>
+    public static void Register(Ruleset ruleset)
+    {
+        ArgumentNullException.ThrowIfNull(ruleset);
+        lock (RegistryLock)
+        {
+            if (Find(ruleset.Name) is { } known)
+            {
+                if (known.GetType() != ruleset.GetType())
+                {
+                    throw new ArgumentException($"a game named \"{ruleset.Name}\" is registered already", nameof(ruleset));
+                }
+                return;
+            }
+            Volatile.Write(ref _registered, [.. _registered, ruleset]);
+        }
+    }
+
+    /// <summary>The registered ruleset named <paramref name="name"/>, or null.</summary>
+    public static Ruleset? Find(string name)
+    {
+        foreach (var ruleset in All)
+        {
+            if (ruleset.Name == name)
+            {
+                return ruleset;
+            }
+        }
+        return null;
+    }
 
     /// <summary>The ruleset of <paramref name="game"/>.</summary>
-    public static Ruleset For(GameRules game) => (int)game >= 0 && (int)game < Rulesets.Length
-        ? Rulesets[(int)game]
-        : throw new ArgumentOutOfRangeException(nameof(game), game, "no such game");
+    /// <exception cref="ArgumentOutOfRangeException">For a game no ruleset is registered for.</exception>
+    public static Ruleset For(GameRules game) => (game.Name is null ? null : Find(game.Name))
+        ?? throw new ArgumentOutOfRangeException(nameof(game), game, "no such game");
 
     /// <summary>The game.</summary>
     public abstract GameRules Game { get; }
 
     /// <summary>The game's name in files, e.g. "eight-ball".</summary>
-    public string Name => Game.ToName();
+    public string Name => Game.Name;
 
     /// <summary>The game's short name for people, e.g. "8-ball" (the scoreboard's).</summary>
     public abstract string ShortName { get; }
@@ -57,15 +93,15 @@ public abstract class Ruleset
     /// <summary>The balls of a game, cue ball first (a subset of <see cref="BallSet"/>).</summary>
     public abstract IReadOnlyList<BallId> Balls { get; }
 
-    /// <summary>The shape of the game's rack.</summary>
-    protected abstract RackGame RackShape { get; }
+    /// <summary>
+    /// The shape of the game's rack, where it is one of the shapes the scene format knows; a game
+    /// with a rack of its own overrides <see cref="Rack"/> and <see cref="CueStart"/> instead.
+    /// </summary>
+    protected virtual RackGame RackShape => throw new NotSupportedException($"{Name} racks its own balls (Ruleset.Rack)");
 
     /// <summary>The object balls racked for a break with the rack's jitter from <paramref name="seed"/> (m, z = R).</summary>
-    public IReadOnlyList<(BallId Id, Vec3 Position)> Rack(TableSpec table, double ballRadius, int seed) =>
+    public virtual IReadOnlyList<(BallId Id, Vec3 Position)> Rack(TableSpec table, double ballRadius, int seed) =>
         Initializer.Rack(new RackSpec(RackShape, seed), table, ballRadius);
-
-    /// <summary>The rack's shape as the scene loader and the physics name it.</summary>
-    public RackGame RackGame => RackShape;
 
     /// <summary>The table the game is played on by default (a preset of <see cref="TableSpec.FromPreset"/>).</summary>
     public virtual string TablePreset => "pool-9ft";
@@ -74,7 +110,7 @@ public abstract class Ruleset
     public virtual BallInHand BreakBallInHand => BallInHand.Kitchen;
 
     /// <summary>Where a rack's cue ball starts (m, z = R): the head spot in pool, in the D in snooker.</summary>
-    public Vec3 CueStart(TableSpec table, double ballRadius) => Initializer.CueStart(RackShape, table, ballRadius);
+    public virtual Vec3 CueStart(TableSpec table, double ballRadius) => Initializer.CueStart(RackShape, table, ballRadius);
 
     /// <summary>
     /// Puts the ruling's <paramref name="balls"/> back on the table at rest in
