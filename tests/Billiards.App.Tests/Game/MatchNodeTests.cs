@@ -203,9 +203,9 @@ public class SeatTests
     }
 
     [Theory]
-    [InlineData(GameRules.EightBall, 0, MatchNode.DefaultPower)]
-    [InlineData(GameRules.EightBall, 3, MatchNode.MaxPower)]
-    [InlineData(GameRules.Snooker, 0, MatchNode.MaxPower)]
+    [InlineData("eight-ball", 0, MatchNode.DefaultPower)]
+    [InlineData("eight-ball", 3, MatchNode.MaxPower)]
+    [InlineData("snooker", 0, MatchNode.MaxPower)]
     public void APowerBreakLeavesTheNextShotAtTheStartingPowerAndOtherShotsKeepTheirs(GameRules rules, int shot, double after)
     {
         // FourBallGames' pool table; snooker's break-off is not a power break, whatever the table.
