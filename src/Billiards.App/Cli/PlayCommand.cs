@@ -379,7 +379,8 @@ public static class PlayCommand
         {
             return players is null ? null : throw new CliException($"--players {players}: {scene.Path} names no rules; give --rules too");
         }
-        string[] parts = (players ?? DefaultPlayers).Split(',');
+        // Without --players: a person against the computer, or two people where the computer does not play the game.
+        string[] parts = (players ?? (Ruleset.For(g).HasComputerPlayer ? DefaultPlayers : "human,human")).Split(',');
         if (parts.Length != 2)
         {
             throw new CliException($"--players {players}: expected two players A,B (each human or computer:LEVEL)");
@@ -389,6 +390,10 @@ public static class PlayCommand
         {
             seats[i] = Seat.Parse(parts[i], i)
                 ?? throw new CliException($"--players {players}: \"{parts[i]}\" is not a player (a name of 1-{Seat.MaxNameLength} characters, human, or computer:LEVEL with LEVEL 1-5)");
+        }
+        if (Session.SeatProblem(Ruleset.For(g), seats) is { } problem)
+        {
+            throw new CliException($"--players {players}: {problem}");
         }
         return new MatchSetup(g, seats);
     }

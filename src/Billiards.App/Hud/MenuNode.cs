@@ -104,7 +104,8 @@ public sealed class MenuNode : Node
             PlayedSettings = StartSettings;
             return;
         }
-        var opponent = StartOpponent is int level ? new Seat($"Computer L{level}", level) : new Seat("Player 2");
+        // A game the computer does not play seats a person.
+        var opponent = StartOpponent is int level && Ruleset.For(StartGame).HasComputerPlayer ? new Seat($"Computer L{level}", level) : new Seat("Player 2");
         StartRequested?.Invoke(StartGame, [new Seat("Player 1"), opponent]);
     }
 

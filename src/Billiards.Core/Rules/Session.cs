@@ -48,6 +48,10 @@ public sealed class Session
         {
             throw new ArgumentException("a session has two seats", nameof(seats));
         }
+        if (SeatProblem(first.Ruleset, seats) is { } problem)
+        {
+            throw new ArgumentException(problem, nameof(seats));
+        }
         Seats = seats;
         _createSimulation = createSimulation;
         var names = new PerPlayer<string>(seats[0].Name, seats[1].Name);
@@ -55,6 +59,16 @@ public sealed class Session
         _first = first with { Start = start };
         _opening = opening is null ? start : opening with { Players = start.Players };
         NewMatch(_first);
+    }
+
+    /// <summary>Why <paramref name="seats"/> cannot sit at <paramref name="ruleset"/>'s game (a computer seat where the game has no computer player), or null.</summary>
+    public static string? SeatProblem(Ruleset ruleset, IReadOnlyList<Seat> seats)
+    {
+        ArgumentNullException.ThrowIfNull(ruleset);
+        ArgumentNullException.ThrowIfNull(seats);
+        return !ruleset.HasComputerPlayer && seats.Any(s => s.Kind == SeatKind.Computer)
+            ? $"the computer player does not play {ruleset.Name}: seat a person"
+            : null;
     }
 
     // A session over a game already made (Match.Play's one shot): script seats, the game's own simulations.

@@ -82,4 +82,18 @@ public class TouchGameTests
             Directory.Delete(dir, recursive: true);
         }
     }
+
+    [Fact]
+    public void TheWindowRefusesAComputerSeatWhereTheGameHasNoComputerPlayer()
+    {
+        var rules = TouchByHandRuleset.Register();
+        var scene = SceneLoader.Parse(Scene.Replace("\"touch\"", "\"touch-by-hand\"", StringComparison.Ordinal), "touch-by-hand.json");
+        var refused = Assert.Throws<Billiards.App.Cli.CliException>(() => Billiards.App.Cli.PlayCommand.MatchFor(scene, rules, "human,computer:2"));
+        Assert.Contains("computer player does not play touch-by-hand", refused.Message, StringComparison.Ordinal);
+        Assert.Throws<ArgumentException>(() => new GameHost(scene, SimulationFactory.Create, new FakeWindow(), new ManualClock(),
+            new MatchSetup(rules, [new Seat("Anna"), new Seat("Computer L2", 2)])));
+        // Without --players two people sit down.
+        var people = Billiards.App.Cli.PlayCommand.MatchFor(scene, rules, null)!;
+        Assert.All(people.Players, p => Assert.True(p.IsHuman));
+    }
 }

@@ -84,3 +84,39 @@ internal sealed class TouchRuleset : Ruleset
         }
     }
 }
+
+/// <summary>Touch without a computer player: the window seats people only.</summary>
+internal sealed class TouchByHandRuleset : Ruleset
+{
+    private readonly TouchRuleset _touch = new();
+
+    /// <summary>The game.</summary>
+    public static GameRules TouchByHand { get; } = new("touch-by-hand");
+
+    /// <summary>Registers the game (once; again does nothing).</summary>
+    public static GameRules Register()
+    {
+        Ruleset.Register(new TouchByHandRuleset());
+        return TouchByHand;
+    }
+
+    public override GameRules Game => TouchByHand;
+
+    public override string ShortName => "touch by hand";
+
+    public override bool HasComputerPlayer => false;
+
+    public override string TablePreset => _touch.TablePreset;
+
+    public override IReadOnlyList<BallId> Balls => _touch.Balls;
+
+    public override IReadOnlyList<(BallId Id, Vec3 Position)> Rack(TableSpec table, double ballRadius, int seed) => _touch.Rack(table, ballRadius, seed);
+
+    public override Vec3 CueStart(TableSpec table, double ballRadius) => _touch.CueStart(table, ballRadius);
+
+    public override IReferee Referee(TableSpec table, double ballRadius) => _touch.Referee(table, ballRadius);
+
+    public override IReadOnlyList<BallId> LegalTargets(GameState state, IEnumerable<BallId> objectBalls) => _touch.LegalTargets(state, objectBalls);
+
+    public override HudTarget Target(GameState state, int player, IReadOnlyCollection<BallId> objectBalls) => _touch.Target(state, player, objectBalls);
+}
