@@ -2,7 +2,7 @@ using Billiards.Core.Rules;
 using Billiards.Core.Table;
 using static Billiards.Core.Tests.Rules.RulesKit;
 
-namespace Billiards.Core.Tests.Rules.Rulesets;
+namespace Billiards.Core.Tests.Rules.Games;
 
 /// <summary>rules.md, "9-ball": each rule, a hand-made shot and the ruling written from the rule.</summary>
 public class NineBallRefereeTests

@@ -1,7 +1,7 @@
 using Billiards.Core.Balls;
 using Billiards.Core.Rules;
 
-namespace Billiards.Core.Tests.Rules.Rulesets;
+namespace Billiards.Core.Tests.Rules;
 
 /// <summary>Each game's ruleset answers the next shot's questions as rules.md has them.</summary>
 public class RulesetTests

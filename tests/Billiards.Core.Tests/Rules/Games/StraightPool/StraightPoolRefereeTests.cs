@@ -2,7 +2,7 @@ using Billiards.Core.Rules;
 using Billiards.Core.Table;
 using static Billiards.Core.Tests.Rules.RulesKit;
 
-namespace Billiards.Core.Tests.Rules.Rulesets;
+namespace Billiards.Core.Tests.Rules.Games;
 
 /// <summary>rules.md, "14.1 continuous": points, the opening break, foul penalties, reracks of 14.</summary>
 public class StraightPoolRefereeTests
