@@ -156,7 +156,7 @@ public sealed class Match
         var cue = Ruleset.CueBall(State);
         if (!balls.ContainsKey(cue))
         {
-            var region = BallInHand switch { BallInHand.Kitchen => PlacementRegion.Kitchen, BallInHand.D => PlacementRegion.D, _ => PlacementRegion.Table };
+            var region = BallInHand.Region();
             var head = Ruleset.CueStart(Setup.Table, Setup.BallRadius);
             balls[cue] = BallInHand == BallInHand.None ? head
                 : Placement.FreeSpotNear(Setup.Table, Setup.BallRadius, cue, head, balls.Select(b => (b.Key, b.Value)), region);

@@ -123,8 +123,51 @@ public abstract class Ruleset
         ArgumentNullException.ThrowIfNull(balls);
         foreach (var ball in balls)
         {
-            simulation.SpotBall(ball);
+            SpotOnFootSpot(simulation, ball);
         }
+    }
+
+    /// <summary>
+    /// Pool's spotting (rules.md): ball <paramref name="id"/> goes on the foot spot (x = +L/4,
+    /// y = 0), or at the nearest point behind it on the long axis (towards the foot rail) where it
+    /// touches no other ball; when no such point is left before the foot cushion, at the nearest
+    /// one in front of it. The ball's own current place does not count against it. Only between shots.
+    /// </summary>
+    /// <returns>Where the ball was put (m).</returns>
+    /// <exception cref="Physics.PlacementException">When the ball is not in the simulation, or the whole long axis is taken.</exception>
+    /// <exception cref="InvalidOperationException">While balls move.</exception>
+    public static Vec3 SpotOnFootSpot(Physics.Simulation simulation, BallId id)
+    {
+        ArgumentNullException.ThrowIfNull(simulation);
+        int index = simulation.IndexOf(id);
+        if (index < 0)
+        {
+            throw new Physics.PlacementException($"ball \"{id}\" is not in this game's ball set");
+        }
+        var others = new List<Vec3>();
+        var balls = simulation.Balls;
+        for (int j = 0; j < balls.Length; j++)
+        {
+            if (j != index && !balls[j].IsOutOfPlay)
+            {
+                others.Add(balls[j].Position);
+            }
+        }
+        double r = simulation.BallRadius;
+        double spot = simulation.Table.HalfLength / 2;
+        double limit = simulation.Table.HalfLength - r;
+        double x = Placement.FreeOnLongAxis(r, others, spot, +1);
+        if (x > limit + Placement.Tolerance)
+        {
+            x = Placement.FreeOnLongAxis(r, others, spot, -1);
+            if (x < -limit - Placement.Tolerance)
+            {
+                throw new Physics.PlacementException($"ball \"{id}\" cannot be spotted: the long axis has no free place");
+            }
+        }
+        var position = new Vec3(x, 0, r);
+        simulation.PlaceBall(id, position);
+        return position;
     }
 
     /// <summary>The referee of the game on <paramref name="table"/> with balls of radius <paramref name="ballRadius"/> (m).</summary>
