@@ -57,11 +57,13 @@ public abstract class Ruleset
     /// <summary>The registered ruleset named <paramref name="name"/>, or null.</summary>
     public static Ruleset? Find(string name)
     {
-        foreach (var ruleset in All)
+        // Asked on every judged shot of a search: an array walk, no enumerator.
+        var registered = Volatile.Read(ref _registered);
+        for (int i = 0; i < registered.Length; i++)
         {
-            if (ruleset.Name == name)
+            if (registered[i].Name == name)
             {
-                return ruleset;
+                return registered[i];
             }
         }
         return null;
