@@ -201,7 +201,7 @@ public static class PlayCommand
         {
             var matchNode = host.Tree.Root.GetInTree<MatchNode>();
             // One record per game of the session, one per line, as self-play writes them.
-            OutputFiles.Write(recordPath, GameRecordFile.ToJsonLines(matchNode.RecordedGames));
+            OutputFiles.Write(recordPath, GameRecordFile.ToJsonLines(matchNode.Session.RecordedGames));
         }
         return 0;
     }
@@ -229,7 +229,7 @@ public static class PlayCommand
     {
         var current = first;
         // A match (rules and players), or practice (a drill's name, or null for free practice).
-        (GameRules? Rules, MatchPlayer[]? Players, string? Drill, GameSettings Settings)? pending = null;
+        (GameRules? Rules, Seat[]? Players, string? Drill, GameSettings Settings)? pending = null;
         var drills = DrillLibrary.All().Select(d => (d.Name, d.Title)).ToList();
         void Listen(GameHost h)
         {
@@ -374,21 +374,26 @@ public static class PlayCommand
     public static MatchSetup? MatchFor(Scene scene, GameRules? rules, string? players)
     {
         ArgumentNullException.ThrowIfNull(scene);
-        GameRules? game = rules ?? scene.Game?.Rules ?? (RuleNames.TryParseGame(scene.Rules, out var named) ? named : null);
+        GameRules? game = rules ?? scene.Game?.Rules ?? (RuleNames.TryParseGame(scene.Rules, out var named) ? named : (GameRules?)null);
         if (game is not { } g)
         {
             return players is null ? null : throw new CliException($"--players {players}: {scene.Path} names no rules; give --rules too");
         }
-        string[] parts = (players ?? DefaultPlayers).Split(',');
+        // Without --players: a person against the computer, or two people where the computer does not play the game.
+        string[] parts = (players ?? (Ruleset.For(g).HasComputerPlayer ? DefaultPlayers : "human,human")).Split(',');
         if (parts.Length != 2)
         {
             throw new CliException($"--players {players}: expected two players A,B (each human or computer:LEVEL)");
         }
-        var seats = new MatchPlayer[2];
+        var seats = new Seat[2];
         for (int i = 0; i < 2; i++)
         {
-            seats[i] = MatchPlayer.Parse(parts[i], i)
-                ?? throw new CliException($"--players {players}: \"{parts[i]}\" is not a player (a name of 1-{MatchPlayer.MaxNameLength} characters, human, or computer:LEVEL with LEVEL 1-5)");
+            seats[i] = Seat.Parse(parts[i], i)
+                ?? throw new CliException($"--players {players}: \"{parts[i]}\" is not a player (a name of 1-{Seat.MaxNameLength} characters, human, or computer:LEVEL with LEVEL 1-5)");
+        }
+        if (Session.SeatProblem(Ruleset.For(g), seats) is { } problem)
+        {
+            throw new CliException($"--players {players}: {problem}");
         }
         return new MatchSetup(g, seats);
     }

@@ -94,7 +94,7 @@ public sealed class CallPickerNode : Node
         }
         if (best is { } ball)
         {
-            match.CallBall(ball);
+            match.Call.CallBall(ball);
             return true;
         }
         if (!match.NeedsCall)
@@ -113,7 +113,7 @@ public sealed class CallPickerNode : Node
             if (Pixel(c) is { } centre && Pixel(far) is { } hole && Pixel(c + new Vector3((float)pocket.Radius, 0, 0)) is { } edge
                 && DistanceToSegment(at, centre, hole) <= MathF.Max(Vector2.Distance(centre, edge) * 1.5f, 12))
             {
-                match.CallPocket(_pocketSet.Id(pocket.Pocket));
+                match.Call.CallPocket(_pocketSet.Id(pocket.Pocket));
                 return true;
             }
         }

@@ -91,8 +91,8 @@ public sealed class ComputerPlayerNode : Node
         _keys = FindInTree<SystemKeysNode>();
         _replay = FindInTree<InstantReplayNode>();
         _planner = new ShotPlanner(_physics.Table, _physics.Params, _physics.Models);
-        // A take-back: the search and the aim were for a table that is gone (their tasks end unread).
-        _match.TookBack += () =>
+        // A take-back, a restart, a new game: the search and the aim were for a table that is gone (their tasks end unread).
+        _match.Session.TableReplaced += () =>
         {
             _thinking = null;
             _choosing = null;
@@ -169,7 +169,7 @@ public sealed class ComputerPlayerNode : Node
             Status = null;
             return;
         }
-        int level = _match.Shooter.ComputerLevel ?? HintLevel;
+        int level = _match.Session.Shooter.ComputerLevel ?? HintLevel;
         if (_match.PendingOptions.Count > 0)
         {
             ChooseOption();
@@ -235,7 +235,7 @@ public sealed class ComputerPlayerNode : Node
     {
         if (_choosing is null)
         {
-            var ruling = _match!.LastRuling!;
+            var ruling = _match!.Session.LastRuling!;
             // The table as the shot left it (a scratched cue ball is off it), as self-play chooses.
             var position = new TablePosition(_match.Game!.Shots[^1].After, _physics!.CueBall);
             var planner = _planner!;
@@ -267,7 +267,7 @@ public sealed class ComputerPlayerNode : Node
         {
             LastHint = done.Result;
             _match.Adopt(done.Result, exactCall: false);
-            _match.SayHint(done.Result);
+            _match.Session.Say(HintLine(done.Result));
         }
     }
 }

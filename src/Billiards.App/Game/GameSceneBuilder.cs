@@ -4,6 +4,7 @@ using Billiards.App.Input.Modes;
 using Billiards.App.Nodes;
 using Billiards.Core.Balls;
 using Billiards.Core.Physics;
+using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
 
 namespace Billiards.App.Game;
@@ -20,7 +21,7 @@ public sealed record GameWorld(SceneTree Tree, FixedStepLoop Loop, PhysicsNode P
 /// <summary>A match to play: the game and the two players.</summary>
 /// <param name="Rules">The game.</param>
 /// <param name="Players">The two players.</param>
-public sealed record MatchSetup(Billiards.Core.Rules.GameRules Rules, IReadOnlyList<MatchPlayer> Players);
+public sealed record MatchSetup(GameRules Rules, IReadOnlyList<Seat> Players);
 
 /// <summary>
 /// Builds the node tree a scene asks for: a scene loads only what it declares. Always: table,
@@ -49,7 +50,7 @@ public static class GameSceneBuilder
         var modes = root.AddChild(new InputModeNode());
         if (match is not null && scene.Balls.Any(b => b.Id == scene.CueBall))
         {
-            root.AddChild(new MatchNode(match.Rules, match.Players, scene.Game));
+            root.AddChild(new MatchNode(Session.OfScene(scene, match.Rules, match.Players, physics.Simulation, createSimulation)));
             root.AddChild(new ComputerPlayerNode());
             root.AddChild(new CallPickerNode());
             root.AddChild(new TargetViewNode());

@@ -5,6 +5,7 @@ using Billiards.Core.Balls;
 using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
+using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
@@ -70,9 +71,11 @@ public sealed class PhysicsNode : Node
 
     /// <summary>
     /// When set (a match), a strike asks it for the shot's simulation, struck already, and runs
-    /// that one: the match makes every shot from the balls at rest, as a replay does.
+    /// that one: the match makes every shot from the balls at rest, as a replay does. A null
+    /// answer refuses the shot (not this seat's turn, an option to choose, the game over): nothing
+    /// is struck.
     /// </summary>
-    public Func<ShotSpec, Simulation>? StrikeThrough { get; set; }
+    public Func<ShotSpec, Simulation?>? StrikeThrough { get; set; }
 
     /// <summary>
     /// Shows and runs <paramref name="simulation"/> from now on (a match's table between shots);
@@ -135,7 +138,7 @@ public sealed class PhysicsNode : Node
     }
 
     // Practice: the table before each shot, newest last (Undo takes them back one by one).
-    private readonly List<(SimulationSnapshot Table, bool InHand, PlacementRegion Region, ShotSpec? Shot)> _beforeShots = [];
+    private readonly Timeline<(SimulationSnapshot Table, bool InHand, PlacementRegion Region, ShotSpec? Shot)> _beforeShots = new(MaxTakeBacks);
 
     /// <summary>The most shots practice can take back one after another.</summary>
     public const int MaxTakeBacks = 50;
@@ -150,12 +153,11 @@ public sealed class PhysicsNode : Node
     /// </summary>
     public bool Undo()
     {
-        if (!CanUndo)
+        if (!CanUndo || !_beforeShots.TryTakeBack(out var before))
         {
             return false;
         }
-        var (table, inHand, region, shot) = _beforeShots[^1];
-        _beforeShots.RemoveAt(_beforeShots.Count - 1);
+        var (table, inHand, region, shot) = before;
         _simulation.Restore(table);
         _simulation.Balls.CopyTo(_previous);
         _eventsSeen = _simulation.Events.Count;
@@ -333,7 +335,7 @@ public sealed class PhysicsNode : Node
         EndBallInHand();
     }
 
-    /// <summary>Strikes the cue ball; refused while balls roll.</summary>
+    /// <summary>Strikes the cue ball; refused while balls roll, and where <see cref="StrikeThrough"/> refuses it.</summary>
     /// <exception cref="InvalidOperationException">When balls are still rolling or there is no cue ball.</exception>
     public void Strike(ShotSpec shot)
     {
@@ -349,7 +351,10 @@ public sealed class PhysicsNode : Node
         if (StrikeThrough is { } strike)
         {
             // Asked before ball in hand ends: the match reads where the ball was placed.
-            var struck = strike(shot);
+            if (strike(shot) is not { } struck)
+            {
+                return;
+            }
             EndBallInHand();
             Swap(struck);
             _eventsSeen = 0;
@@ -358,11 +363,7 @@ public sealed class PhysicsNode : Node
         {
             if (_simulation.KeepsSnapshots)
             {
-                _beforeShots.Add((_simulation.CreateSnapshot(), BallInHand, HandRegion, LastShot));
-                if (_beforeShots.Count > MaxTakeBacks)
-                {
-                    _beforeShots.RemoveAt(0);
-                }
+                _beforeShots.Push((_simulation.CreateSnapshot(), BallInHand, HandRegion, LastShot));
             }
             EndBallInHand();
             _simulation.Strike(shot, CueBall);

@@ -35,7 +35,7 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
     private readonly Dictionary<int, MatchSnapshot> _starts = [];
     private PhysicsNode? _physics;
     private InstantReplayNode? _instant;
-    private Match? _match;
+    private Session? _session;
     private int _next;
     private double _wait;
     private ShotReplay? _showing;
@@ -70,7 +70,7 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
     {
         get
         {
-            if (_match is null)
+            if (_session is null)
             {
                 return null;
             }
@@ -80,12 +80,15 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
             {
                 return $"Replay: all {n} shots.{ruling}  [PageUp previous shot]";
             }
-            string who = _showing is not null ? _shownState!.ShooterName : _match.State.ShooterName;
+            string who = _showing is not null ? _shownState!.ShooterName : Game.State.ShooterName;
             return $"Replay: shot {_next} of {n - 1} ({who}).{ruling}  [PageUp/PageDown shots]";
         }
     }
 
     private GameState? _shownState;
+
+    // The game the session plays now.
+    private Match Game => _session!.Game;
 
     /// <summary>True once the last shot has been shown.</summary>
     public bool Finished { get; private set; }
@@ -99,12 +102,12 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
         _physics = GetInTree<PhysicsNode>();
         _instant = FindInTree<InstantReplayNode>();
         _physics.HandOnly = true;
-        _match = new Match(record.Setup, _physics.CreateSimulation);
+        _session = new Session(record.Setup, Seat.Of(record.Setup.Start.Players, SeatKind.Script), _physics.CreateSimulation);
         PlayTo(Math.Min(FirstShot, record.Shots.Count));
-        _physics.CueBall = _match.Ruleset.CueBall(_match.State);
-        _physics.Load(_match.Layout());
+        _physics.CueBall = Game.Ruleset.CueBall(Game.State);
+        _physics.Load(Game.Layout());
         _wait = PauseSeconds;
-        Finished = _next >= record.Shots.Count || _match.IsOver;
+        Finished = _next >= record.Shots.Count || Game.IsOver;
     }
 
     /// <summary>
@@ -113,7 +116,7 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
     /// </summary>
     public void GoTo(int shot)
     {
-        if (_physics is null || _match is null)
+        if (_physics is null || _session is null)
         {
             return;
         }
@@ -122,38 +125,38 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
         _showing = null;
         if (_starts.TryGetValue(k, out var start))
         {
-            _match.Restore(start);
+            Game.Restore(start);
             _next = k;
         }
         else
         {
             // Not reached yet: from the latest shot start known before it, played on headless.
             int from = _starts.Keys.Where(s => s <= k).DefaultIfEmpty(0).Max();
-            _match.Restore(_starts[from]);
+            Game.Restore(_starts[from]);
             _next = from;
             PlayTo(k);
         }
-        _physics.CueBall = _match.Ruleset.CueBall(_match.State);
-        _physics.Interrupt(_match.Layout());
+        _physics.CueBall = Game.Ruleset.CueBall(Game.State);
+        _physics.Interrupt(Game.Layout());
         _wait = PauseSeconds;
-        Finished = _next >= record.Shots.Count || _match.IsOver;
+        Finished = _next >= record.Shots.Count || Game.IsOver;
     }
 
     // Plays the record's shots headless up to (not including) shot k, keeping each shot's start.
     private void PlayTo(int k)
     {
-        _starts.TryAdd(_next, _match!.Snapshot());
-        for (; _next < k && !_match.IsOver; _next++)
+        _starts.TryAdd(_next, Game.Snapshot());
+        for (; _next < k && !Game.IsOver; _next++)
         {
-            _match.Play(record.Shots[_next]);
-            _starts.TryAdd(_next + 1, _match.Snapshot());
+            _session!.Play(record.Shots[_next], SeatKind.Script);
+            _starts.TryAdd(_next + 1, Game.Snapshot());
         }
     }
 
     /// <inheritdoc />
     protected override bool Input(InputEvent e)
     {
-        if (e is not KeyInput { Pressed: true } key || _match is null)
+        if (e is not KeyInput { Pressed: true } key || _session is null)
         {
             return false;
         }
@@ -177,7 +180,7 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
     /// <inheritdoc />
     protected override void Process(double dt)
     {
-        if (_physics is null || _match is null || Finished || _instant is { IsActive: true })
+        if (_physics is null || _session is null || Finished || _instant is { IsActive: true })
         {
             return;
         }
@@ -201,21 +204,17 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
     // replay, run the same way, shows it.
     private void Strike()
     {
-        var match = _match!;
+        var match = Game;
         _starts.TryAdd(_next, match.Snapshot());
         var input = record.Shots[_next];
         _shownState = match.State;
-        var sim = match.Strike(input);
-        var atStrike = sim.CreateSnapshot();
-        var positions = ShotReplay.Positions(sim);
-        Match.RunToRest(sim);
+        int shot = _next;
+        (Simulation Sim, SimulationSnapshot AtStrike, Billiards.Core.Mathematics.Vec3[] Positions)? struck = null;
+        var played = _session!.Play(input, SeatKind.Script, judged => record.ChoiceAfter(shot, judged.Ruling) ?? judged.Ruling.Options[0],
+            sim => struck = (sim, sim.CreateSnapshot(), ShotReplay.Positions(sim)));
+        var (sim, atStrike, positions) = struck!.Value;
         _showing = new ShotReplay(sim.TableModel, sim.Ids, positions, sim.RefereeRules, atStrike, Match.MaxShotTime, ShotStepping.ToRest);
         _shown = (sim, atStrike);
-        var played = match.Judge(sim);
-        if (match.PendingOptions.Count > 0)
-        {
-            match.Choose(record.ChoiceAfter(_next, played.Ruling) ?? match.PendingOptions[0]);
-        }
         _showingRuling = played.Ruling;
     }
 
@@ -226,17 +225,17 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
         Rulings.Add(ruling);
         _lastRuling = $"Shot {_next}: {ruling.Message}";
         // The next shooter's cue ball (a game may have one per player).
-        _physics!.CueBall = _match!.Ruleset.CueBall(_match.State);
-        _physics.Load(_match.Layout());
+        _physics!.CueBall = Game.Ruleset.CueBall(Game.State);
+        _physics.Load(Game.Layout());
         if (_shown is { } shown)
         {
             _physics.ShowStrike(shown.Shot, shown.AtStrike, ShotStepping.ToRest);
         }
         Ruled?.Invoke(_next, ruling);
         _next++;
-        _starts.TryAdd(_next, _match.Snapshot());
+        _starts.TryAdd(_next, Game.Snapshot());
         _wait = PauseSeconds;
-        Finished = _next >= record.Shots.Count || _match.IsOver;
+        Finished = _next >= record.Shots.Count || Game.IsOver;
     }
 
     /// <inheritdoc />

@@ -45,8 +45,8 @@ public static class MatchLines
         }
         if (match.IsOver)
         {
-            string next = match.RematchIn is double left ? $"Next game in {Math.Max(1, (int)Math.Ceiling(left))} s" : "Enter: rematch";
-            lines.Add(match.Winner is int w ? $"GAME OVER: {state.Players[w]} wins. {next}" : $"GAME OVER. {next}");
+            string next = match.Session.RematchIn is double left ? $"Next game in {Math.Max(1, (int)Math.Ceiling(left))} s" : "Enter: rematch";
+            lines.Add(match.Session.Winner is int w ? $"GAME OVER: {state.Players[w]} wins. {next}" : $"GAME OVER. {next}");
         }
         else if (computerStatus is not null)
         {
@@ -67,7 +67,7 @@ public static class MatchLines
             {
                 lines.Add($"Ball in hand ({HandWords(physics.HandRegion)}): M and drag to place");
             }
-            string push = state.PushOut ? "  PUSH-OUT" : "";
+            string push = match.PushOut ? "  PUSH-OUT" : "";
             string pushKey = match.Ruleset.MayPushOut(state) ? "  O: push-out" : "";
             // Only a shot the rules call shows a call.
             string call = match.NeedsNomination ? $"Nominate: {(match.CurrentNomination is { } n ? physics.Simulation.BallSet.NameOf(n.Ball) : "none")} (B)  "

@@ -54,7 +54,7 @@ public sealed class MenuNode : Node
     public event Action<GameSettings>? SettingsChosen;
 
     /// <summary>Signal: the start menu asks for a new game of these rules between these players.</summary>
-    public event Action<GameRules, MatchPlayer[]>? StartRequested;
+    public event Action<GameRules, Seat[]>? StartRequested;
 
     /// <summary>Signal: the start menu asks for practice: free (null) or the drill of this name.</summary>
     public event Action<string?>? PracticeRequested;
@@ -79,7 +79,7 @@ public sealed class MenuNode : Node
     {
         if (_match is not null)
         {
-            StartGame = _match.Rules;
+            StartGame = _match.Session.Rules;
             StartOpponent = _match.Players[1].ComputerLevel;
         }
         Open();
@@ -93,7 +93,7 @@ public sealed class MenuNode : Node
         {
             SettingsChosen?.Invoke(StartSettings);
         }
-        if (_match is not null && _match.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings.Physics == PlayedSettings.Physics)
+        if (_match is not null && _match.Session.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings.Physics == PlayedSettings.Physics)
         {
             // The game behind the menu is the one chosen; a new pace or take-back setting takes effect in it at once.
             if (FindInTree<ComputerPlayerNode>() is { } computer)
@@ -104,8 +104,9 @@ public sealed class MenuNode : Node
             PlayedSettings = StartSettings;
             return;
         }
-        var opponent = StartOpponent is int level ? new MatchPlayer($"Computer L{level}", level) : new MatchPlayer("Player 2");
-        StartRequested?.Invoke(StartGame, [new MatchPlayer("Player 1"), opponent]);
+        // A game the computer does not play seats a person.
+        var opponent = StartOpponent is int level && Ruleset.For(StartGame).HasComputerPlayer ? new Seat($"Computer L{level}", level) : new Seat("Player 2");
+        StartRequested?.Invoke(StartGame, [new Seat("Player 1"), opponent]);
     }
 
     /// <inheritdoc />
@@ -154,7 +155,7 @@ public sealed class MenuNode : Node
             case MenuPage.None when key == Key.Escape:
                 Open();
                 return true;
-            case MenuPage.None when key == MenuKey && _match is { IsOver: true, RematchIn: null }:
+            case MenuPage.None when key == MenuKey && _match is { IsOver: true, Session.RematchIn: null }:
                 ShowStart();
                 return true;
             case MenuPage.None:
@@ -295,7 +296,7 @@ public sealed class MenuNode : Node
                 y = height / 2f;
                 break;
             default:
-                if (_match is { IsOver: true, RematchIn: null } over)
+                if (_match is { IsOver: true, Session.RematchIn: null } over)
                 {
                     // Under the result panel (HudRenderer draws it above 0.64 of the height).
                     items.Add(("Rematch [Enter]", over.Rematch));

@@ -161,7 +161,7 @@ public static class ScoreboardBuilder
         var names = match.State.Players;
         var score = match.State.Score;
         var ruleset = match.Ruleset;
-        string title = match.Winner is int w
+        string title = match.Session.Winner is int w
             ? ruleset.HasScore
                 ? string.Create(CultureInfo.InvariantCulture, $"{names[w]} wins {ruleset.TheGame} {score[w]}-{score[1 - w]}")
                 : $"{names[w]} wins {ruleset.TheGame}"
@@ -205,7 +205,7 @@ public static class ScoreboardBuilder
         var state = match.State;
         if (match.IsOver)
         {
-            return match.RematchIn is double left ? $"Next game in {Math.Max(1, (int)Math.Ceiling(left))} s" : "Game over: Enter or click Rematch; M: menu";
+            return match.Session.RematchIn is double left ? $"Next game in {Math.Max(1, (int)Math.Ceiling(left))} s" : "Game over: Enter or click Rematch; M: menu";
         }
         if (computerStatus is not null)
         {
@@ -240,7 +240,7 @@ public static class ScoreboardBuilder
         {
             parts.Add($"ball in hand ({MatchLines.HandWords(physics.HandRegion)}): M, drag");
         }
-        if (state.PushOut)
+        if (match.PushOut)
         {
             parts.Add("PUSH-OUT");
         }

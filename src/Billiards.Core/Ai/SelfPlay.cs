@@ -81,7 +81,8 @@ public sealed class SelfPlay
         var skills = new PerPlayer<SkillLevel>(SkillLevel.Of(levels.First), SkillLevel.Of(levels.Second));
         int rackSeed = (int)(PlannerRandom.Derive(seed, 7_000_000) & 0x3FFFFFFF);
         var setup = new GameSetup(table.Table, _planner.PhysicsConfig, rackSeed, new GameState(rules) { Shooter = breaker, Target = target });
-        var game = new Match(setup);
+        var session = new Session(setup, Seat.Of(setup.Start.Players, SeatKind.Computer));
+        var game = session.Game;
         var shots = new List<SelfPlayShot>();
         int maxShots = game.Ruleset.MaxShots(setup.Start);
         for (int k = 0; k < maxShots && !game.IsOver; k++)
@@ -92,17 +93,10 @@ public sealed class SelfPlay
             var decision = _planner.Decide(state, position, skill, budget, PlannerRandom.Derive(seed, k, 1));
             var place = game.BallInHand == BallInHand.None ? null : decision.Place;
             var executed = skill.Execute(decision.Shot, new PlannerRandom(PlannerRandom.Derive(seed, k, 2)));
-
-            var sim = game.Strike(new GameShot(executed, decision.Call, place, decision.PushOut));
-            Match.RunToRest(sim);
-            var played = game.Judge(sim);
             RefereeOption? option = null;
-            if (game.PendingOptions.Count > 0)
-            {
-                // The incoming player chooses from the table as the shot left it.
-                option = _planner.ChooseOption(played.Ruling, new TablePosition(played.After, game.Ruleset.CueBall(played.Ruling.Next)));
-                game.Choose(option.Value);
-            }
+            // The incoming player chooses from the table as the shot left it.
+            var played = session.Play(new GameShot(executed, decision.Call, place, decision.PushOut), SeatKind.Computer,
+                judged => option = _planner.ChooseOption(judged.Ruling, new TablePosition(judged.After, game.Ruleset.CueBall(judged.Ruling.Next))));
             shots.Add(new SelfPlayShot(played.Before, place, decision.Shot, executed, decision.Kind, played.Ruling, option, decision.Milliseconds, decision.Simulations)
             {
                 Pocket = decision.Pocket,

@@ -100,40 +100,6 @@ public abstract partial class Simulation
     }
 
     /// <summary>
-    /// Spots ball <paramref name="id"/> (rules.md): on the foot spot (x = +L/4, y = 0), or at the
-    /// nearest point behind it on the long axis (towards the foot rail) where it touches no other
-    /// ball; when no such point is left before the foot cushion, at the nearest one in front of
-    /// it. The ball's own current place does not count against it. Only between shots.
-    /// </summary>
-    /// <returns>Where the ball was put (m).</returns>
-    /// <exception cref="PlacementException">When the ball is not in this simulation, or the whole long axis is taken.</exception>
-    /// <exception cref="InvalidOperationException">While balls move.</exception>
-    public Vec3 SpotBall(BallId id)
-    {
-        RequireRest();
-        int index = IndexOf(id);
-        if (index < 0)
-        {
-            throw new PlacementException($"ball \"{id}\" is not in this game's ball set");
-        }
-        double r = BallRadius;
-        double spot = Table.HalfLength / 2;
-        double limit = Table.HalfLength - r;
-        double x = FreeAlongLongAxis(index, spot, +1);
-        if (x > limit + Placement.Tolerance)
-        {
-            x = FreeAlongLongAxis(index, spot, -1);
-            if (x < -limit - Placement.Tolerance)
-            {
-                throw new PlacementException($"ball \"{id}\" cannot be spotted: the long axis has no free place");
-            }
-        }
-        var position = new Vec3(x, 0, r);
-        PlaceBall(id, position);
-        return position;
-    }
-
-    /// <summary>
     /// Puts several balls at rest at once (a rerack, a set position): every ball listed is tested
     /// against the table, against the others listed and against the balls in play that are not
     /// listed; nothing moves unless all may be placed. Only between shots.
@@ -237,21 +203,5 @@ public abstract partial class Simulation
         {
             throw new InvalidOperationException("balls can only be placed while every ball rests");
         }
-    }
-
-    // The x nearest to `start` in `direction` (+1 towards the foot rail, -1 towards the head) at
-    // which a ball on y = 0 touches no ball in play but the one at `self` (Placement's search).
-    private double FreeAlongLongAxis(int self, double start, int direction)
-    {
-        var others = new List<Vec3>();
-        var balls = Balls;
-        for (int j = 0; j < balls.Length; j++)
-        {
-            if (j != self && !balls[j].IsOutOfPlay)
-            {
-                others.Add(balls[j].Position);
-            }
-        }
-        return Placement.FreeOnLongAxis(BallRadius, others, start, direction);
     }
 }

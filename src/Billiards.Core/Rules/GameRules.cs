@@ -1,18 +1,36 @@
 namespace Billiards.Core.Rules;
 
-/// <summary>The games the referee judges (rules.md).</summary>
-public enum GameRules
+/// <summary>
+/// A game by its name in files (rules.md), e.g. "eight-ball": the key of its ruleset in the
+/// registry (<see cref="Ruleset.Register"/>). The five games the referee ships with are named
+/// here; any other registered ruleset is a game too.
+/// </summary>
+/// <param name="Name">The game's name in files, e.g. "eight-ball".</param>
+public readonly record struct GameRules(string Name)
 {
     /// <summary>8-ball: solids and stripes, the 8 last, called shots.</summary>
-    EightBall,
+    public static GameRules EightBall { get; } = new("eight-ball");
+
     /// <summary>9-ball: the lowest ball first, the 9 wins, push-out and three fouls.</summary>
-    NineBall,
+    public static GameRules NineBall { get; } = new("nine-ball");
+
     /// <summary>10-ball: 9-ball's rules with called shots and the 10.</summary>
-    TenBall,
+    public static GameRules TenBall { get; } = new("ten-ball");
+
     /// <summary>14.1 continuous (straight pool): called balls score a point each, reracks of 14.</summary>
-    StraightPool,
+    public static GameRules StraightPool { get; } = new("straight-pool");
+
     /// <summary>Snooker (WPBSA): reds and colours, points, fouls worth at least 4, free ball and the miss.</summary>
-    Snooker,
+    public static GameRules Snooker { get; } = new("snooker");
+
+    /// <summary>The game of that name (a test's data, a tool's argument); <see cref="RuleNames.TryParseGame"/> checks it is registered.</summary>
+    public static implicit operator GameRules(string name) => new(name);
+
+    /// <summary>The game of that name.</summary>
+    public static GameRules FromString(string name) => new(name);
+
+    /// <inheritdoc />
+    public override string ToString() => Name;
 }
 
 /// <summary>A group of 8-ball.</summary>
@@ -126,7 +144,6 @@ public sealed record Call(Balls.BallId Ball, Table.PocketId Pocket)
 /// <summary>The names scene and result files use for the referee's enums (scene-format.md).</summary>
 public static class RuleNames
 {
-    private static readonly string[] Games = ["eight-ball", "nine-ball", "ten-ball", "straight-pool", "snooker"];
     private static readonly string[] Groups = ["solids", "stripes"];
     private static readonly string[] Hands = ["none", "table", "kitchen", "d"];
     private static readonly string[] Options = ["accept", "rerack", "spot-eight", "shoot", "pass-back", "play", "put-back", "replace"];
@@ -138,11 +155,11 @@ public static class RuleNames
         "wrong-ball-potted", "jump-shot", "three-misses", "snookered-by-free-ball",
     ];
 
-    /// <summary>The game names in <see cref="GameRules"/> order.</summary>
-    public static IReadOnlyList<string> GameNames => Games;
+    /// <summary>The names of the registered games, in the order they were registered (the shipped five first).</summary>
+    public static IReadOnlyList<string> GameNames => [.. Ruleset.All.Select(r => r.Name)];
 
-    /// <summary>"eight-ball", "nine-ball", "ten-ball", "straight-pool" or "snooker".</summary>
-    public static string ToName(this GameRules rules) => Games[(int)rules];
+    /// <summary>The game's name in files, e.g. "eight-ball".</summary>
+    public static string ToName(this GameRules rules) => rules.Name;
 
     /// <summary>"solids" or "stripes".</summary>
     public static string ToName(this BallGroup group) => Groups[(int)group];
@@ -156,8 +173,12 @@ public static class RuleNames
     /// <summary>The foul's code, e.g. "cue-ball-pocketed".</summary>
     public static string ToName(this Foul foul) => Fouls[(int)foul];
 
-    /// <summary>Parses a game name.</summary>
-    public static bool TryParseGame(string? name, out GameRules rules) => TryParse(Games, name, out rules);
+    /// <summary>Parses the name of a registered game.</summary>
+    public static bool TryParseGame(string? name, out GameRules rules)
+    {
+        rules = name is not null && Ruleset.Find(name) is { } ruleset ? ruleset.Game : GameRules.EightBall;
+        return name is not null && Ruleset.Find(name) is not null;
+    }
 
     /// <summary>Parses a group name.</summary>
     public static bool TryParseGroup(string? name, out BallGroup group) => TryParse(Groups, name, out group);

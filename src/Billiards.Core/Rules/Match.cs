@@ -149,6 +149,9 @@ public sealed class Match
     /// <summary>The state the referee will judge the running shot by (with its call, push-out and placement), or null.</summary>
     public GameState? RunningShotState => _struck?.Before;
 
+    /// <summary>The running shot: the state it is judged by and what the player did; null between shots.</summary>
+    public (GameState Before, GameShot Input)? RunningShot => _struck;
+
     /// <summary>Where the next shooter may place the cue ball (the break places behind the head string, in snooker in the D).</summary>
     public BallInHand BallInHand => State.Shot == 0 ? Ruleset.BreakBallInHand : State.BallInHand;
 
@@ -166,7 +169,7 @@ public sealed class Match
         var cue = Ruleset.CueBall(State);
         if (!balls.ContainsKey(cue))
         {
-            var region = BallInHand switch { BallInHand.Kitchen => PlacementRegion.Kitchen, BallInHand.D => PlacementRegion.D, _ => PlacementRegion.Table };
+            var region = BallInHand.Region();
             var head = Ruleset.CueStart(Setup.Table, Setup.BallRadius);
             balls[cue] = BallInHand == BallInHand.None ? head
                 : Placement.FreeSpotNear(Setup.Table, Setup.BallRadius, cue, head, balls.Select(b => (b.Key, b.Value)), region);
@@ -176,20 +179,9 @@ public sealed class Match
         return sim;
     }
 
-    /// <summary>Plays one shot headless (strike, run to rest, judge) and applies its ruling; an offered option defaults to the first.</summary>
-    /// <exception cref="InvalidOperationException">After the game is over, or when placing the cue ball without ball in hand.</exception>
-    public MatchShot Play(GameShot input)
-    {
-        var sim = Strike(input);
-        RunToRest(sim);
-        Judge(sim);
-        if (PendingOptions.Count > 0)
-        {
-            Choose(PendingOptions[0]);
-        }
-        // After a choice the last shot carries it.
-        return _shots[^1];
-    }
+    /// <summary>Plays one shot headless through the one shot loop (<see cref="Session.Play"/>: strike, run to rest, judge) and applies its ruling; an offered option defaults to the first.</summary>
+    /// <exception cref="InvalidOperationException">After the game is over, with an option pending, or when placing the cue ball without ball in hand.</exception>
+    public MatchShot Play(GameShot input) => Session.Over(this).Play(input, SeatKind.Script);
 
     /// <summary>Plays a whole game from its shots.</summary>
     public static Match PlayAll(GameSetup setup, IEnumerable<GameShot> shots)

@@ -432,19 +432,16 @@ public static class GameRecordFile
     public static ReplayReport Verify(GameRecord record, out Match replayed)
     {
         ArgumentNullException.ThrowIfNull(record);
-        replayed = new Match(record.Setup);
+        var session = new Session(record.Setup, Seat.Of(record.Setup.Start.Players, SeatKind.Script));
+        replayed = session.Game;
         for (int k = 0; k < record.Shots.Count; k++)
         {
             MatchShot played;
             try
             {
-                var sim = replayed.Strike(record.Shots[k]);
-                Match.RunToRest(sim);
-                played = replayed.Judge(sim);
-                if (replayed.PendingOptions.Count > 0 && record.ChoiceAfter(k, played.Ruling) is { } choice)
-                {
-                    replayed.Choose(choice);
-                }
+                // With the choice the record took (none found leaves the options pending).
+                int shot = k;
+                played = session.Play(record.Shots[k], SeatKind.Script, judged => record.ChoiceAfter(shot, judged.Ruling));
             }
             catch (Exception e) when (e is InvalidOperationException or ArgumentException)
             {

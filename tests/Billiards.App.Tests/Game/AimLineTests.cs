@@ -99,7 +99,7 @@ public class AimLineTests
     [InlineData("computer:1", "Ben", true)]
     public void InAMatchItStartsOnOnlyAgainstAComputerOfLevelTwoOrLess(string a, string b, bool on)
     {
-        var players = new[] { MatchPlayer.Parse(a, 0)!, MatchPlayer.Parse(b, 1)! };
+        var players = new[] { Seat.Parse(a, 0)!, Seat.Parse(b, 1)! };
         var scene = TestScenes.TwoBalls(rules: "eight-ball");
         using var host = new GameHost(scene, TestScenes.Create, new FakeWindow(), new ManualClock(), new MatchSetup(GameRules.EightBall, players));
         Assert.Equal(on, host.Tree.Root.GetInTree<AimLineNode>().Visible);
@@ -109,14 +109,14 @@ public class AimLineTests
 public class CallLineTests
 {
     [Theory]
-    [InlineData("nine-ball", GameRules.NineBall, 0, false)]
-    [InlineData("nine-ball", GameRules.NineBall, 3, false)]
-    [InlineData("eight-ball", GameRules.EightBall, 0, false)]
-    [InlineData("eight-ball", GameRules.EightBall, 3, true)]
-    [InlineData("ten-ball", GameRules.TenBall, 3, true)]
+    [InlineData("nine-ball", "nine-ball", 0, false)]
+    [InlineData("nine-ball", "nine-ball", 3, false)]
+    [InlineData("eight-ball", "eight-ball", 0, false)]
+    [InlineData("eight-ball", "eight-ball", 3, true)]
+    [InlineData("ten-ball", "ten-ball", 3, true)]
     public void TheHudShowsACallOnlyWhereTheRulesCallTheShot(string name, GameRules rules, int shot, bool shown)
     {
-        var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
+        var players = new[] { new Seat("Anna"), new Seat("Ben") };
         // A scene's game block sets the shot number.
         var scene = TestScenes.TwoBalls(rules: name) with { Game = new GameState(rules) { Shot = shot, Players = new PerPlayer<string>("Anna", "Ben") } };
         using var host = new GameHost(scene, TestScenes.Create, new FakeWindow(), new ManualClock(), new MatchSetup(rules, players));
@@ -132,7 +132,7 @@ public class CallPickerTests
     [Fact]
     public void AClickOnABallCallsItAndAClickOnAPocketCallsThatPocketADragCallsNothing()
     {
-        var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
+        var players = new[] { new Seat("Anna"), new Seat("Ben") };
         var scene = TestScenes.TwoBalls(rules: "eight-ball") with { Game = new GameState(GameRules.EightBall) { Shot = 3, Players = new PerPlayer<string>("Anna", "Ben") } };
         var window = new FakeWindow { FramebufferSize = (1280, 720) };
         var clock = new ManualClock();
@@ -180,7 +180,7 @@ public class CallPickerTests
     [Fact]
     public void AClickOnTheDarkHoleOfAPocketCallsItNotOnlyAClickInItsMouth()
     {
-        var players = new[] { new MatchPlayer("Anna"), new MatchPlayer("Ben") };
+        var players = new[] { new Seat("Anna"), new Seat("Ben") };
         var scene = TestScenes.TwoBalls(rules: "eight-ball") with { Game = new GameState(GameRules.EightBall) { Shot = 3, Players = new PerPlayer<string>("Anna", "Ben") } };
         var window = new FakeWindow { FramebufferSize = (1280, 720) };
         using var host = new GameHost(scene, TestScenes.Create, window, new ManualClock(), new MatchSetup(GameRules.EightBall, players));
@@ -203,7 +203,7 @@ public class CallPickerTests
         Assert.True(Vector2.Distance(holePixel, capturePixel) > MathF.Max(1.5f * Vector2.Distance(capturePixel, captureEdge), 12),
             $"the hole's middle is {Vector2.Distance(holePixel, capturePixel)} px from the capture circle's");
 
-        match.CallBall(new BallId(1));
+        match.Call.CallBall(new BallId(1));
         window.MoveTo(holePixel.X, holePixel.Y);
         window.Down();
         window.Up();

@@ -2,6 +2,7 @@ using Billiards.App.Game;
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
+using Billiards.Core.Rules;
 using Billiards.Core.Table;
 
 namespace Billiards.App.Tests.Game;
@@ -53,7 +54,7 @@ public class AimPreviewTests
     [InlineData("Computer:5", 5)]
     public void PlayersParseAsTheContractNamesThem(string text, int? level)
     {
-        var player = MatchPlayer.Parse(text, 0);
+        var player = Seat.Parse(text, 0);
         Assert.NotNull(player);
         Assert.Equal(level, player.ComputerLevel);
     }
@@ -63,5 +64,5 @@ public class AimPreviewTests
     [InlineData("computer:0")]
     [InlineData("computer:6")]
     [InlineData("computer:")]
-    public void OtherPlayersAreRefused(string text) => Assert.Null(MatchPlayer.Parse(text, 1));
+    public void OtherPlayersAreRefused(string text) => Assert.Null(Seat.Parse(text, 1));
 }

@@ -12,7 +12,7 @@ public class ComputerPlayerTests
 {
     private sealed class Game : IDisposable
     {
-        public Game(params MatchPlayer[] players)
+        public Game(params Seat[] players)
         {
             var scene = SceneLoader.Load(AssetFolder.Scene("eight-ball.json"));
             Host = new GameHost(scene, SimulationFactory.Create, Window, Clock, new MatchSetup(GameRules.EightBall, players));
@@ -63,11 +63,11 @@ public class ComputerPlayerTests
     // Game-clock seconds from the computer's aim (its decision taken) to its stroke.
     private static double AimToStroke(bool fast)
     {
-        using var game = new Game(new MatchPlayer("Computer L1", 1), new MatchPlayer("Computer L2", 2));
+        using var game = new Game(new Seat("Computer L1", 1), new Seat("Computer L2", 2));
         game.Computer.Fast = fast;
         game.RunUntil(() => game.Computer.Status?.Contains(" aims", StringComparison.Ordinal) == true, "the computer never aimed");
         double aimed = game.Clock.Now;
-        game.RunUntil(() => game.Match.Shots.Count >= 1, "the computer never struck");
+        game.RunUntil(() => game.Match.Session.Shots.Count >= 1, "the computer never struck");
         return game.Clock.Now - aimed;
     }
 
@@ -94,10 +94,10 @@ public class ComputerPlayerTests
 
     private static List<(GameState Before, Billiards.Core.Cue.ShotSpec Shot)> ComputerTurnAfterASoftBreak()
     {
-        using var game = new Game(new MatchPlayer("Anna"), new MatchPlayer("Computer L1", 1));
+        using var game = new Game(new Seat("Anna"), new Seat("Computer L1", 1));
         game.Press(Key.Q, 8); // 1 m/s: a bad break, the computer chooses accept or rerack
         game.Press(Key.Space);
-        game.RunUntil(() => game.Match.Rulings.Count >= 1 && !game.Host.World.Physics.IsRolling, "the break never ended");
+        game.RunUntil(() => game.Match.Session.Rulings.Count >= 1 && !game.Host.World.Physics.IsRolling, "the break never ended");
         Assert.NotEmpty(game.Match.PendingOptions);
         Assert.True(game.Match.IsComputerActing);
         // Anna's keys do nothing on the computer's turn.
@@ -105,12 +105,12 @@ public class ComputerPlayerTests
         game.Press(Key.Space);
         Assert.False(game.Host.World.Physics.IsRolling);
         // The computer chooses, then shoots (after turning its cue), and the referee rules.
-        game.RunUntil(() => game.Match.Shots.Count >= 2 && !game.Host.World.Physics.IsRolling && game.Match.Rulings.Count >= 2, "the computer never played");
+        game.RunUntil(() => game.Match.Session.Shots.Count >= 2 && !game.Host.World.Physics.IsRolling && game.Match.Session.Rulings.Count >= 2, "the computer never played");
         Assert.Empty(game.Match.PendingOptions);
-        var shot = game.Match.Shots[1];
+        var shot = game.Match.Session.Shots[1];
         Assert.Equal(1, shot.Before.Shooter);
-        Assert.True(game.Match.Rulings.Count == game.Match.Shots.Count);
-        return [.. game.Match.Shots];
+        Assert.True(game.Match.Session.Rulings.Count == game.Match.Session.Shots.Count);
+        return [.. game.Match.Session.Shots];
     }
 
     [Fact]
@@ -124,7 +124,7 @@ public class ComputerPlayerTests
     }
 
     // The scene's own shot pots the called 8 and wins: the game is over once the balls stop.
-    private static (GameHost Host, MatchNode Match, Action Frame) GameWonByTheScenesShot(params MatchPlayer[] players)
+    private static (GameHost Host, MatchNode Match, Action Frame) GameWonByTheScenesShot(params Seat[] players)
     {
         var scene = SceneLoader.Load(AssetFolder.Scene("rules/eight-ball-on-the-eight.json"));
         var clock = new ManualClock();
@@ -146,12 +146,12 @@ public class ComputerPlayerTests
     [Fact]
     public void TwoComputersStartTheNextGameByThemselvesAFewSecondsAfterOneEnds()
     {
-        var (host, match, frame) = GameWonByTheScenesShot(new MatchPlayer("Computer A", 1), new MatchPlayer("Computer B", 1));
+        var (host, match, frame) = GameWonByTheScenesShot(new Seat("Computer A", 1), new Seat("Computer B", 1));
         using (host)
         {
-            Assert.Equal(0, match.Winner);
-            Assert.InRange(match.RematchIn!.Value, MatchNode.AutoRematchSeconds - 0.1, MatchNode.AutoRematchSeconds);
-            for (int i = 0; i < 30 * (MatchNode.AutoRematchSeconds - 1); i++)
+            Assert.Equal(0, match.Session.Winner);
+            Assert.InRange(match.Session.RematchIn!.Value, Session.AutoRematchSeconds - 0.1, Session.AutoRematchSeconds);
+            for (int i = 0; i < 30 * (Session.AutoRematchSeconds - 1); i++)
             {
                 frame();
             }
@@ -161,7 +161,7 @@ public class ComputerPlayerTests
                 frame();
             }
             Assert.False(match.IsOver, "the next game never started");
-            Assert.Null(match.RematchIn);
+            Assert.Null(match.Session.RematchIn);
             Assert.Equal(0, match.State.Shot);
             Assert.Equal(1, match.State.Shooter); // the other player breaks
         }
@@ -170,11 +170,11 @@ public class ComputerPlayerTests
     [Fact]
     public void WithAPersonAtTheTableTheNextGameWaitsForEnter()
     {
-        var (host, match, frame) = GameWonByTheScenesShot(new MatchPlayer("Anna"), new MatchPlayer("Computer", 1));
+        var (host, match, frame) = GameWonByTheScenesShot(new Seat("Anna"), new Seat("Computer", 1));
         using (host)
         {
-            Assert.Null(match.RematchIn);
-            for (int i = 0; i < 30 * (MatchNode.AutoRematchSeconds + 2); i++)
+            Assert.Null(match.Session.RematchIn);
+            for (int i = 0; i < 30 * (Session.AutoRematchSeconds + 2); i++)
             {
                 frame();
             }
@@ -185,10 +185,10 @@ public class ComputerPlayerTests
     [Fact]
     public void APausedGameHoldsTheComputerUntilItResumes()
     {
-        using var game = new Game(new MatchPlayer("Anna"), new MatchPlayer("Computer L1", 1));
+        using var game = new Game(new Seat("Anna"), new Seat("Computer L1", 1));
         game.Press(Key.Q, 8);
         game.Press(Key.Space);
-        game.RunUntil(() => game.Match.Rulings.Count >= 1 && !game.Host.World.Physics.IsRolling, "the break never ended");
+        game.RunUntil(() => game.Match.Session.Rulings.Count >= 1 && !game.Host.World.Physics.IsRolling, "the break never ended");
         game.Press(Key.P);
         for (int i = 0; i < 100; i++)
         {
@@ -196,15 +196,15 @@ public class ComputerPlayerTests
             Thread.Sleep(2);
         }
         Assert.NotEmpty(game.Match.PendingOptions);
-        Assert.Single(game.Match.Shots);
+        Assert.Single(game.Match.Session.Shots);
         game.Press(Key.P);
-        game.RunUntil(() => game.Match.Shots.Count >= 2, "the computer never played after the pause");
+        game.RunUntil(() => game.Match.Session.Shots.Count >= 2, "the computer never played after the pause");
     }
 
     [Fact]
     public void TheHintKeyAsksThePlannerAndTakesItsAimPowerSpinElevationAndCall()
     {
-        using var game = new Game(new MatchPlayer("Anna"), new MatchPlayer("Ben"));
+        using var game = new Game(new Seat("Anna"), new Seat("Ben"));
         game.Frame();
         game.Press(ComputerPlayerNode.HintKey);
         Assert.True(game.Computer.IsHinting);
@@ -227,10 +227,10 @@ public class ComputerPlayerTests
         Assert.Equal(hint.Shot.ElevationDeg, cue.ElevationDegrees, 9);
         // Space plays it as a person's shot: the hint's aim, spin and elevation.
         game.Press(Key.Space);
-        var played = game.Match.Shots[0].Shot;
+        var played = game.Match.Session.Shots[0].Shot;
         Assert.Equal(hint.Shot.AimDeg, played.AimDeg, 9);
         Assert.Equal(hint.Shot.TipHeight, played.TipHeight, 9);
         Assert.Equal(hint.Shot.ElevationDeg, played.ElevationDeg, 9);
-        Assert.Equal(0, game.Match.Shots[0].Before.Shooter);
+        Assert.Equal(0, game.Match.Session.Shots[0].Before.Shooter);
     }
 }

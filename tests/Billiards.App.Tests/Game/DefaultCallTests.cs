@@ -20,7 +20,7 @@ public class DefaultCallTests
         {
             Game = new GameState(GameRules.EightBall) { Shot = 5, Shooter = shooter, Groups = groups, Players = new PerPlayer<string>("Anna", "Ben") },
         };
-        var game = new TestGame(scene, new MatchSetup(GameRules.EightBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+        var game = new TestGame(scene, new MatchSetup(GameRules.EightBall, [new Seat("Anna"), new Seat("Ben")]));
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
         game.Frame();
         return (game, match);

@@ -23,7 +23,7 @@ internal static class FourBallGames
     public static TestGame Start(GameState state)
     {
         var scene = SceneLoader.Parse(Json, "t.json") with { Game = state };
-        return new TestGame(scene, new MatchSetup(state.Rules, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+        return new TestGame(scene, new MatchSetup(state.Rules, [new Seat("Anna"), new Seat("Ben")]));
     }
 
     /// <summary>An 8-ball game after the break (shot 1, so that a miss is a foul and not a bad break), Anna to shoot.</summary>

@@ -14,7 +14,7 @@ namespace Billiards.App.Tests.Game;
 /// </summary>
 public class MatchNodeTests
 {
-    private static readonly MatchPlayer[] TwoPeople = [new("Player 1"), new("Player 2")];
+    private static readonly Seat[] TwoPeople = [new("Player 1"), new("Player 2")];
 
     private sealed class RealGame : IDisposable
     {
@@ -66,7 +66,7 @@ public class MatchNodeTests
         using var game = new RealGame(path, GameRules.NineBall);
         Assert.True(game.Host.World.Physics.IsRolling, "the scene's shot plays at once");
         game.RunUntilRest();
-        var ruling = Assert.Single(game.Match.Rulings);
+        var ruling = Assert.Single(game.Match.Session.Rulings);
         Assert.Equal([RefereeOption.Shoot, RefereeOption.PassBack], game.Match.PendingOptions);
 
         var (code, stdout, stderr) = Cli.CliRun.Run("simulate", path);
@@ -92,7 +92,7 @@ public class MatchNodeTests
         game.Press(Key.Q, 8); // 3.0 - 8 x 0.25 = 1 m/s: too soft to drive four balls to a cushion
         game.Press(Key.Space);
         game.RunUntilRest();
-        var ruling = Assert.Single(game.Match.Rulings);
+        var ruling = Assert.Single(game.Match.Session.Rulings);
         Assert.Contains(Foul.BadBreak, ruling.Fouls);
         Assert.Equal(ruling.Options, game.Match.PendingOptions);
         Assert.Equal(1, game.Match.State.Shooter);
@@ -146,14 +146,13 @@ public class MatchHudTests
         Assert.Equal(0, match.State.Shot);
         Assert.Null(host.RunFrame().Hud!.Buttons);
 
-        // Groups taken: each player's line is followed by the balls still needed.
+        // Groups taken (a scene's game block at shot 4, the 3 down): each player's line is followed by the balls still needed.
         var lines = new List<string>();
         var icons = new List<HudIcon>();
-        var sim = host.World.Physics.Simulation;
-        sim.RemoveBall(new BallId(3));
-        var taken = match.State with { Groups = new PerPlayer<BallGroup>(BallGroup.Stripes, BallGroup.Solids), Shot = 4 };
-        typeof(MatchNode).GetProperty(nameof(MatchNode.State))!.SetValue(match, taken);
-        Billiards.App.Hud.MatchLines.Add(lines, match, host.World.Physics, icons: icons);
+        var taken = new GameState(GameRules.EightBall) { Players = new PerPlayer<string>("Anna", "Ben"), Groups = new PerPlayer<BallGroup>(BallGroup.Stripes, BallGroup.Solids), Shot = 4 };
+        var later = scene with { Game = taken, Balls = [.. scene.Balls.Where(b => b.Id != new BallId(3))] };
+        using var grouped = new GameHost(later, SimulationFactory.Create, window, clock, new MatchSetup(GameRules.EightBall, [new("Anna"), new("Ben")]));
+        Billiards.App.Hud.MatchLines.Add(lines, grouped.Tree.Root.GetInTree<MatchNode>(), grouped.World.Physics, icons: icons);
         int anna = lines.FindIndex(l => l.Contains("Anna: stripes", StringComparison.Ordinal));
         int ben = lines.FindIndex(l => l.Contains("Ben: solids", StringComparison.Ordinal));
         Assert.Equal([9, 10, 11, 12, 13, 14, 15], icons.Where(i => i.Line == anna).Select(i => i.Number));
@@ -161,7 +160,7 @@ public class MatchHudTests
     }
 }
 
-public class MatchPlayerTests
+public class SeatTests
 {
     [Theory]
     [InlineData("human", 1, "Player 2", null)]
@@ -172,7 +171,7 @@ public class MatchPlayerTests
     [InlineData("CPU:5", 0, "Computer L5", 5)]
     public void ASeatIsAPersonByNameOrTheComputerAtALevel(string text, int seat, string name, int? level)
     {
-        var player = MatchPlayer.Parse(text, seat)!;
+        var player = Seat.Parse(text, seat)!;
         Assert.Equal(name, player.Name);
         Assert.Equal(level, player.ComputerLevel);
         Assert.Equal(level is null, player.IsHuman);
@@ -186,7 +185,7 @@ public class MatchPlayerTests
     [InlineData("cpu:x")]
     [InlineData("a name far longer than twenty-four characters")]
     [InlineData("tab\there")]
-    public void AnythingElseIsRefused(string text) => Assert.Null(MatchPlayer.Parse(text, 0));
+    public void AnythingElseIsRefused(string text) => Assert.Null(Seat.Parse(text, 0));
 
     [Fact]
     public void ASceneGameBlockWithoutNamesTakesThePlayersNamesAndOneWithNamesKeepsThem()
@@ -204,9 +203,9 @@ public class MatchPlayerTests
     }
 
     [Theory]
-    [InlineData(GameRules.EightBall, 0, MatchNode.DefaultPower)]
-    [InlineData(GameRules.EightBall, 3, MatchNode.MaxPower)]
-    [InlineData(GameRules.Snooker, 0, MatchNode.MaxPower)]
+    [InlineData("eight-ball", 0, MatchNode.DefaultPower)]
+    [InlineData("eight-ball", 3, MatchNode.MaxPower)]
+    [InlineData("snooker", 0, MatchNode.MaxPower)]
     public void APowerBreakLeavesTheNextShotAtTheStartingPowerAndOtherShotsKeepTheirs(GameRules rules, int shot, double after)
     {
         // FourBallGames' pool table; snooker's break-off is not a power break, whatever the table.

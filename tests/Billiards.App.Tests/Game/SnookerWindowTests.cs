@@ -26,7 +26,7 @@ public class SnookerWindowTests
     private static TestGame Start(GameState state)
     {
         var scene = SceneLoader.Parse(Json, "s.json") with { Game = state with { Players = new PerPlayer<string>("Anna", "Ben") } };
-        return new TestGame(scene, new MatchSetup(GameRules.Snooker, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+        return new TestGame(scene, new MatchSetup(GameRules.Snooker, [new Seat("Anna"), new Seat("Ben")]));
     }
 
     [Fact]
@@ -78,12 +78,12 @@ public class SnookerWindowTests
         Assert.Equal(new HashSet<BallId> { Blue, Black }, new HashSet<BallId> { first, second });
         Assert.Contains($"Nominate: {BallSet.NameOfAny(second)}", game.Frame().Hud!.Board!.Status, StringComparison.Ordinal);
         // A click on the red nominates nothing (a red is not a colour); a click on a colour does.
-        match.CallBall(BallSet.Snooker.Ids.First(SnookerRuleset.IsRed));
+        match.Call.CallBall(BallSet.Snooker.Ids.First(SnookerRuleset.IsRed));
         Assert.Equal(second, match.CurrentNomination!.Ball);
-        match.CallBall(first);
+        match.Call.CallBall(first);
         Assert.Equal(first, match.CurrentNomination!.Ball);
         game.Window.Press(Key.Space);
-        Assert.Equal(Call.Nominate(first), match.Shots[^1].Before.Call);
+        Assert.Equal(Call.Nominate(first), match.Session.Shots[^1].Before.Call);
     }
 
     [Fact]

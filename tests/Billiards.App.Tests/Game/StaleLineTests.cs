@@ -14,14 +14,14 @@ namespace Billiards.App.Tests.Game;
 public class StaleLineTests
 {
     [Theory]
-    [InlineData(GameRules.NineBall, "Anna", "cpu:3", "Billiards: 9-ball, Anna vs Computer L3")]
-    [InlineData(GameRules.StraightPool, "human", "human", "Billiards: 14.1 straight pool, Player 1 vs Player 2")]
-    [InlineData(GameRules.EightBall, "computer:2", "Ben", "Billiards: 8-ball, Computer L2 vs Ben")]
+    [InlineData("nine-ball", "Anna", "cpu:3", "Billiards: 9-ball, Anna vs Computer L3")]
+    [InlineData("straight-pool", "human", "human", "Billiards: 14.1 straight pool, Player 1 vs Player 2")]
+    [InlineData("eight-ball", "computer:2", "Ben", "Billiards: 8-ball, Computer L2 vs Ben")]
     public void TheWindowTitleNamesTheGameAndPlayersNotTheScenesName(GameRules rules, string a, string b, string expected)
     {
         var scene = SceneLoader.Load(AssetFolder.Scene("eight-ball.json"));
         Assert.Equal("8-ball for two players", scene.Name);
-        var setup = new MatchSetup(rules, [MatchPlayer.Parse(a, 0)!, MatchPlayer.Parse(b, 1)!]);
+        var setup = new MatchSetup(rules, [Seat.Parse(a, 0)!, Seat.Parse(b, 1)!]);
         Assert.Equal(expected, PlayCommand.TitleFor(scene, setup));
         Assert.Equal("Billiards: 8-ball for two players", PlayCommand.TitleFor(scene, null));
     }

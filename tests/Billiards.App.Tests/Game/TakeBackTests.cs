@@ -77,9 +77,9 @@ public class TakeBackTests
         var run = Play("eight-ball.json", "Anna,Ben", takeBacks: true);
         var match = run.Match!;
         Assert.Single(run.Strikes);
-        Assert.Equal(1, match.TakeBackCount);
+        Assert.Equal(1, match.Session.TakeBackCount);
         Assert.Empty(match.Game!.Shots);
-        Assert.Empty(match.Rulings);
+        Assert.Empty(match.Session.Rulings);
         Assert.Equal(run.FirstState, match.State);
         AssertSameTable(run.First!, run.Physics.Simulation.Balls);
         // The rack really moved in between: the break was struck and judged.
@@ -93,7 +93,7 @@ public class TakeBackTests
         var match = run.Match!;
         Assert.False(match.TakeBacks);
         Assert.Single(match.Game!.Shots);
-        Assert.Equal(0, match.TakeBackCount);
+        Assert.Equal(0, match.Session.TakeBackCount);
         Assert.StartsWith("Take-backs are off", run.Host!.Tree.Root.GetInTree<TakeBackNode>().Refusal, StringComparison.Ordinal);
         Assert.False(run.First!.AsSpan().SequenceEqual(run.Physics.Simulation.Balls));
     }
@@ -119,7 +119,7 @@ public class TakeBackTests
         // turn has passed, Z takes the computer's last shot back and it plays that shot again.
         var run = Play("eight-ball.json", "computer:1,Anna", takeBacks: true, fast: true);
         var match = run.Match!;
-        Assert.Equal(1, match.TakeBackCount);
+        Assert.Equal(1, match.Session.TakeBackCount);
         Assert.All(run.Strikes, s => Assert.Equal(0, s.Shooter));
         int again = Enumerable.Range(1, run.Strikes.Count - 1).Single(k => run.Strikes[k] == run.Strikes[k - 1]);
         // The game's record holds that shot once: the second try.

@@ -72,7 +72,7 @@ public class SnookerTargetViewTests
     public void AtTheBreakOffTheViewAimsThinOnARedTheCueBallMeetsFirstNotThroughThePink()
     {
         var scene = SceneLoader.Load(AssetFolder.Scene("snooker.json"));
-        using var game = new TestGame(scene, new MatchSetup(GameRules.Snooker, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]), create: SimulationFactory.Create);
+        using var game = new TestGame(scene, new MatchSetup(GameRules.Snooker, [new Seat("Anna"), new Seat("Ben")]), create: SimulationFactory.Create);
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
         var physics = game.World.Physics;
         game.Frame();

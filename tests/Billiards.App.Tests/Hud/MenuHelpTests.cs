@@ -1,6 +1,7 @@
 using Billiards.App.Hud;
 using Billiards.App.Platform;
 using Billiards.App.Tests.Game;
+using Billiards.Core.Rules;
 
 namespace Billiards.App.Tests.Hud;
 
@@ -47,7 +48,7 @@ public class MenuHelpTests
     public void TheStartMenuSetsTheComputersPaceInTheGameBehindIt()
     {
         var scene = Billiards.Core.Scenes.SceneLoader.Load(Billiards.App.Cli.PlayCommand.FindRulesScene(Billiards.Core.Rules.GameRules.EightBall));
-        using var game = new TestGame(scene, new Billiards.App.Game.MatchSetup(Billiards.Core.Rules.GameRules.EightBall, [new Billiards.App.Game.MatchPlayer("Anna"), new Billiards.App.Game.MatchPlayer("Computer L3", 3)]));
+        using var game = new TestGame(scene, new Billiards.App.Game.MatchSetup(Billiards.Core.Rules.GameRules.EightBall, [new Billiards.Core.Rules.Seat("Anna"), new Billiards.Core.Rules.Seat("Computer L3", 3)]));
         var computer = game.World.Tree.Root.GetInTree<Billiards.App.Game.ComputerPlayerNode>();
         var menu = game.World.Menu;
         Assert.False(computer.Fast);

@@ -49,11 +49,11 @@ public class ScoreboardTests
         Assert.DoesNotContain(hud.Lines, l => l.Contains(lastRuling, StringComparison.Ordinal));
 
         // The session's record keeps the first game; the rematch joins it once it has a shot, a line each.
-        Assert.Equal(2, match.Games.Count);
-        Assert.Equal([match.Games[0]], match.RecordedGames);
+        Assert.Equal(2, match.Session.Games.Count);
+        Assert.Equal([match.Session.Games[0]], match.Session.RecordedGames);
         FourBallGames.PotTheEightEarly(game);
-        Assert.Equal(match.Games, match.RecordedGames);
-        string[] lines = System.Text.Encoding.UTF8.GetString(GameRecordFile.ToJsonLines(match.RecordedGames)).Split('\n', StringSplitOptions.RemoveEmptyEntries);
+        Assert.Equal(match.Session.Games, match.Session.RecordedGames);
+        string[] lines = System.Text.Encoding.UTF8.GetString(GameRecordFile.ToJsonLines(match.Session.RecordedGames)).Split('\n', StringSplitOptions.RemoveEmptyEntries);
         Assert.Equal(2, lines.Length);
         Assert.All(lines, l => Assert.Single(GameRecordFile.Parse(l, "session.json").Shots));
         Assert.NotEqual(GameRecordFile.Parse(lines[0], "session.json").Setup.Seed, GameRecordFile.Parse(lines[1], "session.json").Setup.Seed);
@@ -76,7 +76,7 @@ public class ScoreboardTests
         {
             Game = new GameState(GameRules.NineBall) { Shot = 5, FoulsInRow = new PerPlayer<int>(2, 0), Players = new PerPlayer<string>("Anna", "Ben") },
         };
-        using var nine = new TestGame(scene, new MatchSetup(GameRules.NineBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+        using var nine = new TestGame(scene, new MatchSetup(GameRules.NineBall, [new Seat("Anna"), new Seat("Ben")]));
         var match = nine.World.Tree.Root.GetInTree<MatchNode>();
         Assert.Contains("fouls in a row 2", nine.Frame().Hud!.Board!.Players[0].Detail, StringComparison.Ordinal);
         match.AimAt(180); // away from every ball: no first contact, a foul

@@ -2,6 +2,7 @@ using Billiards.App.Game;
 using Billiards.App.Input;
 using Billiards.App.Platform;
 using Billiards.App.Tests.Game;
+using Billiards.Core.Rules;
 
 namespace Billiards.App.Tests.Input;
 
@@ -102,7 +103,7 @@ public class HeldKeyTests
     private static MatchNode Match(TestGame game) => game.World.Tree.Root.GetInTree<MatchNode>();
 
     private static TestGame Game() =>
-        new(TestScenes.TwoBalls(), new MatchSetup(Billiards.Core.Rules.GameRules.EightBall, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]));
+        new(TestScenes.TwoBalls(), new MatchSetup(Billiards.Core.Rules.GameRules.EightBall, [new Seat("Anna"), new Seat("Ben")]));
 
     [Fact]
     public void HoldingTheAimKeyTurnsTheCueOnceThenByEveryRepeat()

@@ -119,7 +119,7 @@ public class PlacementTests
     public void ASpottedBallGoesOnTheFootSpotWhenItIsFree(string model)
     {
         var sim = Create(model, ("cue", -0.6, 0), ("9", 0.2, 0.3));
-        var at = sim.SpotBall(new BallId(9));
+        var at = Billiards.Core.Rules.Ruleset.SpotOnFootSpot(sim, new BallId(9));
         Assert.Equal(new Vec3(1.27 / 2, 0, sim.BallRadius), at);
         AssertAt(sim, "9", 1.27 / 2, 0);
     }
@@ -132,7 +132,7 @@ public class PlacementTests
         double spot = 1.27 / 2;
         // A ball R off the long axis and R behind the spot blocks |x - (spot + R)| < sqrt(4R^2 - R^2).
         var sim = Create(model, ("cue", -0.6, 0), ("5", spot + r, r), ("9", 0.2, 0.3));
-        var at = sim.SpotBall(new BallId(9));
+        var at = Billiards.Core.Rules.Ruleset.SpotOnFootSpot(sim, new BallId(9));
         // The thesis model keeps the blocking ball in single-precision centimetres.
         Assert.Equal(spot + r + Math.Sqrt(3) * r, at.X, Math.Max(Tolerance(model), 1e-12));
         Assert.Equal(0, at.Y);
@@ -155,7 +155,7 @@ public class PlacementTests
         }
         Assert.True(balls[^1].Item2 + 4 * r > limit, "the line reaches the cushion");
         var sim = Create(model, [.. balls]);
-        var at = sim.SpotBall(new BallId(15));
+        var at = Billiards.Core.Rules.Ruleset.SpotOnFootSpot(sim, new BallId(15));
         Assert.Equal(spot - 2 * r, at.X, Math.Max(Tolerance(model), 1e-12));
         AssertAt(sim, "15", at.X, 0);
     }

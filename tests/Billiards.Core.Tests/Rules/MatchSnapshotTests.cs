@@ -23,9 +23,9 @@ public class MatchSnapshotTests
         [.. balls.OrderBy(b => b.Key.Value).SelectMany(b => new[] { (long)b.Key.Value, BitConverter.DoubleToInt64Bits(b.Value.X), BitConverter.DoubleToInt64Bits(b.Value.Y), BitConverter.DoubleToInt64Bits(b.Value.Z) })];
 
     [Theory]
-    [InlineData(GameRules.EightBall, 3)]
-    [InlineData(GameRules.NineBall, 1)]
-    [InlineData(GameRules.StraightPool, 2)]
+    [InlineData("eight-ball", 3)]
+    [InlineData("nine-ball", 1)]
+    [InlineData("straight-pool", 2)]
     public void RestoringBeforeEachShotGivesBackItsBallsAndStateAndTheShotPlaysTheSameAgain(GameRules rules, int seed)
     {
         var game = new Match(GameSetup.Of(rules, seed, Players, target: 20));

@@ -20,7 +20,7 @@ public class MatchTests
     private static Match PlayOut(GameSetup setup, int maxShots = 200)
     {
         var game = new Match(setup);
-        bool calls = setup.Rules is GameRules.EightBall or GameRules.TenBall or GameRules.StraightPool;
+        bool calls = setup.Ruleset.CallsShots;
         while (!game.IsOver && game.Shots.Count < maxShots)
         {
             var shot = setup.Rules == GameRules.StraightPool && game.State.Shot == 0
@@ -55,9 +55,9 @@ public class MatchTests
     }
 
     [Theory]
-    [InlineData(GameRules.EightBall, 3)]
-    [InlineData(GameRules.NineBall, 1)]
-    [InlineData(GameRules.TenBall, 3)]
+    [InlineData("eight-ball", 3)]
+    [InlineData("nine-ball", 1)]
+    [InlineData("ten-ball", 3)]
     public void AGamePlayedFromItsShotsEndsInAWinAndReplaysBitForBit(GameRules rules, int seed)
     {
         var game = PlayOut(GameSetup.Of(rules, seed, Players));
@@ -67,7 +67,7 @@ public class MatchTests
         // Won by a legal shot on the game ball, not by the opponent's loss.
         Assert.True(last.Legal);
         Assert.Equal(game.Shots[^1].Before.Shooter, last.Winner);
-        var gameBall = rules switch { GameRules.EightBall => 8, GameRules.NineBall => 9, _ => 10 };
+        var gameBall = rules == GameRules.EightBall ? 8 : rules == GameRules.NineBall ? 9 : 10;
         Assert.Contains(new BallId(gameBall), last.Pocketed);
         AssertChained(game);
         AssertReplays(game);

@@ -23,13 +23,53 @@ public readonly record struct Visit(int Player, int Shots, int Break, bool Open)
 /// called, push-out), what each option of the incoming player leads to, and what the HUD shows.
 /// The match, the computer player, the scene reader and the HUD ask the ruleset instead of asking
 /// which game is played; <see cref="For"/> is the one place that maps a game to its ruleset.
+/// Its members by role: <see cref="IShotConstraints"/>, <see cref="IRefereeRules"/>,
+/// <see cref="IGamePresentation"/> and <see cref="IPlannerPolicy"/>; a layer takes the role it needs.
 /// </summary>
-public abstract class Ruleset
+public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentation, IPlannerPolicy
 {
-    private static readonly Ruleset[] Rulesets = [new EightBallRuleset(), new NineBallRuleset(), new TenBallRuleset(), new StraightPoolRuleset(), new SnookerRuleset()];
+    private static readonly Lock RegistryLock = new();
+    private static Ruleset[] _registered = [new EightBallRuleset(), new NineBallRuleset(), new TenBallRuleset(), new StraightPoolRuleset(), new SnookerRuleset()];
 
-    /// <summary>Every ruleset, in <see cref="GameRules"/> order.</summary>
-    public static IReadOnlyList<Ruleset> All => Rulesets;
+    /// <summary>Every registered ruleset, in the order of registration (the shipped five first).</summary>
+    public static IReadOnlyList<Ruleset> All => Volatile.Read(ref _registered);
+
+    /// <summary>
+    /// Registers a game (its ruleset by its name): from then on scenes, records, <c>selfplay
+    /// --rules</c> and the window know it. Registering the same ruleset type again does nothing.
+    /// </summary>
+    /// <exception cref="ArgumentException">When another ruleset already has the name.</exception>
+    public static void Register(Ruleset ruleset)
+    {
+        ArgumentNullException.ThrowIfNull(ruleset);
+        lock (RegistryLock)
+        {
+            if (Find(ruleset.Name) is { } known)
+            {
+                if (known.GetType() != ruleset.GetType())
+                {
+                    throw new ArgumentException($"a game named \"{ruleset.Name}\" is registered already", nameof(ruleset));
+                }
+                return;
+            }
+            Volatile.Write(ref _registered, [.. _registered, ruleset]);
+        }
+    }
+
+    /// <summary>The registered ruleset named <paramref name="name"/>, or null.</summary>
+    public static Ruleset? Find(string name)
+    {
+        // Asked on every judged shot of a search: an array walk, no enumerator.
+        var registered = Volatile.Read(ref _registered);
+        for (int i = 0; i < registered.Length; i++)
+        {
+            if (registered[i].Name == name)
+            {
+                return registered[i];
+            }
+        }
+        return null;
+    }
 
     /// <summary>The ruleset of <paramref name="game"/>.</summary>
     /// <example>
@@ -40,15 +80,15 @@ public abstract class Ruleset
     /// bool threeFouls = nineBall.HasThreeFouls; // true: three fouls in a row lose
     /// </code>
     /// </example>
-    public static Ruleset For(GameRules game) => (int)game >= 0 && (int)game < Rulesets.Length
-        ? Rulesets[(int)game]
-        : throw new ArgumentOutOfRangeException(nameof(game), game, "no such game");
+    /// <exception cref="ArgumentOutOfRangeException">For a game no ruleset is registered for.</exception>
+    public static Ruleset For(GameRules game) => (game.Name is null ? null : Find(game.Name))
+        ?? throw new ArgumentOutOfRangeException(nameof(game), game, "no such game");
 
     /// <summary>The game.</summary>
     public abstract GameRules Game { get; }
 
     /// <summary>The game's name in files, e.g. "eight-ball".</summary>
-    public string Name => Game.ToName();
+    public string Name => Game.Name;
 
     /// <summary>The game's short name for people, e.g. "8-ball" (the scoreboard's).</summary>
     public abstract string ShortName { get; }
@@ -65,15 +105,15 @@ public abstract class Ruleset
     /// <summary>The balls of a game, cue ball first (a subset of <see cref="BallSet"/>).</summary>
     public abstract IReadOnlyList<BallId> Balls { get; }
 
-    /// <summary>The shape of the game's rack.</summary>
-    protected abstract RackGame RackShape { get; }
+    /// <summary>
+    /// The shape of the game's rack, where it is one of the shapes the scene format knows; a game
+    /// with a rack of its own overrides <see cref="Rack"/> and <see cref="CueStart"/> instead.
+    /// </summary>
+    protected virtual RackGame RackShape => throw new NotSupportedException($"{Name} racks its own balls (Ruleset.Rack)");
 
     /// <summary>The object balls racked for a break with the rack's jitter from <paramref name="seed"/> (m, z = R).</summary>
-    public IReadOnlyList<(BallId Id, Vec3 Position)> Rack(TableSpec table, double ballRadius, int seed) =>
+    public virtual IReadOnlyList<(BallId Id, Vec3 Position)> Rack(TableSpec table, double ballRadius, int seed) =>
         Initializer.Rack(new RackSpec(RackShape, seed), table, ballRadius);
-
-    /// <summary>The rack's shape as the scene loader and the physics name it.</summary>
-    public RackGame RackGame => RackShape;
 
     /// <summary>The table the game is played on by default (a preset of <see cref="TableSpec.FromPreset"/>).</summary>
     public virtual string TablePreset => "pool-9ft";
@@ -82,7 +122,7 @@ public abstract class Ruleset
     public virtual BallInHand BreakBallInHand => BallInHand.Kitchen;
 
     /// <summary>Where a rack's cue ball starts (m, z = R): the head spot in pool, in the D in snooker.</summary>
-    public Vec3 CueStart(TableSpec table, double ballRadius) => Initializer.CueStart(RackShape, table, ballRadius);
+    public virtual Vec3 CueStart(TableSpec table, double ballRadius) => Initializer.CueStart(RackShape, table, ballRadius);
 
     /// <summary>
     /// Puts the ruling's <paramref name="balls"/> back on the table at rest in
@@ -95,8 +135,51 @@ public abstract class Ruleset
         ArgumentNullException.ThrowIfNull(balls);
         foreach (var ball in balls)
         {
-            simulation.SpotBall(ball);
+            SpotOnFootSpot(simulation, ball);
         }
+    }
+
+    /// <summary>
+    /// Pool's spotting (rules.md): ball <paramref name="id"/> goes on the foot spot (x = +L/4,
+    /// y = 0), or at the nearest point behind it on the long axis (towards the foot rail) where it
+    /// touches no other ball; when no such point is left before the foot cushion, at the nearest
+    /// one in front of it. The ball's own current place does not count against it. Only between shots.
+    /// </summary>
+    /// <returns>Where the ball was put (m).</returns>
+    /// <exception cref="Physics.PlacementException">When the ball is not in the simulation, or the whole long axis is taken.</exception>
+    /// <exception cref="InvalidOperationException">While balls move.</exception>
+    public static Vec3 SpotOnFootSpot(Physics.Simulation simulation, BallId id)
+    {
+        ArgumentNullException.ThrowIfNull(simulation);
+        int index = simulation.IndexOf(id);
+        if (index < 0)
+        {
+            throw new Physics.PlacementException($"ball \"{id}\" is not in this game's ball set");
+        }
+        var others = new List<Vec3>();
+        var balls = simulation.Balls;
+        for (int j = 0; j < balls.Length; j++)
+        {
+            if (j != index && !balls[j].IsOutOfPlay)
+            {
+                others.Add(balls[j].Position);
+            }
+        }
+        double r = simulation.BallRadius;
+        double spot = simulation.Table.HalfLength / 2;
+        double limit = simulation.Table.HalfLength - r;
+        double x = Placement.FreeOnLongAxis(r, others, spot, +1);
+        if (x > limit + Placement.Tolerance)
+        {
+            x = Placement.FreeOnLongAxis(r, others, spot, -1);
+            if (x < -limit - Placement.Tolerance)
+            {
+                throw new Physics.PlacementException($"ball \"{id}\" cannot be spotted: the long axis has no free place");
+            }
+        }
+        var position = new Vec3(x, 0, r);
+        simulation.PlaceBall(id, position);
+        return position;
     }
 
     /// <summary>The referee of the game on <paramref name="table"/> with balls of radius <paramref name="ballRadius"/> (m).</summary>

@@ -2,12 +2,12 @@ using Billiards.Core.Rules;
 using Billiards.Core.Table;
 using static Billiards.Core.Tests.Rules.RulesKit;
 
-namespace Billiards.Core.Tests.Rules.Rulesets;
+namespace Billiards.Core.Tests.Rules.Games;
 
 /// <summary>rules.md, "9-ball": each rule, a hand-made shot and the ruling written from the rule.</summary>
 public class NineBallRefereeTests
 {
-    private const GameRules Game = GameRules.NineBall;
+    private static readonly GameRules Game = GameRules.NineBall;
     private static readonly GameState Break = Start(Game);
     private static readonly GameState Later = At(Game, shot: 4);
 

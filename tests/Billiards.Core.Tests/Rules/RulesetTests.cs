@@ -1,7 +1,7 @@
 using Billiards.Core.Balls;
 using Billiards.Core.Rules;
 
-namespace Billiards.Core.Tests.Rules.Rulesets;
+namespace Billiards.Core.Tests.Rules;
 
 /// <summary>Each game's ruleset answers the next shot's questions as rules.md has them.</summary>
 public class RulesetTests
@@ -9,9 +9,10 @@ public class RulesetTests
     private static readonly BallId[] Some = [new(2), new(3), new(8), new(9), new(12)];
 
     [Fact]
-    public void EveryGameHasItsRulesetInGameOrder()
+    public void EveryGameHasItsRulesetByNameTheShippedFiveFirst()
     {
-        Assert.Equal(Enum.GetValues<GameRules>(), Ruleset.All.Select(r => r.Game));
+        Assert.Equal(["eight-ball", "nine-ball", "ten-ball", "straight-pool", "snooker"], Ruleset.All.Take(5).Select(r => r.Name));
+        Assert.All(Ruleset.All, r => Assert.Same(r, Ruleset.Find(r.Name)));
         Assert.All(Ruleset.All, r => Assert.Same(r, Ruleset.For(r.Game)));
         Assert.Equal(16, Ruleset.For(GameRules.EightBall).Balls.Count);
         Assert.Equal(10, Ruleset.For(GameRules.NineBall).Balls.Count);
@@ -20,10 +21,10 @@ public class RulesetTests
     }
 
     [Theory]
-    [InlineData(GameRules.EightBall, true)]
-    [InlineData(GameRules.NineBall, false)]
-    [InlineData(GameRules.TenBall, true)]
-    [InlineData(GameRules.StraightPool, true)]
+    [InlineData("eight-ball", true)]
+    [InlineData("nine-ball", false)]
+    [InlineData("ten-ball", true)]
+    [InlineData("straight-pool", true)]
     public void CalledGamesCallEveryShotAfterTheBreak(GameRules game, bool called)
     {
         var rules = Ruleset.For(game);
@@ -32,10 +33,10 @@ public class RulesetTests
     }
 
     [Theory]
-    [InlineData(GameRules.EightBall, false)]
-    [InlineData(GameRules.NineBall, true)]
-    [InlineData(GameRules.TenBall, true)]
-    [InlineData(GameRules.StraightPool, false)]
+    [InlineData("eight-ball", false)]
+    [InlineData("nine-ball", true)]
+    [InlineData("ten-ball", true)]
+    [InlineData("straight-pool", false)]
     public void APushOutIsOnlyTheRotationGamesShotAfterTheBreak(GameRules game, bool pushOut)
     {
         var rules = Ruleset.For(game);

@@ -2,12 +2,12 @@ using Billiards.Core.Rules;
 using Billiards.Core.Table;
 using static Billiards.Core.Tests.Rules.RulesKit;
 
-namespace Billiards.Core.Tests.Rules.Rulesets;
+namespace Billiards.Core.Tests.Rules.Games;
 
 /// <summary>rules.md, "8-ball": each rule, a hand-made shot and the ruling written from the rule.</summary>
 public class EightBallRefereeTests
 {
-    private const GameRules Game = GameRules.EightBall;
+    private static readonly GameRules Game = GameRules.EightBall;
     private static readonly GameState Break = Start(Game);
     private static readonly GameState Open = At(Game, shot: 2);
     // Anna (0) has the solids, Ben (1) the stripes.

@@ -6,7 +6,7 @@ using Billiards.Core.Rules;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
 
-namespace Billiards.Core.Tests.Rules.Rulesets;
+namespace Billiards.Core.Tests.Rules.Games;
 
 /// <summary>
 /// Hand-made snooker shots: the balls of the rack (seed 1, the cue ball in the D) as they stand

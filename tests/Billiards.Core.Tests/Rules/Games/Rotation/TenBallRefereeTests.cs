@@ -2,12 +2,12 @@ using Billiards.Core.Rules;
 using Billiards.Core.Table;
 using static Billiards.Core.Tests.Rules.RulesKit;
 
-namespace Billiards.Core.Tests.Rules.Rulesets;
+namespace Billiards.Core.Tests.Rules.Games;
 
 /// <summary>rules.md, "10-ball": 9-ball's rules with calls and the 10.</summary>
 public class TenBallRefereeTests
 {
-    private const GameRules Game = GameRules.TenBall;
+    private static readonly GameRules Game = GameRules.TenBall;
     private static readonly GameState Later = At(Game, shot: 4);
 
     private static ShotBuilder Shot() => ShotBuilder.Of(Game);

@@ -2,9 +2,9 @@ using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Rules;
 using Billiards.Core.Table;
-using static Billiards.Core.Tests.Rules.Rulesets.SnookerShot;
+using static Billiards.Core.Tests.Rules.Games.SnookerShot;
 
-namespace Billiards.Core.Tests.Rules.Rulesets;
+namespace Billiards.Core.Tests.Rules.Games;
 
 /// <summary>One test for each rule of rules.md's "Snooker", named after the rule.</summary>
 public class SnookerRefereeTests

@@ -2,12 +2,12 @@ using Billiards.Core.Rules;
 using Billiards.Core.Table;
 using static Billiards.Core.Tests.Rules.RulesKit;
 
-namespace Billiards.Core.Tests.Rules.Rulesets;
+namespace Billiards.Core.Tests.Rules.Games;
 
 /// <summary>rules.md, "14.1 continuous": points, the opening break, foul penalties, reracks of 14.</summary>
 public class StraightPoolRefereeTests
 {
-    private const GameRules Game = GameRules.StraightPool;
+    private static readonly GameRules Game = GameRules.StraightPool;
     private static readonly GameState Later = At(Game, shot: 7) with { Score = new(20, 11) };
 
     private static ShotBuilder Shot() => ShotBuilder.Of(Game);
