@@ -192,10 +192,12 @@ public sealed class CameraNode : Node
     {
         frame.Frame.FovYDegrees = FovYDegrees;
         (frame.Frame.Eye, frame.Frame.Target) = View(frame.Frame.Width, frame.Frame.Height);
+        // The view is framed below the scoreboard (RenderMath.BelowHud): the called ball, its pocket and the ball the aim meets are never under it.
+        frame.Frame.TopInset = RenderMath.HudInset(frame.Frame.Height);
         if (Overhead && _physics is not null)
         {
             double tan = Math.Tan(FovYDegrees * Math.PI / 360);
-            OverheadMetresPerPixel = 2 * (frame.Frame.Eye.Z - _physics.BallRadius) * tan / Math.Max(1, frame.Frame.Height);
+            OverheadMetresPerPixel = 2 * (frame.Frame.Eye.Z - _physics.BallRadius) * tan / Math.Max(1, frame.Frame.Height * (1 - frame.Frame.TopInset));
         }
     }
 

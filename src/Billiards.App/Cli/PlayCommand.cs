@@ -137,6 +137,10 @@ public static class PlayCommand
         var gameClock = new ScriptClock(clock ?? new StopwatchClock());
         using var scripted = script is null ? null : new ScriptedInput(platform.Window, script, gameClock);
         using var audio = openAudio?.Invoke() ?? new SilentAudio();
+        if (startMenu)
+        {
+            audio.Muted = settings.Muted;
+        }
         using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, match, practiceSetup);
         host.Tree.Root.AddChild(new AudioNode(audio));
         bool fastComputer = options?.FastComputer == true;
@@ -230,10 +234,12 @@ public static class PlayCommand
         var current = first;
         // A match (rules and players), or practice (a drill's name, or null for free practice).
         (GameRules? Rules, MatchPlayer[]? Players, string? Drill, GameSettings Settings)? pending = null;
-        var drills = DrillLibrary.All().Select(d => (d.Name, d.Title)).ToList();
+        var gallery = DrillLibrary.All();
+        var drills = gallery.Select(d => (d.Name, d.Title)).ToList();
         void Listen(GameHost h)
         {
             h.World.Menu.Drills = drills;
+            h.World.Menu.DrillGallery = gallery;
             h.World.Menu.StartRequested += (rules, players) => pending = (rules, players, null, h.World.Menu.StartSettings);
             h.World.Menu.PracticeRequested += drill => pending = (null, null, drill, h.World.Menu.StartSettings);
             // A new pace alone keeps the game: it is saved here, a new game saves its own.

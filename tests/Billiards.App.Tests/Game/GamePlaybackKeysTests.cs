@@ -65,7 +65,7 @@ public sealed class GamePlaybackKeysTests : IDisposable
         };
         var rulings = new List<(int Shot, Ruling Ruling)>();
         int code = ReplayCommand.Play(record, path, 0, 8, _ => new GamePlatform(window, new KeyedLoop(clock, window, at), new WatchingRenderer(_ => { })), clock,
-            (k, r) => rulings.Add((k, r)), host => node = host.Tree.Root.GetInTree<ReplayNode>());
+            (k, r) => rulings.Add((k, r)), host => node = host.Tree.Root.GetInTree<ReplayNode>(), closeAtEnd: true);
         Assert.Equal(0, code);
         Assert.True(window.Closed, "the playback never ended");
 
@@ -93,7 +93,7 @@ public sealed class GamePlaybackKeysTests : IDisposable
         int shown = 0;
         // At 8 times real time a frame of 1/30 s passes 0.27 s of a shot: every collision is still heard.
         int code = ReplayCommand.Play(record, path, 0, 8, _ => new GamePlatform(window, new KeyedLoop(clock, window, new Dictionary<int, Action>()), new WatchingRenderer(_ => { })), clock,
-            (_, _) => shown++, openAudio: () => audio);
+            (_, _) => shown++, openAudio: () => audio, closeAtEnd: true);
         Assert.Equal(0, code);
         Assert.Equal(record.Shots.Count, shown);
         Assert.Equal(shown, audio.Cues.Count(c => c.Kind is Billiards.App.Audio.SoundKind.CueStrike or Billiards.App.Audio.SoundKind.Miscue));
