@@ -149,6 +149,8 @@ public static class PlayCommand
         options?.Started?.Invoke(host);
         if (scripted is not null)
         {
+            // A script's pixels were recorded on the whole window's view.
+            host.Tree.Root.GetInTree<Camera.CameraNode>().FramesBelowHud = false;
             host.TimeScale = script!.Speed;
             scripted.IsAtRest = () => host.IsSettled;
             if (host.Tree.Root.FindInTree<ComputerPlayerNode>() is { } computer)
