@@ -398,7 +398,23 @@ public static class PlayCommand
             seats[i] = MatchPlayer.Parse(parts[i], i)
                 ?? throw new CliException($"--players {players}: \"{parts[i]}\" is not a player (a name of 1-{MatchPlayer.MaxNameLength} characters, human, or computer:LEVEL with LEVEL 1-5)");
         }
-        return new MatchSetup(g, seats);
+        return new MatchSetup(g, Distinct(seats));
+    }
+
+    /// <summary>
+    /// Two seats of one name (two computers of one level, "Computer L3") told apart on the
+    /// scoreboard and in the rulings: "Computer L3 (1)" and "Computer L3 (2)".
+    /// </summary>
+    public static MatchPlayer[] Distinct(IReadOnlyList<MatchPlayer> seats)
+    {
+        ArgumentNullException.ThrowIfNull(seats);
+        var named = seats.ToArray();
+        if (named.Length == 2 && named[0].Name == named[1].Name)
+        {
+            named[0] = named[0] with { Name = $"{named[0].Name} (1)" };
+            named[1] = named[1] with { Name = $"{named[1].Name} (2)" };
+        }
+        return named;
     }
 
     /// <summary>The scene <c>play --practice</c> practises on without a scene: a few balls, no rules.</summary>

@@ -575,8 +575,12 @@ public sealed class MatchNode : Node
         LoadLayout(_match);
         GiveHand(_match.BallInHand);
         Say($"{what}: {State.ShooterName} breaks.");
+        NewGameStarted?.Invoke();
         ShooterToPlay?.Invoke();
     }
+
+    /// <summary>Signal: a new game was racked (a restart or a rematch): what was planned for the last table is void.</summary>
+    public event Action? NewGameStarted;
 
     // The physics node asks for the shot's simulation: the match makes it from the balls at rest,
     // with the cue ball where the player placed it (ball in hand, the break from the kitchen).

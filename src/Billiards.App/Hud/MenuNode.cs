@@ -218,8 +218,31 @@ public sealed partial class MenuNode : Node
         _keys!.Loop.Paused = _wasPaused;
     }
 
+    // Restart asked while the balls roll: done as soon as they rest (the shot is judged first).
+    private bool _restartAtRest;
+
+    /// <summary>True while a restart asked for during a shot waits for the balls to rest.</summary>
+    public bool RestartPending => _restartAtRest;
+
+    /// <inheritdoc />
+    protected override void Process(double dt)
+    {
+        if (_restartAtRest && Page == MenuPage.None && _physics is { IsRolling: false })
+        {
+            _restartAtRest = false;
+            Restart();
+        }
+    }
+
     private void Restart()
     {
+        if (_match is not null && _physics is { IsRolling: true })
+        {
+            // The match racks only between shots: the menu closes, the shot runs out, then the game restarts.
+            _restartAtRest = true;
+            Resume();
+            return;
+        }
         if (_match is not null)
         {
             _match.Restart();
