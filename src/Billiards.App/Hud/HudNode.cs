@@ -29,6 +29,7 @@ public sealed class HudNode : Node
     private TakeBackNode? _takeBack;
     private Audio.AudioNode? _audio;
     private PracticeNode? _practice;
+    private MenuNode? _menu;
 
     /// <summary>The frame-rate meter, fed every frame.</summary>
     public FrameRateMeter FrameRate { get; } = new();
@@ -86,7 +87,9 @@ public sealed class HudNode : Node
                 aids.AddRange(call);
             }
         }
-        bool paused = _keys is { Loop.Paused: true };
+        // Paused by P, not by a menu: the menu says so itself.
+        _menu ??= FindInTree<MenuNode>();
+        bool paused = _keys is { Loop.Paused: true } && _menu is not { Page: not MenuPage.None };
         var board = _match is not null && _physics is not null ? ScoreboardBuilder.Of(_match, _physics, _computer?.Status, paused, _audio?.StatusLine) : null;
         // Practice, drills and a record's replay show the match's scoreboard style, not the developer lines.
         board ??= _practice is not null ? ModeBoards.Of(_practice, _audio?.StatusLine)

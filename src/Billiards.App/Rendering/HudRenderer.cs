@@ -768,6 +768,9 @@ internal sealed class HudRenderer : IDisposable
                 int cell = c - 32;
                 float u0 = cell % HudFont.Columns * HudFont.CellWidth / atlasW, v0 = cell / HudFont.Columns * HudFont.LineHeight / atlasH;
                 float u1 = u0 + (HudFont.CellWidth / atlasW), v1 = v0 + (HudFont.LineHeight / atlasH);
+                // Half a texel inside the cell: the linear filter never reads a neighbour's ink (an underscore's over an 'o').
+                float du = 0.5f / (atlasW * scale), dv = 0.5f / (atlasH * scale);
+                u0 += du; u1 -= du; v0 += dv; v1 -= dv;
                 // A one-pixel drop shadow keeps text readable on the bright cloth.
                 if (shadow)
                 {
