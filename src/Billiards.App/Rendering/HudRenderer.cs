@@ -768,15 +768,15 @@ internal sealed class HudRenderer : IDisposable
                 int cell = c - 32;
                 float u0 = cell % HudFont.Columns * HudFont.CellWidth / atlasW, v0 = cell / HudFont.Columns * HudFont.LineHeight / atlasH;
                 float u1 = u0 + (HudFont.CellWidth / atlasW), v1 = v0 + (HudFont.LineHeight / atlasH);
-                // Half a texel inside the cell: the linear filter never reads a neighbour's ink (an underscore's over an 'o').
-                float du = 0.5f / (atlasW * scale), dv = 0.5f / (atlasH * scale);
-                u0 += du; u1 -= du; v0 += dv; v1 -= dv;
+                // On whole pixels, one atlas texel on one pixel: a glyph placed between pixels would
+                // filter in its neighbour's ink (an underscore's over an 'o' in the row below it).
+                float gx = MathF.Round(x - origin), gy = MathF.Round(y);
                 // A one-pixel drop shadow keeps text readable on the bright cloth.
                 if (shadow)
                 {
-                    Quad(x - origin + scale, y + scale, cellW, cellH, u0, v0, u1, v1, new Vector4(0, 0, 0, 0.8f), 1);
+                    Quad(gx + scale, gy + scale, cellW, cellH, u0, v0, u1, v1, new Vector4(0, 0, 0, 0.8f), 1);
                 }
-                Quad(x - origin, y, cellW, cellH, u0, v0, u1, v1, color, 1);
+                Quad(gx, gy, cellW, cellH, u0, v0, u1, v1, color, 1);
             }
             x += HudFont.AdvanceOf((char)c) * scale;
         }
