@@ -187,15 +187,23 @@ public sealed class CameraNode : Node
     /// </summary>
     public double OverheadMetresPerPixel { get; private set; } = SeedControls.MoveMetresPerPixel;
 
+    /// <summary>
+    /// True (the default) to frame the view below the scoreboard; false frames the whole window, as
+    /// the input scripts recorded before the scoreboard's band was framed out expect their pixels.
+    /// </summary>
+    public bool FramesBelowHud { get; set; } = true;
+
     /// <inheritdoc />
     protected override void Draw(FrameBuilder frame)
     {
         frame.Frame.FovYDegrees = FovYDegrees;
         (frame.Frame.Eye, frame.Frame.Target) = View(frame.Frame.Width, frame.Frame.Height);
+        // The view is framed below the scoreboard (RenderMath.BelowHud): the called ball, its pocket and the ball the aim meets are never under it.
+        frame.Frame.TopInset = FramesBelowHud ? RenderMath.HudInset(frame.Frame.Height) : 0;
         if (Overhead && _physics is not null)
         {
             double tan = Math.Tan(FovYDegrees * Math.PI / 360);
-            OverheadMetresPerPixel = 2 * (frame.Frame.Eye.Z - _physics.BallRadius) * tan / Math.Max(1, frame.Frame.Height);
+            OverheadMetresPerPixel = 2 * (frame.Frame.Eye.Z - _physics.BallRadius) * tan / Math.Max(1, frame.Frame.Height * (1 - frame.Frame.TopInset));
         }
     }
 

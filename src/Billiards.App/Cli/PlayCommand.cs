@@ -137,6 +137,10 @@ public static class PlayCommand
         var gameClock = new ScriptClock(clock ?? new StopwatchClock());
         using var scripted = script is null ? null : new ScriptedInput(platform.Window, script, gameClock);
         using var audio = openAudio?.Invoke() ?? new SilentAudio();
+        if (startMenu)
+        {
+            audio.Muted = settings.Muted;
+        }
         using var host = new GameHost(scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, match, practiceSetup);
         host.Tree.Root.AddChild(new AudioNode(audio));
         bool fastComputer = options?.FastComputer == true;
@@ -145,6 +149,8 @@ public static class PlayCommand
         options?.Started?.Invoke(host);
         if (scripted is not null)
         {
+            // A script's pixels were recorded on the whole window's view.
+            host.Tree.Root.GetInTree<Camera.CameraNode>().FramesBelowHud = false;
             host.TimeScale = script!.Speed;
             scripted.IsAtRest = () => host.IsSettled;
             if (host.Tree.Root.FindInTree<ComputerPlayerNode>() is { } computer)
@@ -230,10 +236,12 @@ public static class PlayCommand
         var current = first;
         // A match (rules and players), or practice (a drill's name, or null for free practice).
         (GameRules? Rules, Seat[]? Players, string? Drill, GameSettings Settings)? pending = null;
-        var drills = DrillLibrary.All().Select(d => (d.Name, d.Title)).ToList();
+        var gallery = DrillLibrary.All();
+        var drills = gallery.Select(d => (d.Name, d.Title)).ToList();
         void Listen(GameHost h)
         {
             h.World.Menu.Drills = drills;
+            h.World.Menu.DrillGallery = gallery;
             h.World.Menu.StartRequested += (rules, players) => pending = (rules, players, null, h.World.Menu.StartSettings);
             h.World.Menu.PracticeRequested += drill => pending = (null, null, drill, h.World.Menu.StartSettings);
             // A new pace alone keeps the game: it is saved here, a new game saves its own.
@@ -395,7 +403,23 @@ public static class PlayCommand
         {
             throw new CliException($"--players {players}: {problem}");
         }
-        return new MatchSetup(g, seats);
+        return new MatchSetup(g, Distinct(seats));
+    }
+
+    /// <summary>
+    /// Two seats of one name (two computers of one level, "Computer L3") told apart on the
+    /// scoreboard and in the rulings: "Computer L3 (1)" and "Computer L3 (2)".
+    /// </summary>
+    public static Seat[] Distinct(IReadOnlyList<Seat> seats)
+    {
+        ArgumentNullException.ThrowIfNull(seats);
+        var named = seats.ToArray();
+        if (named.Length == 2 && named[0].Name == named[1].Name)
+        {
+            named[0] = named[0] with { Name = $"{named[0].Name} (1)" };
+            named[1] = named[1] with { Name = $"{named[1].Name} (2)" };
+        }
+        return named;
     }
 
     /// <summary>The scene <c>play --practice</c> practises on without a scene: a few balls, no rules.</summary>

@@ -175,7 +175,8 @@ public static class ReplayCommand
     /// <param name="ruled">Told each shot's index and ruling as the window judges it.</param>
     /// <param name="started">Told the game once it is built (tests watch it).</param>
     /// <param name="openAudio">Opens the sound output (the shots are heard as they are shown); silence by default (tests).</param>
-    public static int Play(GameRecord record, string path, int first, double timeScale, Func<string, GamePlatform> openPlatform, IClock? clock = null, Action<int, Ruling>? ruled = null, Action<GameHost>? started = null, Func<IAudioOutput>? openAudio = null)
+    /// <param name="closeAtEnd">Closes the window 2 s after the last shot (tests); the player's window stays open at the end until they leave.</param>
+    public static int Play(GameRecord record, string path, int first, double timeScale, Func<string, GamePlatform> openPlatform, IClock? clock = null, Action<int, Ruling>? ruled = null, Action<GameHost>? started = null, Func<IAudioOutput>? openAudio = null, bool closeAtEnd = false)
     {
         ArgumentNullException.ThrowIfNull(record);
         ArgumentNullException.ThrowIfNull(openPlatform);
@@ -196,7 +197,7 @@ public static class ReplayCommand
         double? closeAt = null;
         host.FrameStarting += now =>
         {
-            if (replay.Finished)
+            if (replay.Finished && closeAtEnd)
             {
                 closeAt ??= now + (2 / timeScale);
                 if (now >= closeAt)

@@ -69,7 +69,7 @@ public sealed class CallPickerNode : Node
         {
             // The view of the click's moment: a view switched (T) in the same frame counts.
             var (eye, target) = _camera.View(_size.Width, _size.Height);
-            _viewProjection = RenderMath.View(eye, target) * RenderMath.Projection(Camera.CameraNode.FovYDegrees, (float)_size.Width / Math.Max(1, _size.Height));
+            _viewProjection = RenderMath.View(eye, target) * RenderMath.Projection(Camera.CameraNode.FovYDegrees, (float)_size.Width / Math.Max(1, _size.Height)) * RenderMath.BelowHud(_camera.FramesBelowHud ? RenderMath.HudInset(_size.Height) : 0);
         }
         var sim = _physics.Simulation;
         float r = (float)_physics.BallRadius;

@@ -73,9 +73,9 @@ public sealed class ComputerPlayerNode : Node
     {
         ArgumentNullException.ThrowIfNull(hint);
         var c = System.Globalization.CultureInfo.InvariantCulture;
-        string what = hint.Call is { IsSafety: false } call ? $"the {call.Ball} in the {call.Pocket.ToName()} pocket"
+        string what = hint.Call is { IsSafety: false } call ? Hud.BallWords.Pot(call.Ball, call.Pocket)
             : hint.Call is { IsSafety: true } ? "a safety"
-            : $"{hint.Kind.ToString().ToLowerInvariant()} on the {hint.Target}";
+            : $"{hint.Kind.ToString().ToLowerInvariant()} on the {Hud.BallWords.Of(hint.Target)}";
         string rate = ShotKinds.IsPot(hint.Kind, hint.Pocket) ? string.Create(c, $" (pots {hint.ExpectedPot * 100:0} % of the time)") : "";
         return string.Create(c, $"Hint: {what} at {hint.Shot.Speed:0.0} m/s{rate}; Space shoots.");
     }
@@ -128,11 +128,12 @@ public sealed class ComputerPlayerNode : Node
     {
         ArgumentNullException.ThrowIfNull(decision);
         // Short: the scoreboard's status line holds some 45 characters.
-        string pot = $"{decision.Target} in {decision.Pocket.ToName()}";
+        string target = Hud.BallWords.Of(decision.Target);
+        string pot = decision.Pocket == Billiards.Core.Table.PocketId.None ? target : $"{target} in {decision.Pocket.ToName()}";
         return decision.Kind switch
         {
             ShotKind.Break => $"{name} aims its break.",
-            ShotKind.Safety => $"{name} aims a safety on the {decision.Target}.",
+            ShotKind.Safety => $"{name} aims a safety on the {target}.",
             ShotKind.PushOut => $"{name} aims a push-out.",
             ShotKind.Bank => $"{name} aims: {pot}, bank.",
             ShotKind.Kick => $"{name} aims: kick, {pot}.",

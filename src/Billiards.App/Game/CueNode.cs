@@ -64,12 +64,20 @@ public sealed class CueNode : Node
     {
         ArgumentNullException.ThrowIfNull(shot);
         Tip.Set(shot.TipSide * SeedControls.BallRadiusCentimetres, shot.TipHeight * SeedControls.BallRadiusCentimetres);
+        // A hint's or the computer's elevation is for its one shot: the player's own comes back after it.
+        _ownElevation ??= ElevationDegrees;
         ElevationDegrees = Math.Clamp(shot.ElevationDeg, 0, SeedControls.MaxElevationDegrees);
     }
 
-    /// <summary>Raises or lowers the cue by <paramref name="degrees"/>, within [0, max].</summary>
-    public void ChangeElevation(double degrees) =>
+    // The player's elevation while a taken shot's stands in for it, or null.
+    private double? _ownElevation;
+
+    /// <summary>Raises or lowers the cue by <paramref name="degrees"/>, within [0, max]; the player's own elevation from then on.</summary>
+    public void ChangeElevation(double degrees)
+    {
         ElevationDegrees = Math.Clamp(ElevationDegrees + degrees, 0, SeedControls.MaxElevationDegrees);
+        _ownElevation = null;
+    }
 
     /// <summary>The shot this cue would play at a cue speed (m/s): aim from the camera, tip offset and the effective elevation.</summary>
     public ShotSpec MakeShot(double speed) =>
@@ -102,6 +110,14 @@ public sealed class CueNode : Node
         {
             Tip.Reset();
             PullBackPixels = 0;
+        };
+        _physics.Struck += _ =>
+        {
+            if (_ownElevation is double own)
+            {
+                ElevationDegrees = own;
+                _ownElevation = null;
+            }
         };
     }
 

@@ -9,7 +9,8 @@ namespace Billiards.App.Game;
 /// The player's physics choice of the start menu, kept between runs in <c>settings.json</c> under
 /// the user's configuration folder ($XDG_CONFIG_HOME/billiards, else ~/.config/billiards; the
 /// platform's application data folder elsewhere): the cushion model and the cloth, how fast
-/// the computer plays, and whether the players allow take-backs.
+/// the computer plays, whether the players allow take-backs, the sound, and the last game and
+/// opponent chosen.
 /// </summary>
 /// <param name="Cushion">A cushion model of <see cref="ModelRegistry.BallCushionModels"/>.</param>
 /// <param name="Cloth">A cloth of <see cref="Core.Physics.Cloth.All"/>.</param>
@@ -17,8 +18,17 @@ namespace Billiards.App.Game;
 /// <param name="TakeBacks">The players allow take-backs in a game (off by default; practice always allows them).</param>
 public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth, bool FastComputer = false, bool TakeBacks = false)
 {
-    /// <summary>The same settings but the computer's pace and take-backs: the physics, which makes the game (neither changes the game).</summary>
-    public GameSettings Physics => this with { FastComputer = false, TakeBacks = false };
+    /// <summary>The game the start menu's Play screen offers first: the last one started (8-ball at first).</summary>
+    public Billiards.Core.Rules.GameRules Game { get; init; } = Billiards.Core.Rules.GameRules.EightBall;
+
+    /// <summary>The opponent the Play screen offers first: a computer level 1-5, or null for a person (level 3 at first).</summary>
+    public int? Opponent { get; init; } = 3;
+
+    /// <summary>The sound is muted (U in the game).</summary>
+    public bool Muted { get; init; }
+
+    /// <summary>The physics alone, which makes the game: the other settings (pace, take-backs, sound, the menu's last choices) do not change it.</summary>
+    public GameSettings Physics => new(Cushion, Cloth);
 
     /// <summary>The model's defaults.</summary>
     public static GameSettings Default { get; } = new(InteractionModels.Default.BallCushion, Cloth.Standard);
@@ -69,9 +79,15 @@ public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth, bool F
             bool fast = root.TryGetProperty("computer_pace", out var p) && p.ValueKind == JsonValueKind.String && p.GetString() == "fast";
             // A file from before take-backs has none: off, the default.
             bool takeBacks = root.TryGetProperty("take_backs", out var t) && t.ValueKind == JsonValueKind.True;
+            bool muted = root.TryGetProperty("sound", out var m) && m.ValueKind == JsonValueKind.String && m.GetString() == "muted";
+            // The last game and opponent: a file from before them, or one naming an unknown game, offers 8-ball against level 3.
+            var game = root.TryGetProperty("game", out var g) && g.ValueKind == JsonValueKind.String && Billiards.Core.Rules.RuleNames.TryParseGame(g.GetString(), out var parsed) ? parsed : Billiards.Core.Rules.GameRules.EightBall;
+            int? opponent = !root.TryGetProperty("opponent", out var o) ? 3
+                : o.ValueKind == JsonValueKind.Number && o.TryGetInt32(out int level) && level is >= 1 and <= 5 ? level
+                : o.ValueKind == JsonValueKind.String && o.GetString() == "person" ? null : 3;
             if (ModelRegistry.FindBallCushion(cushion) is { } model && Cloth.Find(cloth) is { } found)
             {
-                return new GameSettings(model, found, fast, takeBacks);
+                return new GameSettings(model, found, fast, takeBacks) { Game = game, Opponent = opponent, Muted = muted };
             }
             warnings?.WriteLine($"billiards: {path}: unknown cushion model or cloth; using the defaults");
         }
@@ -96,6 +112,16 @@ public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth, bool F
                 w.WriteString("cloth", Cloth.Name);
                 w.WriteString("computer_pace", FastComputer ? "fast" : "watchable");
                 w.WriteBoolean("take_backs", TakeBacks);
+                w.WriteString("sound", Muted ? "muted" : "on");
+                w.WriteString("game", Billiards.Core.Rules.RuleNames.ToName(Game));
+                if (Opponent is int level)
+                {
+                    w.WriteNumber("opponent", level);
+                }
+                else
+                {
+                    w.WriteString("opponent", "person");
+                }
                 w.WriteEndObject();
             }
             File.WriteAllBytes(path, stream.ToArray());

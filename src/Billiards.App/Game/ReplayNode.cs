@@ -81,7 +81,8 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
                 return $"Replay: all {n} shots.{ruling}  [PageUp previous shot]";
             }
             string who = _showing is not null ? _shownState!.ShooterName : Game.State.ShooterName;
-            return $"Replay: shot {_next} of {n - 1} ({who}).{ruling}  [PageUp/PageDown shots]";
+            // Counted from 1: the first of five shots is "shot 1 of 5".
+            return $"Replay: shot {_next + 1} of {n} ({who}).{ruling}  [PageUp/PageDown shots]";
         }
     }
 
@@ -89,6 +90,15 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
 
     // The game the session plays now.
     private Match Game => _session!.Game;
+
+    /// <summary>The replayed match as it stands (the scoreboard reads it), or null before the node is ready.</summary>
+    public Match? Match => _session?.Game;
+
+    /// <summary>The shot shown or next, counted from 1, and the record's shots.</summary>
+    public (int Shot, int Of) Counter => (Math.Min(_next + 1, record.Shots.Count), record.Shots.Count);
+
+    /// <summary>The last ruling seen ("Shot 3: ..."), or null.</summary>
+    public string? LastRuling => _lastRuling;
 
     /// <summary>True once the last shot has been shown.</summary>
     public bool Finished { get; private set; }
@@ -223,7 +233,7 @@ public sealed class ReplayNode(GameRecord record, int firstShot, double timeScal
         var ruling = _showingRuling!;
         _showing = null;
         Rulings.Add(ruling);
-        _lastRuling = $"Shot {_next}: {ruling.Message}";
+        _lastRuling = $"Shot {_next + 1}: {ruling.Message}";
         // The next shooter's cue ball (a game may have one per player).
         _physics!.CueBall = Game.Ruleset.CueBall(Game.State);
         _physics.Load(Game.Layout());

@@ -14,8 +14,8 @@ public sealed class SystemKeysNode(FixedStepLoop loop) : Node
     /// <summary>The loop paused and stepped by P and N.</summary>
     public FixedStepLoop Loop { get; } = loop;
 
-    /// <summary>True while the help overlay is open.</summary>
-    public bool ShowHelp { get; private set; }
+    /// <summary>True while the help overlay is open (the start menu's Controls opens it too).</summary>
+    public bool ShowHelp { get; set; }
 
     /// <summary>The key that shows or hides the developer lines (mode, raw numbers, frame rate).</summary>
     public const Key DeveloperKey = Key.F2;

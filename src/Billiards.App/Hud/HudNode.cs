@@ -28,6 +28,8 @@ public sealed class HudNode : Node
     private InstantReplayNode? _instant;
     private TakeBackNode? _takeBack;
     private Audio.AudioNode? _audio;
+    private PracticeNode? _practice;
+    private MenuNode? _menu;
 
     /// <summary>The frame-rate meter, fed every frame.</summary>
     public FrameRateMeter FrameRate { get; } = new();
@@ -48,7 +50,8 @@ public sealed class HudNode : Node
         _aimLine = FindInTree<AimLineNode>();
         _instant = FindInTree<InstantReplayNode>();
         _takeBack = FindInTree<TakeBackNode>();
-        _help = HelpText.For(_match is not null, FindInTree<PracticeNode>() is not null);
+        _practice = FindInTree<PracticeNode>();
+        _help = HelpText.For(_match is not null, _practice is not null);
     }
 
     private IReadOnlyList<string> _help = HelpText.Lines;
@@ -84,8 +87,13 @@ public sealed class HudNode : Node
                 aids.AddRange(call);
             }
         }
-        bool paused = _keys is { Loop.Paused: true };
+        // Paused by P, not by a menu: the menu says so itself.
+        _menu ??= FindInTree<MenuNode>();
+        bool paused = _keys is { Loop.Paused: true } && _menu is not { Page: not MenuPage.None };
         var board = _match is not null && _physics is not null ? ScoreboardBuilder.Of(_match, _physics, _computer?.Status, paused, _audio?.StatusLine) : null;
+        // Practice, drills and a record's replay show the match's scoreboard style, not the developer lines.
+        board ??= _practice is not null ? ModeBoards.Of(_practice, _audio?.StatusLine)
+            : _replay is not null && _physics is not null ? ModeBoards.Of(_replay, _physics, _audio?.StatusLine) : null;
         if (board is not null && _instant?.Status is { } replayLine)
         {
             // The scoreboard's status line tells the replay's time, speed and keys while it is shown.
@@ -101,11 +109,15 @@ public sealed class HudNode : Node
             Developer = _keys?.ShowDeveloper ?? false,
             // Not at game over; the person's power not on the computer's turn.
             Gauges = _cue is { IsVisible: true } cue && _match is not { IsOver: true } && !replaying
-                ? new CueGauges(cue.Tip.Fractions, GaugeDegrees(cue.EffectiveElevationDegrees), _match is null or { IsComputerActing: true } ? null : (float)(_match.Power / MatchNode.MaxPower))
+                ? new CueGauges(cue.Tip.Fractions, GaugeDegrees(cue.EffectiveElevationDegrees), KeyboardPower())
                 : null,
             Result = _match is null ? null : ScoreboardBuilder.Result(_match),
         };
     }
+
+    // The keyboard's power as a share of the strongest: the match's on a person's turn, practice's always.
+    private float? KeyboardPower() => _match is { IsComputerActing: false } m ? (float)(m.Power / MatchNode.MaxPower)
+        : _match is null && _practice is not null ? (float)(_practice.Power / MatchNode.MaxPower) : null;
 
     /// <summary>Steps the elevation diagram is drawn in (degrees).</summary>
     public const double GaugeStepDegrees = 1;

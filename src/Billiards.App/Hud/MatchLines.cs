@@ -22,16 +22,18 @@ public static class MatchLines
         ArgumentNullException.ThrowIfNull(physics);
         var state = match.State;
         var onTable = physics.ObjectBallsOnTable();
-        lines.Add($"{state.Rules.ToName()}  shot {state.Shot}  games {match.GamesWon.First}-{match.GamesWon.Second}");
+        // The ruleset's own words: snooker's frames, not games.
+        lines.Add($"{state.Rules.ToName()}  shot {state.Shot}  {match.Ruleset.GameWord}s {match.GamesWon.First}-{match.GamesWon.Second}");
         for (int p = 0; p < 2; p++)
         {
             string mark = p == state.Shooter && !match.IsOver ? "> " : "  ";
             var sb = new StringBuilder();
             var target = match.Ruleset.Target(state, p, onTable);
             sb.Append(CultureInfo.InvariantCulture, $"{mark}{state.Players[p]}: {target.Text}");
-            if (match.Ruleset.HasScore)
+            // A game with a ball on (snooker) has the score in its target's words and no score to reach.
+            if (match.Ruleset.HasScore && !match.Ruleset.HasBallOn)
             {
-                sb.Append(CultureInfo.InvariantCulture, $"  score {state.Score[p]}/{state.Target}");
+                sb.Append(CultureInfo.InvariantCulture, $"  score {state.Score[p]} of {state.Target}");
             }
             if (match.Ruleset.HasThreeFouls && state.FoulsInRow[p] > 0)
             {

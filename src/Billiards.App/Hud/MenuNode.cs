@@ -18,8 +18,14 @@ public enum MenuPage
     Pause,
     /// <summary>Quit asks first.</summary>
     ConfirmQuit,
-    /// <summary>The start menu: the game and the opponent.</summary>
+    /// <summary>The start menu's first screen: the title, then Play, Practice, Drills, Settings, Controls and Quit.</summary>
     Start,
+    /// <summary>The start menu's Play screen: the game, the opponent, then Start.</summary>
+    Play,
+    /// <summary>The start menu's drills: a gallery of each drill's picture, title and goal.</summary>
+    Drills,
+    /// <summary>The start menu's settings: the physics in words, the computer's pace, take-backs, sound.</summary>
+    Settings,
 }
 
 /// <summary>
@@ -28,7 +34,7 @@ public enum MenuPage
 /// same rectangles the HUD draws; each also has its key (Escape, R, Q, Y, N; 1-5 for the options).
 /// While a menu is open the game is paused and takes no other input but the help (H or F1).
 /// </summary>
-public sealed class MenuNode : Node
+public sealed partial class MenuNode : Node
 {
     /// <summary>The key that opens the start menu from the result panel.</summary>
     public const Key MenuKey = Key.M;
@@ -62,11 +68,19 @@ public sealed class MenuNode : Node
     /// <summary>The drills the start menu offers: (name, title), set by the host (none by default).</summary>
     public IReadOnlyList<(string Name, string Title)> Drills { get; set; } = [];
 
-    /// <summary>The start menu's game.</summary>
-    public GameRules StartGame { get; private set; } = GameRules.EightBall;
+    /// <summary>The start menu's game (remembered in the settings).</summary>
+    public GameRules StartGame
+    {
+        get => StartSettings.Game;
+        private set => StartSettings = StartSettings with { Game = value };
+    }
 
-    /// <summary>The start menu's opponent: a computer level, or null for a person.</summary>
-    public int? StartOpponent { get; private set; } = 3;
+    /// <summary>The start menu's opponent: a computer level, or null for a person (remembered in the settings).</summary>
+    public int? StartOpponent
+    {
+        get => StartSettings.Opponent;
+        private set => StartSettings = StartSettings with { Opponent = value };
+    }
 
     /// <summary>The start menu's physics (cushion model and cloth); the game behind the menu was made with <see cref="PlayedSettings"/>.</summary>
     public GameSettings StartSettings { get; set; } = GameSettings.Default;
@@ -74,25 +88,19 @@ public sealed class MenuNode : Node
     /// <summary>The physics of the game behind the menu.</summary>
     public GameSettings PlayedSettings { get; set; } = GameSettings.Default;
 
-    /// <summary>Opens the start menu (the game paused behind it).</summary>
-    public void ShowStart()
+    /// <summary>Opens the start menu at <paramref name="page"/> (its first screen by default), the game paused behind it; the choices shown are the last ones made (the settings file keeps them).</summary>
+    public void ShowStart(MenuPage page = MenuPage.Start)
     {
-        if (_match is not null)
+        if (Page == MenuPage.None)
         {
-            StartGame = _match.Session.Rules;
-            StartOpponent = _match.Players[1].ComputerLevel;
+            Open();
         }
-        Open();
-        Page = MenuPage.Start;
+        Go(page);
     }
 
     private void Begin()
     {
         Resume();
-        if (StartSettings != PlayedSettings)
-        {
-            SettingsChosen?.Invoke(StartSettings);
-        }
         if (_match is not null && _match.Session.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings.Physics == PlayedSettings.Physics)
         {
             // The game behind the menu is the one chosen; a new pace or take-back setting takes effect in it at once.
@@ -102,8 +110,10 @@ public sealed class MenuNode : Node
             }
             _match.TakeBacks = StartSettings.TakeBacks;
             PlayedSettings = StartSettings;
+            SettingsChosen?.Invoke(StartSettings);
             return;
         }
+        SettingsChosen?.Invoke(StartSettings);
         // A game the computer does not play seats a person.
         var opponent = StartOpponent is int level && Ruleset.For(StartGame).HasComputerPlayer ? new Seat($"Computer L{level}", level) : new Seat("Player 2");
         StartRequested?.Invoke(StartGame, [new Seat("Player 1"), opponent]);
@@ -134,6 +144,11 @@ public sealed class MenuNode : Node
             }
             return Page != MenuPage.None;
         }
+        if (e is MouseMoveInput move && IsStartScreen)
+        {
+            Hover(move.Position);
+            return true;
+        }
         if (e is KeyInput { Pressed: true } key)
         {
             return OnKey(key.Key);
@@ -160,11 +175,8 @@ public sealed class MenuNode : Node
                 return true;
             case MenuPage.None:
                 return false;
-            case MenuPage.Start:
-                if (key is Key.Enter or Key.Escape)
-                {
-                    Begin();
-                }
+            case MenuPage.Start or MenuPage.Play or MenuPage.Drills or MenuPage.Settings:
+                StartKey(key);
                 return true;
             case MenuPage.Pause:
                 switch (key)
@@ -176,7 +188,7 @@ public sealed class MenuNode : Node
                         Restart();
                         break;
                     case Key.Q:
-                        Page = MenuPage.ConfirmQuit;
+                        AskQuit();
                         break;
                 }
                 return true;
@@ -187,7 +199,7 @@ public sealed class MenuNode : Node
                         QuitConfirmed?.Invoke();
                         break;
                     case Key.N or Key.Escape:
-                        Page = MenuPage.Pause;
+                        Page = _quitReturn;
                         break;
                 }
                 return true;
@@ -207,8 +219,31 @@ public sealed class MenuNode : Node
         _keys!.Loop.Paused = _wasPaused;
     }
 
+    // Restart asked while the balls roll: done as soon as they rest (the shot is judged first).
+    private bool _restartAtRest;
+
+    /// <summary>True while a restart asked for during a shot waits for the balls to rest.</summary>
+    public bool RestartPending => _restartAtRest;
+
+    /// <inheritdoc />
+    protected override void Process(double dt)
+    {
+        if (_restartAtRest && Page == MenuPage.None && _physics is { IsRolling: false })
+        {
+            _restartAtRest = false;
+            Restart();
+        }
+    }
+
     private void Restart()
     {
+        if (_match is not null && _physics is { IsRolling: true })
+        {
+            // The match racks only between shots: the menu closes, the shot runs out, then the game restarts.
+            _restartAtRest = true;
+            Resume();
+            return;
+        }
         if (_match is not null)
         {
             _match.Restart();
@@ -229,6 +264,16 @@ public sealed class MenuNode : Node
     {
         _size = (frame.Frame.Width, frame.Frame.Height);
         string? title = Layout();
+        if (frame.Frame.Hud is { } start && IsStartScreen)
+        {
+            // The start menu is the whole screen: no scoreboard, keys or gauges of the game behind it.
+            frame.Frame.Hud = start with
+            {
+                Lines = [], Icons = null, Aids = null, Power = null, Board = null, Gauges = null, Result = null, Developer = false,
+                Buttons = Buttons, Title = null, Labels = _labels.ToArray(), Backdrop = true,
+            };
+            return;
+        }
         if (frame.Frame.Hud is { } hud && _buttons.Count > 0)
         {
             // An open menu hides the result panel it covers.
@@ -240,6 +285,12 @@ public sealed class MenuNode : Node
     private string? Layout()
     {
         _buttons.Clear();
+        _labels.Clear();
+        if (IsStartScreen)
+        {
+            LayoutStart();
+            return null;
+        }
         var (width, height) = _size;
         int scale = HudRenderer.Scale(height);
         float line = HudFont.LineHeight * scale;
@@ -251,48 +302,17 @@ public sealed class MenuNode : Node
         float y;
         switch (Page)
         {
-            case MenuPage.Start:
-                title = Drills.Count > 0
-                    ? "New game: game, opponent, physics, pace, take-backs, Start; or practice, a drill"
-                    : "New game: the game, the opponent, the physics, the computer's pace, take-backs";
-                foreach (var game in Ruleset.All.Select(r => r.Game))
-                {
-                    items.Add((Mark(game.ToName(), StartGame == game), () => StartGame = game));
-                }
-                var opponents = new List<(string Label, Action Act)> { (Mark("person", StartOpponent is null), () => StartOpponent = null) };
-                for (int level = 1; level <= 5; level++)
-                {
-                    int l = level;
-                    opponents.Add((Mark($"level {l}", StartOpponent == l), () => StartOpponent = l));
-                }
-                rows.Add(opponents);
-                rows.Add([.. ModelRegistry.BallCushionModels.Select(m => (Mark($"Physics: {m.Name}", StartSettings.Cushion == m), (Action)(() => StartSettings = StartSettings with { Cushion = m })))]);
-                rows.Add([.. Cloth.All.Select(c => (Mark($"{c.Name} cloth", StartSettings.Cloth == c), (Action)(() => StartSettings = StartSettings with { Cloth = c })))]);
-                // The computer's pace and take-backs beside Start, each one button that switches it (a
-                // row of their own would push the drills off a 720-line window).
-                rows.Add([("Start [Enter]", Begin),
-                    (StartSettings.FastComputer ? "computer: fast" : "computer: watchable", () => StartSettings = StartSettings with { FastComputer = !StartSettings.FastComputer }),
-                    (StartSettings.TakeBacks ? "take-backs: allowed (Z)" : "take-backs: off", () => StartSettings = StartSettings with { TakeBacks = !StartSettings.TakeBacks })]);
-                rows.Add([("Practice (no referee)", () => RequestPractice(null))]);
-                // The drills by their titles, four to a row so that the rows fit a small window.
-                for (int i = 0; i < Drills.Count; i += 4)
-                {
-                    rows.Add([.. Drills.Skip(i).Take(4).Select(d => (Label: d.Title, Act: (Action)(() => RequestPractice(d.Name))))]);
-                }
-                // Below the HUD panel, whose lines reach about 0.4 of the height at the start.
-                y = height * (Drills.Count > 0 ? 0.4f : 0.5f);
-                break;
             case MenuPage.Pause:
                 title = "Paused";
                 items.Add(("Resume [Esc]", Resume));
                 items.Add(("Restart [R]", Restart));
-                items.Add(("Quit [Q]", () => Page = MenuPage.ConfirmQuit));
+                items.Add(("Quit [Q]", (Action)AskQuit));
                 y = height / 2f;
                 break;
             case MenuPage.ConfirmQuit:
                 title = "Quit the game?";
                 items.Add(("Yes, quit [Y]", () => QuitConfirmed?.Invoke()));
-                items.Add(("No [N]", () => Page = MenuPage.Pause));
+                items.Add(("No [N]", () => Page = _quitReturn));
                 y = height / 2f;
                 break;
             default:
@@ -300,7 +320,7 @@ public sealed class MenuNode : Node
                 {
                     // Under the result panel (HudRenderer draws it above 0.64 of the height).
                     items.Add(("Rematch [Enter]", over.Rematch));
-                    items.Add(($"Menu [{MenuKey}]", ShowStart));
+                    items.Add(($"Menu [{MenuKey}]", () => ShowStart()));
                     y = height * 0.66f;
                     break;
                 }
@@ -321,7 +341,7 @@ public sealed class MenuNode : Node
         float gap = 6 * scale;
         foreach (var row in rows)
         {
-            float buttonWidth = (row.Max(i => i.Label.Length) * HudFont.Advance * scale) + (16 * scale);
+            float buttonWidth = (row.Max(i => HudFont.Width(i.Label)) * scale) + (16 * scale);
             float total = (row.Count * buttonWidth) + ((row.Count - 1) * gap);
             float x = (width - total) / 2;
             foreach (var (label, act) in row)
@@ -339,8 +359,6 @@ public sealed class MenuNode : Node
         Resume();
         PracticeRequested?.Invoke(drill);
     }
-
-    private static string Mark(string label, bool chosen) => chosen ? $"> {label} <" : label;
 
     /// <summary>Presses the button whose label starts with <paramref name="label"/> (tests and scripts use clicks; this is the same action).</summary>
     public Vector2? CentreOf(string label)

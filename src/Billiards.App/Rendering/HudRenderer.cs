@@ -80,7 +80,7 @@ internal sealed class HudRenderer : IDisposable
         _font = _gl.GenTexture();
         _gl.BindTexture(Gl.Texture2D, _font);
         _gl.PixelStore(Gl.UnpackAlignment, 1);
-        _gl.TexImage2D(Gl.Texture2D, 0, Gl.R8, HudFont.Columns * HudFont.Advance * scale, HudFont.Rows * HudFont.LineHeight * scale, Gl.Red, Gl.UnsignedByte, HudFont.Atlas(scale));
+        _gl.TexImage2D(Gl.Texture2D, 0, Gl.R8, HudFont.Columns * HudFont.CellWidth * scale, HudFont.Rows * HudFont.LineHeight * scale, Gl.Red, Gl.UnsignedByte, HudFont.Atlas(scale));
         // Mipmaps for text drawn smaller than the atlas (a help overlay fitted to a narrow window).
         _gl.GenerateMipmap(Gl.Texture2D);
         _gl.TexParameter(Gl.Texture2D, Gl.TextureMinFilter, Gl.LinearMipmapLinear);
@@ -147,7 +147,7 @@ internal sealed class HudRenderer : IDisposable
             for (int i = 0; i < hud.Lines.Count; i++)
             {
                 int icons = hud.Board is null ? hud.Icons?.Count(c => c.Line == i) ?? 0 : 0;
-                widest = MathF.Max(widest, (hud.Lines[i].Length * HudFont.Advance * scale) + (icons > 0 ? (icons + 0.5f) * icon : 0));
+                widest = MathF.Max(widest, (HudFont.Width(hud.Lines[i]) * scale) + (icons > 0 ? (icons + 0.5f) * icon : 0));
             }
             Rect(margin, top + margin, widest + (2 * margin), (hud.Lines.Count * lineHeight) + (2 * margin) - (2 * scale), panel);
             for (int i = 0; i < hud.Lines.Count; i++)
@@ -165,17 +165,36 @@ internal sealed class HudRenderer : IDisposable
                     }
                     int k = next.GetValueOrDefault(ic.Line);
                     next[ic.Line] = k + 1;
-                    float x = (2 * margin) + (hud.Lines[ic.Line].Length * HudFont.Advance * scale) + ((k + 1) * icon);
+                    float x = (2 * margin) + (HudFont.Width(hud.Lines[ic.Line]) * scale) + ((k + 1) * icon);
                     BallIcon(new Vector2(x, top + (2 * margin) + (ic.Line * lineHeight) + (lineHeight / 2f) - scale), icon * 0.47f, ic.Number, scale);
                 }
             }
         }
 
-        if (hud.Buttons is { Count: > 0 } buttons)
+        if (hud.Backdrop)
+        {
+            // The start menu's screens: a dark room over the table, opaque so the layer copies it.
+            Rect(0, 0, width, height, new Vector4(0.02f, 0.05f, 0.03f, 1));
+            Rect(0, 0, width, 3 * scale, Gold);
+        }
+        foreach (var label in hud.Labels ?? [])
+        {
+            int size = scale * Math.Max(1, label.Size);
+            float lx = label.Centred ? label.X - (HudFont.Width(label.Text) * size / 2) : label.X;
+            Text(label.Text, lx, label.Y, size, label.Gold ? Gold : textColor);
+        }
+        if (hud.Buttons is { Count: > 0 } menuButtons && hud.Backdrop)
+        {
+            foreach (var b in menuButtons)
+            {
+                MenuButton(b, scale, textColor);
+            }
+        }
+        else if (hud.Buttons is { Count: > 0 } buttons)
         {
             if (hud.Title is { } title)
             {
-                float tw = title.Length * HudFont.Advance * scale;
+                float tw = HudFont.Width(title) * scale;
                 float ty = buttons.Min(b => b.Y) - (2 * lineHeight);
                 Rect(((width - tw) / 2) - margin, ty - margin, tw + (2 * margin), lineHeight + (2 * margin) - (2 * scale), new Vector4(0.02f, 0.03f, 0.02f, 1));
                 Text(title, (width - tw) / 2, ty, scale, textColor);
@@ -185,7 +204,7 @@ internal sealed class HudRenderer : IDisposable
                 // Opaque, so that the stored layer copies them instead of blending.
                 Rect(b.X, b.Y, b.Width, b.Height, new Vector4(0.8f, 0.7f, 0.3f, 1));
                 Rect(b.X + scale, b.Y + scale, b.Width - (2 * scale), b.Height - (2 * scale), new Vector4(0.05f, 0.12f, 0.07f, 1));
-                float lw = b.Label.Length * HudFont.Advance * scale;
+                float lw = HudFont.Width(b.Label) * scale;
                 Text(b.Label, b.X + ((b.Width - lw) / 2), b.Y + ((b.Height - lineHeight) / 2) + scale, scale, textColor);
             }
         }
@@ -203,7 +222,7 @@ internal sealed class HudRenderer : IDisposable
             Rect(bx - scale, by - scale, barW + (2 * scale), barH + (2 * scale), new Vector4(0, 0, 0, 0.6f));
             var fill = power.Pushing ? new Vector4(0.95f, 0.55f + (0.4f * (1 - power.Fraction)), 0.1f, 0.95f) : new Vector4(0.6f, 0.6f, 0.6f, 0.9f);
             Rect(bx, by, barW * Math.Clamp(power.Fraction, 0, 1), barH, fill);
-            float labelW = power.Label.Length * HudFont.Advance * scale;
+            float labelW = HudFont.Width(power.Label) * scale;
             Text(power.Label, (width - labelW) / 2, by - lineHeight - scale, scale, textColor);
         }
 
@@ -216,19 +235,19 @@ internal sealed class HudRenderer : IDisposable
             // The overlay fits the window: a smaller text scale first, then lines wrapped.
             int helpScale = scale;
             var lines = hud.HelpLines;
-            int longest = lines.Max(l => l.Length);
-            while (helpScale > 1 && (longest * HudFont.Advance * helpScale) + (4 * margin) > width)
+            float longest = lines.Max(HudFont.Width);
+            while (helpScale > 1 && (longest * helpScale) + (4 * margin) > width)
             {
                 helpScale--;
             }
-            int fit = Math.Max(10, (int)((width - (4 * margin)) / (HudFont.Advance * helpScale)));
+            float fit = MathF.Max(60, (width - (4 * margin)) / helpScale);
             if (longest > fit)
             {
-                lines = Wrap(lines, fit);
-                longest = lines.Max(l => l.Length);
+                lines = Wrap(lines, fit, HudFont.Width);
+                longest = lines.Max(HudFont.Width);
             }
             int helpLine = HudFont.LineHeight * helpScale;
-            float w = (longest * HudFont.Advance * helpScale) + (4 * margin);
+            float w = (longest * helpScale) + (4 * margin);
             float h = (lines.Count * helpLine) + (4 * margin);
             float x = MathF.Max(0, (width - w) / 2), y = MathF.Max(0, (height - h) / 2);
             // Opaque: the layer copies it back instead of blending the largest panel (HudLayer).
@@ -249,6 +268,53 @@ internal sealed class HudRenderer : IDisposable
     /// <summary>Player cards' width in HUD units (pixels at scale 1).</summary>
     public const int CardUnits = 150;
 
+    /// <summary>Rows of the scoreboard's centre the band is always tall enough for (the camera frames the table below them).</summary>
+    public const int BoardRows = 5;
+
+    /// <summary>The scoreboard band's height in HUD units: <see cref="BoardRows"/> lines and the padding, the cards' height being less.</summary>
+    public const int BoardUnits = (2 * 4) + (BoardRows * HudFont.LineHeight);
+
+    /// <summary>The width (HUD units) of the scoreboard's centre column in a window <paramref name="width"/> pixels wide at <paramref name="scale"/>.</summary>
+    public static float BoardCentreUnits(int width, int scale)
+    {
+        float u = scale, pad = 4 * u;
+        float card = MathF.Min(CardUnits * u, width * 0.28f);
+        float centreW = width - (2 * (card + (2 * pad)));
+        return MathF.Max(60, (centreW - (2 * pad)) / scale);
+    }
+
+    /// <summary>
+    /// The scoreboard's centre rows, each with its colour (0 text, 1 gold, 2 dim): the game's line,
+    /// who acts (wrapped), the whole message (wrapped, never cut: it is what the player reads), then
+    /// as many of the earlier rulings as fit in <see cref="BoardRows"/>, each whole.
+    /// </summary>
+    public static List<(string Text, int Colour)> CentreRows(Hud.Scoreboard board, float width, Func<string, float> measure)
+    {
+        ArgumentNullException.ThrowIfNull(board);
+        ArgumentNullException.ThrowIfNull(measure);
+        var rows = new List<(string Text, int Colour)> { (board.Title, 0) };
+        var status = WrapStatus(board.Status, width, measure);
+        rows.Add((status[0], 1));
+        foreach (string l in status.Skip(1))
+        {
+            rows.Add(("  " + l.TrimStart(), 1));
+        }
+        if (board.Message is { } message)
+        {
+            rows.AddRange(Wrap([message], width, measure).Select(l => (l, 0)));
+        }
+        foreach (string l in board.Log)
+        {
+            var wrapped = Wrap([l], width, measure);
+            if (rows.Count + wrapped.Count > BoardRows)
+            {
+                break;
+            }
+            rows.AddRange(wrapped.Select(w => (w, 2)));
+        }
+        return rows;
+    }
+
     /// <summary>
     /// The scoreboard along the top edge: a card for each player at the sides (name, the balls still
     /// needed as big icons, target and fouls or score), and between them the game's line, who acts
@@ -256,52 +322,25 @@ internal sealed class HudRenderer : IDisposable
     /// </summary>
     private float Board(Hud.Scoreboard board, int width, int scale, Vector4 text)
     {
-        float u = scale, pad = 4 * u, line = HudFont.LineHeight * scale, advance = HudFont.Advance * scale;
+        float u = scale, pad = 4 * u, line = HudFont.LineHeight * scale;
         float card = MathF.Min(CardUnits * u, width * 0.28f);
         float centreX = card + (2 * pad), centreW = width - (2 * centreX);
-        int columns = Math.Max(12, (int)((centreW - (2 * pad)) / advance));
-        // At most five lines, so that the band stays clear of the far rail from behind the cue: the
-        // game's line, who acts (wrapped, two lines at most: a free ball's nomination and the keys),
-        // the message (wrapped, three lines at most), then the log to fill.
-        const int MaxRows = 5;
-        var rows = new List<(string Text, Vector4 Colour)>();
+        var rows = CentreRows(board, BoardCentreUnits(width, scale), HudFont.Width);
         string title = board.Title;
-        rows.Add((title, text));
-        var status = WrapStatus(board.Status, columns);
-        rows.Add((status[0], Gold));
-        if (status.Count > 1)
-        {
-            rows.Add((Cut("  " + string.Join(" ", status.Skip(1).Select(l => l.Trim())), columns), Gold));
-        }
-        if (board.Message is { } message)
-        {
-            var wrapped = Wrap([message], columns);
-            for (int i = 0; i < wrapped.Count && rows.Count < MaxRows; i++)
-            {
-                rows.Add((rows.Count == MaxRows - 1 && i < wrapped.Count - 1 ? Cut(wrapped[i] + " " + wrapped[i + 1], columns) : wrapped[i], text));
-            }
-        }
-        foreach (string l in board.Log)
-        {
-            if (rows.Count < MaxRows)
-            {
-                rows.Add((Cut(l, columns), Dim));
-            }
-        }
-        bool cornerBeside = (title.Length + board.Corner.Length + 2) * advance <= centreW - (2 * pad);
+        bool cornerBeside = (HudFont.Width(title) + HudFont.Width(board.Corner) + 12) * scale <= centreW - (2 * pad);
         float icon = 16 * u;
         float cardH = pad + line + (2 * u) + icon + (2 * u) + line + pad;
-        float bandH = MathF.Max(cardH, (2 * pad) + (rows.Count * line));
+        float bandH = MathF.Max(BoardUnits * u, (2 * pad) + (rows.Count * line));
         Rect(0, 0, width, bandH, new Vector4(0, 0, 0, 0.55f));
         for (int i = 0; i < rows.Count; i++)
         {
-            Text(rows[i].Text, centreX + pad, pad + (i * line), scale, rows[i].Colour);
+            Text(rows[i].Text, centreX + pad, pad + (i * line), scale, rows[i].Colour switch { 1 => Gold, 2 => Dim, _ => text });
         }
         if (cornerBeside)
         {
-            Text(board.Corner, centreX + centreW - pad - (board.Corner.Length * advance), pad, scale, Dim);
+            Text(board.Corner, centreX + centreW - pad - (HudFont.Width(board.Corner) * scale), pad, scale, Dim);
         }
-        int cardColumns = Math.Max(6, (int)((card - (3 * pad)) / advance));
+        float cardWidth = MathF.Max(36, (card - (3 * pad)) / scale);
         for (int p = 0; p < board.Players.Count && p < 2; p++)
         {
             var player = board.Players[p];
@@ -311,11 +350,11 @@ internal sealed class HudRenderer : IDisposable
                 Rect(x, pad, 2 * u, cardH - (2 * pad), Gold);
             }
             float tx = x + pad;
-            var (nameRow, besideName, ballRow, infoRow) = CardRows(player, cardColumns);
+            var (nameRow, besideName, ballRow, infoRow) = CardRows(player, cardWidth, HudFont.Width);
             Text(nameRow, tx, pad, scale, player.AtTable ? Gold : text);
             if (besideName is not null)
             {
-                Text(besideName, x + card - pad - (besideName.Length * advance), pad, scale, Dim);
+                Text(besideName, x + card - pad - (HudFont.Width(besideName) * scale), pad, scale, Dim);
             }
             int fit = Math.Max(1, (int)((card - (2 * pad)) / icon));
             int shown = player.Balls.Count > fit ? fit - 1 : player.Balls.Count;
@@ -337,41 +376,67 @@ internal sealed class HudRenderer : IDisposable
         return bandH;
     }
 
+    /// <summary>As <see cref="CardRows(Hud.PlayerCard, float, Func{string, float})"/> with one column a character.</summary>
+    public static (string Name, string? BesideName, string? BallRow, string Info) CardRows(Hud.PlayerCard player, int columns) => CardRows(player, columns, s => s.Length);
+
     /// <summary>
-    /// A player card's text in <paramref name="columns"/>: the name row, what stands right-aligned
+    /// A player card's text in <paramref name="width"/> (as <paramref name="measure"/> measures): the name row, what stands right-aligned
     /// beside the name (or null), the text in the balls' row of a card without balls (or null),
     /// and the row under the balls. The target and the detail share the lower row where they fit;
     /// where they do not ("71, free ball: black" and "break 12"), the detail moves up beside the
     /// name, or, where the name leaves no room and the card draws no balls (14.1's "3 balls on the
     /// table" and "score 99 of 100  run 4"), the target takes the balls' row, rather than be cut off.
     /// </summary>
-    public static (string Name, string? BesideName, string? BallRow, string Info) CardRows(Hud.PlayerCard player, int columns)
+    public static (string Name, string? BesideName, string? BallRow, string Info) CardRows(Hud.PlayerCard player, float width, Func<string, float> measure)
     {
         ArgumentNullException.ThrowIfNull(player);
-        string name = Cut(player.Name, columns);
+        ArgumentNullException.ThrowIfNull(measure);
+        string name = Cut(player.Name, width, measure);
         string joined = player.Detail.Length > 0 ? $"{player.Target}  {player.Detail}" : player.Target;
-        if (joined.Length <= columns || player.Detail.Length == 0)
+        if (measure(joined) <= width || player.Detail.Length == 0)
         {
-            return (name, null, null, Cut(joined, columns));
+            return (name, null, null, Cut(joined, width, measure));
         }
-        if (player.Name.Length + 2 + player.Detail.Length <= columns)
+        if (measure($"{player.Name}  {player.Detail}") <= width)
         {
-            return (name, player.Detail, null, Cut(player.Target, columns));
+            return (name, player.Detail, null, Cut(player.Target, width, measure));
         }
         return player.Balls.Count == 0
-            ? (name, null, Cut(player.Target, columns), Cut(player.Detail, columns))
-            : (name, null, null, Cut(joined, columns));
+            ? (name, null, Cut(player.Target, width, measure), Cut(player.Detail, width, measure))
+            : (name, null, null, Cut(joined, width, measure));
     }
 
     // The status line's parts are joined by ";  ": a long one breaks between parts where it can
     // ("FREE BALL: nominate pink (B, click a ball);" / "Space shoots, G hint"), else at a space.
-    private static List<string> WrapStatus(string status, int columns)
+    private static List<string> WrapStatus(string status, float width, Func<string, float> measure)
     {
-        int cut = status.Length > columns ? status.LastIndexOf(";  ", columns - 1, StringComparison.Ordinal) : -1;
-        return cut > 0 ? [status[..(cut + 1)], .. Wrap([status[(cut + 3)..]], columns)] : Wrap([status], columns);
+        if (measure(status) > width)
+        {
+            for (int cut = status.LastIndexOf(";  ", StringComparison.Ordinal); cut > 0; cut = status.LastIndexOf(";  ", cut - 1, StringComparison.Ordinal))
+            {
+                if (measure(status[..(cut + 1)]) <= width)
+                {
+                    return [status[..(cut + 1)], .. Wrap([status[(cut + 3)..]], width, measure)];
+                }
+            }
+        }
+        return Wrap([status], width, measure);
     }
 
-    private static string Cut(string text, int columns) => text.Length <= columns ? text : string.Concat(text.AsSpan(0, Math.Max(0, columns - 3)), "...");
+    // A name too long for its card: cut with an ellipsis (names only; messages are wrapped).
+    private static string Cut(string text, float width, Func<string, float> measure)
+    {
+        if (measure(text) <= width)
+        {
+            return text;
+        }
+        int n = text.Length;
+        while (n > 0 && measure(string.Concat(text.AsSpan(0, n), "...")) > width)
+        {
+            n--;
+        }
+        return string.Concat(text.AsSpan(0, n), "...");
+    }
 
     /// <summary>
     /// The cue's settings in the bottom right corner as diagrams: the power as a bar, the
@@ -410,7 +475,7 @@ internal sealed class HudRenderer : IDisposable
         // The angle in degrees in the corner the quarter circle leaves free: a jump shot's 55 is
         // told apart from 50 at a glance, which the cue's line alone does not do.
         string degrees = Math.Round(Math.Clamp(gauges.ElevationDegrees, 0, 90)).ToString("0", System.Globalization.CultureInfo.InvariantCulture);
-        float ring = 1.5f * u, textW = degrees.Length * HudFont.Advance * scale;
+        float ring = 1.5f * u, textW = HudFont.Width(degrees) * scale;
         float tx = x0 + column - (3 * u) - (2 * ring) - u - textW;
         Text(degrees, tx, pivot.Y - arm, scale, Gold);
         Disc(new Vector2(tx + textW + u + ring, pivot.Y - arm + (2 * u)), ring, Gold, 3);
@@ -432,27 +497,107 @@ internal sealed class HudRenderer : IDisposable
     /// </summary>
     private void Result(Hud.ResultPanel result, int width, int height, int scale, Vector4 text)
     {
-        float u = scale, pad = 8 * u, line = HudFont.LineHeight * scale * 1.25f, advance = HudFont.Advance * scale;
+        float u = scale, pad = 8 * u, line = HudFont.LineHeight * scale * 1.25f;
         var rows = result.Rows;
-        float w = MathF.Min(width - (8 * u), MathF.Max(280 * u, (result.Title.Length * advance) + (2 * pad)));
+        float w = MathF.Min(width - (8 * u), MathF.Max(280 * u, (HudFont.Width(result.Title) * scale) + (2 * pad)));
         float h = (2 * pad) + ((rows.Count + 2.5f) * line);
         float x = (width - w) / 2, y = MathF.Max(0, (height * 0.64f) - h);
         Rect(x, y, w, h, new Vector4(0.02f, 0.05f, 0.03f, 1));
         Rect(x, y, w, 2 * u, Gold);
-        float tw = result.Title.Length * advance;
+        float tw = HudFont.Width(result.Title) * scale;
         Text(result.Title, x + ((w - tw) / 2), y + pad, scale, Gold);
         float c1 = x + (w * 0.56f), c2 = x + (w * 0.82f);
         float ry = y + pad + (1.5f * line);
-        int nameColumns = Math.Max(4, (int)(w * 0.25f / advance));
-        void Centred(string s, float cx, float yy, Vector4 colour) => Text(s, cx - (s.Length * advance / 2), yy, scale, colour);
-        Centred(Cut(result.Names.First, nameColumns), c1, ry, text);
-        Centred(Cut(result.Names.Second, nameColumns), c2, ry, text);
+        float nameWidth = MathF.Max(24, w * 0.25f / scale);
+        void Centred(string s, float cx, float yy, Vector4 colour) => Text(s, cx - (HudFont.Width(s) * scale / 2), yy, scale, colour);
+        Centred(Cut(result.Names.First, nameWidth, HudFont.Width), c1, ry, text);
+        Centred(Cut(result.Names.Second, nameWidth, HudFont.Width), c2, ry, text);
         for (int i = 0; i < rows.Count; i++)
         {
             float yy = ry + ((i + 1) * line);
             Text(rows[i].Label, x + pad, yy, scale, Dim);
             Centred(rows[i].First, c1, yy, text);
             Centred(rows[i].Second, c2, yy, text);
+        }
+    }
+
+    // A start-menu button: a frame (bright when focused), filled gold when it is the choice made; a
+    // drill's card has its picture above the label and its goal wrapped under it.
+    private void MenuButton(HudButton b, int scale, Vector4 text)
+    {
+        float u = scale, line = HudFont.LineHeight * scale;
+        var frame = b.Focused ? new Vector4(1f, 0.95f, 0.7f, 1) : new Vector4(0.55f, 0.48f, 0.22f, 1);
+        float edge = b.Focused ? 2 * u : u;
+        Rect(b.X, b.Y, b.Width, b.Height, frame);
+        var fill = b.Chosen ? new Vector4(0.78f, 0.62f, 0.2f, 1) : b.Focused ? new Vector4(0.1f, 0.22f, 0.13f, 1) : new Vector4(0.05f, 0.12f, 0.07f, 1);
+        Rect(b.X + edge, b.Y + edge, b.Width - (2 * edge), b.Height - (2 * edge), fill);
+        var ink = b.Chosen ? new Vector4(0.05f, 0.05f, 0.03f, 1) : text;
+        if (b.Picture is null)
+        {
+            float lw = HudFont.Width(b.Label) * scale;
+            Text(b.Label, b.X + ((b.Width - lw) / 2), b.Y + ((b.Height - line) / 2) + u, scale, ink, shadow: !b.Chosen);
+            return;
+        }
+        float pad = 4 * u;
+        float pw = b.Width - (2 * pad), ph = pw * 0.5f;
+        Picture(b.Picture, b.X + pad, b.Y + pad, pw, ph, scale);
+        float ty = b.Y + pad + ph + (2 * u);
+        var title = Wrap([b.Label], (b.Width - (2 * pad)) / scale, HudFont.Width);
+        foreach (string t in title)
+        {
+            Text(t, b.X + pad, ty, scale, Gold);
+            ty += line;
+        }
+        if (b.Note is { } note)
+        {
+            // The goal in smaller text where the scale allows, every word of it.
+            int small = Math.Max(1, scale - 1);
+            float room = b.Y + b.Height - pad - ty;
+            var lines = Wrap([note], (b.Width - (2 * pad)) / small, HudFont.Width);
+            if (small < scale && lines.Count * HudFont.LineHeight * small > room)
+            {
+                small = Math.Max(1, small - 1);
+                lines = Wrap([note], (b.Width - (2 * pad)) / small, HudFont.Width);
+            }
+            foreach (string l in lines)
+            {
+                Text(l, b.X + pad, ty, small, text, shadow: false);
+                ty += HudFont.LineHeight * small;
+            }
+        }
+    }
+
+    // A position from above in the rectangle: the cloth, the pockets (the ones to play ringed in
+    // gold) and the balls in their colours.
+    private void Picture(HudPicture p, float x, float y, float w, float h, int scale)
+    {
+        float s = MathF.Min(w / (2 * p.HalfLength * 1.08f), h / (2 * p.HalfWidth * 1.16f));
+        var centre = new Vector2(x + (w / 2), y + (h / 2));
+        Vector2 At(Vector2 m) => centre + new Vector2(m.X * s, -m.Y * s);
+        float rail = 0.06f * s;
+        Rect(centre.X - (p.HalfLength * s) - rail, centre.Y - (p.HalfWidth * s) - rail, (2 * p.HalfLength * s) + (2 * rail), (2 * p.HalfWidth * s) + (2 * rail), new Vector4(0.35f, 0.18f, 0.08f, 1));
+        Rect(centre.X - (p.HalfLength * s), centre.Y - (p.HalfWidth * s), 2 * p.HalfLength * s, 2 * p.HalfWidth * s, new Vector4(0.1f, 0.45f, 0.2f, 1));
+        float pocket = MathF.Max(2 * scale, 0.055f * s);
+        for (int i = 0; i < p.Pockets.Count; i++)
+        {
+            if (i < p.Targets)
+            {
+                Disc(At(p.Pockets[i]), pocket * 1.6f, Gold, 2);
+            }
+            Disc(At(p.Pockets[i]), pocket, new Vector4(0.02f, 0.02f, 0.02f, 1), 2);
+        }
+        float r = MathF.Max(1.5f * scale, 0.0286f * s * 1.3f);
+        foreach (var (at, number) in p.Balls)
+        {
+            if (number == 0)
+            {
+                Disc(At(at), r, new Vector4(0.97f, 0.96f, 0.92f, 1), 2);
+            }
+            else
+            {
+                var colour = _balls.Contains(new Billiards.Core.Balls.BallId(number)) ? new Vector4(BallTextures.BaseColor(_balls, new Billiards.Core.Balls.BallId(number)), 1) : new Vector4(0.8f, 0.1f, 0.1f, 1);
+                Disc(At(at), r, colour, 2);
+            }
         }
     }
 
@@ -488,20 +633,46 @@ internal sealed class HudRenderer : IDisposable
         _gl.Enable(Gl.DepthTest);
     }
 
-    /// <summary>Wraps lines longer than <paramref name="columns"/> at spaces, continuing with the line's indentation plus two.</summary>
-    public static List<string> Wrap(IReadOnlyList<string> lines, int columns)
+    /// <summary>Wraps lines longer than <paramref name="columns"/> characters at spaces, continuing with the line's indentation plus two.</summary>
+    public static List<string> Wrap(IReadOnlyList<string> lines, int columns) => Wrap(lines, columns, s => s.Length);
+
+    /// <summary>
+    /// Wraps lines wider than <paramref name="width"/> (as <paramref name="measure"/> measures) at
+    /// spaces, continuing with the line's indentation plus two; a word wider than the line breaks
+    /// between characters. No text is dropped.
+    /// </summary>
+    public static List<string> Wrap(IReadOnlyList<string> lines, float width, Func<string, float> measure)
     {
+        ArgumentNullException.ThrowIfNull(lines);
+        ArgumentNullException.ThrowIfNull(measure);
         var result = new List<string>();
         foreach (string line in lines)
         {
             string rest = line;
-            string indent = new(' ', Math.Min(line.Length - line.TrimStart().Length + 2, columns / 2));
-            while (rest.Length > columns)
+            int lead = line.Length - line.TrimStart().Length;
+            string indent = new(' ', lead + 2);
+            if (measure(indent) > width / 2)
             {
-                int cut = rest.LastIndexOf(' ', columns);
-                if (cut <= rest.Length - rest.TrimStart().Length)
+                indent = "";
+            }
+            while (measure(rest) > width)
+            {
+                int start = rest.Length - rest.TrimStart().Length, cut = -1;
+                for (int i = rest.IndexOf(' ', start); i > 0; i = rest.IndexOf(' ', i + 1))
                 {
-                    cut = columns;
+                    if (measure(rest[..i]) > width)
+                    {
+                        break;
+                    }
+                    cut = i;
+                }
+                if (cut <= start)
+                {
+                    cut = start + 1;
+                    while (cut < rest.Length && measure(rest[..(cut + 1)]) <= width)
+                    {
+                        cut++;
+                    }
                 }
                 result.Add(rest[..cut].TrimEnd());
                 rest = indent + rest[cut..].TrimStart();
@@ -576,7 +747,7 @@ internal sealed class HudRenderer : IDisposable
         Disc(centre, radius * 0.6f, new Vector4(0.97f, 0.96f, 0.92f, 1), 2);
         int small = Math.Max(1, scale - 1);
         string text = kind.Name;
-        float tw = text.Length * HudFont.Advance * small;
+        float tw = HudFont.Width(text) * small;
         Text(text, centre.X - (tw / 2), centre.Y - (HudFont.LineHeight * small / 2f), small, new Vector4(0.05f, 0.05f, 0.05f, 1), shadow: false);
     }
 
@@ -587,23 +758,27 @@ internal sealed class HudRenderer : IDisposable
 
     private void Text(string text, float x, float y, int scale, Vector4 color, bool shadow = true)
     {
-        float atlasW = HudFont.Columns * HudFont.Advance, atlasH = HudFont.Rows * HudFont.LineHeight;
+        float atlasW = HudFont.Columns * HudFont.CellWidth, atlasH = HudFont.Rows * HudFont.LineHeight;
+        float cellW = HudFont.CellWidth * scale, cellH = HudFont.LineHeight * scale, origin = HudFont.Origin * scale;
         foreach (char ch in text)
         {
             int c = ch is >= ' ' and <= '~' ? ch : '?';
             if (c != ' ')
             {
                 int cell = c - 32;
-                float u0 = cell % HudFont.Columns * HudFont.Advance / atlasW, v0 = cell / HudFont.Columns * HudFont.LineHeight / atlasH;
-                float u1 = u0 + (HudFont.Advance / atlasW), v1 = v0 + (HudFont.LineHeight / atlasH);
+                float u0 = cell % HudFont.Columns * HudFont.CellWidth / atlasW, v0 = cell / HudFont.Columns * HudFont.LineHeight / atlasH;
+                float u1 = u0 + (HudFont.CellWidth / atlasW), v1 = v0 + (HudFont.LineHeight / atlasH);
+                // On whole pixels, one atlas texel on one pixel: a glyph placed between pixels would
+                // filter in its neighbour's ink (an underscore's over an 'o' in the row below it).
+                float gx = MathF.Round(x - origin), gy = MathF.Round(y);
                 // A one-pixel drop shadow keeps text readable on the bright cloth.
                 if (shadow)
                 {
-                    Quad(x + scale, y + scale, HudFont.Advance * scale, HudFont.LineHeight * scale, u0, v0, u1, v1, new Vector4(0, 0, 0, 0.8f), 1);
+                    Quad(gx + scale, gy + scale, cellW, cellH, u0, v0, u1, v1, new Vector4(0, 0, 0, 0.8f), 1);
                 }
-                Quad(x, y, HudFont.Advance * scale, HudFont.LineHeight * scale, u0, v0, u1, v1, color, 1);
+                Quad(gx, gy, cellW, cellH, u0, v0, u1, v1, color, 1);
             }
-            x += HudFont.Advance * scale;
+            x += HudFont.AdvanceOf((char)c) * scale;
         }
     }
 

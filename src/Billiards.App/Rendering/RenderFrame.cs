@@ -17,6 +17,9 @@ public sealed class RenderFrame
     /// <summary>Framebuffer size in pixels.</summary>
     public int Height { get; set; } = 720;
 
+    /// <summary>The share of the height at the top the camera leaves to the HUD's scoreboard (<see cref="RenderMath.HudInset"/>); 0 frames the whole window (offscreen scene renders).</summary>
+    public float TopInset { get; set; }
+
     /// <summary>The table to draw.</summary>
     public required TableSpec Table { get; set; }
 
@@ -91,7 +94,30 @@ public sealed record HudInfo(IReadOnlyList<string> Lines, Vector2 SpinPoint, boo
 
     /// <summary>The result panel at the end of a game, or null.</summary>
     public Hud.ResultPanel? Result { get; init; }
+
+    /// <summary>Text a menu screen places itself (its title, headings, notes), or null.</summary>
+    public IReadOnlyList<HudLabel>? Labels { get; init; }
+
+    /// <summary>True when a menu screen covers the view with its dark backdrop (the start menu's screens).</summary>
+    public bool Backdrop { get; init; }
 }
+
+/// <summary>Text a menu places in pixels (x right, y down): its top left corner, or its top centre when <paramref name="Centred"/>.</summary>
+/// <param name="X">Left, or centre (pixels).</param>
+/// <param name="Y">Top (pixels).</param>
+/// <param name="Text">The text.</param>
+/// <param name="Size">Its size as a multiple of the HUD's text (a title 3, a heading 1).</param>
+/// <param name="Gold">Drawn in the HUD's gold (titles, headings) rather than its text colour.</param>
+/// <param name="Centred">Centred on <paramref name="X"/>.</param>
+public readonly record struct HudLabel(float X, float Y, string Text, int Size = 1, bool Gold = false, bool Centred = false);
+
+/// <summary>A small top view of a position: the bed's half sizes and the balls on it (a drill's picture in the menu).</summary>
+/// <param name="HalfLength">Half the playing length (m).</param>
+/// <param name="HalfWidth">Half the playing width (m).</param>
+/// <param name="Balls">The balls: position on the bed (m, from its centre) and the ball's number (0 for the cue ball).</param>
+/// <param name="Pockets">The pockets' mouths (m), the first <paramref name="Targets"/> of them the ones to play.</param>
+/// <param name="Targets">How many of <paramref name="Pockets"/>, from the start, are the drill's pockets.</param>
+public sealed record HudPicture(float HalfLength, float HalfWidth, IReadOnlyList<(Vector2 At, int Number)> Balls, IReadOnlyList<Vector2> Pockets, int Targets);
 
 /// <summary>A ball icon after a HUD line: a small disc in the ball's colour with its number.</summary>
 /// <param name="Line">Index of the line it follows.</param>
@@ -106,6 +132,18 @@ public readonly record struct HudIcon(int Line, int Number);
 /// <param name="Label">Its text.</param>
 public readonly record struct HudButton(float X, float Y, float Width, float Height, string Label)
 {
+    /// <summary>The option chosen (drawn filled in gold): the menu marks a choice by colour, so that no label changes its width.</summary>
+    public bool Chosen { get; init; }
+
+    /// <summary>The keyboard's focus (drawn with a bright frame): Enter presses it.</summary>
+    public bool Focused { get; init; }
+
+    /// <summary>Smaller text under the label (a drill's goal), wrapped to the button, or null.</summary>
+    public string? Note { get; init; }
+
+    /// <summary>A picture above the label (a drill's position), or null.</summary>
+    public HudPicture? Picture { get; init; }
+
     /// <summary>True when the pixel lies on the button.</summary>
     public bool Contains(Vector2 p) => p.X >= X && p.X < X + Width && p.Y >= Y && p.Y < Y + Height;
 }

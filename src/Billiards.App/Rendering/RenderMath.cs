@@ -46,7 +46,29 @@ public static class RenderMath
     public static Matrix4x4 ViewProjection(RenderFrame frame, int width, int height)
     {
         ArgumentNullException.ThrowIfNull(frame);
-        return View(frame.Eye, frame.Target) * Projection(frame.FovYDegrees, (float)width / Math.Max(1, height));
+        var vp = View(frame.Eye, frame.Target) * Projection(frame.FovYDegrees, (float)width / Math.Max(1, height));
+        return frame.TopInset > 0 ? vp * BelowHud(frame.TopInset) : vp;
+    }
+
+    /// <summary>
+    /// The share of a window's height (<paramref name="height"/> pixels) the scoreboard takes along
+    /// the top edge: the camera frames its view below it, so that nothing the player plays lies under it.
+    /// </summary>
+    public static float HudInset(int height) => height <= 0 ? 0 : MathF.Min(0.3f, HudRenderer.BoardUnits * HudRenderer.Scale(height) / (float)height);
+
+    /// <summary>
+    /// Clip space squeezed below a band of <paramref name="inset"/> of the height at the top: the
+    /// camera's whole view, shrunk by (1 - inset) about the bottom edge's middle, so that what the
+    /// camera frames lies below the band and the band shows only more of the room.
+    /// </summary>
+    public static Matrix4x4 BelowHud(float inset)
+    {
+        float k = 1 - inset;
+        return new Matrix4x4(
+            k, 0, 0, 0,
+            0, k, 0, 0,
+            0, 0, 1, 0,
+            0, -inset, 0, 1);
     }
 
     /// <summary>

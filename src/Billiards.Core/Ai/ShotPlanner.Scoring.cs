@@ -14,6 +14,13 @@ public sealed partial class ShotPlanner
     /// <summary>Score of a game that ended without a winner, and the quality assumed for a position a level does not look at.</summary>
     public const double EvenScore = 0.5;
 
+    /// <summary>
+    /// Score of a legal shot that leaves a game already decided for the shooter but not yet over
+    /// (snooker's last black with the opponent more than 7 behind): just under a won game, so that
+    /// the pot that ends it is preferred to a safety.
+    /// </summary>
+    public const double DecidedScore = 0.95;
+
     /// <summary>Score of a foul (not a loss).</summary>
     public const double FoulScore = 0.08;
 
@@ -70,6 +77,19 @@ public sealed partial class ShotPlanner
     public const int ScreenedSafeties = 8;
 
     /// <summary>
+    /// True when the game is decided for the shooter of <paramref name="state"/> but not over: one
+    /// object ball left and the opponent behind by more than the points remaining (snooker's last
+    /// black with a lead of more than 7), so that no snooker can save it.
+    /// </summary>
+    public static bool Decided(GameState state, TablePosition position)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        ArgumentNullException.ThrowIfNull(position);
+        var balls = position.ObjectBalls.ToList();
+        return balls.Count == 1 && Ruleset.For(state.Rules).NeedsSnookers(state, 1 - state.Shooter, balls);
+    }
+
+    /// <summary>
     /// The score of a judged shot for the player who shot it (see the class remarks), with the
     /// balls after it in <paramref name="after"/>, as <paramref name="level"/> judges it: levels
     /// without look-ahead see only the ruling; the others also the next shot, their own judged with
@@ -82,9 +102,21 @@ public sealed partial class ShotPlanner
         ArgumentNullException.ThrowIfNull(ruling);
         ArgumentNullException.ThrowIfNull(level);
         bool look = level.LookAhead > 0;
+        if (ruling.GameOver && !ruling.Legal && ruling.Winner == before.Shooter)
+        {
+            // A frame won by one's own foul (snooker's last black fouled by a player more than 7
+            // ahead) is a foul all the same: the computer wins at the table, it does not foul on purpose.
+            return FoulScore - (PenaltyScore * ruling.Penalty);
+        }
         if (ruling.GameOver)
         {
             return ruling.Winner is not { } w ? EvenScore : w == before.Shooter ? WonScore : LostScore;
+        }
+        if (ruling.Legal && Decided(ruling.Next with { Shooter = before.Shooter }, after))
+        {
+            // The last ball left and the opponent more than its points behind: the frame is won
+            // whatever the shot leaves; a pot that ends it now is still the better (WonScore).
+            return DecidedScore;
         }
         if (before.PushOut)
         {

@@ -46,7 +46,9 @@ public sealed partial class ShotPlanner
 
         // The pot chance below which this player would rather play safe (0: none), and the
         // search's pot counts once the middle round has given every field member enough samples.
-        private readonly double _sureChance = Ruleset.For(state.Rules).HasSnookers ? level.SurePotChance : 0;
+        // A frame already decided (the last ball left, the opponent more than its points behind)
+        // has no safety worth playing: any pot is attempted.
+        private readonly double _sureChance = Ruleset.For(state.Rules).HasSnookers && !Decided(state, position) ? level.SurePotChance : 0;
         private List<Variation> _variations = [];
         private int[]? _pots;
 

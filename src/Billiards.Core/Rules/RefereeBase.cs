@@ -115,6 +115,12 @@ internal sealed class RulingBuilder(GameState before, ShotFacts facts)
     /// <summary>An extra sentence after the outcome (a warning).</summary>
     public string? Note { get; set; }
 
+    /// <summary>
+    /// What the shot scored, in place of the default sentence of the balls potted ("The break pots
+    /// the 3 and the 11."): snooker's points ("4 points to Anna.", "Anna pots a red: 1 point.").
+    /// </summary>
+    public string? Scored { get; set; }
+
     public List<BallId> Rerack { get; } = [];
 
     public bool Legal => _fouls.Count == 0;
@@ -194,6 +200,17 @@ internal sealed class RulingBuilder(GameState before, ShotFacts facts)
         {
             text.Add($"Foul by {b.ShooterName}: {string.Join(" and ", _reasons)}.");
         }
+        if (Scored is not null)
+        {
+            text.Add(Scored);
+        }
+        else if (Legal && !GameOver && facts.Pocketed.Count > 0)
+        {
+            // Which balls went down, in a player's words; a pot that is not the call says what was called.
+            string who = b.Shot == 0 ? "The break" : b.ShooterName;
+            string called = !cont && b.Call is { IsSafety: false } call && call.Ball != BallId.None && !facts.Pocketed.Contains(call.Ball) ? $" (the {call.Ball} was called)" : "";
+            text.Add($"{who} pots {Balls(facts.Pocketed)}{called}.");
+        }
         if (Outcome is not null)
         {
             text.Add(Outcome);
@@ -219,6 +236,14 @@ internal sealed class RulingBuilder(GameState before, ShotFacts facts)
             text.Add(Note);
         }
         return string.Join(" ", text);
+    }
+
+    /// <summary>"the 3", "the 3 and the 11", "the 3, the 5 and the 11".</summary>
+    public static string Balls(IReadOnlyList<BallId> balls)
+    {
+        ArgumentNullException.ThrowIfNull(balls);
+        var names = balls.Select(x => $"the {x}").ToList();
+        return names.Count <= 1 ? string.Concat(names) : $"{string.Join(", ", names.Take(names.Count - 1))} and {names[^1]}";
     }
 
     private string Reason(Foul foul) => foul switch

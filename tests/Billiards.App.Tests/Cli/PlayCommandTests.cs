@@ -115,47 +115,86 @@ public class StartMenuTests
         }
     }
 
-    [Fact]
-    public void PlainPlayOpensTheStartMenuAndItsChoiceStartsThatGame()
+    private static List<Billiards.App.Rendering.HudInfo> Run(TempSettings settings, Func<Billiards.Core.Scenes.Scene, Billiards.Core.Physics.Simulation> create, params string[] clicks)
     {
         var clock = new ManualClock();
         var window = new FakeWindow { FramebufferSize = (1280, 720) };
         var renderer = new RecordingRenderer();
-        var loop = new ClickingLoop(clock, window, renderer, ["nine-ball", "person", "Start"]);
+        var loop = new ClickingLoop(clock, window, renderer, clicks);
+        Assert.Equal(0, PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true, SettingsPath = settings.Path }));
+        return [.. renderer.Frames.Select(f => f.Hud!)];
+    }
+
+    private static bool Chosen(Billiards.App.Rendering.HudInfo hud, string label) => hud.Buttons!.Any(b => b.Label == label && b.Chosen);
+
+    [Fact]
+    public void PlainPlayOpensTheStartMenuAndItsChoiceStartsThatGameAndIsRemembered()
+    {
         using var settings = new TempSettings();
-        int code = PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), TestScenes.Create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true, SettingsPath = settings.Path });
-        Assert.Equal(0, code);
-        var first = renderer.Frames[0].Hud!;
-        Assert.Contains(first.Buttons!, b => b.Label == "> eight-ball <");
-        Assert.Contains(first.Buttons!, b => b.Label == "> level 3 <");
-        Assert.Contains(first.Lines, l => l.StartsWith("eight-ball", StringComparison.Ordinal));
-        var last = renderer.Frames[^1].Hud!;
+        var hud = Run(settings, TestScenes.Create, "Play", "9-ball", "Person", "Start");
+        var first = hud[0];
+        // A title and screens, and nothing of the game behind: no scoreboard, no keys, no "PAUSED".
+        Assert.Contains(first.Labels!, l => l.Text == "Billiards");
+        Assert.Equal(["Play", "Practice", "Drills", "Settings", "Controls", "Quit"], first.Buttons!.Select(b => b.Label));
+        Assert.Null(first.Board);
+        Assert.Empty(first.Lines);
+        Assert.True(first.Backdrop);
+        // The Play screen: the game and the opponent under their headings, the last choice marked.
+        var play = hud[1];
+        Assert.Contains(play.Labels!, l => l.Text == "Game");
+        Assert.Contains(play.Labels!, l => l.Text.StartsWith("Opponent", StringComparison.Ordinal));
+        Assert.True(Chosen(play, "8-ball") && Chosen(play, "Computer 3"));
+        var last = hud[^1];
         Assert.Null(last.Buttons);
-        Assert.Contains(last.Lines, l => l.StartsWith("nine-ball", StringComparison.Ordinal));
-        Assert.Contains(last.Lines, l => l.Contains("Player 2: on the 1", StringComparison.Ordinal));
+        Assert.StartsWith("9-ball", last.Board!.Title, StringComparison.Ordinal);
+        Assert.Equal("Player 2", last.Board.Players[1].Name);
+        // The next run offers the same game and opponent.
+        var next = Run(settings, TestScenes.Create, "Play");
+        Assert.True(Chosen(next[^1], "9-ball") && Chosen(next[^1], "Person"), string.Join(", ", next[^1].Buttons!.Where(b => b.Chosen).Select(b => b.Label)));
+    }
+
+    [Fact]
+    public void NoButtonMovesWhenAChoiceChanges()
+    {
+        using var settings = new TempSettings();
+        var hud = Run(settings, TestScenes.Create, "Play", "Snooker", "Computer 5", "Person");
+        var before = hud[1].Buttons!.Select(b => (b.X, b.Y, b.Width, b.Height)).ToList();
+        for (int i = 2; i < 5; i++)
+        {
+            Assert.Equal(before, hud[i].Buttons!.Select(b => (b.X, b.Y, b.Width, b.Height)));
+        }
+        Assert.True(Chosen(hud[4], "Snooker") && Chosen(hud[4], "Person") && !Chosen(hud[4], "Computer 5"));
     }
 
     [Theory]
-    [InlineData("Stop shot", "Drill: Stop shot")]
-    [InlineData("Practice (no referee)", "Practice: M then drag any ball")]
-    public void TheStartMenuStartsPracticeOrADrill(string click, string line)
+    [InlineData(new[] { "Drills", "Stop shot" }, "Drill: Stop shot")]
+    [InlineData(new[] { "Practice" }, "Practice")]
+    public void TheStartMenuStartsPracticeOrADrill(string[] clicks, string title)
     {
         var clock = new ManualClock();
         var window = new FakeWindow { FramebufferSize = (1280, 720) };
         var renderer = new RecordingRenderer();
-        var loop = new ClickingLoop(clock, window, renderer, [click]);
+        var loop = new ClickingLoop(clock, window, renderer, clicks);
         using var settings = new TempSettings();
         string data = Path.Combine(Path.GetTempPath(), $"data-{Guid.NewGuid():N}");
         int code = PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), TestScenes.Create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true, SettingsPath = settings.Path, DataFolder = data });
         Assert.Equal(0, code);
+        if (clicks[0] == "Drills")
+        {
+            // The gallery: every drill a card with its picture and goal.
+            var gallery = renderer.Frames[1].Hud!.Buttons!.Where(b => b.Picture is not null).ToList();
+            Assert.Equal(Billiards.App.Practice.DrillLibrary.Names().Count, gallery.Count);
+            Assert.All(gallery, b => Assert.False(string.IsNullOrEmpty(b.Note)));
+        }
         var last = renderer.Frames[^1].Hud!;
-        Assert.Null(last.Board); // no match: no scoreboard
-        Assert.Contains(last.Lines, l => l.StartsWith(line, StringComparison.Ordinal));
+        // Practice and drills have the match's scoreboard style, not the developer lines.
+        Assert.StartsWith(title, last.Board!.Title, StringComparison.Ordinal);
+        Assert.False(last.Developer);
         Assert.False(Directory.Exists(data), "nothing is written before an attempt ends");
     }
 
     [Fact]
-    public void ThePhysicsChoiceMakesTheGameAndIsRememberedAfterARestart()
+    public void ThePhysicsChoiceInWordsMakesTheGameAndIsRememberedAfterARestart()
     {
         using var settings = new TempSettings();
         var scenes = new List<Billiards.Core.Scenes.Scene>();
@@ -164,67 +203,49 @@ public class StartMenuTests
             scenes.Add(scene);
             return TestScenes.Create(scene);
         }
-        List<Billiards.App.Rendering.HudInfo> Run(params string[] clicks)
-        {
-            var clock = new ManualClock();
-            var window = new FakeWindow { FramebufferSize = (1280, 720) };
-            var renderer = new RecordingRenderer();
-            var loop = new ClickingLoop(clock, window, renderer, clicks);
-            Assert.Equal(0, PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), Create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true, SettingsPath = settings.Path }));
-            return [.. renderer.Frames.Select(f => f.Hud!)];
-        }
 
-        var firstRun = Run("Physics: stronge-compliant", "fast cloth", "Start");
-        Assert.Contains(firstRun[0].Buttons!, b => b.Label == "> Physics: han-2005 <");
-        Assert.Contains(firstRun[0].Buttons!, b => b.Label == "> standard cloth <");
+        var firstRun = Run(settings, Create, "Settings", "Cushion", "Cushion", "Cloth", "Back", "Play", "Start");
+        Assert.Contains(firstRun[1].Buttons!, b => b.Label == "Cushion: standard (Han 2005)");
+        Assert.Contains(firstRun[1].Buttons!, b => b.Label == "Cloth: standard");
         // The same game and opponent with other physics is a new game, made with them.
         var played = scenes[^1].Physics;
         Assert.Equal("stronge-compliant", played.Models.BallCushion.Name);
         Assert.Equal((0.15, 0.005), (played.Params.MuS, played.Params.MuR));
         Assert.Contains("stronge-compliant", File.ReadAllText(settings.Path), StringComparison.Ordinal);
 
-        // The next run starts with them, marked in the menu, and its first game is made with them.
+        // The next run starts with them, in words on the Settings screen, and its first game is made with them.
         scenes.Clear();
-        var secondRun = Run();
-        Assert.Contains(secondRun[0].Buttons!, b => b.Label == "> Physics: stronge-compliant <");
-        Assert.Contains(secondRun[0].Buttons!, b => b.Label == "> fast cloth <");
+        var secondRun = Run(settings, Create, "Settings");
+        Assert.Contains(secondRun[1].Buttons!, b => b.Label == "Cushion: soft rubber (Stronge, compliant)");
+        Assert.Contains(secondRun[1].Buttons!, b => b.Label == "Cloth: fast (tournament cloth)");
         Assert.Equal("stronge-compliant", scenes[0].Physics.Models.BallCushion.Name);
     }
 
     [Fact]
-    public void TheComputersPaceIsChosenInTheStartMenuKeepsTheGameAndIsRemembered()
+    public void TheComputersPaceIsChosenInTheSettingsKeepsTheGameAndIsRemembered()
     {
         using var settings = new TempSettings();
         int games = 0;
-        List<Billiards.App.Rendering.HudInfo> Run(params string[] clicks)
+        Billiards.Core.Physics.Simulation Create(Billiards.Core.Scenes.Scene scene)
         {
-            var clock = new ManualClock();
-            var window = new FakeWindow { FramebufferSize = (1280, 720) };
-            var renderer = new RecordingRenderer();
-            var loop = new ClickingLoop(clock, window, renderer, clicks);
-            Billiards.Core.Physics.Simulation Create(Billiards.Core.Scenes.Scene scene)
-            {
-                games++;
-                return TestScenes.Create(scene);
-            }
-            Assert.Equal(0, PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), Create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true, SettingsPath = settings.Path }));
-            return [.. renderer.Frames.Select(f => f.Hud!)];
+            games++;
+            return TestScenes.Create(scene);
         }
 
-        Run();
+        Run(settings, Create);
         int oneGame = games; // the simulations one game makes
         games = 0;
-        var first = Run("computer: watchable", "Start");
-        Assert.Contains(first[0].Buttons!, b => b.Label == "computer: watchable");
+        var first = Run(settings, Create, "Settings", "Computer's pace", "Back", "Play", "Start");
+        Assert.Contains(first[1].Buttons!, b => b.Label == "Computer's pace: watchable");
         Assert.Equal(oneGame, games); // the pace alone made no new game
         Assert.Contains("\"computer_pace\": \"fast\"", File.ReadAllText(settings.Path), StringComparison.Ordinal);
-        var second = Run();
-        Assert.Contains(second[0].Buttons!, b => b.Label == "computer: fast");
+        var second = Run(settings, Create, "Settings");
+        Assert.Contains(second[1].Buttons!, b => b.Label == "Computer's pace: fast");
         Assert.Equal(GameSettings.Default with { FastComputer = true }, GameSettings.Load(settings.Path));
     }
 
     // A settings file of the test's own, never the user's.
-    private sealed class TempSettings : IDisposable
+    internal sealed class TempSettings : IDisposable
     {
         private readonly string _dir = Directory.CreateTempSubdirectory("billiards-settings-").FullName;
 

@@ -65,13 +65,14 @@ public sealed class GamePlaybackKeysTests : IDisposable
         };
         var rulings = new List<(int Shot, Ruling Ruling)>();
         int code = ReplayCommand.Play(record, path, 0, 8, _ => new GamePlatform(window, new KeyedLoop(clock, window, at), new WatchingRenderer(_ => { })), clock,
-            (k, r) => rulings.Add((k, r)), host => node = host.Tree.Root.GetInTree<ReplayNode>());
+            (k, r) => rulings.Add((k, r)), host => node = host.Tree.Root.GetInTree<ReplayNode>(), closeAtEnd: true);
         Assert.Equal(0, code);
         Assert.True(window.Closed, "the playback never ended");
 
         Assert.True(rulings.Count > 20, $"shot {node!.Shot} of {record.Shots.Count}: {node.Status}; rulings {rulings.Count}; clock {clock.Now}; {rulings[^1].Ruling.Message} / {record.Rulings[rulings[^1].Shot]}");
         Assert.Equal([(8, 1), (11, 2), (14, 1)], seen.Select(s => (s.Frame, s.Shot)));
-        Assert.Contains("shot 2 of", seen[1].Status, StringComparison.Ordinal);
+        // The record's shot 2 (from 0) is the third: counted from 1, "shot 3 of" the record's shots.
+        Assert.Contains($"shot 3 of {record.Shots.Count}", seen[1].Status, StringComparison.Ordinal);
         // Shot 0 was skipped before it was struck; from shot 1 every shot played and was judged as recorded.
         Assert.Equal(Enumerable.Range(1, record.Shots.Count - 1), rulings.Select(r => r.Shot));
         foreach (var (shot, ruling) in rulings)
@@ -93,7 +94,7 @@ public sealed class GamePlaybackKeysTests : IDisposable
         int shown = 0;
         // At 8 times real time a frame of 1/30 s passes 0.27 s of a shot: every collision is still heard.
         int code = ReplayCommand.Play(record, path, 0, 8, _ => new GamePlatform(window, new KeyedLoop(clock, window, new Dictionary<int, Action>()), new WatchingRenderer(_ => { })), clock,
-            (_, _) => shown++, openAudio: () => audio);
+            (_, _) => shown++, openAudio: () => audio, closeAtEnd: true);
         Assert.Equal(0, code);
         Assert.Equal(record.Shots.Count, shown);
         Assert.Equal(shown, audio.Cues.Count(c => c.Kind is Billiards.App.Audio.SoundKind.CueStrike or Billiards.App.Audio.SoundKind.Miscue));

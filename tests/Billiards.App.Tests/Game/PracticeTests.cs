@@ -283,22 +283,25 @@ public sealed class PracticeTests : IDisposable
         using var game = new TestGame();
         string? asked = "none";
         game.World.Menu.Drills = [.. DrillLibrary.All().Select(d => (d.Name, d.Title))];
+        game.World.Menu.DrillGallery = DrillLibrary.All();
         game.World.Menu.PracticeRequested += d => asked = d;
-        game.World.Menu.ShowStart();
+        game.World.Menu.ShowStart(MenuPage.Drills);
         game.Frame();
         var at = game.World.Menu.CentreOf("Kick shot")!.Value;
         game.Window.MoveTo(at.X, at.Y);
         game.Window.Down();
         Assert.Equal("kick-shot", asked);
         Assert.Equal(MenuPage.None, game.World.Menu.Page);
-        game.World.Menu.ShowStart();
+        game.World.Menu.ShowStart(MenuPage.Drills);
         var hud = game.Frame().Hud!;
         foreach (var d in DrillLibrary.All())
         {
-            Assert.Contains(hud.Buttons!, b => b.Label == d.Title);
+            Assert.Contains(hud.Buttons!, b => b.Label == d.Title && b.Note == d.Goal && b.Picture is { Balls.Count: > 1 });
         }
         // Every button inside the window.
         Assert.All(hud.Buttons!, b => Assert.True(b.X >= 0 && b.X + b.Width <= 800 && b.Y + b.Height <= 600, $"{b.Label}: {b.X}, {b.Y}, {b.Width} x {b.Height}"));
+        game.Window.Press(Billiards.App.Platform.Key.Escape); // back to the first screen
+        game.Frame();
         at = game.World.Menu.CentreOf("Practice")!.Value;
         game.Window.MoveTo(at.X, at.Y);
         game.Window.Down();

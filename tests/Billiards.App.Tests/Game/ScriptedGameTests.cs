@@ -59,7 +59,7 @@ public class ScriptedGameTests
         var rulings = new List<(int Shot, string Ruling)>();
         const int first = 2;
         int code = ReplayCommand.Play(record, "w.json", first, 16, _ => new GamePlatform(window, new UntilClosedLoop(clock, window, 1.0 / 30), new NullFrameRenderer()), clock,
-            (k, ruling) => rulings.Add((k, System.Text.Encoding.UTF8.GetString(GameBlockWriter.RulingToUtf8(ruling)))));
+            (k, ruling) => rulings.Add((k, System.Text.Encoding.UTF8.GetString(GameBlockWriter.RulingToUtf8(ruling)))), closeAtEnd: true);
         Assert.Equal(0, code);
         Assert.True(window.Closed, "the playback never ended");
         // Shot by shot from the one asked for, each judged as recorded.

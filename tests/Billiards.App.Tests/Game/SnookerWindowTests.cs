@@ -33,9 +33,9 @@ public class SnookerWindowTests
     public void SnookerIsAGameOfTheStartMenu()
     {
         using var game = new TestGame();
-        game.World.Menu.ShowStart();
+        game.World.Menu.ShowStart(Billiards.App.Hud.MenuPage.Play);
         game.Frame();
-        var centre = game.World.Menu.CentreOf("snooker");
+        var centre = game.World.Menu.CentreOf("Snooker");
         Assert.NotNull(centre);
         game.Window.MoveTo(centre!.Value.X, centre.Value.Y);
         game.Window.Down();

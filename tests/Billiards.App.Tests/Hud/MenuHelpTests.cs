@@ -16,7 +16,7 @@ public class MenuHelpTests
         using var game = new TestGame();
         game.World.Menu.ShowStart();
         var hud = game.Frame().Hud!;
-        Assert.Contains("H or F1: help", hud.Lines);
+        Assert.Contains(hud.Labels!, l => l.Text.Contains("H: help", StringComparison.Ordinal));
         Assert.False(hud.ShowHelp);
 
         game.Window.Press(help);
@@ -24,7 +24,7 @@ public class MenuHelpTests
         Assert.True(hud.ShowHelp);
         // The start menu stays, with its buttons, and took nothing else from the key.
         Assert.Equal(MenuPage.Start, game.World.Menu.Page);
-        Assert.Contains(hud.Buttons!, b => b.Label.StartsWith("Start", StringComparison.Ordinal));
+        Assert.Contains(hud.Buttons!, b => b.Label == "Play");
 
         game.Window.Press(help);
         Assert.False(game.Frame().Hud!.ShowHelp);
@@ -52,13 +52,16 @@ public class MenuHelpTests
         var computer = game.World.Tree.Root.GetInTree<Billiards.App.Game.ComputerPlayerNode>();
         var menu = game.World.Menu;
         Assert.False(computer.Fast);
-        menu.ShowStart();
+        menu.ShowStart(MenuPage.Settings);
         game.Frame();
-        SystemKeysAndHudTests.Click(game, menu.CentreOf("computer: watchable")!.Value); // the button switches the pace
+        SystemKeysAndHudTests.Click(game, menu.CentreOf("Computer's pace: watchable")!.Value); // the button switches the pace
         game.Frame();
-        Assert.NotNull(menu.CentreOf("computer: fast"));
-        Assert.False(computer.Fast); // not before Start
-        SystemKeysAndHudTests.Click(game, menu.CentreOf("Start")!.Value);
+        Assert.NotNull(menu.CentreOf("Computer's pace: fast"));
+        Assert.False(computer.Fast); // not before the settings are left
+        SystemKeysAndHudTests.Click(game, menu.CentreOf("Back")!.Value);
+        Assert.True(computer.Fast);
+        Assert.Equal(MenuPage.Start, menu.Page);
+        game.Window.Press(Billiards.App.Platform.Key.Escape); // back to the game behind the menu
         Assert.Equal(MenuPage.None, menu.Page);
         Assert.True(computer.Fast);
         Assert.Same(computer, game.World.Tree.Root.GetInTree<Billiards.App.Game.ComputerPlayerNode>());

@@ -6,7 +6,7 @@ public class HudFontTests
 {
     private static int Ink(byte[] atlas, int scale, char c)
     {
-        int cellW = HudFont.Advance * scale, cellH = HudFont.LineHeight * scale, width = HudFont.Columns * cellW;
+        int cellW = HudFont.CellWidth * scale, cellH = HudFont.LineHeight * scale, width = HudFont.Columns * cellW;
         int cell = c - 32, left = cell % HudFont.Columns * cellW, top = cell / HudFont.Columns * cellH;
         int ink = 0;
         for (int y = top; y < top + cellH; y++)
@@ -26,7 +26,7 @@ public class HudFontTests
     public void TheAtlasHasAntialiasedGlyphsInTheirCells(int scale)
     {
         byte[] atlas = HudFont.Atlas(scale);
-        Assert.Equal(HudFont.Columns * HudFont.Advance * scale * HudFont.Rows * HudFont.LineHeight * scale, atlas.Length);
+        Assert.Equal(HudFont.Columns * HudFont.CellWidth * scale * HudFont.Rows * HudFont.LineHeight * scale, atlas.Length);
         Assert.Equal(0, Ink(atlas, scale, ' '));
         // Every printable character has ink, and a capital M more than a full stop.
         for (char c = '!'; c <= '~'; c++)

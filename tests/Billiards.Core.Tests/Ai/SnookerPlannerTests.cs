@@ -43,6 +43,21 @@ public class SnookerPlannerTests
     }
 
     [Fact]
+    public void AheadByMoreThanSevenOnTheLastBlackTheComputerPotsItRatherThanFoulIt()
+    {
+        // A foul on the last black ends the frame with 7 to the opponent: 20 ahead, a foul would
+        // still win. The computer plays the game, not the rule's gap: it pots the black.
+        // A long, cut black: a pot is far from sure, a foul is a sure end.
+        var position = new TablePosition([(Cue, new Vec3(-0.9, 0.45, R)), (Black, SnookerTable.Spot(Table, "black", R))], Cue);
+        var state = new GameState(GameRules.Snooker) { Players = new("Anna", "Ben"), Shot = 60, BallOn = "black", Score = new PerPlayer<int>(60, 40) };
+        var decision = Planner.Decide(state, position, SkillLevel.Of(5), new PlannerBudget(60_000, 2), 7);
+        var record = Simulate(position, decision.Shot);
+        var ruling = Referee.For(GameRules.Snooker, Table, R).Judge(state with { Call = decision.Call }, record);
+        Assert.True(ruling.Legal, ruling.Message);
+        Assert.True(ShotKinds.IsPot(decision.Kind, decision.Pocket), $"a {decision.Kind}: {ruling.Message}");
+    }
+
+    [Fact]
     public void AfterARedTheComputerNominatesTheColourItPotsAndPotsIt()
     {
         var position = BlueStraightIn();

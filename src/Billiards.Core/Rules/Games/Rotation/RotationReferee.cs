@@ -31,9 +31,14 @@ internal sealed class RotationReferee(RotationRuleset ruleset, TableSpec table, 
                 ruling.Foul(Foul.CueBallPocketed);
             }
             OffTableFoul(facts, ruling);
-            if (facts.FirstContact != facts.Lowest || (facts.Pocketed.Count == 0 && facts.ObjectBallsToCushion < 4))
+            // Which of the two the break failed: the first ball it hit, or what it drove.
+            if (facts.FirstContact != facts.Lowest)
             {
-                ruling.Foul(Foul.BadBreak, $"the break did not hit the {facts.Lowest} first, or pocketed no ball and sent fewer than four object balls to a cushion");
+                ruling.Foul(Foul.BadBreak, facts.FirstContact is { } first ? $"the break hit the {first} first, not the {facts.Lowest}" : $"the break missed the {facts.Lowest}");
+            }
+            else if (facts.Pocketed.Count == 0 && facts.ObjectBallsToCushion < 4)
+            {
+                ruling.Foul(Foul.BadBreak, string.Create(System.Globalization.CultureInfo.InvariantCulture, $"the break pocketed no ball and sent {facts.ObjectBallsToCushion} object {(facts.ObjectBallsToCushion == 1 ? "ball" : "balls")} to a cushion, not four"));
             }
             ruling.Continue = facts.Pocketed.Count > 0;
             moneyWins = !Called;

@@ -1,3 +1,4 @@
+using System.Globalization;
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
@@ -247,6 +248,10 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
 
         private Ruling Finish(int penalty, int points, bool miss, bool freeBall, GameState? replaced, PerPlayer<int> misses, string nextOn)
         {
+            // The points in words: a foul's penalty to the incoming player, a pot's points to the shooter.
+            ruling.Scored = !ruling.Legal && penalty > 0 ? string.Create(CultureInfo.InvariantCulture, $"{penalty} points to {before.IncomingName}.")
+                : ruling.Legal && points > 0 ? string.Create(CultureInfo.InvariantCulture, $"{before.ShooterName} pots {PotWords(facts.Pocketed)}: {points} {(points == 1 ? "point" : "points")}.")
+                : null;
             var built = ruling.Build();
             var next = built.GameOver ? built.Next : built.Next with { BallOn = nextOn, FreeBall = freeBall, MissesInRow = misses };
             return built with
@@ -258,6 +263,19 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
                 FreeBall = freeBall,
                 Replaced = replaced,
             };
+        }
+
+        // "a red", "2 reds", "the pink", "a red and the blue" (a free ball potted with a red).
+        private static string PotWords(IReadOnlyList<BallId> potted)
+        {
+            int reds = potted.Count(b => !SnookerRuleset.IsColour(b));
+            var words = new List<string>();
+            if (reds > 0)
+            {
+                words.Add(reds == 1 ? "a red" : string.Create(CultureInfo.InvariantCulture, $"{reds} reds"));
+            }
+            words.AddRange(potted.Where(SnookerRuleset.IsColour).Select(b => $"the {b}"));
+            return words.Count <= 1 ? string.Concat(words) : $"{string.Join(", ", words.Take(words.Count - 1))} and {words[^1]}";
         }
 
         private static BallId? BallOnBall(string ballOn) => BallSet.Snooker.TryParse(ballOn, out var b) && SnookerRuleset.IsColour(b) ? b : null;

@@ -1,0 +1,370 @@
+using System.Numerics;
+using Billiards.App.Audio;
+using Billiards.App.Game;
+using Billiards.App.Platform;
+using Billiards.App.Rendering;
+using Billiards.Core.Physics;
+using Billiards.Core.Physics.Collisions;
+using Billiards.Core.Practice;
+using Billiards.Core.Rules;
+
+namespace Billiards.App.Hud;
+
+// The start menu's screens. Each screen is laid out from the window's size alone, every button of a
+// row as wide as the row's widest label could be, and a choice is marked by colour, not by a
+// label's text: nothing moves under the pointer when a choice changes. The keyboard moves a focus
+// (arrows, Tab), Enter presses it and Escape goes back; the mouse's pointer moves the same focus.
+public sealed partial class MenuNode
+{
+    private readonly List<HudLabel> _labels = [];
+    private readonly List<int> _rowOf = [];
+    private int _focus;
+    private MenuPage _quitReturn = MenuPage.Pause;
+
+    /// <summary>The game's name on the start menu.</summary>
+    public const string GameTitle = "Billiards";
+
+    /// <summary>True while one of the start menu's screens is shown.</summary>
+    public bool IsStartScreen => Page is MenuPage.Start or MenuPage.Play or MenuPage.Drills or MenuPage.Settings;
+
+    /// <summary>The drills the start menu's gallery shows, with their pictures and goals; set by the host (none by default).</summary>
+    public IReadOnlyList<Drill> DrillGallery { get; set; } = [];
+
+    /// <summary>The text of the focused button, or null (tests read the keyboard's focus through it).</summary>
+    public string? FocusedLabel
+    {
+        get
+        {
+            Layout();
+            return _focus >= 0 && _focus < _buttons.Count ? _buttons[_focus].Button.Label : null;
+        }
+    }
+
+    /// <summary>A game's name as the menu says it.</summary>
+    public static string GameName(GameRules game) => game.ToName() switch
+    {
+        "eight-ball" => "8-ball",
+        "nine-ball" => "9-ball",
+        "ten-ball" => "10-ball",
+        "straight-pool" => "14.1 straight pool",
+        "snooker" => "Snooker",
+        var other => other,
+    };
+
+    /// <summary>A cushion model in words, its paper in brackets.</summary>
+    public static string CushionName(IBallCushionModel model)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        return model.Name switch
+        {
+            "han-2005" => "standard (Han 2005)",
+            "mathavan-2010" => "precise, slower (Mathavan 2010)",
+            "stronge-compliant" => "soft rubber (Stronge, compliant)",
+            var other => other,
+        };
+    }
+
+    /// <summary>A cloth in words.</summary>
+    public static string ClothName(Cloth cloth)
+    {
+        ArgumentNullException.ThrowIfNull(cloth);
+        return cloth.Name switch
+        {
+            "slow" => "slow (heavy cloth)",
+            "standard" => "standard",
+            "fast" => "fast (tournament cloth)",
+            var other => other,
+        };
+    }
+
+    private void Go(MenuPage page)
+    {
+        Page = page;
+        _focus = 0;
+        if (page == MenuPage.Play)
+        {
+            _focus = -1; // Start, found by the layout
+        }
+    }
+
+    private void AskQuit()
+    {
+        _quitReturn = Page == MenuPage.Pause ? MenuPage.Pause : Page;
+        Page = MenuPage.ConfirmQuit;
+    }
+
+    private void StartKey(Key key)
+    {
+        Layout();
+        if (_keys is { ShowHelp: true } && key == Key.Escape)
+        {
+            _keys.ShowHelp = false; // the Controls screen is the help overlay: Escape closes it
+            return;
+        }
+        switch (key)
+        {
+            case Key.Escape when Page == MenuPage.Start:
+                Resume(); // back to the game behind the menu
+                break;
+            case Key.Escape or Key.Backspace:
+                Back();
+                break;
+            case Key.Enter or Key.Space:
+                if (_focus >= 0 && _focus < _buttons.Count)
+                {
+                    _buttons[_focus].Act();
+                }
+                break;
+            case Key.Left or Key.Right or Key.Tab:
+                _focus = Math.Clamp(_focus + (key == Key.Left ? -1 : 1), 0, _buttons.Count - 1);
+                break;
+            case Key.Up or Key.Down:
+                _focus = NextRow(key == Key.Up ? -1 : 1);
+                break;
+        }
+    }
+
+    // The button of the row above or below nearest the focus's centre.
+    private int NextRow(int direction)
+    {
+        if (_buttons.Count == 0)
+        {
+            return 0;
+        }
+        int from = Math.Clamp(_focus, 0, _buttons.Count - 1);
+        int row = _rowOf[from] + direction;
+        float x = _buttons[from].Button.X + (_buttons[from].Button.Width / 2);
+        int best = from;
+        float bestDistance = float.MaxValue;
+        for (int i = 0; i < _buttons.Count; i++)
+        {
+            if (_rowOf[i] != row)
+            {
+                continue;
+            }
+            float d = MathF.Abs(_buttons[i].Button.X + (_buttons[i].Button.Width / 2) - x);
+            if (d < bestDistance)
+            {
+                bestDistance = d;
+                best = i;
+            }
+        }
+        return best;
+    }
+
+    private void Hover(Vector2 at)
+    {
+        Layout();
+        for (int i = 0; i < _buttons.Count; i++)
+        {
+            if (_buttons[i].Button.Contains(at))
+            {
+                _focus = i;
+                return;
+            }
+        }
+    }
+
+    private void Back()
+    {
+        if (Page == MenuPage.Settings)
+        {
+            ApplySettings();
+        }
+        Go(MenuPage.Start);
+    }
+
+    // The settings take effect on leaving their screen: the file keeps them, the game behind the menu
+    // takes the pace, take-backs and sound at once; the physics makes the next game started.
+    private void ApplySettings()
+    {
+        SettingsChosen?.Invoke(StartSettings);
+        if (FindInTree<ComputerPlayerNode>() is { } computer)
+        {
+            computer.Fast = StartSettings.FastComputer;
+        }
+        if (_match is not null)
+        {
+            _match.TakeBacks = StartSettings.TakeBacks;
+        }
+        if (FindInTree<AudioNode>() is { } audio)
+        {
+            audio.Output.Muted = StartSettings.Muted;
+        }
+        PlayedSettings = PlayedSettings with { FastComputer = StartSettings.FastComputer, TakeBacks = StartSettings.TakeBacks, Muted = StartSettings.Muted };
+    }
+
+    private static T Cycle<T>(IReadOnlyList<T> all, T current) where T : class
+    {
+        int i = 0;
+        for (; i < all.Count && !ReferenceEquals(all[i], current) && !Equals(all[i], current); i++)
+        {
+        }
+        return all[(i + 1) % all.Count];
+    }
+
+    private void LayoutStart()
+    {
+        var (width, height) = _size;
+        int scale = HudRenderer.Scale(height);
+        float u = scale, line = HudFont.LineHeight * u;
+        float buttonH = line + (10 * u), gap = 6 * u;
+        float cx = width / 2f;
+        _rowOf.Clear();
+        int row = 0;
+        void Add(float x, float y, float w, float h, string label, Action act, bool chosen = false, string? note = null, HudPicture? picture = null)
+        {
+            _buttons.Add((new HudButton(x, y, w, h, label) { Chosen = chosen, Note = note, Picture = picture }, act));
+            _rowOf.Add(row);
+        }
+        // A row of buttons of one width, centred.
+        void Row(float y, float w, IReadOnlyList<(string Label, Action Act, bool Chosen)> items)
+        {
+            float total = (items.Count * w) + ((items.Count - 1) * gap);
+            float x = cx - (total / 2);
+            foreach (var (label, act, chosen) in items)
+            {
+                Add(x, y, w, buttonH, label, act, chosen);
+                x += w + gap;
+            }
+            row++;
+        }
+        float top = MathF.Max(line, height * 0.08f);
+        _labels.Add(new HudLabel(cx, top, GameTitle, 3, Gold: true, Centred: true));
+        float y = top + (3 * line) + (2 * u);
+        string subtitle = Page switch
+        {
+            MenuPage.Play => "Play: choose the game and your opponent, then Start",
+            MenuPage.Drills => "Drills: one shot to master, its goal under its picture",
+            MenuPage.Settings => "Settings: click a line to change it; Back keeps them",
+            _ => "Pool and snooker",
+        };
+        _labels.Add(new HudLabel(cx, y, subtitle, 1, Centred: true));
+        y += 2 * line;
+        float wide = 150 * u;
+        switch (Page)
+        {
+            case MenuPage.Start:
+                foreach (var (label, act) in new (string, Action)[]
+                {
+                    ("Play", () => Go(MenuPage.Play)),
+                    ("Practice", () => RequestPractice(null)),
+                    ("Drills", () => Go(MenuPage.Drills)),
+                    ("Settings", () => Go(MenuPage.Settings)),
+                    ("Controls", () => _keys!.ShowHelp = true),
+                    ("Quit", AskQuit),
+                })
+                {
+                    Row(y, wide, [(label, act, false)]);
+                    y += buttonH + gap;
+                }
+                _labels.Add(new HudLabel(cx, y + line, "Arrows and Enter, or the mouse;  Esc: back to the table;  H: help", 1, Centred: true));
+                break;
+            case MenuPage.Play:
+            {
+                var games = Ruleset.All.Select(r => r.Game).ToList();
+                float gameW = (games.Max(g => HudFont.Width(GameName(g))) + 16) * u;
+                _labels.Add(new HudLabel(cx, y, "Game", 1, Gold: true, Centred: true));
+                y += line + (2 * u);
+                Row(y, gameW, [.. games.Select(g => (GameName(g), (Action)(() => StartGame = g), StartGame == g))]);
+                y += buttonH + (2 * line);
+                _labels.Add(new HudLabel(cx, y, "Opponent: a second player at this computer, or the computer (level 1 easy, 5 strong)", 1, Gold: true, Centred: true));
+                y += line + (2 * u);
+                var opponents = new List<(string, Action, bool)> { ("Person", () => StartOpponent = null, StartOpponent is null) };
+                for (int level = 1; level <= 5; level++)
+                {
+                    int l = level;
+                    opponents.Add(($"Computer {l}", () => StartOpponent = l, StartOpponent == l));
+                }
+                Row(y, (HudFont.Width("Computer 5") + 16) * u, opponents);
+                y += buttonH + (2 * line);
+                float startAt = _buttons.Count;
+                Row(y, wide, [("Start", Begin, false), ("Back", Back, false)]);
+                if (_focus < 0)
+                {
+                    _focus = (int)startAt;
+                }
+                break;
+            }
+            case MenuPage.Drills:
+            {
+                // A gallery: four cards a row, each the drill's position from above, its title and its goal.
+                int columns = 4, count = DrillGallery.Count;
+                float cardW = MathF.Min(150 * u, (width - (5 * gap)) / columns);
+                float pictureH = cardW * 0.5f;
+                float cardH = pictureH + (5 * line);
+                int rows = Math.Max(1, (count + columns - 1) / columns);
+                float room = height - y - buttonH - (2 * gap);
+                if (rows * (cardH + gap) > room)
+                {
+                    // A short window: smaller cards, still every drill.
+                    float shrink = room / (rows * (cardH + gap));
+                    cardW *= shrink;
+                    pictureH = cardW * 0.5f;
+                    cardH = pictureH + (5 * line * MathF.Max(0.6f, shrink));
+                }
+                for (int r = 0; r < rows; r++)
+                {
+                    int inRow = Math.Min(columns, count - (r * columns));
+                    float total = (inRow * cardW) + ((inRow - 1) * gap);
+                    float x = cx - (total / 2);
+                    for (int k = 0; k < inRow; k++)
+                    {
+                        var drill = DrillGallery[(r * columns) + k];
+                        Add(x, y, cardW, cardH, drill.Title, () => RequestPractice(drill.Name), note: drill.Goal, picture: PictureOf(drill));
+                        x += cardW + gap;
+                    }
+                    row++;
+                    y += cardH + gap;
+                }
+                Row(y, wide, [("Back", Back, false)]);
+                break;
+            }
+            case MenuPage.Settings:
+            {
+                float w = 260 * u;
+                var s = StartSettings;
+                var items = new (string, Action)[]
+                {
+                    ($"Cushion: {CushionName(s.Cushion)}", () => StartSettings = StartSettings with { Cushion = Cycle(ModelRegistry.BallCushionModels, StartSettings.Cushion) }),
+                    ($"Cloth: {ClothName(s.Cloth)}", () => StartSettings = StartSettings with { Cloth = Cycle(Cloth.All, StartSettings.Cloth) }),
+                    ($"Computer's pace: {(s.FastComputer ? "fast" : "watchable")}", () => StartSettings = StartSettings with { FastComputer = !StartSettings.FastComputer }),
+                    ($"Take-backs: {(s.TakeBacks ? "allowed (Z)" : "off")}", () => StartSettings = StartSettings with { TakeBacks = !StartSettings.TakeBacks }),
+                    ($"Sound: {(s.Muted ? "muted" : "on")}", () => StartSettings = StartSettings with { Muted = !StartSettings.Muted }),
+                };
+                foreach (var (label, act) in items)
+                {
+                    Row(y, w, [(label, act, false)]);
+                    y += buttonH + gap;
+                }
+                _labels.Add(new HudLabel(cx, y, "The cushion and the cloth make the next game started; the rest changes at once.", 1, Centred: true));
+                y += line + gap;
+                Row(y, wide, [("Back", Back, false)]);
+                break;
+            }
+        }
+        if (_buttons.Count > 0)
+        {
+            _focus = Math.Clamp(_focus, 0, _buttons.Count - 1);
+            var (b, a) = _buttons[_focus];
+            _buttons[_focus] = (b with { Focused = true }, a);
+        }
+    }
+
+    /// <summary>A drill's position from above: its table, its balls, its pockets (the ones to play first).</summary>
+    public static HudPicture PictureOf(Drill drill)
+    {
+        ArgumentNullException.ThrowIfNull(drill);
+        var table = drill.Scene.Table;
+        var pockets = new List<Vector2>();
+        var targets = drill.Pockets.Where(p => p != Billiards.Core.Table.PocketId.None).Select(p => p.Index).ToHashSet();
+        var order = Enumerable.Range(0, table.Pockets.Count).OrderBy(i => targets.Contains(i) ? 0 : 1).ToList();
+        foreach (int i in order)
+        {
+            var m = table.Pockets[i].MouthMiddle(table);
+            pockets.Add(new Vector2((float)m.X, (float)m.Y));
+        }
+        var balls = drill.Scene.Balls.Select(b => (new Vector2((float)b.Position.X, (float)b.Position.Y), b.Id == drill.Scene.CueBall ? 0 : b.Id.Value)).ToList();
+        return new HudPicture((float)table.HalfLength, (float)table.HalfWidth, balls, pockets, targets.Count);
+    }
+}
