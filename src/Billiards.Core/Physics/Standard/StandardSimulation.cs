@@ -88,6 +88,22 @@ public sealed partial class StandardSimulation : Simulation
         }
     }
 
+    /// <inheritdoc />
+    protected override bool StepBy(double dt)
+    {
+        double now = Time;
+        long steps = StepCount;
+        if (_stepper.TryAdvanceTo(Time + dt, TrackOrientation, ref now, ref steps))
+        {
+            Time = now;
+        }
+        else
+        {
+            Time = _stepper.Step(Time, dt, TrackOrientation);
+        }
+        return true;
+    }
+
     /// <summary>
     /// Advances to <paramref name="time"/>, or until everything rests. The event integrator goes
     /// there exactly (and stops at the instant the last ball stops); the stepping integrators stop
@@ -138,6 +154,10 @@ public sealed partial class StandardSimulation : Simulation
     protected override void ApplyStrike(int cue, ShotSpec shot)
     {
         var outcome = CueStrike.Strike(shot, Parameters);
+        if (outcome.Miscue)
+        {
+            Events.Add(new SimEvent(Time, EventKind.Miscue, Ids[cue], Ids[cue], -1, shot.Speed));
+        }
         _balls[cue].Velocity = outcome.Velocity;
         _balls[cue].Spin = outcome.Spin;
         // An elevated cue drives the ball into the slate. When the slate's return (e_t v sin theta)
