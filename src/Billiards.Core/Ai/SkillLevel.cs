@@ -134,8 +134,10 @@ public sealed record SkillLevel(
         double r = Math.Sqrt(side * side + height * height);
         if (r > MaxTip)
         {
-            side *= MaxTip / r;
-            height *= MaxTip / r;
+            // Just inside the limit, so that rounding never makes it a miscue.
+            double k = MaxTip / r * (1 - 1e-12);
+            side *= k;
+            height *= k;
         }
         return planned with { AimDeg = aim, Speed = Math.Max(0.05, speed), TipSide = side, TipHeight = height };
     }
