@@ -66,6 +66,12 @@ public abstract partial class Simulation
     public int EventCapHits { get; protected set; }
 
     /// <summary>
+    /// How many impacts an impulse-integrated model (the Mathavan models) cut short at its step
+    /// limit; written to the result so that it is never silent (0 in every ordinary shot).
+    /// </summary>
+    public int TruncatedImpacts { get; protected set; }
+
+    /// <summary>
     /// When true, ball orientations are integrated (for drawing). Off by default: a headless run
     /// computes nothing for rendering.
     /// </summary>
@@ -224,6 +230,7 @@ public abstract partial class Simulation
         snapshot.Time = Time;
         snapshot.StepCount = StepCount;
         snapshot.EventCapHits = EventCapHits;
+        snapshot.TruncatedImpacts = TruncatedImpacts;
         snapshot.Events.CopyFrom(Events);
         CaptureState(snapshot);
     }
@@ -240,6 +247,7 @@ public abstract partial class Simulation
         Time = snapshot.Time;
         StepCount = snapshot.StepCount;
         EventCapHits = snapshot.EventCapHits;
+        TruncatedImpacts = snapshot.TruncatedImpacts;
         Events.CopyFrom(snapshot.Events);
         RestoreState(snapshot);
     }

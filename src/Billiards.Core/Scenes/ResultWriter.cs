@@ -145,6 +145,7 @@ public static class ResultWriter
         w.WriteBoolean("at_rest", outcome.AtRest);
         w.WriteString("stop", SimulationRunner.Name(outcome.Stop));
         w.WriteNumber("event_cap_hits", sim.EventCapHits);
+        w.WriteNumber("truncated_impacts", sim.TruncatedImpacts);
         w.WriteEndObject();
         if (outcome.Ruling is { } ruling)
         {
