@@ -7,13 +7,14 @@ namespace Billiards.App.Cli;
 
 /// <summary>
 /// <c>report accuracy [--out DIR]</c>: the error-against-run-time report (CSV, SVG plot, Markdown
-/// summary) with its cushion page; <c>report cushions [--out DIR]</c>: the cushion page alone;
+/// summary) with its cushion and reality pages; <c>report cushions [--out DIR]</c>: the cushion page alone;
+/// <c>report reality [--out DIR]</c>: the reality page alone (the engine against measured data);
 /// <c>report snookers</c>: the computer player's fouls from snookered positions, without and with jumps.
 /// </summary>
 public static class ReportCommand
 {
     /// <summary>The files the report writes into its folder.</summary>
-    public static IReadOnlyList<string> FileNames { get; } = ["accuracy.csv", "accuracy.svg", "accuracy.md", .. CushionReport.FileNames];
+    public static IReadOnlyList<string> FileNames { get; } = ["accuracy.csv", "accuracy.svg", "accuracy.md", .. CushionReport.FileNames, .. RealityReport.FileNames];
 
     /// <summary>Builds the verb.</summary>
     public static Command Create(TextWriter stdout, TextWriter stderr)
@@ -52,6 +53,7 @@ public static class ReportCommand
                 Encoding.UTF8.GetBytes(AccuracyReport.ToSvg(rows)),
                 Encoding.UTF8.GetBytes(summary),
                 .. CushionReport.Files().Select(f => f.Bytes),
+                .. RealityReport.Files().Files.Select(f => f.Bytes),
             ];
             Directory.CreateDirectory(dir);
             OutputFiles.WriteAll([.. FileNames.Select((name, i) => (Path.Combine(dir, name), contents[i]))]);
@@ -68,6 +70,19 @@ public static class ReportCommand
             Directory.CreateDirectory(dir);
             OutputFiles.WriteAll([.. files.Select(f => (Path.Combine(dir, f.Name), f.Bytes))]);
             stdout.WriteLine(string.Join(" ", files.Select(f => Path.Combine(dir, f.Name))));
+            return 0;
+        });
+        var realityOutput = new Option<string>("--out") { Description = "Folder for reality.md, reality.csv and their plots.", DefaultValueFactory = _ => "out/accuracy" };
+        var reality = new Command("reality", VerbHelp.Verb("Compare the engine with measured real shots: plots, pass bands and verdicts.", "report-reality")) { realityOutput };
+        reality.SetAction(parse =>
+        {
+            string dir = OutputFiles.CheckFolder("--out", parse.GetValue(realityOutput)!, [.. RealityReport.FileNames]);
+            var (files, cases) = RealityReport.Files();
+            Directory.CreateDirectory(dir);
+            OutputFiles.WriteAll([.. files.Select(f => (Path.Combine(dir, f.Name), f.Bytes))]);
+            stdout.WriteLine(string.Join(" ", files.Select(f => Path.Combine(dir, f.Name))));
+            stdout.WriteLine(string.Create(System.Globalization.CultureInfo.InvariantCulture,
+                $"{cases.Count(c => c.Verdict == "pass")} pass, {cases.Count(c => c.Verdict == "fail")} fail, {cases.Count(c => c.Verdict == "beyond")} beyond the model"));
             return 0;
         });
         var count = new Option<int>("--positions") { Description = "Snookered positions to play.", DefaultValueFactory = _ => 40 };
@@ -93,6 +108,6 @@ public static class ReportCommand
             stdout.Write(SnookerReport.Run(n, l, k, parse.GetValue(seed), stderr));
             return 0;
         });
-        return new Command("report", VerbHelp.Verb("Write a report about the physics or the computer player.", "report")) { accuracy, cushions, snookers };
+        return new Command("report", VerbHelp.Verb("Write a report about the physics or the computer player.", "report")) { accuracy, cushions, reality, snookers };
     }
 }

@@ -485,6 +485,13 @@ internal sealed class HudRenderer : IDisposable
         Disc(centre, r, new Vector4(0.93f, 0.93f, 0.88f, 1), 2);
         Rect(centre.X - r, centre.Y - (0.5f * u), 2 * r, u, new Vector4(0.6f, 0.6f, 0.6f, 0.8f));
         Rect(centre.X - (0.5f * u), centre.Y - r, u, 2 * r, new Vector4(0.6f, 0.6f, 0.6f, 0.8f));
+        // The miscue limit (the tip in the cue's frame, scene-format.md): past this ring the tip slides off.
+        float limit = (float)Core.Physics.PhysicsParams.Pool.MiscueLimit * r;
+        for (int k = 0; k < 36; k++)
+        {
+            float a0 = k * MathF.PI / 18, a1 = (k + 1) * MathF.PI / 18;
+            Line(centre + (limit * new Vector2(MathF.Cos(a0), MathF.Sin(a0))), centre + (limit * new Vector2(MathF.Cos(a1), MathF.Sin(a1))), u, new Vector4(0.75f, 0.35f, 0.3f, 0.8f));
+        }
         var spin = new Vector2(Math.Clamp(gauges.Spin.X, -1, 1), Math.Clamp(gauges.Spin.Y, -1, 1));
         var point = centre + new Vector2(spin.X * r, -spin.Y * r);
         Disc(point, 4 * u, new Vector4(0.85f, 0.1f, 0.1f, 1), 2);

@@ -218,7 +218,7 @@ public static class AccuracyReport
         var inv = CultureInfo.InvariantCulture;
         sb.Append(inv, $"# Accuracy report: error against run time\n\n");
         sb.Append(inv, $"{sceneCount} scenes of `assets/scenes/accuracy`, each run from the strike to rest. Error: the largest final-position distance of any ball from the event-based reference solver (m), per scene; the table gives the worst and the median scene, the plot the median (a typical shot: the worst is a near-chaotic combination). Time: the median wall time of one shot after warm-up (µs), averaged over the suite. Made by `billiards report accuracy`.\n\n");
-        sb.Append("The cushion models side by side (rebound angle and speed against the incoming angle): [cushions.md](cushions.md).\n\n");
+        sb.Append("The cushion models side by side (rebound angle and speed against the incoming angle): [cushions.md](cushions.md). The engine against measured data (physics-standard-model.md, \"Against the real table\"): [reality.md](reality.md).\n\n");
         sb.Append("| series | dt (s) | worst error (m) | median error (m) | mean time per shot (µs) |\n|---|---|---|---|---|\n");
         var reference = Pick(rows, r => r.Integrator.IsReference);
         foreach (var name in Ordered(rows))

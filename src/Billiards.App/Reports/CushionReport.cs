@@ -32,6 +32,7 @@ public static class CushionReport
     public static IReadOnlyList<CushionSpin> Spins { get; } =
     [
         new("no spin", 0, 0),
+        new("low slip", -0.28, 0),
         new("running english", 1, 1),
         new("reverse english", 1, -1),
     ];
@@ -82,6 +83,7 @@ public static class CushionReport
         {
             sb.Append(inv, $"![Rebound angle and speed at {speed:0} m/s]({PlotName(speed)})\n\n");
         }
+        sb.Append(StrongeAgainstHan(curves));
         sb.Append("| speed | spin | incoming (deg) |");
         foreach (var m in ModelRegistry.BallCushionNames)
         {
@@ -106,6 +108,36 @@ public static class CushionReport
                 }
             }
         }
+        return sb.ToString();
+    }
+
+    /// <summary>
+    /// Where stronge-compliant and han-2005 differ: the largest differences in rebound angle and
+    /// speed per speed and spin, with where along the incoming angles they lie.
+    /// </summary>
+    public static string StrongeAgainstHan(Dictionary<(string Model, double Speed, string Spin), Rebound[]> curves)
+    {
+        ArgumentNullException.ThrowIfNull(curves);
+        var inv = CultureInfo.InvariantCulture;
+        var sb = new StringBuilder("## Where stronge-compliant differs from han-2005\n\n");
+        sb.Append("Both take Coulomb friction at the cushion with the same e_c and f_c; a ball whose contact slips throughout (gross slip: a rolling ball, running or reverse english) takes the same branch in both, and they agree. They part where the contact's slip is small enough to stop during the impact: the stun ball (no spin: the contact above the centre slips only at v sin theta_a) and the low-slip ball (a draw of sin theta_a = 0.28 of natural roll, which leaves the contact's vertical slip at zero). Han's model then sticks rigidly; Stronge's compliant contact stores tangential energy and gives part of it back (omega_ratio), so the rebound angle and speed differ.\n\n");
+        sb.Append("| speed | spin | largest angle difference (deg, at incoming) | largest speed difference (m/s, at incoming) |\n|---|---|---|---|\n");
+        foreach (double speed in Speeds)
+        {
+            foreach (var spin in Spins)
+            {
+                var han = curves[("han-2005", speed, spin.Name)];
+                var stronge = curves[("stronge-compliant", speed, spin.Name)];
+                int ia = 0, iv = 0;
+                for (int i = 0; i < han.Length; i++)
+                {
+                    ia = Math.Abs(han[i].ReboundDeg - stronge[i].ReboundDeg) > Math.Abs(han[ia].ReboundDeg - stronge[ia].ReboundDeg) ? i : ia;
+                    iv = Math.Abs(han[i].Speed - stronge[i].Speed) > Math.Abs(han[iv].Speed - stronge[iv].Speed) ? i : iv;
+                }
+                sb.Append(inv, $"| {speed:0} m/s | {spin.Name} | {Math.Abs(han[ia].ReboundDeg - stronge[ia].ReboundDeg):0.00} (at {Angles[ia]:0}) | {Math.Abs(han[iv].Speed - stronge[iv].Speed):0.000} (at {Angles[iv]:0}) |\n");
+            }
+        }
+        sb.Append('\n');
         return sb.ToString();
     }
 

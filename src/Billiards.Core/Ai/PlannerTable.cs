@@ -58,6 +58,13 @@ public sealed class PlannerTable
     /// <summary>The model parameters the planner simulates with.</summary>
     public PhysicsParams Physics { get; }
 
+    /// <summary>
+    /// 2 / (1 + e_tip): the planner's cue speeds (its breaks, break-offs and speed ladder) are set
+    /// for an elastic tip and scaled by this, so that a leather tip's cue gives the ball the speeds
+    /// they were chosen for (1 with an elastic tip).
+    /// </summary>
+    public double TipScale => 2 / (1 + Physics.ETip);
+
     /// <summary>Ball radius (m).</summary>
     public double R { get; }
 

@@ -137,7 +137,7 @@ public sealed partial class ShotPlanner
                 foreach (double speed in speeds)
                 {
                     var d = aimPoint - root.Cue;
-                    var shot = new ShotSpec(speed, Math.Atan2(d.Y, d.X) * 180 / Math.PI, 0, -0.2, 0);
+                    var shot = new ShotSpec(speed * _table.TipScale, Math.Atan2(d.Y, d.X) * 180 / Math.PI, 0, -0.2, 0);
                     variations.Add(new Variation(rootIndex, c, shot, before));
                 }
             }
@@ -180,7 +180,7 @@ public sealed partial class ShotPlanner
                     {
                         foreach (double side in sides)
                         {
-                            variations.Add(new Variation(rootIndex, c, new ShotSpec(speed, aim, side, 0.1, 0), before));
+                            variations.Add(new Variation(rootIndex, c, new ShotSpec(speed * _table.TipScale, aim, side, 0.1, 0), before));
                         }
                     }
                 }
@@ -196,7 +196,7 @@ public sealed partial class ShotPlanner
                 double aim = planner.AimFor(c, cue, sideTip, height);
                 foreach (double f in factors)
                 {
-                    double speed = Math.Min(MaxNormalSpeed, c.BaseSpeed * f);
+                    double speed = Math.Min(MaxNormalSpeed, c.BaseSpeed * f) * _table.TipScale;
                     variations.Add(new Variation(rootIndex, c, new ShotSpec(speed, aim, sideTip, height, elevation), before));
                 }
             }

@@ -96,11 +96,7 @@ public sealed record SkillLevel(
     /// <summary>The largest tip offset from the centre (fraction of R) before a miscue.</summary>
     public const double MaxTip = 0.6;
 
-    /// <summary>
-    /// Cue elevation (deg) from which the miscue limit is taken about the cue's line through the
-    /// ball's centre (a jump stroke's aim) instead of about the centre of the ball's face; below it
-    /// the two are the same to within the limit's own precision and the shots stay as they were.
-    /// </summary>
+    /// <summary>Cue elevation (deg) from which a stroke counts as a jump stroke.</summary>
     public const double JumpTipElevationDeg = 30;
 
     private static readonly SkillLevel[] All =
@@ -133,16 +129,15 @@ public sealed record SkillLevel(
         double speed = planned.Speed * (1 + SpeedStdFraction * random.NextClampedGaussian());
         double side = planned.TipSide + TipStdFraction * random.NextClampedGaussian();
         double height = planned.TipHeight + TipStdFraction * random.NextClampedGaussian();
-        // The miscue limit is on the tip's offset from the cue's line through the ball's centre:
-        // for a level cue that is the centre of the ball's face, for a jump stroke the point at
-        // sin e up its face, where such a stroke is aimed.
-        double centre = planned.ElevationDeg >= JumpTipElevationDeg ? Math.Sin(planned.ElevationDeg * Math.PI / 180) : 0;
-        double up = height - centre;
-        double r = Math.Sqrt(side * side + up * up);
+        // The tip is in the cue's frame (scene-format.md), so the miscue limit is a circle about
+        // [0, 0] at any elevation: the player never strikes past it.
+        double r = Math.Sqrt(side * side + height * height);
         if (r > MaxTip)
         {
-            side *= MaxTip / r;
-            height = centre + (up * MaxTip / r);
+            // Just inside the limit, so that rounding never makes it a miscue.
+            double k = MaxTip / r * (1 - 1e-12);
+            side *= k;
+            height *= k;
         }
         return planned with { AimDeg = aim, Speed = Math.Max(0.05, speed), TipSide = side, TipHeight = height };
     }

@@ -26,14 +26,14 @@ public sealed partial class BallSet
     public static IReadOnlyList<BallSet> All => Sets.All;
 
     /// <summary>
-    /// The standard model's default parameters for this set's balls: its radius and mass, with the
-    /// spinning friction and the cue's end mass that follow them (physics-standard-model.md); the
-    /// defaults themselves for pool's set.
+    /// The standard model's parameters for this set's balls and their cloth (physics-standard-model.md,
+    /// "Against the real table"): pool's set on <see cref="Physics.PhysicsParams.Pool"/>, any other on
+    /// the snooker cloth as measured, <see cref="Physics.PhysicsParams.Snooker"/>, with its own radius and mass.
     /// </summary>
     public Physics.PhysicsParams DefaultParams =>
         Radius == Physics.PhysicsParams.DefaultRadius && Mass == Physics.PhysicsParams.DefaultMass
-            ? Physics.PhysicsParams.Default
-            : Physics.PhysicsParams.Default with { R = Radius, M = Mass, MuSp = 4.0 / 9.0 * Radius, CueEndMass = Mass / 30 };
+            ? Physics.PhysicsParams.Pool
+            : Physics.PhysicsParams.Snooker(Radius, Mass);
 
     /// <summary>The name of a ball of any set ("cue", "7", "red-3", "pink"), or its number when no set has it.</summary>
     public static string NameOfAny(BallId id)

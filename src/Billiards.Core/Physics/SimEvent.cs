@@ -23,6 +23,11 @@ public enum EventKind : byte
     BallTable,
     /// <summary>A ball leaves the table over a rail; <see cref="SimEvent.Speed"/> is its speed as it lands beyond (m/s).</summary>
     BallOffTable,
+    /// <summary>
+    /// The cue's tip slid off the cue ball (its offset was past the miscue limit): logged at the
+    /// strike, right after its <see cref="CueStrike"/>; <see cref="SimEvent.Speed"/> is the cue's speed.
+    /// </summary>
+    Miscue,
 }
 
 /// <summary>

@@ -83,6 +83,12 @@ public abstract partial class Simulation
     public int EventCapHits { get; protected set; }
 
     /// <summary>
+    /// How many impacts an impulse-integrated model (the Mathavan models) cut short at its step
+    /// limit; written to the result so that it is never silent (0 in every ordinary shot).
+    /// </summary>
+    public int TruncatedImpacts { get; protected set; }
+
+    /// <summary>
     /// When true, ball orientations are integrated (for drawing). Off by default: a headless run
     /// computes nothing for rendering.
     /// </summary>
@@ -163,6 +169,52 @@ public abstract partial class Simulation
         ApplyStrike(cue, shot);
     }
 
+    private SimulationSnapshot? _probe;
+
+    /// <summary>
+    /// Every ball's position at <paramref name="time"/> (s), from <see cref="Time"/> up to one step
+    /// beyond it, into <paramref name="into"/> (index-aligned with <see cref="Ids"/>); the
+    /// simulation is left as it was. A model that can split a step (<see cref="StepBy"/>) advances a
+    /// copy of its state exactly there; one that cannot interpolates between its own steps.
+    /// </summary>
+    public void PositionsAt(double time, Mathematics.Vec3[] into)
+    {
+        ArgumentNullException.ThrowIfNull(into);
+        var balls = Balls;
+        for (int i = 0; i < balls.Length; i++)
+        {
+            into[i] = balls[i].Position;
+        }
+        if (time <= Time + 1e-12 || IsAtRest || !KeepsSnapshots)
+        {
+            return;
+        }
+        _probe ??= CreateSnapshot();
+        Capture(_probe);
+        double start = Time;
+        if (!StepBy(time - Time))
+        {
+            Step();
+            double f = Time > start ? Math.Clamp((time - start) / (Time - start), 0, 1) : 1;
+            var after = Balls;
+            for (int i = 0; i < after.Length; i++)
+            {
+                into[i] += (after[i].Position - into[i]) * f;
+            }
+            Restore(_probe);
+            return;
+        }
+        var moved = Balls;
+        for (int i = 0; i < moved.Length; i++)
+        {
+            into[i] = moved[i].Position;
+        }
+        Restore(_probe);
+    }
+
+    /// <summary>Advances by <paramref name="dt"/> exactly (a split step); false when the model cannot.</summary>
+    protected virtual bool StepBy(double dt) => false;
+
     /// <summary>The model's cue strike on the ball at index <paramref name="cue"/>, which is in play.</summary>
     protected abstract void ApplyStrike(int cue, ShotSpec shot);
 
@@ -195,6 +247,7 @@ public abstract partial class Simulation
         snapshot.Time = Time;
         snapshot.StepCount = StepCount;
         snapshot.EventCapHits = EventCapHits;
+        snapshot.TruncatedImpacts = TruncatedImpacts;
         snapshot.Events.CopyFrom(Events);
         CaptureState(snapshot);
     }
@@ -211,6 +264,7 @@ public abstract partial class Simulation
         Time = snapshot.Time;
         StepCount = snapshot.StepCount;
         EventCapHits = snapshot.EventCapHits;
+        TruncatedImpacts = snapshot.TruncatedImpacts;
         Events.CopyFrom(snapshot.Events);
         RestoreState(snapshot);
     }

@@ -37,6 +37,8 @@ public abstract class SimulationSnapshot
 
     internal int EventCapHits { get; set; }
 
+    internal int TruncatedImpacts { get; set; }
+
     internal EventLog Events { get; } = new();
 
     /// <summary>True when this snapshot can be captured from or restored into <paramref name="simulation"/>.</summary>

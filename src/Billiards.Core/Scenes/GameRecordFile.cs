@@ -241,22 +241,39 @@ public static class GameRecordFile
         w.WriteNumber("mu_s", p.MuS);
         w.WriteNumber("mu_r", p.MuR);
         w.WriteNumber("mu_sp", p.MuSp);
-        if (p.MuBModel == BallBallFriction.Alciatore)
+        switch (p.MuBModel)
         {
-            w.WriteString("mu_b", "alciatore");
+            case BallBallFriction.Alciatore:
+                w.WriteString("mu_b", "alciatore");
+                break;
+            case BallBallFriction.Measured:
+                w.WriteString("mu_b", "alciatore-2014");
+                break;
+            default:
+                w.WriteNumber("mu_b", p.MuB);
+                break;
+        }
+        w.WriteNumber("e_b", p.EB);
+        if (p.ECModel == CushionRestitution.Measured)
+        {
+            w.WriteString("e_c", "mathavan-2009");
         }
         else
         {
-            w.WriteNumber("mu_b", p.MuB);
+            w.WriteNumber("e_c", p.EC);
         }
-        w.WriteNumber("e_b", p.EB);
-        w.WriteNumber("e_c", p.EC);
         w.WriteNumber("f_c", p.FC);
         w.WriteNumber("g", p.G);
         w.WriteNumber("M", p.CueMass);
         w.WriteNumber("m_e", p.CueEndMass);
         w.WriteNumber("omega_ratio", p.OmegaRatio);
         w.WriteNumber("e_t", p.ET);
+        w.WriteNumber("e_tip", p.ETip);
+        w.WriteNumber("miscue_limit", p.MiscueLimit);
+        if (p.Tip == TipFrame.Face)
+        {
+            w.WriteString("tip_frame", "face");
+        }
         w.WriteEndObject();
         if (physics.Model.TakesInteractionModels)
         {
@@ -326,7 +343,14 @@ public static class GameRecordFile
         {
             throw Error("$.rack.game", $"the rack \"{rackGame}\" does not match the game's rules \"{start.Rules.ToName()}\"");
         }
-        var setup = new GameSetup(scene.Table, scene.Physics, seed, start);
+        // A record written before the cue's frame (its params have no "e_tip") struck with the tip
+        // on the ball's face, an elastic tip and no miscues: it replays that way.
+        var physicsConfig = scene.Physics;
+        if (physics.TryGetProperty("params", out var written) && written.ValueKind == JsonValueKind.Object && !written.TryGetProperty("e_tip", out _))
+        {
+            physicsConfig = physicsConfig with { Params = physicsConfig.Params with { ETip = 1, MiscueLimit = 1, Tip = TipFrame.Face } };
+        }
+        var setup = new GameSetup(scene.Table, physicsConfig, seed, start);
         if (root.TryGetProperty("balls", out var startBalls))
         {
             setup = setup with { Position = ReadBalls(startBalls, setup, file, "$.balls") };

@@ -79,8 +79,8 @@ public static class ResultWriter
             w.WriteNumber("t", e.Time);
             switch (e.Kind)
             {
-                case EventKind.CueStrike:
-                    w.WriteString("type", "cue-strike");
+                case EventKind.CueStrike or EventKind.Miscue:
+                    w.WriteString("type", e.Kind == EventKind.CueStrike ? "cue-strike" : "miscue");
                     WriteIds(w, sim.BallSet, e.A);
                     w.WriteNumber("speed", e.Speed);
                     break;
@@ -145,6 +145,7 @@ public static class ResultWriter
         w.WriteBoolean("at_rest", outcome.AtRest);
         w.WriteString("stop", SimulationRunner.Name(outcome.Stop));
         w.WriteNumber("event_cap_hits", sim.EventCapHits);
+        w.WriteNumber("truncated_impacts", sim.TruncatedImpacts);
         w.WriteEndObject();
         if (outcome.Ruling is { } ruling)
         {

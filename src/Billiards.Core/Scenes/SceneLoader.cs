@@ -325,6 +325,7 @@ public static class SceneLoader
         {
             var f = Object(e, "$.physics.params", [.. PhysicsParams.Symbols]);
             var p = set.DefaultParams;
+            var preset = p;
             double Get(string key, double min, double max, double fallback) =>
                 f.TryGetValue(key, out var v) ? Number(v, $"$.physics.params.{key}", min, max) : fallback;
 
@@ -335,18 +336,36 @@ public static class SceneLoader
                 MuS = Get("mu_s", 0, 2, p.MuS),
                 MuR = Get("mu_r", 0, 1, p.MuR),
                 EB = Get("e_b", 0, 1, p.EB),
-                EC = Get("e_c", 0, 1, p.EC),
                 FC = Get("f_c", 0, 2, p.FC),
                 ET = Get("e_t", 0, 1, p.ET),
                 G = Get("g", 0.1, 100, p.G),
                 CueMass = Get("M", 0.01, 10, p.CueMass),
+                ETip = Get("e_tip", 0, 1, p.ETip),
+                MiscueLimit = Get("miscue_limit", 0, 1, p.MiscueLimit),
             };
-            // mu_sp and m_e default relative to R and m, so they follow an overridden R or m.
+            // mu_sp and m_e default relative to R and m, so they follow an overridden R or m (the
+            // preset's spin-down rate and its ratio m / m_e stay).
             p = p with
             {
-                MuSp = Get("mu_sp", 0, 1, 4.0 / 9.0 * p.R),
-                CueEndMass = Get("m_e", 1e-4, 10, p.M / 30),
+                MuSp = Get("mu_sp", 0, 1, preset.MuSp * p.R / preset.R),
+                CueEndMass = Get("m_e", 1e-4, 10, preset.CueEndMass * p.M / preset.M),
             };
+            if (f.TryGetValue("tip_frame", out var frame))
+            {
+                p = p with { Tip = OneOf(frame, "$.physics.params.tip_frame", "cue", "face") == "face" ? TipFrame.Face : TipFrame.Cue };
+            }
+            if (f.TryGetValue("e_c", out var ec))
+            {
+                if (ec.ValueKind == JsonValueKind.String)
+                {
+                    OneOf(ec, "$.physics.params.e_c", "mathavan-2009");
+                    p = p with { ECModel = CushionRestitution.Measured };
+                }
+                else
+                {
+                    p = p with { EC = Number(ec, "$.physics.params.e_c", 0, 1), ECModel = CushionRestitution.Constant };
+                }
+            }
             if (f.TryGetValue("omega_ratio", out var omega))
             {
                 // Stronge's tangential and normal frequencies: the open interval (1, 2), where the
@@ -362,8 +381,12 @@ public static class SceneLoader
             {
                 if (mb.ValueKind == JsonValueKind.String)
                 {
-                    OneOf(mb, "$.physics.params.mu_b", "alciatore");
-                    p = p with { MuBModel = BallBallFriction.Alciatore };
+                    p = p with
+                    {
+                        MuBModel = OneOf(mb, "$.physics.params.mu_b", "alciatore", "alciatore-2014") == "alciatore"
+                            ? BallBallFriction.Alciatore
+                            : BallBallFriction.Measured,
+                    };
                 }
                 else
                 {

@@ -94,10 +94,25 @@ public static class SimulationRunner
         StopReason? stop = null;
         if (options.SampleDt is { } sampleDt)
         {
+            // Samples at t = k DT exactly: the simulation goes to its last step at or before it
+            // (a stepping integrator stops at a step boundary at or after the time it is sent to),
+            // and the positions come from a split step there (Simulation.PositionsAt).
+            double step = sim.Integrator.IsReference ? 0 : sim.Dt;
             for (long k = 0; k * sampleDt <= limit + 1e-12; k++)
             {
-                stop = Advance(sim, k * sampleDt, options, clock);
-                samples.Add(new Sample(sim.Time, Positions(sim)));
+                double t = k * sampleDt;
+                stop = Advance(sim, step > 0 ? t - step + 1e-9 : t, options, clock);
+                var positions = new Vec3[sim.Balls.Length];
+                if (sim.Time > t + 1e-12)
+                {
+                    // Only a step past the time (a coarse step, or one started just before it) is left: the grid passed it.
+                    positions = Positions(sim);
+                }
+                else
+                {
+                    sim.PositionsAt(t, positions);
+                }
+                samples.Add(new Sample(t, positions));
                 if (stop is StopReason.Rest or StopReason.MaxEvents or StopReason.WallClock)
                 {
                     break;

@@ -251,7 +251,15 @@ public sealed class PracticeTests : IDisposable
         frame = game.Frame();
         Assert.Contains(frame.Hud!.Lines, l => l.Contains($"pots {s.Pots} of {s.Endings.Count}", StringComparison.Ordinal));
         int rings = frame.Hud.Aids!.Count(a => a.Radius == 0 && (a.Color.X < 0.5f || a.Color.Y < 0.5f));
-        Assert.True(rings >= 12 * s.Endings.Count(e => e.Cue is not null), $"{rings} segments of ghost endings");
+        // Every ending of the cue ball in view gets its ring of 12 segments (one that rolled out of
+        // the aiming view behind the camera is not drawn).
+        var vp = Billiards.App.Rendering.RenderMath.ViewProjection(frame);
+        double r = game.World.Physics.BallRadius * 0.5;
+        bool InView(Billiards.Core.Mathematics.Vec3 c) => Enumerable.Range(0, 13).All(k => Billiards.App.Rendering.RenderMath.ToPixel(vp,
+            new System.Numerics.Vector3((float)(c.X + (r * Math.Cos(2 * Math.PI * k / 12))), (float)(c.Y + (r * Math.Sin(2 * Math.PI * k / 12))), 0.001f), frame.Width, frame.Height) is not null);
+        int inView = s.Endings.Count(e => e.Cue is { } c && InView(c));
+        Assert.True(inView >= s.Endings.Count / 2, $"{inView} of {s.Endings.Count} endings in view");
+        Assert.True(rings >= 12 * inView, $"{rings} segments of ghost endings, {inView} in view");
 
         // Another level samples again; a changed shot too.
         game.Window.Press(PracticeNode.LevelKey);

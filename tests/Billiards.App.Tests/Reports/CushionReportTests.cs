@@ -31,6 +31,26 @@ public class CushionReportTests
     }
 
     [Fact]
+    public void StrongeCompliantPartsFromHanWhereTheContactsSlipIsSmallAndAgreesUnderGrossSlip()
+    {
+        var curves = CushionReport.Curves(PhysicsParams.Default, Height);
+        foreach (double speed in CushionReport.Speeds)
+        {
+            double Largest(string spin, Func<Rebound, double> of) =>
+                curves[("han-2005", speed, spin)].Zip(curves[("stronge-compliant", speed, spin)], (h, s) => Math.Abs(of(h) - of(s))).Max();
+            foreach (string spin in (string[])["no spin", "low slip"])
+            {
+                Assert.True(Largest(spin, r => r.ReboundDeg) > 2, $"{spin} at {speed} m/s: the models agree");
+            }
+            foreach (string spin in (string[])["running english", "reverse english"])
+            {
+                Assert.True(Largest(spin, r => r.ReboundDeg) < 1e-6 && Largest(spin, r => r.Speed) < 1e-9, $"{spin} at {speed} m/s: gross slip, yet the models differ");
+            }
+        }
+        Assert.Contains("Where stronge-compliant differs from han-2005", CushionReport.ToMarkdown(curves, PhysicsParams.Default, Height), StringComparison.Ordinal);
+    }
+
+    [Fact]
     public void RunningEnglishWidensTheReboundAndReverseNarrowsIt()
     {
         // Up to 50 deg off the normal: nearer the rail a rolling ball sticks to the cushion with

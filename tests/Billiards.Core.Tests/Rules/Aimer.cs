@@ -15,6 +15,10 @@ internal static class Aimer
 {
     private const double R = ShotBuilder.R;
 
+    // Cue speeds that send the ball off as fast as an elastic tip did at the speeds below
+    // (pool's leather tip returns (1 + 0.73) / 2 of it).
+    private const double Tip = 2 / 1.73;
+
     public static GameShot Next(Match game, Func<BallId, bool> isTarget, bool callShots)
     {
         var balls = game.Balls;
@@ -77,7 +81,7 @@ internal static class Aimer
             var ghost = t - (pocketCentre - t).Normalized() * (2 * R);
             var v = ghost - b.Cue;
             double distance = v.Length + (pocketCentre - t).Length;
-            double speed = Math.Min(4.5, 1.4 + 1.3 * distance);
+            double speed = Tip * Math.Min(4.5, 1.4 + 1.3 * distance);
             var shot = new ShotSpec(speed, Math.Atan2(v.Y, v.X) * 180 / Math.PI, 0, -0.3);
             return new GameShot(shot, callShots ? new Call(b.Target, PoolPockets.Set.Id(b.Pocket)) : null, b.Place);
         }
@@ -100,7 +104,7 @@ internal static class Aimer
         }
         var dir = target0.Value - from;
         var nearest = pockets.OrderBy(p => (p.Centre - target0.Value).LengthXY).First();
-        return new GameShot(new ShotSpec(3.0, Math.Atan2(dir.Y, dir.X) * 180 / Math.PI), callShots ? new Call(target0.Key, PoolPockets.Set.Id(nearest.Pocket)) : null, placed);
+        return new GameShot(new ShotSpec(Tip * 3.0, Math.Atan2(dir.Y, dir.X) * 180 / Math.PI), callShots ? new Call(target0.Key, PoolPockets.Set.Id(nearest.Pocket)) : null, placed);
     }
 
     /// <summary>A hard break at the apex ball from the head spot.</summary>
@@ -109,7 +113,7 @@ internal static class Aimer
         var head = Initializer(game.Setup.Table);
         var apex = Billiards.Core.Setup.Initializer.FootSpot(game.Setup.Table, R);
         var d = apex - head;
-        return new GameShot(new ShotSpec(9.0, Math.Atan2(d.Y, d.X) * 180 / Math.PI), call, head);
+        return new GameShot(new ShotSpec(Tip * 9.0, Math.Atan2(d.Y, d.X) * 180 / Math.PI), call, head);
     }
 
     /// <summary>A soft roll into the clearest direction: touches no ball (a no-contact foul, or a push-out).</summary>
@@ -136,7 +140,7 @@ internal static class Aimer
                 bestAngle = k * 5;
             }
         }
-        return new GameShot(new ShotSpec(0.15, bestAngle), null, null, pushOut, choice);
+        return new GameShot(new ShotSpec(Tip * 0.15, bestAngle), null, null, pushOut, choice);
     }
 
     private static Vec3 Initializer(TableSpec table) => Billiards.Core.Setup.Initializer.HeadSpot(table, R);

@@ -56,7 +56,7 @@ public class MatchTests
 
     [Theory]
     [InlineData("eight-ball", 3)]
-    [InlineData("nine-ball", 1)]
+    [InlineData("nine-ball", 4)]
     [InlineData("ten-ball", 3)]
     public void AGamePlayedFromItsShotsEndsInAWinAndReplaysBitForBit(GameRules rules, int seed)
     {
@@ -203,7 +203,7 @@ public class MatchTests
     [Fact]
     public void AReplayNamesTheFirstShotWhoseAimWasChangedByTwoDegrees()
     {
-        var game = PlayOut(GameSetup.Of(GameRules.NineBall, 1, Players));
+        var game = PlayOut(GameSetup.Of(GameRules.NineBall, 4, Players));
         var record = GameRecordFile.Parse(Encoding.UTF8.GetString(GameRecordFile.ToUtf8(game)), "game.json");
         Assert.True(record.Shots.Count > 4);
         const int changed = 3;
@@ -220,7 +220,7 @@ public class MatchTests
     [Fact]
     public void AShotTheReplayCannotPlayIsTheFirstDifference()
     {
-        var game = PlayOut(GameSetup.Of(GameRules.NineBall, 1, Players));
+        var game = PlayOut(GameSetup.Of(GameRules.NineBall, 4, Players));
         Assert.True(game.IsOver);
         var record = GameRecordFile.Parse(Encoding.UTF8.GetString(GameRecordFile.ToUtf8(game)), "game.json");
         // One shot more than the game had: the replayed game is over by then.

@@ -18,11 +18,12 @@ public class SnookerMatchTests
     private static Match Opening(RefereeOption choice)
     {
         var match = new Match(GameSetup.Of(GameRules.Snooker, 1, new("Anna", "Ben")));
-        var breakOff = match.Play(new GameShot(new ShotSpec(7.0, 2.6), Place: BreakPlace));
+        // Cue speeds of an elastic tip's 7.0 and 0.6 m/s with the leather tip's (1 + 0.73) / 2.
+        var breakOff = match.Play(new GameShot(new ShotSpec(7.0 * 2 / 1.73, 2.6), Place: BreakPlace));
         Assert.True(breakOff.Ruling.Legal, breakOff.Ruling.Message);
         Assert.Equal(1, match.State.Shooter);
         // Straight at the baulk cushion and back, short of every ball.
-        match.Play(new GameShot(new ShotSpec(0.8, 180), Choice: choice));
+        match.Play(new GameShot(new ShotSpec(0.6 * 2 / 1.73, 180), Choice: choice));
         return match;
     }
 

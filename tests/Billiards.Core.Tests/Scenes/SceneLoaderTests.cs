@@ -21,9 +21,24 @@ public class SceneLoaderTests
         Assert.Equal("standard", scene.Physics.Model.Name);
         Assert.Equal("exact", scene.Physics.Integrator.Name);
         Assert.Equal(1.0 / 250, scene.Physics.Dt);
-        Assert.Equal(PhysicsParams.Default, scene.Physics.Params);
+        // The pool table's own cloth and balls (physics-standard-model.md, "Against the real table").
+        Assert.Equal(PhysicsParams.Pool, scene.Physics.Params);
         Assert.Equal("pool-9ft", scene.Table.Preset);
         Assert.Equal(PhysicsParams.DefaultRadius, scene.Balls[0].Position.Z);
+    }
+
+    [Fact]
+    public void TheSnookerTableHasItsMeasuredClothAndACushionRestitutionThatFallsWithSpeed()
+    {
+        var scene = Parse($$"""{ "format": "billiards-scene/1", "table": { "preset": "snooker-12ft" }, "balls": [ { "id": "cue", "position": [0, 0] } ] }""");
+        var p = scene.Physics.Params;
+        Assert.Equal(0.0127 * 9.81, p.MuR * p.G, 12); // 0.124-0.126 m/s^2 measured
+        Assert.Equal(22, p.SpinDeceleration, 12);
+        Assert.Equal(CushionRestitution.Measured, p.ECModel);
+        Assert.True(p.CushionE(1) > p.CushionE(3));
+        var constant = Parse($$"""{ "format": "billiards-scene/1", "table": { "preset": "snooker-12ft" }, "physics": { "params": { "e_c": 0.85, "mu_b": "alciatore-2014" } }, "balls": [ { "id": "cue", "position": [0, 0] } ] }""").Physics.Params;
+        Assert.Equal((CushionRestitution.Constant, 0.85, 0.85), (constant.ECModel, constant.CushionE(1), constant.CushionE(3)));
+        Assert.Equal(BallBallFriction.Measured, constant.MuBModel);
     }
 
     [Fact]
@@ -59,8 +74,9 @@ public class SceneLoaderTests
             """);
         var p = scene.Physics.Params;
         Assert.Equal((0.3, 0.03, 0.3), (p.MuS, p.R, p.M));
-        Assert.Equal(4.0 / 9.0 * 0.03, p.MuSp, 15);
-        Assert.Equal(0.3 / 30, p.CueEndMass, 15);
+        // They keep the preset's spin-down rate and its m / m_e.
+        Assert.Equal(PhysicsParams.Pool.SpinDeceleration, p.SpinDeceleration, 12);
+        Assert.Equal(PhysicsParams.Pool.M / PhysicsParams.Pool.CueEndMass, p.M / p.CueEndMass, 12);
         Assert.Equal(BallBallFriction.Alciatore, p.MuBModel);
         // Alciatore's fit at zero slip: 0.009951 + 0.108.
         Assert.Equal(0.117951, p.BallBallMu(0), 12);

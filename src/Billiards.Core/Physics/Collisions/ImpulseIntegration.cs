@@ -20,13 +20,22 @@ internal interface IImpact<TState>
 /// vanishes) and restitution (until the normal force has given back e^2 of the compression work:
 /// Stronge's energetic restitution), the integration the Mathavan models share. Each step takes
 /// the slopes of its start; the last step of each phase is cut to end it exactly, since within a
-/// step the normal speed is linear in the impulse and its work quadratic. Generic over value
-/// types, so nothing is allocated.
+/// step the normal speed is linear in the impulse and its work quadratic. A phase that reaches
+/// <see cref="MaxStepsPerPhase"/> is cut short: the impact is returned as it stands and counted in
+/// <see cref="Truncated"/> (per thread; the standard simulation reports it as
+/// <see cref="Simulation.TruncatedImpacts"/>), never silently. Generic over value types, so nothing
+/// is allocated.
 /// </summary>
 internal static class ImpulseIntegration
 {
     /// <summary>A ceiling on the steps of one phase, so that a degenerate impact cannot loop forever.</summary>
     public const int MaxStepsPerPhase = 100_000;
+
+    [ThreadStatic]
+    private static long t_truncated;
+
+    /// <summary>How many impacts this thread has cut short at <see cref="MaxStepsPerPhase"/> (ever; callers take differences).</summary>
+    public static long Truncated => t_truncated;
 
     /// <summary>Integrates an approaching impact with impulse steps of <paramref name="step"/> (N s) and restitution <paramref name="e"/>.</summary>
     public static TState Run<TState, TImpact>(TState state, in TImpact impact, double step, double e)
@@ -34,6 +43,7 @@ internal static class ImpulseIntegration
         where TImpact : struct, IImpact<TState>
     {
         double work = 0;
+        bool compressed = false;
         for (int i = 0; i < MaxStepsPerPhase; i++)
         {
             var rates = impact.Slopes(state);
@@ -49,6 +59,7 @@ internal static class ImpulseIntegration
             state = impact.Add(state, rates, h);
             if (last)
             {
+                compressed = true;
                 break;
             }
         }
@@ -70,6 +81,10 @@ internal static class ImpulseIntegration
             }
             remaining -= stepWork;
             state = impact.Add(state, rates, h);
+        }
+        if (!compressed || remaining > 0)
+        {
+            t_truncated++;
         }
         return state;
     }

@@ -79,13 +79,32 @@ public sealed partial class StandardSimulation : Simulation
     public override void Step()
     {
         bool resting = _stepper.IsAtRest;
+        long truncated = Collisions.ImpulseIntegration.Truncated;
         Time = _stepper.Step(Time, Dt, TrackOrientation);
+        TruncatedImpacts += (int)(Collisions.ImpulseIntegration.Truncated - truncated);
         EventCapHits = _stepper.EventCapHits;
         StepCount++;
         if (!resting)
         {
             StateChecker.Check(this, Parameters.R, checkOverlap: _stepper.KeepsBallsApart);
         }
+    }
+
+    /// <inheritdoc />
+    protected override bool StepBy(double dt)
+    {
+        // A probe (Simulation.PositionsAt) whose state is restored after it: nothing to count.
+        double now = Time;
+        long steps = StepCount;
+        if (_stepper.TryAdvanceTo(Time + dt, TrackOrientation, ref now, ref steps))
+        {
+            Time = now;
+        }
+        else
+        {
+            Time = _stepper.Step(Time, dt, TrackOrientation);
+        }
+        return true;
     }
 
     /// <summary>
@@ -97,7 +116,10 @@ public sealed partial class StandardSimulation : Simulation
     {
         double now = Time;
         long steps = StepCount;
-        if (_stepper.TryAdvanceTo(time, TrackOrientation, ref now, ref steps))
+        long truncated = Collisions.ImpulseIntegration.Truncated;
+        bool reached = _stepper.TryAdvanceTo(time, TrackOrientation, ref now, ref steps);
+        TruncatedImpacts += (int)(Collisions.ImpulseIntegration.Truncated - truncated);
+        if (reached)
         {
             Time = now;
             StepCount = steps;
@@ -113,7 +135,9 @@ public sealed partial class StandardSimulation : Simulation
     {
         double now = Time;
         long steps = StepCount;
+        long truncated = Collisions.ImpulseIntegration.Truncated;
         bool? resolved = _stepper.AdvanceOneEvent(time, TrackOrientation, ref now, ref steps);
+        TruncatedImpacts += (int)(Collisions.ImpulseIntegration.Truncated - truncated);
         if (resolved is not null)
         {
             Time = now;
@@ -132,12 +156,17 @@ public sealed partial class StandardSimulation : Simulation
         Time = 0;
         StepCount = 0;
         EventCapHits = 0;
+        TruncatedImpacts = 0;
     }
 
     /// <summary>Strikes the cue ball (TP, <see cref="CueStrike"/>).</summary>
     protected override void ApplyStrike(int cue, ShotSpec shot)
     {
         var outcome = CueStrike.Strike(shot, Parameters);
+        if (outcome.Miscue)
+        {
+            Events.Add(new SimEvent(Time, EventKind.Miscue, Ids[cue], Ids[cue], -1, shot.Speed));
+        }
         _balls[cue].Velocity = outcome.Velocity;
         _balls[cue].Spin = outcome.Spin;
         // An elevated cue drives the ball into the slate. When the slate's return (e_t v sin theta)

@@ -20,7 +20,7 @@ public class MasseTests
         foreach (var (integrator, dt) in new[] { ("exact", Dt30), ("exact", Dt250), ("exact", Dt8000), ("event", Dt250) })
         {
             data.Add(integrator, dt, 85, 0.5, 0);
-            data.Add(integrator, dt, 80, -0.6, 0.2);
+            data.Add(integrator, dt, 80, -0.55, 0.2);
         }
         return data;
     }

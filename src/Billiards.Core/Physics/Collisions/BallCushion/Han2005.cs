@@ -13,7 +13,9 @@ namespace Billiards.Core.Physics.Collisions.BallCushion;
 /// Science and Technology 19(4), 976-984, eqs. 14-20, in the form of physics-standard-model.md and
 /// pooltool's <c>han_2005</c> (which the spec follows except that the sliding impulse is along the
 /// slip s/|s|, as in Han's paper). Cushion frame: x along the normal into the cushion, z up,
-/// y = z x x. The impulse only changes v_x, v_y (the ball stays on the bed) and w.
+/// y = z x x. The impulse only changes v_x, v_y (the ball stays on the bed) and w. The restitution
+/// is the parameters' <see cref="PhysicsParams.CushionE"/>: Han's constant e_c, or the presets'
+/// restitution falling with the normal speed as measured (Mathavan, Jackson and Parkin 2009).
 /// </remarks>
 public sealed class Han2005 : IBallCushionModel
 {
@@ -50,7 +52,8 @@ public sealed class Han2005 : IBallCushionModel
         // Effective inverse masses for the tangential (A) and normal (B) directions (eq. 16).
         double invA = 2 * m / 7;
         double invB = m;
-        double pzE = (1 + p.EC) * c * invB;
+        // e_c is constant, or falls with the normal approach speed as measured (PhysicsParams.CushionE).
+        double pzE = (1 + p.CushionE(v.X)) * c * invB;
         double s = Math.Sqrt(sx * sx + sy * sy);
         double pzS = s * invA;
         double pxE, pyE;

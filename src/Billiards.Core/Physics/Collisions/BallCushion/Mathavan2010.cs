@@ -31,34 +31,48 @@ namespace Billiards.Core.Physics.Collisions.BallCushion;
 /// restitution. A contact whose slip is below what one step of full friction removes (3.5 f_c dP / m
 /// at I, 3.5 mu_s N_C / m at C) gets friction in proportion to its slip: a sticking contact then
 /// settles instead of chattering from side to side, and the result depends smoothly on the ball's
-/// state (1e-14 in, 1e-14 out), so the exact and event integrators agree. Error left by the step,
-/// measured against 64 times finer steps over speeds 0.5-4 m/s, incoming angles 0-85 deg, draw to
-/// twice natural follow and side of -1..1 speed / R (<c>Mathavan2010Tests.TheStepLeavesTheStatedError</c>):
-/// 5.1e-4 of the speed in velocity and 3.0e-3 of speed / R in spin (bounds
-/// <see cref="StepErrorBound"/>, <see cref="SpinErrorBound"/>); the error falls as 1/N (1.0e-3
-/// at N = 100, 2.6e-4 at 400). About 20-30 µs a collision on the reference machine. No state is kept
-/// and nothing is allocated.</para>
+/// state (1e-14 in, 1e-14 out), so the exact and event integrators agree. One run's error falls as
+/// 1/N (5.2e-4 of the speed at N = 200, 5.1e-5 at 2000), smoothly, and that same smoothing
+/// (proportional to the step) keeps a second-order step from doing better; so the model runs N and
+/// 2N steps and takes Richardson's extrapolation 2 X(2N) - X(N), which cancels the 1/N term.
+/// Error left, measured against the extrapolation at 16 times finer steps over speeds 0.5-4 m/s,
+/// incoming angles 0-85 deg, draw to twice natural follow and side of -1..1 speed / R
+/// (<c>Mathavan2010Tests.TheStepLeavesTheStatedError</c>): 2.3e-6 of the speed in velocity and
+/// 1.2e-5 of speed / R in spin (bounds <see cref="StepErrorBound"/>, <see cref="SpinErrorBound"/>;
+/// a single run at the former 200 steps left 5.2e-4 and 3.1e-3, millimetres over a shot). About 6
+/// times the former 20-30 µs a collision (3N steps of 400). No state is kept and nothing is allocated.</para>
 /// </remarks>
 public sealed class Mathavan2010 : IBallCushionModel
 {
     /// <summary>The shared instance (the model has no state).</summary>
     public static Mathavan2010 Instance { get; } = new();
 
-    /// <summary>Steps of the normal impulse through compression (restitution takes about e times as many).</summary>
-    public const int CompressionSteps = 200;
+    /// <summary>Steps of the normal impulse through compression of the coarser of the two runs (restitution takes about e times as many).</summary>
+    public const int CompressionSteps = 400;
 
-    /// <summary>The velocity error the step leaves, as a fraction of the incoming speed (measured 5.1e-4; see the remarks).</summary>
-    public const double StepErrorBound = 7e-4;
+    /// <summary>The velocity error the extrapolated steps leave, as a fraction of the incoming speed (measured 2.3e-6; see the remarks).</summary>
+    public const double StepErrorBound = 3e-6;
 
-    /// <summary>The spin error the step leaves, as a fraction of the incoming speed over R (measured 3.0e-3; see the remarks).</summary>
-    public const double SpinErrorBound = 4e-3;
+    /// <summary>The spin error the extrapolated steps leave, as a fraction of the incoming speed over R (measured 1.2e-5; see the remarks).</summary>
+    public const double SpinErrorBound = 1.5e-5;
 
     /// <inheritdoc />
     public string Name => "mathavan-2010";
 
     /// <inheritdoc />
     public void Resolve(ref BallState ball, Vec3 normal, double height, PhysicsParams p) =>
-        Resolve(ref ball, normal, height, p, CompressionSteps);
+        ResolveExtrapolated(ref ball, normal, height, p, CompressionSteps);
+
+    /// <summary>The impact by Richardson's extrapolation of runs of <paramref name="steps"/> and twice as many steps: 2 X(2N) - X(N).</summary>
+    public static void ResolveExtrapolated(ref BallState ball, Vec3 normal, double height, PhysicsParams p, int steps)
+    {
+        var coarse = ball;
+        var fine = ball;
+        Resolve(ref coarse, normal, height, p, steps);
+        Resolve(ref fine, normal, height, p, 2 * steps);
+        ball.Velocity = (fine.Velocity * 2) - coarse.Velocity;
+        ball.Spin = (fine.Spin * 2) - coarse.Spin;
+    }
 
     /// <summary>The impact integrated with <paramref name="steps"/> steps through compression (for measuring the step's error).</summary>
     public static void Resolve(ref BallState ball, Vec3 normal, double height, PhysicsParams p, int steps)

@@ -33,7 +33,7 @@ internal sealed class Resolver
         _n = balls.Length;
         _params = model.Parameters;
         // Repeat contacts of the TC model are elastic in the normal direction.
-        _elastic = _params with { EB = 1, EC = 1 };
+        _elastic = _params with { EB = 1, EC = 1, ECModel = CushionRestitution.Constant };
         _k = model.Constants;
         _geometry = model.Geometry;
         _ballBall = model.BallBall;
