@@ -27,10 +27,15 @@ public sealed partial class BallSet
 
     /// <summary>
     /// The standard model's default parameters for this set's balls: its radius and mass, with the
-    /// spinning friction and the cue's end mass that follow them (physics-standard-model.md); the
+    /// spinning friction and the cue's end mass that follow them (physics-standard-model.md) on the set's cloth; the
     /// defaults themselves for pool's set.
     /// </summary>
-    public Physics.PhysicsParams DefaultParams =>
+    public Physics.PhysicsParams DefaultParams => Cloth is { } cloth ? cloth.On(BallParams) : BallParams;
+
+    /// <summary>The cloth the set is played on by default, or null for the model's defaults (carom's heated cloth).</summary>
+    public Physics.Cloth? Cloth { get; init; }
+
+    private Physics.PhysicsParams BallParams =>
         Radius == Physics.PhysicsParams.DefaultRadius && Mass == Physics.PhysicsParams.DefaultMass
             ? Physics.PhysicsParams.Default
             : Physics.PhysicsParams.Default with { R = Radius, M = Mass, MuSp = 4.0 / 9.0 * Radius, CueEndMass = Mass / 30 };
@@ -108,6 +113,7 @@ public sealed partial class BallSet
     {
         public static readonly string[] ColourNames = ["yellow", "green", "brown", "blue", "pink", "black"];
         public static readonly BallSet Snooker = CreateSnooker();
-        public static readonly BallSet[] All = [Pool, Snooker];
+        public static readonly BallSet Carom = CreateCarom();
+        public static readonly BallSet[] All = [Pool, Snooker, Carom];
     }
 }
