@@ -116,13 +116,13 @@ public sealed class ThreeCushionRuleset : Ruleset
         return 20 * start.Target + 200;
     }
 
-    /// <summary>The score, the innings and the average: "12 of 40  inn 9  avg 1.333".</summary>
+    /// <summary>The innings and the average, "inn 9  avg 1.333" (the card's score row shows the score, the target and the run).</summary>
     public override HudTarget Target(GameState state, int player, IReadOnlyCollection<BallId> objectBalls)
     {
         ArgumentNullException.ThrowIfNull(state);
         int innings = state.Innings[player];
         return new(string.Create(CultureInfo.InvariantCulture,
-            $"{state.Score[player]} of {state.Target}  inn {innings}  avg {Average(state.Score[player], innings)}"), []);
+            $"inn {innings}  avg {Average(state.Score[player], innings)}"), []);
     }
 
     /// <summary>The average as the score sheet writes it: points / innings to three decimals ("0.000" before an inning).</summary>
