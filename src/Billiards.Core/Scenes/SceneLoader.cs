@@ -160,7 +160,8 @@ public static class SceneLoader
         // The set of the scene's game (the game block's rules, else "rules"), pool's without one;
         // a bad name is refused where the field is read.
         // The balls a scene is played with, for its ball ids and the default radius and mass:
-        // snooker's when the scene names snooker (its rules, rack, game or table), else pool's.
+        // carom's when it names the three-cushion rack or the carom table, snooker's when it names
+        // snooker (its rules, rack, game or table), else pool's.
         // Read before the fields are validated, which happens as each is read.
         private static BallSet SceneBallSet(Dictionary<string, JsonElement> fields)
         {
