@@ -42,7 +42,7 @@ public static class SelfplayCommand
         var games = new Option<int?>("--games") { Description = "Number of games of the whole run." };
         var levels = new Option<string?>("--levels") { Description = "The two players' levels, 1-5, e.g. 5,3 (the first is player 0)." };
         var seed = new Option<long?>("--seed") { Description = "Seed of every rack and every error." };
-        var target = new Option<int?>("--target") { Description = "Straight pool: the score that wins (default 100)." };
+        var target = new Option<int?>("--target") { Description = "Straight pool and three-cushion: the score that wins (default 100; three-cushion 40)." };
         var shard = new Option<string?>("--shard") { Description = "K/N: play only the games g of the run with g mod N = K (0 <= K < N), with the run's seeds." };
         var output = new Option<string?>("--out") { Description = "Write the game records (billiards-game/1, one per line) to FILE.jsonl." };
         var summary = new Option<string?>("--summary") { Description = "Write the summary JSON to FILE instead of standard output." };
@@ -77,7 +77,7 @@ public static class SelfplayCommand
             {
                 throw new CliException($"--rules {rulesName}: the computer player does not play {rulesName} yet");
             }
-            int points = parse.GetValue(target) ?? GameState.DefaultTarget;
+            int points = parse.GetValue(target) ?? Ruleset.For(game).DefaultTarget;
             if (points < 1 || points > MaxTarget)
             {
                 throw new CliException($"--target {points}: expected 1 to {MaxTarget}");

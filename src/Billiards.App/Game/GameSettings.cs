@@ -46,7 +46,10 @@ public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth, bool F
         return Path.Combine(config, "billiards", "settings.json");
     }
 
-    /// <summary>The scene with this physics, for a model that takes it (the standard model); other scenes as they are.</summary>
+    /// <summary>
+    /// The scene with this physics, for a model that takes it (the standard model); other scenes as
+    /// they are. The standard cloth leaves a ball set's own cloth (carom's heated cloth) in place.
+    /// </summary>
     public Scene Apply(Scene scene)
     {
         ArgumentNullException.ThrowIfNull(scene);
@@ -55,7 +58,8 @@ public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth, bool F
         {
             return scene;
         }
-        return scene with { Physics = physics with { Models = physics.Models with { BallCushion = Cushion }, Params = Cloth.On(physics.Params) } };
+        var cloth = Cloth == Cloth.Standard && scene.BallSet.Cloth is { } own ? own : Cloth;
+        return scene with { Physics = physics with { Models = physics.Models with { BallCushion = Cushion }, Params = cloth.On(physics.Params) } };
     }
 
     /// <summary>

@@ -36,6 +36,12 @@ public sealed record CueGauges(System.Numerics.Vector2 Spin, float ElevationDegr
 /// <param name="HighestBreak">The best of the player's visits to the table by the ruleset's break (<see cref="Ruleset.Visits"/>): pool's balls that stayed down, snooker's points.</param>
 public readonly record struct PlayerStats(int Shots, int Pots, int Fouls, int HighestBreak)
 {
+    /// <summary>The sum of the player's visits' breaks (three-cushion's points).</summary>
+    public int BreakSum { get; init; }
+
+    /// <summary>The player's visits to the table (three-cushion's innings).</summary>
+    public int Visits { get; init; }
+
     /// <summary>Each player's numbers from a game's shots under <paramref name="ruleset"/>.</summary>
     public static PerPlayer<PlayerStats> Of(Ruleset ruleset, IReadOnlyList<MatchShot> shots)
     {
@@ -50,7 +56,8 @@ public readonly record struct PlayerStats(int Shots, int Pots, int Fouls, int Hi
         }
         foreach (var visit in ruleset.Visits(shots.Select(s => (s.Before.Shooter, s.Ruling))))
         {
-            stats[visit.Player] = stats[visit.Player] with { HighestBreak = Math.Max(stats[visit.Player].HighestBreak, visit.Break) };
+            var v = stats[visit.Player];
+            stats[visit.Player] = v with { HighestBreak = Math.Max(v.HighestBreak, visit.Break), BreakSum = v.BreakSum + visit.Break, Visits = v.Visits + 1 };
         }
         return new PerPlayer<PlayerStats>(stats[0], stats[1]);
     }
@@ -69,8 +76,18 @@ public sealed record ResultPanel(string Title, PerPlayer<string> Names, PerPlaye
     /// <summary>The ruleset's word for a game (<see cref="Ruleset.GameWord"/>): "game", snooker's "frame".</summary>
     public string GameWord { get; init; } = "game";
 
+    /// <summary>Three-cushion's score sheet (<see cref="Ruleset.HasInnings"/>): points, innings, the average and the highest run instead of pots and fouls.</summary>
+    public bool ScoreSheet { get; init; }
+
     /// <summary>The panel's rows: a label and each player's figure.</summary>
-    public IReadOnlyList<(string Label, string First, string Second)> Rows =>
+    public IReadOnlyList<(string Label, string First, string Second)> Rows => ScoreSheet ?
+    [
+        ("Points", Text(Stats.First.BreakSum), Text(Stats.Second.BreakSum)),
+        ("Innings", Text(Stats.First.Visits), Text(Stats.Second.Visits)),
+        ("Average", ThreeCushionRuleset.Average(Stats.First.BreakSum, Stats.First.Visits), ThreeCushionRuleset.Average(Stats.Second.BreakSum, Stats.Second.Visits)),
+        ($"Highest {BreakWord}", Text(Stats.First.HighestBreak), Text(Stats.Second.HighestBreak)),
+        ($"{ScoreboardBuilder.Capitalised(GameWord)}s won", Text(Games.First), Text(Games.Second)),
+    ] :
     [
         ("Shots", Text(Stats.First.Shots), Text(Stats.Second.Shots)),
         ("Pots", Text(Stats.First.Pots), Text(Stats.Second.Pots)),
@@ -166,7 +183,7 @@ public static class ScoreboardBuilder
                 ? string.Create(CultureInfo.InvariantCulture, $"{names[w]} wins {ruleset.TheGame} {score[w]}-{score[1 - w]}")
                 : $"{names[w]} wins {ruleset.TheGame}"
             : $"{Capitalised(ruleset.TheGame)} ends without a winner";
-        return new ResultPanel(title, names, PlayerStats.Of(ruleset, game.Shots), match.GamesWon) { BreakWord = ruleset.BreakWord, GameWord = ruleset.GameWord };
+        return new ResultPanel(title, names, PlayerStats.Of(ruleset, game.Shots), match.GamesWon) { BreakWord = ruleset.BreakWord, GameWord = ruleset.GameWord, ScoreSheet = ruleset.HasInnings };
     }
 
     /// <summary>

@@ -7,6 +7,7 @@ namespace Billiards.App.Rendering;
 /// Builds the table's mesh from a <see cref="TableSpec"/>: cloth bed with pocket holes,
 /// cushions with a real profile (nose at the spec's cushion height, undercut face, jaws cut at the
 /// spec's jaw angles), pocket cups, wooden rails with diamond sights, apron, legs and a floor; a
+/// carom match table (<see cref="CaromTable"/>) its blue cloth and its sights at 1/8 of the length; a
 /// snooker table (<see cref="SnookerTable"/>) has its brighter cloth, the baulk line, the D and the
 /// six spots marked on the bed, and no sights (its rails carry none).
 /// Metres, z up, origin at the centre of the bed (Core's frame).
@@ -40,6 +41,9 @@ public static class TableModelGenerator
         public static readonly MeshMaterial Cloth = new("cloth", new(0.07f, 0.42f, 0.20f), new(0.03f, 0.03f, 0.03f), 6);
         // Snooker's cloth is the brighter, yellower green of a championship baize.
         public static readonly MeshMaterial SnookerCloth = new("cloth", new(0.10f, 0.50f, 0.16f), new(0.03f, 0.03f, 0.03f), 6);
+        // Carom's match cloth is the blue of the UMB's tournament tables.
+        public static readonly MeshMaterial CaromCloth = new("cloth", new(0.06f, 0.24f, 0.62f), new(0.03f, 0.03f, 0.03f), 6);
+        public static readonly MeshMaterial CaromCushion = new("cushion", new(0.05f, 0.21f, 0.55f), new(0.04f, 0.04f, 0.04f), 8);
         public static readonly MeshMaterial SnookerCushion = new("cushion", new(0.09f, 0.45f, 0.15f), new(0.04f, 0.04f, 0.04f), 8);
         // The chalked lines and spots of a snooker bed, a little off-white so the cue ball stands out on them.
         public static readonly MeshMaterial Marking = new("marking", new(0.80f, 0.82f, 0.76f), new(0.03f, 0.03f, 0.03f), 6);
@@ -68,9 +72,9 @@ public static class TableModelGenerator
         float railTop = nose + 0.0065f;
         float inner = CushionDepth, outer = CushionDepth + RailWidth;
 
-        bool snooker = spec.Preset == SnookerTable.Preset;
-        var cloth = new MeshBuilder(snooker ? Materials.SnookerCloth : Materials.Cloth);
-        var cushion = new MeshBuilder(snooker ? Materials.SnookerCushion : Materials.Cushion);
+        bool snooker = spec.Preset == SnookerTable.Preset, carom = spec.Preset == CaromTable.Preset;
+        var cloth = new MeshBuilder(snooker ? Materials.SnookerCloth : carom ? Materials.CaromCloth : Materials.Cloth);
+        var cushion = new MeshBuilder(snooker ? Materials.SnookerCushion : carom ? Materials.CaromCushion : Materials.Cushion);
         var rail = new MeshBuilder(Materials.Rail);
         var frame = new MeshBuilder(Materials.Frame);
         var sight = new MeshBuilder(Materials.Sight);

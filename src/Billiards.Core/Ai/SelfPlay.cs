@@ -72,7 +72,7 @@ public sealed class SelfPlay
     /// <summary>
     /// Plays one game. Player 0 plays at <paramref name="levels"/>.First; <paramref name="breaker"/>
     /// breaks. Everything random follows from <paramref name="seed"/>; <paramref name="target"/> is
-    /// 14.1's score to win (ignored by the other games).
+    /// the score to win of 14.1 and three-cushion (ignored by the other games).
     /// </summary>
     public PlayedGame Play(GameRules rules, PerPlayer<int> levels, int breaker, ulong seed, PlannerBudget budget, int target = GameState.DefaultTarget)
     {
@@ -80,7 +80,7 @@ public sealed class SelfPlay
         var table = _planner.Table;
         var skills = new PerPlayer<SkillLevel>(SkillLevel.Of(levels.First), SkillLevel.Of(levels.Second));
         int rackSeed = (int)(PlannerRandom.Derive(seed, 7_000_000) & 0x3FFFFFFF);
-        var setup = new GameSetup(table.Table, _planner.PhysicsConfig, rackSeed, new GameState(rules) { Shooter = breaker, Target = target });
+        var setup = new GameSetup(table.Table, _planner.PhysicsConfig, rackSeed, new GameState(rules) { Shooter = breaker, Breaker = breaker, Target = target });
         var session = new Session(setup, Seat.Of(setup.Start.Players, SeatKind.Computer));
         var game = session.Game;
         var shots = new List<SelfPlayShot>();

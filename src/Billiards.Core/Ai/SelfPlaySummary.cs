@@ -77,7 +77,7 @@ public readonly record struct SelfPlayShard(int Index, int Count)
 /// <param name="RunGames">The games of the whole run.</param>
 /// <param name="Shard">Which shard this summary counts (<see cref="SelfPlayShard.Whole"/> for a whole run).</param>
 /// <param name="Games">The games this summary counts.</param>
-/// <param name="Unfinished">Of those, the games that hit the shot limit without a winner.</param>
+/// <param name="Unfinished">Of those, the games that hit the shot limit unfinished (a drawn three-cushion game is finished).</param>
 /// <param name="Players">The two players' figures, player 0 first.</param>
 /// <param name="Milliseconds">Wall-clock time of the run (ms); of a merged run, the sum of its shards'.</param>
 public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> Levels, int Target, int RunGames, SelfPlayShard Shard, int Games, int Unfinished, PerPlayer<PlayerStats> Players, double Milliseconds)
@@ -98,7 +98,7 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
     public static SelfPlaySummary Of(GameRules rules, long seed, PerPlayer<int> levels, int target, int runGames, SelfPlayShard shard, IReadOnlyList<PlayedGame> games, double milliseconds)
     {
         ArgumentNullException.ThrowIfNull(games);
-        return new SelfPlaySummary(rules, seed, levels, target, runGames, shard, games.Count, games.Count(g => g.Winner is null),
+        return new SelfPlaySummary(rules, seed, levels, target, runGames, shard, games.Count, games.Count(g => !g.Record.IsOver),
             new PerPlayer<PlayerStats>(SelfPlayStats.Of(games, 0, levels.First), SelfPlayStats.Of(games, 1, levels.Second)), milliseconds);
     }
 
@@ -193,7 +193,7 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
             w.WriteStartArray("players");
             for (int player = 0; player < 2; player++)
             {
-                WritePlayer(w, player, Players[player]);
+                WritePlayer(w, player, Players[player], Ruleset.For(Rules).HasInnings);
             }
             w.WriteEndArray();
             w.WriteNumber("ms", Round(Milliseconds));
@@ -203,12 +203,20 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
         return stream.ToArray();
     }
 
-    private static void WritePlayer(Utf8JsonWriter w, int player, PlayerStats s)
+    private static void WritePlayer(Utf8JsonWriter w, int player, PlayerStats s, bool innings)
     {
         w.WriteStartObject();
         w.WriteNumber("player", player);
         w.WriteNumber("level", s.Level);
         w.WriteNumber("games_won", s.GamesWon);
+        if (innings)
+        {
+            // Three-cushion's score sheet: a visit is an inning, its break the run of points.
+            w.WriteNumber("points", s.BreakSum);
+            w.WriteNumber("innings", s.Visits);
+            w.WriteNumber("average", ThreeCushionRuleset.AverageValue(s.BreakSum, s.Visits));
+            w.WriteNumber("highest_run", s.HighestBreak);
+        }
         w.WriteNumber("shots", s.Shots);
         w.WriteNumber("pots", s.Pots);
         w.WriteNumber("pot_attempts", s.PotAttempts);

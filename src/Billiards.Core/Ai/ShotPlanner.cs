@@ -116,8 +116,13 @@ public sealed partial class ShotPlanner
         ArgumentNullException.ThrowIfNull(position);
         ArgumentNullException.ThrowIfNull(level);
         ArgumentNullException.ThrowIfNull(budget);
+        var ruleset = Ruleset.For(state.Rules);
+        if (ruleset is ThreeCushionRuleset)
+        {
+            return DecideCarom(state, position.ForCueBall(ruleset.CueBall(state)), level, budget, seed);
+        }
         var clock = Stopwatch.StartNew();
-        var search = new Search(this, state, position.ForCueBall(Ruleset.For(state.Rules).CueBall(state)), level, budget, seed, clock);
+        var search = new Search(this, state, position.ForCueBall(ruleset.CueBall(state)), level, budget, seed, clock);
         return search.Run();
     }
 

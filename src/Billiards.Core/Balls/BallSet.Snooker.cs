@@ -28,9 +28,15 @@ public sealed partial class BallSet
     /// <summary>
     /// The standard model's parameters for this set's balls and their cloth (physics-standard-model.md,
     /// "Against the real table"): pool's set on <see cref="Physics.PhysicsParams.Pool"/>, any other on
-    /// the snooker cloth as measured, <see cref="Physics.PhysicsParams.Snooker"/>, with its own radius and mass.
+    /// the snooker cloth as measured, <see cref="Physics.PhysicsParams.Snooker"/>, with its own radius and
+    /// mass; a set with a cloth of its own (carom's heated cloth) on that cloth.
     /// </summary>
-    public Physics.PhysicsParams DefaultParams =>
+    public Physics.PhysicsParams DefaultParams => Cloth is { } cloth ? cloth.On(BallParams) : BallParams;
+
+    /// <summary>The cloth the set is played on by default, or null for the model's defaults (carom's heated cloth).</summary>
+    public Physics.Cloth? Cloth { get; init; }
+
+    private Physics.PhysicsParams BallParams =>
         Radius == Physics.PhysicsParams.DefaultRadius && Mass == Physics.PhysicsParams.DefaultMass
             ? Physics.PhysicsParams.Pool
             : Physics.PhysicsParams.Snooker(Radius, Mass);
@@ -108,6 +114,7 @@ public sealed partial class BallSet
     {
         public static readonly string[] ColourNames = ["yellow", "green", "brown", "blue", "pink", "black"];
         public static readonly BallSet Snooker = CreateSnooker();
-        public static readonly BallSet[] All = [Pool, Snooker];
+        public static readonly BallSet Carom = CreateCarom();
+        public static readonly BallSet[] All = [Pool, Snooker, Carom];
     }
 }

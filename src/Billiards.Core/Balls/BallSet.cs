@@ -20,7 +20,7 @@ public sealed record BallKind(BallId Id, string Name, int Value, BallLook Look);
 /// <summary>
 /// The balls a kind of billiards is played with, as data: each ball's id, name, value and look,
 /// which of them are cue balls, the named groups, and the balls' radius and mass: pool's set and
-/// snooker's (<see cref="Snooker"/>); carom's two cue balls will be a set of its own. The code that
+/// snooker's (<see cref="Snooker"/>) and carom's, with its two cue balls (<see cref="Carom"/>). The code that
 /// needs to know which ball is a cue ball or how many balls there are asks the set. Ids are unique
 /// across the sets (a set's cue ball excepted, "cue" in each), so an id names its ball in files
 /// whatever the set (<see cref="NameOfAny"/>).

@@ -81,6 +81,8 @@ public enum RefereeOption
     PutBack,
     /// <summary>Snooker, after a foul and a miss: the balls go back to where they were before the shot and the offender plays again.</summary>
     Replace,
+    /// <summary>Three-cushion: the shooter's ball is frozen to a ball; all three are spotted as for the break.</summary>
+    SpotBreak,
 }
 
 /// <summary>The referee's codes for what went wrong on a shot (rules.md).</summary>
@@ -118,6 +120,10 @@ public enum Foul
     ThreeMisses,
     /// <summary>Snooker: the striker who played a free ball left the opponent snookered behind it (ours: the code's name).</summary>
     SnookeredByFreeBall,
+    /// <summary>Three-cushion: the ball struck was not the shooter's cue ball.</summary>
+    WrongCueBall,
+    /// <summary>Three-cushion: the break did not contact the red first.</summary>
+    RedNotFirstOnBreak,
 }
 
 /// <summary>
@@ -146,13 +152,14 @@ public static class RuleNames
 {
     private static readonly string[] Groups = ["solids", "stripes"];
     private static readonly string[] Hands = ["none", "table", "kitchen", "d"];
-    private static readonly string[] Options = ["accept", "rerack", "spot-eight", "shoot", "pass-back", "play", "put-back", "replace"];
+    private static readonly string[] Options = ["accept", "rerack", "spot-eight", "shoot", "pass-back", "play", "put-back", "replace", "spot-break"];
     private static readonly string[] Fouls =
     [
         "bad-placement", "cue-ball-pocketed", "no-contact", "wrong-ball-first", "no-rail", "bad-break",
         "eight-ball-early", "eight-ball-foul", "eight-ball-uncalled", "three-fouls",
         "ball-off-table", "eight-ball-off-table",
         "wrong-ball-potted", "jump-shot", "three-misses", "snookered-by-free-ball",
+        "wrong-cue-ball", "red-not-first-on-break",
     ];
 
     /// <summary>The names of the registered games, in the order they were registered (the shipped five first).</summary>

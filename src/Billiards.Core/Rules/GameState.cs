@@ -35,8 +35,12 @@ public sealed record GameState
     /// <summary>The default player names.</summary>
     public static PerPlayer<string> DefaultPlayers { get; } = new("Player 1", "Player 2");
 
-    /// <summary>The start of a game of <paramref name="rules"/>: player 0 breaks.</summary>
-    public GameState(GameRules rules) => Rules = rules;
+    /// <summary>The start of a game of <paramref name="rules"/>: player 0 breaks, for the game's default target (<see cref="Ruleset.DefaultTarget"/>).</summary>
+    public GameState(GameRules rules)
+    {
+        Rules = rules;
+        Target = (rules.Name is null ? null : Ruleset.Find(rules.Name))?.DefaultTarget ?? DefaultTarget;
+    }
 
     /// <summary>Which game is played.</summary>
     public GameRules Rules { get; init; }
@@ -68,7 +72,7 @@ public sealed record GameState
     /// <summary>14.1 and snooker: each player's points.</summary>
     public PerPlayer<int> Score { get; init; }
 
-    /// <summary>14.1: the points that win (default 100).</summary>
+    /// <summary>14.1 and three-cushion: the points that win (default 100 in 14.1, 40 in three-cushion).</summary>
     public int Target { get; init; } = DefaultTarget;
 
     /// <summary>
@@ -95,6 +99,21 @@ public sealed record GameState
     /// not placed; the referee checks it against <see cref="BallInHand"/>.
     /// </summary>
     public Vec3? Placement { get; init; }
+
+    /// <summary>Three-cushion: each player's cue ball, or null for the default (white for player 0, yellow for player 1).</summary>
+    public PerPlayer<Balls.BallId>? CueBalls { get; init; }
+
+    /// <summary>Three-cushion: each player's innings, the visits to the table begun (the one at the table counts once it has begun).</summary>
+    public PerPlayer<int> Innings { get; init; }
+
+    /// <summary>Three-cushion: the player who did not break gets a last inning once the breaker reaches the target (default true).</summary>
+    public bool Equalizing { get; init; } = true;
+
+    /// <summary>Three-cushion: the player who broke the game, 0 or 1.</summary>
+    public int Breaker { get; init; }
+
+    /// <summary>Three-cushion: the shooter's points in the inning at the table before this shot.</summary>
+    public int Run { get; init; }
 
     /// <summary>The shooter's name.</summary>
     public string ShooterName => Players[Shooter];

@@ -32,17 +32,17 @@ public sealed record GameSetup(TableSpec Table, PhysicsConfig Physics, int Seed,
     public IReadOnlyList<(BallId Id, Vec3 Position)>? Position { get; init; }
 
     /// <summary>A game of <paramref name="rules"/> on its ruleset's table (pool's 9 ft, snooker's 12 ft) with the default physics for its balls.</summary>
-    public static GameSetup Of(GameRules rules, int seed, PerPlayer<string>? players = null, int target = GameState.DefaultTarget)
+    public static GameSetup Of(GameRules rules, int seed, PerPlayer<string>? players = null, int? target = null)
     {
         var ruleset = Ruleset.For(rules);
         return new(TableSpec.FromPreset(ruleset.TablePreset), PhysicsConfig.Default with { Params = ruleset.BallSet.DefaultParams }, seed,
-            new GameState(rules) { Players = players ?? GameState.DefaultPlayers, Target = target });
+            new GameState(rules) { Players = players ?? GameState.DefaultPlayers, Target = target ?? ruleset.DefaultTarget });
     }
 
     /// <summary>The rack of <paramref name="rack"/> (0 the first) with the cue ball where the rack puts it (the head spot; snooker's D).</summary>
     public IReadOnlyList<(BallId Id, Vec3 Position)> Racked(int rack)
     {
-        var balls = Ruleset.Rack(Table, BallRadius, Seed + rack);
+        var balls = Ruleset.Rack(Start, Table, BallRadius, Seed + rack);
         var cue = Ruleset.CueBall(Start);
         return balls.Any(b => b.Id == cue) ? balls : [(cue, Ruleset.CueStart(Table, BallRadius)), .. balls];
     }

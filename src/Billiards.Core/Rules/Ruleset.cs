@@ -29,9 +29,9 @@ public readonly record struct Visit(int Player, int Shots, int Break, bool Open)
 public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentation, IPlannerPolicy
 {
     private static readonly Lock RegistryLock = new();
-    private static Ruleset[] _registered = [new EightBallRuleset(), new NineBallRuleset(), new TenBallRuleset(), new StraightPoolRuleset(), new SnookerRuleset()];
+    private static Ruleset[] _registered = [new EightBallRuleset(), new NineBallRuleset(), new TenBallRuleset(), new StraightPoolRuleset(), new SnookerRuleset(), new ThreeCushionRuleset()];
 
-    /// <summary>Every registered ruleset, in the order of registration (the shipped five first).</summary>
+    /// <summary>Every registered ruleset, in the order of registration (the shipped six first).</summary>
     public static IReadOnlyList<Ruleset> All => Volatile.Read(ref _registered);
 
     /// <summary>
@@ -107,13 +107,29 @@ public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentati
 
     /// <summary>
     /// The shape of the game's rack, where it is one of the shapes the scene format knows; a game
-    /// with a rack of its own overrides <see cref="Rack"/> and <see cref="CueStart"/> instead.
+    /// with a rack of its own overrides <see cref="Rack(TableSpec, double, int)"/> and <see cref="CueStart"/> instead.
     /// </summary>
     protected virtual RackGame RackShape => throw new NotSupportedException($"{Name} racks its own balls (Ruleset.Rack)");
 
     /// <summary>The object balls racked for a break with the rack's jitter from <paramref name="seed"/> (m, z = R).</summary>
     public virtual IReadOnlyList<(BallId Id, Vec3 Position)> Rack(TableSpec table, double ballRadius, int seed) =>
         Initializer.Rack(new RackSpec(RackShape, seed), table, ballRadius);
+
+    /// <summary>
+    /// The balls racked for the break of a game that starts at <paramref name="start"/>: by default
+    /// <see cref="Rack(TableSpec, double, int)"/>; three-cushion places the breaker's ball by the shooter.
+    /// </summary>
+    public virtual IReadOnlyList<(BallId Id, Vec3 Position)> Rack(GameState start, TableSpec table, double ballRadius, int seed) => Rack(table, ballRadius, seed);
+
+    /// <summary>The points that win a game of the ruleset by default (14.1's 100; three-cushion's 40).</summary>
+    public virtual int DefaultTarget => GameState.DefaultTarget;
+
+    /// <summary>
+    /// True when the game keeps innings, an average and runs on its score sheet (three-cushion):
+    /// its game blocks carry cue_balls, innings, equalizing, breaker and run, its rulings point,
+    /// cushions, innings, average and run.
+    /// </summary>
+    public virtual bool HasInnings => false;
 
     /// <summary>The table the game is played on by default (a preset of <see cref="TableSpec.FromPreset"/>).</summary>
     public virtual string TablePreset => "pool-9ft";
@@ -351,8 +367,16 @@ public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentati
             // The offender plays again from where the balls lie (from hand after an in-off); a free ball is the incoming player's only.
             RefereeOption.PutBack => new OptionOutcome(next with { Shooter = next.Incoming, FreeBall = false }, false, ruling.Spot),
             RefereeOption.Replace => new OptionOutcome(ruling.Replaced ?? throw new ArgumentException("the ruling has no replaced state", nameof(ruling)), false, []) { Replace = true },
-            _ => new OptionOutcome(next, false, ruling.Spot),
+            RefereeOption.Accept or RefereeOption.SpotEight or RefereeOption.Shoot or RefereeOption.Play => new OptionOutcome(next, false, ruling.Spot),
+            _ => ChooseOther(ruling, option, next),
         };
+    }
+
+    /// <summary>What a game's own option (three-cushion's <see cref="RefereeOption.SpotBreak"/>) leads to; by default the table as it lies.</summary>
+    protected virtual OptionOutcome ChooseOther(Ruling ruling, RefereeOption option, GameState next)
+    {
+        ArgumentNullException.ThrowIfNull(ruling);
+        return new OptionOutcome(next, false, ruling.Spot);
     }
 
     /// <summary>The state before the break of a rerack the ruling's next shooter chose: by default the chooser breaks.</summary>

@@ -43,8 +43,11 @@ public interface IRefereeRules
     /// <inheritdoc cref="Ruleset.Balls"/>
     IReadOnlyList<BallId> Balls { get; }
 
-    /// <inheritdoc cref="Ruleset.Rack"/>
+    /// <inheritdoc cref="Ruleset.Rack(TableSpec, double, int)"/>
     IReadOnlyList<(BallId Id, Vec3 Position)> Rack(TableSpec table, double ballRadius, int seed);
+
+    /// <inheritdoc cref="Ruleset.Rack(GameState, TableSpec, double, int)"/>
+    IReadOnlyList<(BallId Id, Vec3 Position)> Rack(GameState start, TableSpec table, double ballRadius, int seed);
 
     /// <inheritdoc cref="Ruleset.CueStart"/>
     Vec3 CueStart(TableSpec table, double ballRadius);

@@ -56,6 +56,21 @@ public sealed record Ruling(
     /// <summary>Snooker: the incoming player is snookered after a foul and may nominate a free ball.</summary>
     public bool FreeBall { get; init; }
 
+    /// <summary>Three-cushion: the shot scored a point.</summary>
+    public bool Point { get; init; }
+
+    /// <summary>
+    /// Three-cushion: the shooter's cue ball's cushion contacts before its contact with the
+    /// second object ball, or in all when it met fewer than two.
+    /// </summary>
+    public int Cushions { get; init; }
+
+    /// <summary>Three-cushion: each player's innings after the shot (the score sheet's).</summary>
+    public PerPlayer<int> Innings { get; init; }
+
+    /// <summary>Three-cushion: the shooter's points in this inning, this shot's included.</summary>
+    public int Run { get; init; }
+
     /// <summary>
     /// Snooker, after a foul and a miss: the state for the offender's next shot when the balls are
     /// replaced where they were before the shot (<see cref="RefereeOption.Replace"/>), else null.

@@ -19,7 +19,8 @@ public static class GameBlockReader
 {
     /// <summary>The fields a game block may have.</summary>
     public static IReadOnlyList<string> Fields { get; } =
-        ["rules", "players", "shooter", "shot", "groups", "call", "push_out", "fouls_in_row", "score", "target", "ball_in_hand", "ball_on", "free_ball", "misses_in_row"];
+        ["rules", "players", "shooter", "shot", "groups", "call", "push_out", "fouls_in_row", "score", "target", "ball_in_hand", "ball_on", "free_ball", "misses_in_row",
+         "cue_balls", "innings", "equalizing", "breaker", "run"];
 
     /// <summary>Reads a game block.</summary>
     /// <param name="element">The block.</param>
@@ -190,7 +191,7 @@ public static class GameBlockReader
             }
             state = state with { MissesInRow = pair };
         }
-        return state;
+        return ReadCarom(f, state, path, Error);
 
         string Text(JsonElement e, string at) =>
             e.ValueKind == JsonValueKind.String ? e.GetString()! : throw Error(at, $"expected a string, found {e.GetRawText()}");
@@ -202,6 +203,59 @@ public static class GameBlockReader
             e.ValueKind == JsonValueKind.Array && e.GetArrayLength() == 2
                 ? new(Whole(e[0], $"{at}[0]"), Whole(e[1], $"{at}[1]"))
                 : throw Error(at, $"expected one whole number per player, e.g. [0, 0], found {e.GetRawText()}");
+    }
+
+    // Three-cushion's fields (scene-format.md): cue_balls, innings, equalizing, breaker, and run
+    // (ours: the shooter's points in the inning so far, which the ruling's run continues).
+    private static GameState ReadCarom(Dictionary<string, JsonElement> f, GameState state, string path, Func<string, string, SceneException> error)
+    {
+        var ruleset = Ruleset.For(state.Rules);
+        foreach (string name in new[] { "cue_balls", "innings", "equalizing", "breaker", "run" })
+        {
+            if (f.ContainsKey(name) && !ruleset.HasInnings)
+            {
+                throw error($"{path}.{name}", $"{state.Rules.ToName()} has no \"{name}\" (only three-cushion has)");
+            }
+        }
+        if (f.TryGetValue("cue_balls", out var cue))
+        {
+            var set = ruleset.BallSet;
+            string? Name(int i) => cue[i].ValueKind == JsonValueKind.String ? cue[i].GetString() : null;
+            if (cue.ValueKind != JsonValueKind.Array || cue.GetArrayLength() != 2
+                || !set.TryParse(Name(0), out var a) || !set.TryParse(Name(1), out var b) || a == b || !set.IsCueBall(a) || !set.IsCueBall(b))
+            {
+                throw error($"{path}.cue_balls", "expected each player's cue ball: [\"white\", \"yellow\"] or [\"yellow\", \"white\"]");
+            }
+            state = state with { CueBalls = new(a, b) };
+        }
+        if (f.TryGetValue("innings", out var innings))
+        {
+            if (innings.ValueKind != JsonValueKind.Array || innings.GetArrayLength() != 2
+                || innings.EnumerateArray().Any(x => x.ValueKind != JsonValueKind.Number || !x.TryGetInt32(out int v) || v < 0))
+            {
+                throw error($"{path}.innings", $"expected each player's innings, two whole numbers of 0 or more, found {innings.GetRawText()}");
+            }
+            state = state with { Innings = new(innings[0].GetInt32(), innings[1].GetInt32()) };
+        }
+        if (f.TryGetValue("equalizing", out var eq))
+        {
+            state = eq.ValueKind is JsonValueKind.True or JsonValueKind.False
+                ? state with { Equalizing = eq.GetBoolean() }
+                : throw error($"{path}.equalizing", "expected true or false");
+        }
+        if (f.TryGetValue("breaker", out var breaker))
+        {
+            state = breaker.ValueKind == JsonValueKind.Number && breaker.TryGetInt32(out int b) && b is 0 or 1
+                ? state with { Breaker = b }
+                : throw error($"{path}.breaker", $"expected the breaker's index, 0 or 1, found {breaker.GetRawText()}");
+        }
+        if (f.TryGetValue("run", out var run))
+        {
+            state = run.ValueKind == JsonValueKind.Number && run.TryGetInt32(out int r) && r >= 0
+                ? state with { Run = r }
+                : throw error($"{path}.run", $"expected the shooter's points in this inning, a whole number of 0 or more, found {run.GetRawText()}");
+        }
+        return state;
     }
 
     private static Call ReadCall(JsonElement e, GameRules rules, PocketSet pockets, string path, Func<string, string, SceneException> error)

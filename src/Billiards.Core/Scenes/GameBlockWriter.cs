@@ -60,6 +60,16 @@ public static class GameBlockWriter
             w.WriteBoolean("free_ball", state.FreeBall);
             WritePair(w, "misses_in_row", state.MissesInRow);
         }
+        if (Ruleset.For(state.Rules).HasInnings)
+        {
+            var cueBalls = state.CueBalls ?? ThreeCushionRuleset.DefaultCueBalls;
+            var set = Ruleset.For(state.Rules).BallSet;
+            WriteNames(w, "cue_balls", [set.NameOf(cueBalls.First), set.NameOf(cueBalls.Second)]);
+            WritePair(w, "innings", state.Innings);
+            w.WriteBoolean("equalizing", state.Equalizing);
+            w.WriteNumber("breaker", state.Breaker);
+            w.WriteNumber("run", state.Run);
+        }
         w.WriteEndObject();
     }
 
@@ -123,6 +133,18 @@ public static class GameBlockWriter
             w.WriteNumber("penalty", ruling.Penalty);
             w.WriteBoolean("foul_and_miss", ruling.FoulAndMiss);
             w.WriteBoolean("free_ball", ruling.FreeBall);
+        }
+        if (Ruleset.For(ruling.Next.Rules).HasInnings)
+        {
+            w.WriteBoolean("point", ruling.Point);
+            w.WriteNumber("cushions", ruling.Cushions);
+            WritePair(w, "score", ruling.Score);
+            WritePair(w, "innings", ruling.Innings);
+            w.WriteStartArray("average");
+            w.WriteNumberValue(ThreeCushionRuleset.AverageValue(ruling.Score.First, ruling.Innings.First));
+            w.WriteNumberValue(ThreeCushionRuleset.AverageValue(ruling.Score.Second, ruling.Innings.Second));
+            w.WriteEndArray();
+            w.WriteNumber("run", ruling.Run);
         }
         w.WritePropertyName("next");
         WriteGame(w, ruling.Next);

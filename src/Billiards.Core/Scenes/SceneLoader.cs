@@ -124,7 +124,7 @@ public static class SceneLoader
 
             // The game names the ball set; the game block is read in full below, once the balls are.
             var cueBall = set.CueBalls[0];
-            RackSpec? rack = fields.TryGetValue("rack", out var r) ? ReadRack(r) : null;
+            RackSpec? rack = fields.TryGetValue("rack", out var r) ? ReadRack(r, fields) : null;
             var balls = new SortedDictionary<int, (BallSetup Ball, string Path)>();
             if (rack is not null)
             {
@@ -171,7 +171,8 @@ public static class SceneLoader
         // The set of the scene's game (the game block's rules, else "rules"), pool's without one;
         // a bad name is refused where the field is read.
         // The balls a scene is played with, for its ball ids and the default radius and mass:
-        // snooker's when the scene names snooker (its rules, rack, game or table), else pool's.
+        // carom's when it names the three-cushion rack or the carom table, snooker's when it names
+        // snooker (its rules, rack, game or table), else pool's.
         // Read before the fields are validated, which happens as each is read.
         private static BallSet SceneBallSet(Dictionary<string, JsonElement> fields)
         {
@@ -191,8 +192,12 @@ public static class SceneLoader
             {
                 return Rules.Ruleset.For(rules).BallSet;
             }
-            bool snooker = (fields.TryGetValue("rack", out var rack) && Is(rack, "game", "snooker"))
-                || (fields.TryGetValue("table", out var table) && Is(table, "preset", SnookerTable.Preset));
+            bool hasRack = fields.TryGetValue("rack", out var rack), hasTable = fields.TryGetValue("table", out var table);
+            if ((hasRack && Is(rack, "game", "three-cushion")) || (hasTable && Is(table, "preset", CaromTable.Preset)))
+            {
+                return BallSet.Carom;
+            }
+            bool snooker = (hasRack && Is(rack, "game", "snooker")) || (hasTable && Is(table, "preset", SnookerTable.Preset));
             return snooker ? BallSet.Snooker : BallSet.Pool;
         }
 
@@ -396,15 +401,16 @@ public static class SceneLoader
             return p;
         }
 
-        private RackSpec ReadRack(JsonElement e)
+        private RackSpec ReadRack(JsonElement e, Dictionary<string, JsonElement> fields)
         {
             var f = Object(e, "$.rack", "game", "seed");
             if (!f.TryGetValue("game", out var g))
             {
                 throw Error("$.rack", "missing \"game\"");
             }
-            var game = OneOf(g, "$.rack.game", "eight-ball", "nine-ball", "ten-ball", "straight-pool", "snooker") switch
+            var game = OneOf(g, "$.rack.game", "eight-ball", "nine-ball", "ten-ball", "straight-pool", "snooker", "three-cushion") switch
             {
+                "three-cushion" => RackGame.ThreeCushion,
                 "eight-ball" => RackGame.EightBall,
                 "nine-ball" => RackGame.NineBall,
                 "ten-ball" => RackGame.TenBall,
@@ -419,7 +425,24 @@ public static class SceneLoader
                     throw Error("$.rack.seed", "expected a whole number (a 32-bit integer)");
                 }
             }
-            return new RackSpec(game, seed);
+            return new RackSpec(game, seed, game == RackGame.ThreeCushion ? CaromBreaker(fields) : null);
+        }
+
+        // Three-cushion's breaker's ball: the game block's shooter's cue ball (its cue_balls, else
+        // white and yellow); a bad block is refused where it is read in full.
+        private static BallId CaromBreaker(Dictionary<string, JsonElement> fields)
+        {
+            if (!fields.TryGetValue("game", out var g) || g.ValueKind != JsonValueKind.Object)
+            {
+                return BallSet.White;
+            }
+            int shooter = g.TryGetProperty("shooter", out var s) && s.ValueKind == JsonValueKind.Number && s.TryGetInt32(out int i) && i is 0 or 1 ? i : 0;
+            if (g.TryGetProperty("cue_balls", out var c) && c.ValueKind == JsonValueKind.Array && c.GetArrayLength() == 2
+                && c[shooter].ValueKind == JsonValueKind.String && BallSet.Carom.TryParse(c[shooter].GetString(), out var ball) && BallSet.Carom.IsCueBall(ball))
+            {
+                return ball;
+            }
+            return shooter == 0 ? BallSet.White : BallSet.Yellow;
         }
 
         private BallSetup ReadBall(JsonElement e, string path, BallSet set, double radius, bool flight)

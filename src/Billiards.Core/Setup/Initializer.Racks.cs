@@ -43,6 +43,10 @@ public static partial class Initializer
         {
             return SnookerRack(table, radius, random);
         }
+        if (rack.Game == RackGame.ThreeCushion)
+        {
+            return CaromBreak(table, radius, rack.Breaker ?? BallSet.White);
+        }
         int[] rowSizes = RowSizes(rack.Game);
         int[] numbers = rack.Game switch
         {

@@ -13,7 +13,12 @@ public enum RackGame
     StraightPool,
     /// <summary>Snooker's 22: the reds in a triangle behind the pink, the colours on their spots, the cue ball in the D.</summary>
     Snooker,
+    /// <summary>Three-cushion's break: the red on the foot spot, the opponent's ball on the head spot, the breaker's beside it on the head string.</summary>
+    ThreeCushion,
 }
 
 /// <summary>A rack placed by the Initializer, with the seed of its jitter.</summary>
-public sealed record RackSpec(RackGame Game, int Seed);
+/// <param name="Game">The rack's shape.</param>
+/// <param name="Seed">The seed of its jitter (three-cushion's break has none).</param>
+/// <param name="Breaker">Three-cushion: the breaker's cue ball (carom's white by default); the other cue ball is the opponent's.</param>
+public sealed record RackSpec(RackGame Game, int Seed, Balls.BallId? Breaker = null);

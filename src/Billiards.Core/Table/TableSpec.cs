@@ -59,13 +59,13 @@ public sealed record TableSpec(
     public const double DefaultCushionHeight = 0.64 * 2 * 0.028575;
 
     /// <summary>The names accepted by <see cref="FromPreset"/>.</summary>
-    public static IReadOnlyList<string> PresetNames { get; } = ["pool-9ft", "pool-8ft", "pool-7ft", "snooker-12ft", "thesis", "pocketless"];
+    public static IReadOnlyList<string> PresetNames { get; } = ["pool-9ft", "pool-8ft", "pool-7ft", "snooker-12ft", CaromTable.Preset, "thesis", "pocketless"];
 
     private const double Inch = 0.0254;
 
     /// <summary>
     /// A table preset: WPA 9, 8 and 7 ft pool tables, the WPBSA's 12 ft snooker table
-    /// (<see cref="SnookerTable"/>), the thesis table (245 x 127 cm nose to nose, pockets of
+    /// (<see cref="SnookerTable"/>), the UMB's carom match table (<see cref="CaromTable"/>), the thesis table (245 x 127 cm nose to nose, pockets of
     /// 11.2 cm, seed 3.1), and a pocketless 9 ft rectangle.
     /// </summary>
     /// <exception cref="ArgumentException">For an unknown preset name.</exception>
@@ -75,6 +75,7 @@ public sealed record TableSpec(
         "pool-8ft" => Pool(preset, 92 * Inch, 46 * Inch),
         "pool-7ft" => Pool(preset, 78 * Inch, 39 * Inch),
         SnookerTable.Preset => SnookerTable.Spec,
+        CaromTable.Preset => CaromTable.Spec,
         // The seed's table (seed 3.1): bed 258 x 140 less two 6.5 cm rails; pockets are cylinders of 11.2 cm.
         // The seed's cushion faces are 60 deg to the bed; its jaws 35 deg (corner) and 70 deg (side) to the rail.
         "thesis" => new TableSpec(preset, 2.45, 1.27, DefaultCushionHeight, PocketSet.Six(0.112, 0.112, 142, 104), 0.0937),

@@ -54,4 +54,13 @@ public class GameSettingsTests
         var thesis = SceneLoader.Load(AssetFolder.Scene("thesis-eight-ball-break.json"));
         Assert.Same(thesis, new GameSettings(StrongeCompliant.Instance, Cloth.Fast).Apply(thesis));
     }
+
+    [Fact]
+    public void TheStandardClothLeavesACaromScenesHeatedClothAndAPickedClothReplacesIt()
+    {
+        var carom = SceneLoader.Load(AssetFolder.Scene("three-cushion.json"));
+        Assert.Equal(Cloth.Heated.MuR, carom.Physics.Params.MuR);
+        Assert.Equal(carom.Physics.Params, GameSettings.Default.Apply(carom).Physics.Params);
+        Assert.Equal(Cloth.Fast.MuR, new GameSettings(StrongeCompliant.Instance, Cloth.Fast).Apply(carom).Physics.Params.MuR);
+    }
 }

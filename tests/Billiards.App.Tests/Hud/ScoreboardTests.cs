@@ -125,14 +125,24 @@ public class ScoreboardTests
             Shot(0, true, true, [8], [], 1),
         ];
         var pool = PlayerStats.Of(Ruleset.For(GameRules.StraightPool), shots);
-        Assert.Equal(new PlayerStats(4, 4, 0, 3), pool.First);
-        Assert.Equal(new PlayerStats(2, 2, 1, 1), pool.Second);
+        Assert.Equal(new PlayerStats(4, 4, 0, 3) { BreakSum = 4, Visits = 2 }, pool.First);
+        Assert.Equal(new PlayerStats(2, 2, 1, 1) { BreakSum = 1, Visits = 1 }, pool.Second);
         // Snooker's break is the visit's points: Anna's 3, Ben's 1 (a foul's points are the opponent's).
         Assert.Equal((3, 1), (PlayerStats.Of(Ruleset.For(GameRules.Snooker), shots).First.HighestBreak, PlayerStats.Of(Ruleset.For(GameRules.Snooker), shots).Second.HighestBreak));
         var panel = new ResultPanel("Anna wins the 14.1 game 100-62", new PerPlayer<string>("Anna", "Ben"), pool, new PerPlayer<int>(1, 0));
         Assert.Contains(("Highest run", "3", "1"), panel.Rows);
         Assert.Contains(("Games won", "1", "0"), panel.Rows);
         Assert.Contains(("Frames won", "1", "0"), (panel with { GameWord = "frame" }).Rows);
+    }
+
+    [Fact]
+    public void AThreeCushionResultPanelIsTheScoreSheetPointsInningsAverageAndHighestRun()
+    {
+        var stats = new PerPlayer<PlayerStats>(new PlayerStats(15, 0, 0, 4) { BreakSum = 8, Visits = 7 }, new PlayerStats(9, 0, 1, 2) { BreakSum = 3, Visits = 7 });
+        var panel = new ResultPanel("Anna wins the 3-cushion game 8-3", new PerPlayer<string>("Anna", "Ben"), stats, new PerPlayer<int>(1, 0)) { ScoreSheet = true };
+        Assert.Equal(["Points", "Innings", "Average", "Highest run", "Games won"], panel.Rows.Select(r => r.Label));
+        Assert.Contains(("Average", "1.143", "0.429"), panel.Rows);
+        Assert.Contains(("Innings", "7", "7"), panel.Rows);
     }
 
     [Fact]

@@ -9,15 +9,15 @@ public class RulesetTests
     private static readonly BallId[] Some = [new(2), new(3), new(8), new(9), new(12)];
 
     [Fact]
-    public void EveryGameHasItsRulesetByNameTheShippedFiveFirst()
+    public void EveryGameHasItsRulesetByNameTheShippedSixFirst()
     {
-        Assert.Equal(["eight-ball", "nine-ball", "ten-ball", "straight-pool", "snooker"], Ruleset.All.Take(5).Select(r => r.Name));
+        Assert.Equal(["eight-ball", "nine-ball", "ten-ball", "straight-pool", "snooker", "three-cushion"], Ruleset.All.Take(6).Select(r => r.Name));
         Assert.All(Ruleset.All, r => Assert.Same(r, Ruleset.Find(r.Name)));
         Assert.All(Ruleset.All, r => Assert.Same(r, Ruleset.For(r.Game)));
         Assert.Equal(16, Ruleset.For(GameRules.EightBall).Balls.Count);
         Assert.Equal(10, Ruleset.For(GameRules.NineBall).Balls.Count);
         Assert.Equal(11, Ruleset.For(GameRules.TenBall).Balls.Count);
-        Assert.All(Ruleset.All, r => Assert.Equal(PoolBalls.Cue, r.Balls[0]));
+        Assert.All(Ruleset.All, r => Assert.Equal(r.CueBall(new GameState(r.Game)), r.Balls[0]));
     }
 
     [Theory]
