@@ -41,7 +41,7 @@ public sealed partial class ShotPlanner
     private (double Horizontal, double Up)? Launch(Physics.Simulation single, Physics.SimulationSnapshot rest, double speed, double elevationDeg)
     {
         single.Restore(rest);
-        double h = Math.Sin(elevationDeg * Math.PI / 180);
+        double h = DeterministicMath.Sin(elevationDeg * Math.PI / 180);
         single.Strike(new ShotSpec(speed, 0, 0, h, elevationDeg), single.Ids[0]);
         // The slate's return is resolved at t = 0; a microsecond later the ball is on its parabola.
         const double After = 1e-6;
@@ -190,7 +190,7 @@ public sealed partial class ShotPlanner
                     var withCall = before with { Call = call ? (pocket == PocketId.None ? Call.Safety : new Call(t, pocket)) : null };
                     foreach (var (speed, elevation) in planner.JumpStrokes(single, rest, position, t, cue, aim, o))
                     {
-                        double h = Math.Sin(elevation * Math.PI / 180);
+                        double h = DeterministicMath.Sin(elevation * Math.PI / 180);
                         double aimDeg = planner.AimFor(c, cue, 0, h);
                         foreach (double f in (ReadOnlySpan<double>)[1.0, 1.1])
                         {

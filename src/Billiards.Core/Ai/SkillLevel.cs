@@ -1,3 +1,4 @@
+using Billiards.Core.Mathematics;
 using Billiards.Core.Cue;
 
 namespace Billiards.Core.Ai;
@@ -136,7 +137,7 @@ public sealed record SkillLevel(
         // The miscue limit is on the tip's offset from the cue's line through the ball's centre:
         // for a level cue that is the centre of the ball's face, for a jump stroke the point at
         // sin e up its face, where such a stroke is aimed.
-        double centre = planned.ElevationDeg >= JumpTipElevationDeg ? Math.Sin(planned.ElevationDeg * Math.PI / 180) : 0;
+        double centre = planned.ElevationDeg >= JumpTipElevationDeg ? DeterministicMath.Sin(planned.ElevationDeg * Math.PI / 180) : 0;
         double up = height - centre;
         double r = Math.Sqrt(side * side + up * up);
         if (r > MaxTip)

@@ -42,8 +42,8 @@ public static class CueStrike
     {
         double r = p.R;
         double c = Math.Sqrt(Math.Max(0, r * r - a * a - b * b));
-        double cos = Math.Cos(elevation);
-        double sin = Math.Sin(elevation);
+        double cos = DeterministicMath.Cos(elevation);
+        double sin = DeterministicMath.Sin(elevation);
         double lever = a * a + (b * cos) * (b * cos) + (c * sin) * (c * sin) - 2 * b * c * cos * sin;
         double inertiaPerMass = 0.4 * r * r;
         return 2 * cueSpeed / (1 + p.M / p.CueMass + lever / inertiaPerMass);
@@ -59,7 +59,7 @@ public static class CueStrike
     public static double SquirtAngle(double side, double massRatio)
     {
         double oneMinus = 1 - side * side;
-        return Math.Atan(2.5 * side * Math.Sqrt(Math.Max(0, oneMinus)) / (1 + massRatio + 2.5 * oneMinus));
+        return DeterministicMath.Atan(2.5 * side * Math.Sqrt(Math.Max(0, oneMinus)) / (1 + massRatio + 2.5 * oneMinus));
     }
 
     /// <summary>The cue ball's velocity and spin from a shot (see the class remarks for the frame).</summary>
@@ -70,15 +70,15 @@ public static class CueStrike
         double b = shot.TipHeight * r;
         double c = Math.Sqrt(Math.Max(0, r * r - a * a - b * b));
         double theta = shot.ElevationDeg * Math.PI / 180;
-        double cos = Math.Cos(theta);
-        double sin = Math.Sin(theta);
+        double cos = DeterministicMath.Cos(theta);
+        double sin = DeterministicMath.Sin(theta);
         double v = BallSpeed(shot.Speed, a, b, theta, p);
         double k = v / (0.4 * r * r);
 
         // Right english squirts the ball to the left: turn the whole strike anticlockwise.
         double squirt = SquirtAngle(shot.TipSide, p.M / p.CueEndMass);
         double phi = shot.AimDeg * Math.PI / 180 + squirt;
-        var j = new Vec3(Math.Cos(phi), Math.Sin(phi), 0);
+        var j = new Vec3(DeterministicMath.Cos(phi), DeterministicMath.Sin(phi), 0);
         var i = new Vec3(j.Y, -j.X, 0);
 
         var velocity = j * (v * cos);

@@ -1,3 +1,4 @@
+using Billiards.Core.Mathematics;
 namespace Billiards.Core.Physics;
 
 /// <summary>How the ball-ball friction coefficient is chosen.</summary>
@@ -69,5 +70,5 @@ public sealed record PhysicsParams(
 
     /// <summary>Ball-ball friction for a given slip speed (m/s) at the contact.</summary>
     public double BallBallMu(double slipSpeed) =>
-        MuBModel == BallBallFriction.Alciatore ? 0.009951 + 0.108 * Math.Exp(-1.088 * slipSpeed) : MuB;
+        MuBModel == BallBallFriction.Alciatore ? 0.009951 + 0.108 * DeterministicMath.Exp(-1.088 * slipSpeed) : MuB;
 }
