@@ -24,7 +24,7 @@ using Billiards.Core.Scenes;
 // by a click on it from the view above the table (T) or by B, X to aim at its ghost ball, whole
 // degrees on Left/Right and the rest by a drag of the view, W/Q for the power, Space; after a
 // foul the option the planner would choose is clicked on its button. --seed picks the planner's
-// seeds (the frame shipped is seed 9: it ends on the black potted, with an in-off along the way).
+// seeds (the frame shipped is seed 31: it ends on the black potted, with an in-off along the way).
 // Usage: dotnet run --project tools/game-script -c Release -- [--snooker] [--seed N] OUT.json | [--snooker] --check SCRIPT.json
 internal static class Program
 {
@@ -44,7 +44,7 @@ internal static class Program
             s_rules = GameRules.Snooker;
             args = args[1..];
         }
-        ulong seed = 9;
+        ulong seed = 31;
         if (args.Length > 2 && args[0] == "--seed" && ulong.TryParse(args[1], out ulong chosen))
         {
             seed = chosen;
