@@ -22,14 +22,14 @@ deb="$out/billiards_${version}_amd64.deb"
 [ "$(dpkg-deb -f "$deb" Architecture)" = amd64 ] || fail "the .deb is not amd64"
 depends="$(dpkg-deb -f "$deb" Depends)"
 for p in libglfw3 libassimp5 libopenal1 libegl1 libgl1 libegl-mesa0 libgl1-mesa-dri libgbm1; do
-  echo "$depends" | tr ',|' '\n\n' | sed 's/^ *//; s/ .*//' | grep -qx "$p" || fail "the .deb does not depend on $p"
+  grep -qx "$p" <<< "$(tr ',|' '\n\n' <<< "$depends" | sed 's/^ *//; s/ .*//')" || fail "the .deb does not depend on $p"
 done
 contents="$(dpkg-deb -c "$deb" | awk '{print $6}')"
 for f in ./opt/billiards/billiards ./opt/billiards/billiards.dll ./opt/billiards/libSkiaSharp.so \
          ./opt/billiards/assets/models/pool-9ft.obj ./opt/billiards/THIRD-PARTY-NOTICES ./usr/bin/billiards \
          ./usr/share/applications/billiards.desktop ./usr/share/icons/hicolor/256x256/apps/billiards.png \
          ./usr/share/doc/billiards/copyright; do
-  echo "$contents" | grep -qx "$f" || fail "the .deb lacks $f"
+  grep -qx "$f" <<< "$contents" || fail "the .deb lacks $f"   # (no pipe: grep -q would cut it short)
 done
 
 tmp="$(mktemp -d)"
