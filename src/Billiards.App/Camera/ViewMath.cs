@@ -41,5 +41,5 @@ public static class ViewMath
     public static Vec3 BedRight(Vec3 forward) => new(forward.Y, -forward.X, 0);
 
     /// <summary>The aim angle of a bed-plane direction (deg, from +x counter-clockwise), as <see cref="Billiards.Core.Cue.ShotSpec"/> wants it.</summary>
-    public static double AimDegrees(Vec3 direction) => Math.Atan2(direction.Y, direction.X) * 180 / Math.PI;
+    public static double AimDegrees(Vec3 direction) => DeterministicMath.Atan2(direction.Y, direction.X) * 180 / Math.PI;
 }

@@ -35,11 +35,11 @@ public sealed class CueNode : Node
     /// camera is centred on the cue ball while the player aims, so this is the camera's azimuth
     /// alone, -(cos φ, sin φ): the eye's height (which the rail and cue limits change from frame to
     /// frame) must not change the aim even in its last bit, or a scripted game would depend on the
-    /// frame rate.
+    /// frame rate. DeterministicMath: the same aim on every platform (docs/determinism.md).
     /// </summary>
     public Vec3 AimDirection => _camera is null
         ? new Vec3(1, 0, 0)
-        : new Vec3(-Math.Cos(_camera.Camera.Phi), -Math.Sin(_camera.Camera.Phi), 0);
+        : new Vec3(-DeterministicMath.Cos(_camera.Camera.Phi), -DeterministicMath.Sin(_camera.Camera.Phi), 0);
 
     /// <summary>The least elevation (deg) that clears the rail behind the cue ball along the aim (<see cref="CueClearance"/>).</summary>
     public double RailElevationDegrees => _physics is null

@@ -171,7 +171,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         {
             // A drill starts aimed straight at its first ball.
             var target = d.Scene.Balls.First(b => b.Id == d.Sequence[0]).Position - _physics.CueBallPosition;
-            CueAim.AimAt(_camera.Camera, _physics.CueBallPosition, Math.Atan2(target.Y, target.X) * 180 / Math.PI);
+            CueAim.AimAt(_camera.Camera, _physics.CueBallPosition, DeterministicMath.Atan2(target.Y, target.X) * 180 / Math.PI);
         }
     }
 

@@ -53,7 +53,7 @@ public sealed class TargetViewNode : Node
         {
             LastTarget = target.Id;
             var to = target.Position - _physics.CueBallPosition;
-            _match.AimAt(Math.Atan2(to.Y, to.X) * 180 / Math.PI);
+            _match.AimAt(DeterministicMath.Atan2(to.Y, to.X) * 180 / Math.PI);
         }
     }
 
@@ -108,7 +108,7 @@ public sealed class TargetViewNode : Node
                 var aim = centre + (k * physics.BallRadius * side) - cue;
                 if (AimPreview.Compute(sim.Balls, sim.Ids, cueIndex, aim, physics.BallRadius, [], physics.Table.Pockets).Ball is { } first && legal.Contains(first))
                 {
-                    return (first, Math.Atan2(aim.Y, aim.X) * 180 / Math.PI);
+                    return (first, DeterministicMath.Atan2(aim.Y, aim.X) * 180 / Math.PI);
                 }
             }
         }

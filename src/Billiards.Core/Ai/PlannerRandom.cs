@@ -1,3 +1,4 @@
+using Billiards.Core.Mathematics;
 namespace Billiards.Core.Ai;
 
 /// <summary>
@@ -35,7 +36,7 @@ public sealed class PlannerRandom
     {
         double u = 1.0 - NextDouble();
         double v = NextDouble();
-        return Math.Sqrt(-2.0 * Math.Log(u)) * Math.Cos(2 * Math.PI * v);
+        return Math.Sqrt(-2.0 * DeterministicMath.Log(u)) * DeterministicMath.Cos(2 * Math.PI * v);
     }
 
     /// <summary>A standard normal sample clamped to [-4, 4] (the clamp changes the standard deviation by less than 0.2 %).</summary>

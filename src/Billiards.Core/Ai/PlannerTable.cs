@@ -119,7 +119,7 @@ public sealed class PlannerTable
             return 0;
         }
         double cos = Vec3.Dot(path / d1, u);
-        if (cos < Math.Cos(MaxCutDeg * Math.PI / 180))
+        if (cos < DeterministicMath.Cos(MaxCutDeg * Math.PI / 180))
         {
             return 0;
         }
@@ -127,7 +127,7 @@ public sealed class PlannerTable
         {
             return 0;
         }
-        double objectTolerance = Math.Atan(window / d2);
+        double objectTolerance = DeterministicMath.Atan(window / d2);
         double cueTolerance = objectTolerance * 2 * R * cos / Math.Max(d1, 2 * R);
         double sigma = aimStdDeg * Math.PI / 180;
         return Erf(cueTolerance / (sigma * Math.Sqrt(2)));
@@ -317,7 +317,7 @@ public sealed class PlannerTable
     private static double Erf(double x)
     {
         double t = 1 / (1 + 0.3275911 * x);
-        double y = 1 - (((((1.061405429 * t - 1.453152027) * t) + 1.421413741) * t - 0.284496736) * t + 0.254829592) * t * Math.Exp(-x * x);
+        double y = 1 - (((((1.061405429 * t - 1.453152027) * t) + 1.421413741) * t - 0.284496736) * t + 0.254829592) * t * DeterministicMath.Exp(-x * x);
         return x >= 0 ? y : -y;
     }
 }

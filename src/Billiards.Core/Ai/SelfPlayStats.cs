@@ -1,3 +1,4 @@
+using Billiards.Core.Mathematics;
 using Billiards.Core.Rules;
 
 namespace Billiards.Core.Ai;
@@ -201,11 +202,11 @@ public sealed class DecisionHistogram
         {
             return 0;
         }
-        return (int)Math.Min(BinCount - 1, Math.Floor(BinsPerDecade * Math.Log10(ms / FirstEdgeMs)));
+        return (int)Math.Min(BinCount - 1, Math.Floor(BinsPerDecade * DeterministicMath.Log10(ms / FirstEdgeMs)));
     }
 
     /// <summary>The lower edge of bin <paramref name="bin"/> (ms).</summary>
-    public static double Edge(int bin) => FirstEdgeMs * Math.Pow(10, (double)bin / BinsPerDecade);
+    public static double Edge(int bin) => FirstEdgeMs * DeterministicMath.Pow(10, (double)bin / BinsPerDecade);
 
     /// <summary>The <paramref name="q"/> quantile (nearest rank) as the geometric middle of its bin (ms); 0 for no times.</summary>
     public double Quantile(double q)
@@ -226,7 +227,7 @@ public sealed class DecisionHistogram
                 break;
             }
         }
-        return FirstEdgeMs * Math.Pow(10, (bin + 0.5) / BinsPerDecade);
+        return FirstEdgeMs * DeterministicMath.Pow(10, (bin + 0.5) / BinsPerDecade);
     }
 
     /// <summary>The bin-by-bin sum of this histogram and <paramref name="other"/>.</summary>

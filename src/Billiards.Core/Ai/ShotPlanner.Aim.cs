@@ -37,16 +37,16 @@ public sealed partial class ShotPlanner
                 double roll = Math.Abs(tipHeight) > 0.1 ? 1 : 0.5;
                 double slip = Math.Sqrt(s * s + roll * roll * cos * cos);
                 double tan = Math.Min(mu * s / Math.Max(slip, 1e-9), 2 * s / (7 * (1 + p.EB) * cos));
-                double throwAngle = Math.Atan(tan) * Math.Sign(sin);
-                double ca = Math.Cos(throwAngle);
-                double sa = Math.Sin(throwAngle);
+                double throwAngle = DeterministicMath.Atan(tan) * Math.Sign(sin);
+                double ca = DeterministicMath.Cos(throwAngle);
+                double sa = DeterministicMath.Sin(throwAngle);
                 var turned = new Vec3(c.Direction.X * ca - c.Direction.Y * sa, c.Direction.X * sa + c.Direction.Y * ca, 0);
                 ghost = c.Contact - turned * (2 * r);
             }
             aimPoint = ghost;
         }
         var d = aimPoint - cue;
-        double aim = Math.Atan2(d.Y, d.X) * 180 / Math.PI;
+        double aim = DeterministicMath.Atan2(d.Y, d.X) * 180 / Math.PI;
         aim -= CueStrike.SquirtAngle(tipSide, p.M / p.CueEndMass) * 180 / Math.PI;
         return aim;
     }

@@ -185,12 +185,12 @@ public sealed partial class ShotPlanner
             }
             var to = position.Positions[i] - cue;
             double d = Math.Max(to.LengthXY, 2 * r + 1e-6);
-            double centre = Math.Atan2(to.Y, to.X) * 180 / Math.PI;
+            double centre = DeterministicMath.Atan2(to.Y, to.X) * 180 / Math.PI;
             for (int c = 0; c < level.Cuts; c++)
             {
                 // Cut fractions from -0.9 to 0.9 of the full-ball window.
                 double f = level.Cuts == 1 ? 0 : -0.9 + (1.8 * c / (level.Cuts - 1));
-                Add(centre + (Math.Asin(Math.Clamp(f * 2 * r / d, -1, 1)) * 180 / Math.PI));
+                Add(centre + (DeterministicMath.Asin(Math.Clamp(f * 2 * r / d, -1, 1)) * 180 / Math.PI));
             }
         }
         if (state.Shot > 0)

@@ -93,7 +93,7 @@ public sealed partial class ShotPlanner
                     foreach (double cutDeg in (ReadOnlySpan<double>)[0, 15, -15, 30, -30])
                     {
                         double a = cutDeg * Math.PI / 180;
-                        var back = new Vec3(u.X * Math.Cos(a) - u.Y * Math.Sin(a), u.X * Math.Sin(a) + u.Y * Math.Cos(a), 0);
+                        var back = new Vec3(u.X * DeterministicMath.Cos(a) - u.Y * DeterministicMath.Sin(a), u.X * DeterministicMath.Sin(a) + u.Y * DeterministicMath.Cos(a), 0);
                         foreach (double distance in (ReadOnlySpan<double>)[0.15, 0.3, 0.55])
                         {
                             var p = (ghost - back * distance) with { Z = r };
@@ -144,8 +144,8 @@ public sealed partial class ShotPlanner
                     {
                         double a = k * Math.PI / 10;
                         grid.Add(new Vec3(baulk - (2 * r), k * d / 4, r));
-                        grid.Add(new Vec3(baulk - (2 * r) - (0.5 * d * Math.Cos(a)), 0.5 * d * Math.Sin(a), r));
-                        grid.Add(new Vec3(baulk - (2 * r) - (d * Math.Cos(a)), d * Math.Sin(a), r));
+                        grid.Add(new Vec3(baulk - (2 * r) - (0.5 * d * DeterministicMath.Cos(a)), 0.5 * d * DeterministicMath.Sin(a), r));
+                        grid.Add(new Vec3(baulk - (2 * r) - (d * DeterministicMath.Cos(a)), d * DeterministicMath.Sin(a), r));
                     }
                     grid.RemoveAll(p => !without.CanPlace(p, region, t, r, position.CueBall));
                 }

@@ -137,7 +137,7 @@ public sealed partial class ShotPlanner
                 foreach (double speed in speeds)
                 {
                     var d = aimPoint - root.Cue;
-                    var shot = new ShotSpec(speed * _table.TipScale, Math.Atan2(d.Y, d.X) * 180 / Math.PI, 0, -0.2, 0);
+                    var shot = new ShotSpec(speed * _table.TipScale, DeterministicMath.Atan2(d.Y, d.X) * 180 / Math.PI, 0, -0.2, 0);
                     variations.Add(new Variation(rootIndex, c, shot, before));
                 }
             }
@@ -175,7 +175,7 @@ public sealed partial class ShotPlanner
                     var aimPoint = o + (outward * (offset * _table.R));
                     var c = new Candidate(ShotKind.Safety, id, id, PocketId.None, o, Vec3.Zero, aimPoint, 4, 0.1);
                     var d = aimPoint - cue;
-                    double aim = Math.Atan2(d.Y, d.X) * 180 / Math.PI;
+                    double aim = DeterministicMath.Atan2(d.Y, d.X) * 180 / Math.PI;
                     foreach (double speed in speeds)
                     {
                         foreach (double side in sides)

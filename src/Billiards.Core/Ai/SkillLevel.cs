@@ -1,3 +1,4 @@
+using Billiards.Core.Mathematics;
 using Billiards.Core.Cue;
 
 namespace Billiards.Core.Ai;

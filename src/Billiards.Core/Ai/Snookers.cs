@@ -53,7 +53,7 @@ public static class Snookers
             for (int k = 0; k < solids && ok; k++)
             {
                 double angle = 2 * Math.PI * random.NextDouble();
-                var u = new Vec3(Math.Cos(angle), Math.Sin(angle), 0);
+                var u = new Vec3(DeterministicMath.Cos(angle), DeterministicMath.Sin(angle), 0);
                 var target = cue + (u * (0.6 + (0.8 * random.NextDouble())));
                 var blocker = cue + (u * (0.15 + (0.2 * random.NextDouble()))) + (new Vec3(-u.Y, u.X, 0) * (radius * ((random.NextDouble() * 1.2) - 0.6)));
                 ok = Free(target) && Free(blocker);

@@ -65,7 +65,7 @@ public static class CueClearance
             return 0;
         }
         double rise = RailTop(table) + RailGap + RadiusAt(s) - radius - (tipHeight * radius);
-        return rise <= 0 ? 0 : Math.Atan2(rise, s) * 180 / Math.PI;
+        return rise <= 0 ? 0 : DeterministicMath.Atan2(rise, s) * 180 / Math.PI;
     }
 
     /// <summary>
@@ -96,7 +96,7 @@ public static class CueClearance
             return 0;
         }
         double sine = (Math.Sqrt((clear * clear) - (d * d)) - (tipHeight * radius)) / s;
-        return sine <= 0 ? 0 : sine >= 1 ? 90 : Math.Asin(sine) * 180 / Math.PI;
+        return sine <= 0 ? 0 : sine >= 1 ? 90 : DeterministicMath.Asin(sine) * 180 / Math.PI;
     }
 
     /// <summary>
@@ -128,7 +128,7 @@ public static class CueClearance
     {
         ArgumentNullException.ThrowIfNull(shot);
         double a = shot.AimDeg * Math.PI / 180;
-        var aim = new Vec3(Math.Cos(a), Math.Sin(a), 0);
+        var aim = new Vec3(DeterministicMath.Cos(a), DeterministicMath.Sin(a), 0);
         double min = MinElevationDegrees(table, radius, cueBall, aim, balls, shot.TipSide, shot.TipHeight);
         return shot.ElevationDeg >= min ? shot : shot with { ElevationDeg = min };
     }

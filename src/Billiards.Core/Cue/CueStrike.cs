@@ -78,7 +78,7 @@ public static class CueStrike
     public static double SquirtAngle(double side, double massRatio)
     {
         double oneMinus = 1 - side * side;
-        return Math.Atan(2.5 * side * Math.Sqrt(Math.Max(0, oneMinus)) / (1 + massRatio + 2.5 * oneMinus));
+        return DeterministicMath.Atan(2.5 * side * Math.Sqrt(Math.Max(0, oneMinus)) / (1 + massRatio + 2.5 * oneMinus));
     }
 
     /// <summary>The cue ball's velocity and spin from a shot (see the class remarks for the frame).</summary>
@@ -88,13 +88,13 @@ public static class CueStrike
         ArgumentNullException.ThrowIfNull(p);
         double r = p.R;
         double theta = shot.ElevationDeg * Math.PI / 180;
-        double cos = Math.Cos(theta);
-        double sin = Math.Sin(theta);
+        double cos = DeterministicMath.Cos(theta);
+        double sin = DeterministicMath.Sin(theta);
         if (p.Tip == TipFrame.Cue && IsMiscue(shot, p))
         {
             double weak = MiscueSpeedFraction * BallSpeed(shot.Speed, 0, 0, p);
             double aim = shot.AimDeg * Math.PI / 180;
-            var along = new Vec3(Math.Cos(aim), Math.Sin(aim), 0);
+            var along = new Vec3(DeterministicMath.Cos(aim), DeterministicMath.Sin(aim), 0);
             return new Outcome(along * (weak * cos), Vec3.Zero, weak * sin, Miscue: true);
         }
         double a = shot.TipSide * r;
@@ -111,7 +111,7 @@ public static class CueStrike
         // Right english squirts the ball to the left: turn the whole strike anticlockwise.
         double squirt = SquirtAngle(shot.TipSide, p.M / p.CueEndMass);
         double phi = shot.AimDeg * Math.PI / 180 + squirt;
-        var j = new Vec3(Math.Cos(phi), Math.Sin(phi), 0);
+        var j = new Vec3(DeterministicMath.Cos(phi), DeterministicMath.Sin(phi), 0);
         var i = new Vec3(j.Y, -j.X, 0);
 
         var velocity = j * (v * cos);

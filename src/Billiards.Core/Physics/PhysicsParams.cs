@@ -1,3 +1,4 @@
+using Billiards.Core.Mathematics;
 namespace Billiards.Core.Physics;
 
 /// <summary>How the ball-ball friction coefficient is chosen.</summary>
@@ -166,8 +167,8 @@ public sealed record PhysicsParams(
     /// <summary>Ball-ball friction for a given slip speed (m/s) at the contact.</summary>
     public double BallBallMu(double slipSpeed) => MuBModel switch
     {
-        BallBallFriction.Alciatore => 0.009951 + 0.108 * Math.Exp(-1.088 * slipSpeed),
-        BallBallFriction.Measured => MeasuredMuB.A + (MeasuredMuB.B * Math.Exp(-MeasuredMuB.C * slipSpeed)),
+        BallBallFriction.Alciatore => 0.009951 + 0.108 * DeterministicMath.Exp(-1.088 * slipSpeed),
+        BallBallFriction.Measured => MeasuredMuB.A + (MeasuredMuB.B * DeterministicMath.Exp(-MeasuredMuB.C * slipSpeed)),
         _ => MuB,
     };
 

@@ -431,7 +431,7 @@ public sealed class ShotReplay
         if (last.Time < beforeTime && run.Length > 1e-9 && step.Length > 1e-12)
         {
             double cos = Vec3.Dot(run, step) / (run.Length * step.Length);
-            turned = cos < Math.Cos(PathTurnDegrees * Math.PI / 180);
+            turned = cos < DeterministicMath.Cos(PathTurnDegrees * Math.PI / 180);
         }
         if (turned)
         {

@@ -1,3 +1,4 @@
+using Billiards.Core.Mathematics;
 using System.Numerics;
 using Billiards.Core.Cue;
 using Billiards.Core.Physics.Thesis;
@@ -138,8 +139,8 @@ public static partial class Initializer
             return;
         }
         double gc = t.CornerGap, gs = t.SideGap;
-        double cornerJaw = d / Math.Tan(ThesisTable.CornerJawDeg * Math.PI / 180); // how far the jaw leans along the rail
-        double sideJaw = d / Math.Tan(ThesisTable.SideJawDeg * Math.PI / 180);
+        double cornerJaw = d / DeterministicMath.Tan(ThesisTable.CornerJawDeg * Math.PI / 180); // how far the jaw leans along the rail
+        double sideJaw = d / DeterministicMath.Tan(ThesisTable.SideJawDeg * Math.PI / 180);
         double cornerNose = w + d - gc - cornerJaw; // where a short cushion's nose ends
         double longNose = l + d - gc - cornerJaw;   // where a long cushion's nose ends at a corner
         double sideNose = gs / 2 + sideJaw;         // where a long cushion's nose ends at a side pocket
@@ -163,7 +164,7 @@ public static partial class Initializer
         for (int k = 0; k <= BackChords; k++)
         {
             double a = (startDeg + k * 180.0 / BackChords) * Math.PI / 180;
-            outline.Add((cx + radius * Math.Cos(a), cz + radius * Math.Sin(a), k < BackChords ? FirstBack + pocket : FirstJaw + pocket));
+            outline.Add((cx + radius * DeterministicMath.Cos(a), cz + radius * DeterministicMath.Sin(a), k < BackChords ? FirstBack + pocket : FirstJaw + pocket));
         }
     }
 

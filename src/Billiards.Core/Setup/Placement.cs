@@ -210,7 +210,7 @@ public static class Placement
             for (int k = 0; k < count; k++)
             {
                 double a = 2 * Math.PI * k / count;
-                var p = near + new Vec3(ring * radius * Math.Cos(a), ring * radius * Math.Sin(a), 0);
+                var p = near + new Vec3(ring * radius * DeterministicMath.Cos(a), ring * radius * DeterministicMath.Sin(a), 0);
                 if (Free(p))
                 {
                     return p;

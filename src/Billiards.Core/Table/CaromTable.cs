@@ -60,7 +60,7 @@ public static class CaromTable
     /// The angle (rad) above a ball's equator at which a cushion of contact height
     /// <paramref name="noseHeight"/> meets a ball of radius <paramref name="radius"/>: asin((h - R) / R).
     /// </summary>
-    public static double ContactAngle(double noseHeight, double radius) => Math.Asin((noseHeight - radius) / radius);
+    public static double ContactAngle(double noseHeight, double radius) => DeterministicMath.Asin((noseHeight - radius) / radius);
 
     /// <summary>The foot spot (the red's): a quarter of the length from the foot cushion (m, z = <paramref name="radius"/>).</summary>
     public static Vec3 FootSpot(TableSpec table, double radius) => new(table.HalfLength / 2, 0, radius);

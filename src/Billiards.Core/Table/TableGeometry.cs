@@ -193,7 +193,7 @@ public sealed partial class TableGeometry
             double angle = set[pocket].JawAngleDeg * Math.PI / 180;
             // The jaw turns from the rail through the cushion body (away from the balls) by the
             // jaw angle measured from the direction back along the rail.
-            var jaw = back * Math.Cos(angle) - nIn * Math.Sin(angle);
+            var jaw = back * DeterministicMath.Cos(angle) - nIn * DeterministicMath.Sin(angle);
             // Its face looks to the same side of the boundary as the rail's face does.
             var walk = -back;
             bool leftHanded = walk.X * nIn.Y - walk.Y * nIn.X > 0;
@@ -201,9 +201,9 @@ public sealed partial class TableGeometry
 
             // Round the corner with a nose tangent to both faces, inside the cushion body.
             double nose = spec.JawNoseRadius;
-            double tangent = nose / Math.Tan(angle / 2);
+            double tangent = nose / DeterministicMath.Tan(angle / 2);
             var bisector = (back + jaw).Normalized();
-            var noseCentre = tip + bisector * (nose / Math.Sin(angle / 2));
+            var noseCentre = tip + bisector * (nose / DeterministicMath.Sin(angle / 2));
             int feature = names.Count;
             names.Add($"{set[pocket].Name}-jaw-{railWord}");
             ids.Add(CushionId.Jaw(set.Id(pocket)));

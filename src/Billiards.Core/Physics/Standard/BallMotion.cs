@@ -264,7 +264,10 @@ public static class BallMotion
             return;
         }
         var axis = phi / angle;
-        var dq = Quaternion.CreateFromAxisAngle(new Vector3((float)axis.X, (float)axis.Y, (float)axis.Z), (float)angle);
+        // Quaternion.CreateFromAxisAngle's, with the sine and cosine of DeterministicMath (its
+        // MathF calls differ across C runtimes).
+        float half = (float)angle * 0.5f;
+        var dq = new Quaternion(new Vector3((float)axis.X, (float)axis.Y, (float)axis.Z) * (float)DeterministicMath.Sin(half), (float)DeterministicMath.Cos(half));
         q = Quaternion.Normalize(dq * q);
     }
 

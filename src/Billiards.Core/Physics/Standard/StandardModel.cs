@@ -63,9 +63,9 @@ public sealed class StandardModel : PhysicsModel
             for (int k = 0; k < Sides; k++)
             {
                 double a0 = 2 * Math.PI * k / Sides, a1 = 2 * Math.PI * (k + 1) / Sides, mid = (a0 + a1) / 2;
-                var p0 = nose.Centre + new Vec3(Math.Cos(a0), Math.Sin(a0), 0) * nose.Radius;
-                var p1 = nose.Centre + new Vec3(Math.Cos(a1), Math.Sin(a1), 0) * nose.Radius;
-                Quad(p0, p1, new Vec3(Math.Cos(mid), Math.Sin(mid), 0));
+                var p0 = nose.Centre + new Vec3(DeterministicMath.Cos(a0), DeterministicMath.Sin(a0), 0) * nose.Radius;
+                var p1 = nose.Centre + new Vec3(DeterministicMath.Cos(a1), DeterministicMath.Sin(a1), 0) * nose.Radius;
+                Quad(p0, p1, new Vec3(DeterministicMath.Cos(mid), DeterministicMath.Sin(mid), 0));
             }
         }
         return list;

@@ -1,3 +1,4 @@
+using Billiards.Core.Mathematics;
 using System.Numerics;
 using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
@@ -146,7 +147,7 @@ public sealed partial class PhysicsEngine
         _random = random;
         // Formel 5 is per 1/250 s step: raise it to the number of seed steps in dt so that the
         // damping per second is the seed's, 0.9965^250 = 0.416, whatever the step.
-        DampingPerStep = (float)Math.Pow(SeedDamping, SeedStepsPerSecond * dt);
+        DampingPerStep = (float)DeterministicMath.Pow(SeedDamping, SeedStepsPerSecond * dt);
         _startPositions = new Vector3[balls.Length];
         for (int i = 0; i < balls.Length; i++)
         {
@@ -315,7 +316,7 @@ public sealed partial class PhysicsEngine
         }
         var axis = Vector3.Normalize(Vector3.Cross(Vector3.UnitY, displacement));
         float angle = distance / BallRadius;
-        var step = new Quaternion(MathF.Sin(angle / 2) * axis, MathF.Cos(angle / 2));
+        var step = new Quaternion((float)DeterministicMath.Sin(angle / 2) * axis, (float)DeterministicMath.Cos(angle / 2));
         return step * orientation; // System.Numerics' * is the Hamilton product of Formel 10
     }
 
@@ -499,7 +500,7 @@ public sealed partial class PhysicsEngine
     {
         float speed = velocity.Length();
         float cosine = Vector3.Dot(-velocity, normal) / (speed * normal.Length());
-        float angle = MathF.Acos(Math.Clamp(cosine, -1f, 1f)) * 180f / MathF.PI;          // 22
+        float angle = (float)DeterministicMath.Acos(Math.Clamp(cosine, -1f, 1f)) * 180f / MathF.PI;          // 22
         var vCrossN = Vector3.Cross(velocity, normal);                                     // 23
         float f = MathF.Min(speed / EffetSpeedDivisor, EffetFactorCap);
         Vector3 h;
@@ -524,7 +525,7 @@ public sealed partial class PhysicsEngine
         {
             cueEffet.EX *= EffetKeep;
         }
-        float l = MathF.Tan(angle * MathF.PI / 180f);                                     // 27
+        float l = (float)DeterministicMath.Tan(angle * MathF.PI / 180f);                                     // 27
         var direction = Vector3.Normalize(normal + Vector3.Normalize(h) * l);             // 28
         if (!isBouncing)
         {
@@ -647,7 +648,7 @@ public sealed partial class PhysicsEngine
             for (int k = 0; k < RespotPoints; k++)
             {
                 double angle = Math.PI + 2 * Math.PI * k / RespotPoints;
-                var p = new Vector3(start.X + radius * (float)Math.Cos(angle), start.Y, start.Z + radius * (float)Math.Sin(angle));
+                var p = new Vector3(start.X + radius * (float)DeterministicMath.Cos(angle), start.Y, start.Z + radius * (float)DeterministicMath.Sin(angle));
                 if (IsFree(index, p))
                 {
                     return p;

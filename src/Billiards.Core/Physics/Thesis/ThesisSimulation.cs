@@ -141,7 +141,7 @@ public sealed partial class ThesisSimulation : Simulation
         double aim = shot.AimDeg * Math.PI / 180;
         double cueSpeed = Math.Min(shot.Speed * SeedFrame.CentimetresPerMetre, ThesisCue.MaxStrokeSpeed);
         float speed = (float)(cueSpeed * CueToBallSpeed);
-        var direction = SeedFrame.FromSi(new Vec3(Math.Cos(aim), Math.Sin(aim), 0));
+        var direction = SeedFrame.FromSi(new Vec3(DeterministicMath.Cos(aim), DeterministicMath.Sin(aim), 0));
         Queue.EX = (float)shot.TipSide * Radius;
         Queue.EY = (float)shot.TipHeight * Radius;
         Queue.Grade = (float)shot.ElevationDeg;

@@ -105,7 +105,7 @@ public sealed class StrongeCompliant : IBallCushionModel
         }
         else if (q <= mu * B)
         {
-            ts = Math.Acos(Math.Clamp((q / mu - B) / (eta2 - B), -1, 1));
+            ts = DeterministicMath.Acos(Math.Clamp((q / mu - B) / (eta2 - B), -1, 1));
         }
         else
         {
@@ -115,7 +115,7 @@ public sealed class StrongeCompliant : IBallCushionModel
             {
                 return q - mu * B * (1 + e); // gross slip: Coulomb friction throughout
             }
-            ts = e * (Math.Acos(x) - tc) + tc;
+            ts = e * (DeterministicMath.Acos(x) - tc) + tc;
         }
 
         // Stuck: the tangential spring (deflection u) and the slip oscillate at omega_t from the
@@ -150,8 +150,8 @@ public sealed class StrongeCompliant : IBallCushionModel
         }
         double tr = hi;
         double phase = r * (tr - ts);
-        double gr = gs * Math.Cos(phase) - r * us * Math.Sin(phase);
-        double ur = us * Math.Cos(phase) + gs / r * Math.Sin(phase);
+        double gr = gs * DeterministicMath.Cos(phase) - r * us * DeterministicMath.Sin(phase);
+        double ur = us * DeterministicMath.Cos(phase) + gs / r * DeterministicMath.Sin(phase);
 
         // Slipping to the end with the spring's force at the friction limit.
         return gr - Math.Sign(ur) * mu * B * (NormalImpulse(tf, e) - NormalImpulse(tr, e));
@@ -160,7 +160,7 @@ public sealed class StrongeCompliant : IBallCushionModel
     private static double Excess(double t, double ts, double gs, double us, double r, double limit, double e)
     {
         double phase = r * (t - ts);
-        double u = us * Math.Cos(phase) + gs / r * Math.Sin(phase);
+        double u = us * DeterministicMath.Cos(phase) + gs / r * DeterministicMath.Sin(phase);
         return Math.Abs(u) - limit * NormalForce(t, e);
     }
 
@@ -169,9 +169,9 @@ public sealed class StrongeCompliant : IBallCushionModel
 
     // Normal force per unit mass (in units of omega_n times the approach speed).
     private static double NormalForce(double t, double e) =>
-        t <= Math.PI / 2 ? Math.Sin(t) : Math.Max(0, Math.Sin(RestitutionPhase(t, e)));
+        t <= Math.PI / 2 ? DeterministicMath.Sin(t) : Math.Max(0, DeterministicMath.Sin(RestitutionPhase(t, e)));
 
     // Normal impulse per unit mass since contact (in units of the approach speed): (1 + e) at the end.
     private static double NormalImpulse(double t, double e) =>
-        t <= Math.PI / 2 ? 1 - Math.Cos(t) : 1 - e * Math.Cos(RestitutionPhase(t, e));
+        t <= Math.PI / 2 ? 1 - DeterministicMath.Cos(t) : 1 - e * DeterministicMath.Cos(RestitutionPhase(t, e));
 }

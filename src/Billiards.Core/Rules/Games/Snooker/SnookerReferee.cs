@@ -384,7 +384,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
                 return false;
             }
             double a = strike.AimDeg * Math.PI / 180;
-            var u = new Vec3(Math.Cos(a), Math.Sin(a), 0);
+            var u = new Vec3(DeterministicMath.Cos(a), DeterministicMath.Sin(a), 0);
             double reach = Vec3.Dot(target - cue, u);
             foreach (var (id, p) in positions)
             {
