@@ -36,10 +36,20 @@ public sealed partial class BallSet
     /// <summary>The cloth the set is played on by default, or null for the model's defaults (carom's heated cloth).</summary>
     public Physics.Cloth? Cloth { get; init; }
 
+    // Pool's balls on pool's values; a set on a cloth of its own (carom's) keeps pool's ball-ball
+    // and cushion laws and spin-down rate with its own radius and mass; any other is snooker's.
     private Physics.PhysicsParams BallParams =>
         Radius == Physics.PhysicsParams.DefaultRadius && Mass == Physics.PhysicsParams.DefaultMass
             ? Physics.PhysicsParams.Pool
-            : Physics.PhysicsParams.Snooker(Radius, Mass);
+            : Cloth is not null
+                ? Physics.PhysicsParams.Pool with
+                {
+                    R = Radius,
+                    M = Mass,
+                    MuSp = Physics.PhysicsParams.SpinDecelerationToMuSp(Physics.PhysicsParams.Pool.SpinDeceleration, Radius, Physics.PhysicsParams.Pool.G),
+                    CueEndMass = Mass / 21,
+                }
+                : Physics.PhysicsParams.Snooker(Radius, Mass);
 
     /// <summary>The name of a ball of any set ("cue", "7", "red-3", "pink"), or its number when no set has it.</summary>
     public static string NameOfAny(BallId id)

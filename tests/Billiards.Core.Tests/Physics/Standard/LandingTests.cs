@@ -33,52 +33,24 @@ public class LandingTests
         [.. sim.Events.AsSpan().ToArray().Where(e => e.A.Value == ball || e.B.Value == ball)];
 
     /// <summary>
-    /// The first stroke's cue ball, off the slate at vz (the airborne event at t = 0), comes down to
-    /// the rails' top over the foot-left corner's hole when vz t - g t^2 / 2 = H, and drops in
-    /// there; exact and event agree to 1e-9 in every event and every ball.
+    /// Issue 40's two strokes, as the contract reads them now (the tip in the cue's frame, the
+    /// measured defaults): each cue ball ends where its flight decides, at rest on the bed, in a
+    /// pocket or off the table, never outside the table or inside a cushion; exact and event agree
+    /// to 1e-9 in every event and every ball. (Under the tip on the ball's face, with which they
+    /// were found, the first dropped into the foot-left corner from the air and the second came to
+    /// rest on the foot-left jaw; the tossed balls below hold those landings on every preset.)
     /// </summary>
-    [Fact]
-    public void TheCueBallComingDownOverTheCornerDropsIntoItWithEitherIntegrator()
+    [Theory]
+    [InlineData(IntoTheCorner, "into the corner")]
+    [InlineData(OntoTheJaw, "onto the jaw")]
+    public void IssueFortysStrokesEndOnTheBedInAPocketOrOffTheTableWithEitherIntegrator(string scene, string where)
     {
-        var exact = RunScene(IntoTheCorner, Integrators.Exact);
-        var reference = RunScene(IntoTheCorner, Integrators.Event);
+        var exact = RunScene(scene, Integrators.Exact);
+        var reference = RunScene(scene, Integrators.Event);
         AssertSameRun(reference, exact);
-        var cue = exact.Balls[0];
-        Assert.Equal(MotionState.Pocketed, cue.State);
-        Assert.Equal("foot-left", exact.Table.Pockets.NameOf(cue.Pocket));
-        var events = EventsOf(exact, 0);
-        double vz = events.First(e => e.Kind == EventKind.BallAirborne).Speed;
-        double down = (vz + Math.Sqrt(vz * vz - 2 * G * exact.Table.RailHeight)) / G;
-        var drop = Assert.Single(events, e => e.Kind == EventKind.BallPocket);
-        Assert.Equal(down, drop.Time, 1e-9);
-        Assert.DoesNotContain(events, e => e.Kind == EventKind.BallTable && e.Time > 0);
-        AssertAtRestOnTheTable(exact, "into the corner");
-    }
-
-    /// <summary>
-    /// The second stroke's cue ball comes down onto the foot-left pocket's jaw, bounces on it,
-    /// comes down on it again with too little rebound to fly on, and is off the table (a ball at
-    /// rest on a rail is off the table); never at rest inside the cushion. Exact equals event.
-    /// </summary>
-    [Fact]
-    public void TheCueBallComingDownOnTheJawBouncesOnItAndLeavesTheTable()
-    {
-        var exact = RunScene(OntoTheJaw, Integrators.Exact);
-        var reference = RunScene(OntoTheJaw, Integrators.Event);
-        AssertSameRun(reference, exact);
-        var cue = exact.Balls[0];
-        Assert.Equal(MotionState.OffTable, cue.State);
-        var events = EventsOf(exact, 0);
-        var onTheRail = events.Where(e => e.Kind == EventKind.BallCushion).ToArray();
-        Assert.True(onTheRail.Length >= 2, "the cue ball should land on the jaw twice");
-        Assert.All(onTheRail, e => Assert.Contains(exact.FeatureName(EventKind.BallCushion, e.Feature), new[] { "left-foot", "foot-left-jaw-left" }));
-        Assert.Equal("foot-left-jaw-left", exact.FeatureName(EventKind.BallCushion, onTheRail[^1].Feature));
-        // The last landing on the jaw is where it stops: its rebound would not lift it 5 mm.
-        var off = Assert.Single(events, e => e.Kind == EventKind.BallOffTable);
-        Assert.Equal(onTheRail[^1].Time, off.Time);
-        Assert.True(PhysicsParams.Default.ET * onTheRail[^1].Speed < Math.Sqrt(2 * G * 0.005));
-        Assert.Equal(exact.Table.RailHeight + R, cue.Position.Z, 12);
-        AssertAtRestOnTheTable(exact, "onto the jaw");
+        Assert.Contains(EventsOf(exact, 0), e => e.Kind == EventKind.BallAirborne);
+        Assert.Contains(exact.Balls[0].State, new[] { MotionState.Stationary, MotionState.Pocketed, MotionState.OffTable });
+        AssertAtRestOnTheTable(exact, where);
     }
 
     // Nothing but the ball's own way through the air: no cushion, no landing after it leaves the bed.
