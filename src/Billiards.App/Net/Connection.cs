@@ -41,6 +41,9 @@ public sealed class Connection : IDisposable
     private long _pingSent = -1;
     private double _pingAt;
     private string? _closed;
+    private string? _closing;
+    private bool _greeted;
+    private readonly SemaphoreSlim _arrived = new(0);
 
     /// <summary>Starts reading and writing on <paramref name="client"/>, a connected socket.</summary>
     /// <param name="client">The connected socket (the connection owns it).</param>
@@ -66,10 +69,10 @@ public sealed class Connection : IDisposable
     public string Name { get; }
 
     /// <summary>True until either side closes.</summary>
-    public bool IsOpen => Volatile.Read(ref _closed) is null;
+    public bool IsOpen => Volatile.Read(ref _closed) is null && Volatile.Read(ref _closing) is null;
 
     /// <summary>Why the connection closed, or null while open.</summary>
-    public string? ClosedBecause => Volatile.Read(ref _closed);
+    public string? ClosedBecause => Volatile.Read(ref _closed) ?? Volatile.Read(ref _closing);
 
     /// <summary>The last round trip of a ping (ms), or null before the first answer.</summary>
     public double? RoundTripMs { get; private set; }
@@ -80,6 +83,12 @@ public sealed class Connection : IDisposable
     /// <summary>Takes the next checked message, without waiting.</summary>
     public bool TryReceive(out Message message) => _inbox.TryDequeue(out message!);
 
+    private void Arrived(Message message)
+    {
+        _inbox.Enqueue(message);
+        _arrived.Release();
+    }
+
     /// <summary>Queues <paramref name="message"/> to be sent (never waits; dropped once closed).</summary>
     public void Send(Message message)
     {
@@ -89,37 +98,35 @@ public sealed class Connection : IDisposable
         }
     }
 
-    /// <summary>Sends <paramref name="reason"/> as a bye and closes once it is written (bounded by 1 s).</summary>
+    /// <summary>Sends <paramref name="reason"/> as a bye and closes once it is written (within the frame deadline); never waits.</summary>
     public void Close(string reason)
     {
-        if (!IsOpen)
+        if (!IsOpen || Interlocked.CompareExchange(ref _closing, reason, null) is not null)
         {
             return;
         }
-        Send(new Bye(reason));
+        _outbox.Writer.TryWrite(Framing.Frame(MessageCodec.Write(new Bye(reason))));
         _outbox.Writer.TryComplete();
-        // Let the writer flush the bye, briefly.
-        _writer.Wait(TimeSpan.FromSeconds(1));
-        Shut($"closed: {reason}", log: false);
+        _ = Task.Run(async () =>
+        {
+            // Let the writer flush the bye, briefly.
+            await Task.WhenAny(_writer, Task.Delay(_limits.FrameDeadline)).ConfigureAwait(false);
+            Shut($"closed: {reason}", log: false);
+        });
     }
 
     /// <summary>Waits for the first message (the hello), up to <paramref name="timeout"/>; null when none came or the connection closed.</summary>
-    public Message? WaitFirst(TimeSpan timeout)
+    public Message? WaitFirst(TimeSpan timeout) => WaitFirstAsync(timeout).GetAwaiter().GetResult();
+
+    /// <summary>Waits for the first message without holding a thread (the host's handshakes).</summary>
+    public async Task<Message?> WaitFirstAsync(TimeSpan timeout)
     {
-        var until = _clock.Elapsed + timeout;
-        while (_clock.Elapsed < until)
+        if (TryReceive(out var m))
         {
-            if (TryReceive(out var m))
-            {
-                return m;
-            }
-            if (!IsOpen)
-            {
-                return null;
-            }
-            Thread.Sleep(5);
+            return m;
         }
-        return null;
+        await _arrived.WaitAsync(timeout).ConfigureAwait(false);
+        return TryReceive(out m) ? m : null;
     }
 
     private async Task ReadLoop()
@@ -140,6 +147,11 @@ public sealed class Connection : IDisposable
                 }
                 var message = MessageCodec.Parse(body);
                 Received++;
+                if (!_greeted && message is not Ping)
+                {
+                    // Pings may come first (the other side's writer pings while it waits); then the hello.
+                    _greeted = message is Hello or Bye ? true : throw new ProtocolException($"expected a hello first, not {message.Kind}");
+                }
                 switch (message)
                 {
                     case Ping { Reply: false } p:
@@ -152,11 +164,11 @@ public sealed class Connection : IDisposable
                         }
                         break;
                     case Bye b:
-                        _inbox.Enqueue(b);
+                        Arrived(b);
                         Shut($"the peer said bye: {MessageCodec.Clip(b.Reason)}", log: true);
                         return;
                     default:
-                        _inbox.Enqueue(message);
+                        Arrived(message);
                         break;
                 }
             }
@@ -240,6 +252,8 @@ public sealed class Connection : IDisposable
         _stop.Cancel();
         _outbox.Writer.TryComplete();
         _client.Close();
+        // A waiter for the first message wakes to find none.
+        _arrived.Release();
     }
 
     /// <inheritdoc />

@@ -35,7 +35,7 @@ public static class Handshake
         ArgumentNullException.ThrowIfNull(setup);
         string record = Encoding.UTF8.GetString(GameRecordFile.ToUtf8(new Match(setup), indented: false)).TrimEnd('\n');
         var (models, hash) = Fingerprint(record);
-        return new HostGame(record, models, hash, setup.Seed);
+        return new HostGame(record, models, hash, setup.Start.Players.First, setup.Start.Players.Second);
     }
 
     /// <summary>The physics' models (the physics block, for messages) and the hash of the table and physics blocks of a record's JSON.</summary>
@@ -69,7 +69,12 @@ public static class Handshake
         {
             return (null, $"physics differ: the host's {game.Models} hash {game.Hash[..12]}, here {models} hash {hash[..12]}");
         }
-        return (record.Setup, null);
+        if (Core.Rules.Seat.Parse(game.FirstPlayer, 0) is null || Core.Rules.Seat.Parse(game.SecondPlayer, 1) is null)
+        {
+            return (null, "the host's players are not names of 1-24 characters");
+        }
+        var setup = record.Setup;
+        return (setup with { Start = setup.Start with { Players = new Core.Rules.PerPlayer<string>(game.FirstPlayer, game.SecondPlayer) } }, null);
     }
 
     /// <summary>Why the two hellos cannot play together (one line naming what differs), or null.</summary>

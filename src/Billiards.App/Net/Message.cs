@@ -19,11 +19,12 @@ public abstract record Message
 }
 
 /// <summary>The physics and the game the host chose, in its hello.</summary>
-/// <param name="Scene">The game's scene as the host's SceneWriter writes it (table, physics, balls, game block).</param>
+/// <param name="Scene">The game not yet played as a game record (compact JSON: table, physics, rack).</param>
 /// <param name="Models">The physics' model names, for the one line that says what differs.</param>
 /// <param name="Hash">SHA-256 (hex) of the scene's table and physics as written.</param>
-/// <param name="Seed">The rack's seed.</param>
-public sealed record HostGame(string Scene, string Models, string Hash, int Seed);
+/// <param name="FirstPlayer">Player 1's name (the host's seat).</param>
+/// <param name="SecondPlayer">Player 2's name.</param>
+public sealed record HostGame(string Scene, string Models, string Hash, string FirstPlayer, string SecondPlayer);
 
 /// <summary>The handshake: both sides send one first; the host's carries the game.</summary>
 /// <param name="Program">The program's version (<c>billiards --version</c>).</param>
@@ -172,7 +173,7 @@ public static class MessageCodec
     private static HostGame HostGameOf(JsonElement e)
     {
         var f = new Fields(e);
-        var game = new HostGame(f.Text("scene", Framing.MaxMessageBytes), f.Text("models", 1000), f.Hex("hash"), f.Int("seed", int.MinValue, int.MaxValue));
+        var game = new HostGame(f.Text("scene", Framing.MaxMessageBytes), f.Text("models", 1000), f.Hex("hash"), f.Text("first_player", Core.Rules.Seat.MaxNameLength), f.Text("second_player", Core.Rules.Seat.MaxNameLength));
         f.NoOthers("hello.game");
         return game;
     }
@@ -199,7 +200,8 @@ public static class MessageCodec
                         w.WriteString("scene", g.Scene);
                         w.WriteString("models", g.Models);
                         w.WriteString("hash", g.Hash);
-                        w.WriteNumber("seed", g.Seed);
+                        w.WriteString("first_player", g.FirstPlayer);
+                        w.WriteString("second_player", g.SecondPlayer);
                         w.WriteEndObject();
                     }
                     break;

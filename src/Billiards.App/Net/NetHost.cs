@@ -87,17 +87,17 @@ public sealed class NetHost : IDisposable
                 client.Dispose();
                 continue;
             }
-            _ = Task.Run(() => Admit(client, name));
+            _ = Admit(client, name);
         }
     }
 
-    private void Admit(TcpClient client, string name)
+    private async Task Admit(TcpClient client, string name)
     {
         Connection? connection = null;
         try
         {
             connection = new Connection(client, name, _log, _limits);
-            var first = connection.WaitFirst(Handshake.Timeout);
+            var first = await connection.WaitFirstAsync(Handshake.Timeout).ConfigureAwait(false);
             if (first is null)
             {
                 if (connection.IsOpen)
@@ -134,15 +134,16 @@ public sealed class NetHost : IDisposable
             connection.Send(mine);
             _log($"net: {name}: joined");
             PeerAdmitted?.Invoke(connection, hello);
-            connection = null;
+        }
+        catch (Exception e) when (e is IOException or SocketException or ObjectDisposedException or InvalidOperationException)
+        {
+            _log($"net: {name}: dropped during the handshake ({e.GetType().Name})");
+            connection?.Dispose();
         }
         finally
         {
+            // A refused connection closes itself once its bye is written.
             Interlocked.Decrement(ref _pending);
-            if (connection is not null && connection != Volatile.Read(ref _peer))
-            {
-                connection.Dispose();
-            }
         }
     }
 

@@ -61,7 +61,11 @@ public static class NetJoin
         }
         catch
         {
-            connection.Dispose();
+            // A connection closing with a bye closes itself once the bye is written.
+            if (connection.IsOpen)
+            {
+                connection.Dispose();
+            }
             throw;
         }
     }

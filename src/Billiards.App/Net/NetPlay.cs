@@ -261,7 +261,10 @@ public sealed class NetPlay
             Hostile(connection, $"unreadable resync ({MessageCodec.Clip(e.Message)})");
             return;
         }
-        if (!Equals(record.Setup, Session.Game.Setup) || Session.IsShotRunning)
+        // A record names its players in its shots' game blocks, not in its rack: the names are this side's.
+        var mine = Session.Game.Setup;
+        record = record with { Setup = record.Setup with { Start = record.Setup.Start with { Players = mine.Start.Players } } };
+        if (!Equals(record.Setup, mine) || Session.IsShotRunning)
         {
             Hostile(connection, "resync of another game, or while a shot runs");
             return;

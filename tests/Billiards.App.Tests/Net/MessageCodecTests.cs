@@ -9,7 +9,7 @@ public class MessageCodecTests
     public static TheoryData<Message> Messages => new()
     {
         new Hello("0.1.0", "ABCDEF", null, 0),
-        new Hello("0.1.0", "ABCDEF", new HostGame("{\"format\":\"x\"}", "{}", new string('a', 64), 7), 12),
+        new Hello("0.1.0", "ABCDEF", new HostGame("{\"format\":\"x\"}", "{}", new string('a', 64), "Anna", "Ben"), 12),
         new Stroke(3, 2.5, -179.25, 0.125, -0.25, 5, true),
         new Placement(0, -0.8, 0.1),
         new CallMessage(4, 8, "top-left"),
