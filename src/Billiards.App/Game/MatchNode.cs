@@ -47,7 +47,6 @@ public sealed class MatchNode : Node
         // Subscribed first: the table is shown as the session left it before anyone else hears of it.
         session.Ruled += _ => ShowTable();
         session.TableReplaced += ShowTable;
-        session.ShooterToPlay += () => _call.Clear();
     }
 
     /// <summary>The turn controller: every game of this sitting, its state and its timeline.</summary>
@@ -102,14 +101,7 @@ public sealed class MatchNode : Node
     public bool CanTakeBack => Session.CanTakeBack && _physics is { IsRolling: false };
 
     /// <summary>Takes the last shot back (<see cref="Session.TakeBack"/>); false while balls roll or when the session refuses.</summary>
-    public bool TakeBack()
-    {
-        if (!CanTakeBack)
-        {
-            return false;
-        }
-        return Session.TakeBack();
-    }
+    public bool TakeBack() => CanTakeBack && Session.TakeBack();
 
     /// <summary>Signal: the referee ruled on a shot (after the table shows the ruling).</summary>
     public event Action<Ruling>? Ruled { add => Session.Ruled += value; remove => Session.Ruled -= value; }
@@ -313,10 +305,7 @@ public sealed class MatchNode : Node
         var sim = Session.Submit(new GameShot(shot, call, inHand ? _physics!.CueBallPosition : null, PushOut), source);
         if (sim is not null)
         {
-            _hasAdoptedCall = false;
-            _adoptedCall = null;
-            PushOut = false;
-            _call.Clear();
+            ResetShot();
         }
         return sim;
     }
@@ -326,10 +315,7 @@ public sealed class MatchNode : Node
     // the table waits as the shot left it.
     private void ShowTable()
     {
-        PushOut = false;
-        _hasAdoptedCall = false;
-        _adoptedCall = null;
-        _call.Clear();
+        ResetShot();
         if (_physics is null)
         {
             return;
@@ -344,5 +330,14 @@ public sealed class MatchNode : Node
         {
             _physics.GiveBallInHand(Session.BallInHand.Region());
         }
+    }
+
+    // The shot being composed starts afresh: no call, no plan's call, no push-out declared.
+    private void ResetShot()
+    {
+        PushOut = false;
+        _hasAdoptedCall = false;
+        _adoptedCall = null;
+        _call.Clear();
     }
 }

@@ -5,6 +5,7 @@ using Billiards.Core.Balls;
 using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
+using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
@@ -137,7 +138,7 @@ public sealed class PhysicsNode : Node
     }
 
     // Practice: the table before each shot, newest last (Undo takes them back one by one).
-    private readonly List<(SimulationSnapshot Table, bool InHand, PlacementRegion Region, ShotSpec? Shot)> _beforeShots = [];
+    private readonly Timeline<(SimulationSnapshot Table, bool InHand, PlacementRegion Region, ShotSpec? Shot)> _beforeShots = new(MaxTakeBacks);
 
     /// <summary>The most shots practice can take back one after another.</summary>
     public const int MaxTakeBacks = 50;
@@ -152,12 +153,11 @@ public sealed class PhysicsNode : Node
     /// </summary>
     public bool Undo()
     {
-        if (!CanUndo)
+        if (!CanUndo || !_beforeShots.TryTakeBack(out var before))
         {
             return false;
         }
-        var (table, inHand, region, shot) = _beforeShots[^1];
-        _beforeShots.RemoveAt(_beforeShots.Count - 1);
+        var (table, inHand, region, shot) = before;
         _simulation.Restore(table);
         _simulation.Balls.CopyTo(_previous);
         _eventsSeen = _simulation.Events.Count;
@@ -363,11 +363,7 @@ public sealed class PhysicsNode : Node
         {
             if (_simulation.KeepsSnapshots)
             {
-                _beforeShots.Add((_simulation.CreateSnapshot(), BallInHand, HandRegion, LastShot));
-                if (_beforeShots.Count > MaxTakeBacks)
-                {
-                    _beforeShots.RemoveAt(0);
-                }
+                _beforeShots.Push((_simulation.CreateSnapshot(), BallInHand, HandRegion, LastShot));
             }
             EndBallInHand();
             _simulation.Strike(shot, CueBall);

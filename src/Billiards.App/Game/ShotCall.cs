@@ -21,6 +21,9 @@ public sealed class ShotCall
 
     internal ShotCall(MatchNode match) => _match = match;
 
+    // The call asks the game's constraints only: which balls may be hit first and called.
+    private IShotConstraints Constraints => _match.Ruleset;
+
     /// <summary>The table's geometry (pocket circles), once the match is in the tree.</summary>
     public TableGeometry? Geometry { get; private set; }
 
@@ -47,7 +50,7 @@ public sealed class ShotCall
     /// <summary>Calls a ball: its easiest pocket until a pocket is called; in snooker it nominates the ball where the shooter may nominate it.</summary>
     public void CallBall(BallId ball)
     {
-        if (_match.CanShoot && (!_match.NeedsNomination || _match.Ruleset.MayCall(_match.State, ball)))
+        if (_match.CanShoot && (!_match.NeedsNomination || Constraints.MayCall(_match.State, ball)))
         {
             _calledBall = ball;
             _calledPocket = null;
@@ -104,7 +107,7 @@ public sealed class ShotCall
         }
     }
 
-    private List<BallId> Nominatable() => [.. _physics!.ObjectBallsOnTable().Where(b => _match.Ruleset.MayCall(_match.State, b)).OrderBy(b => b.Value)];
+    private List<BallId> Nominatable() => [.. _physics!.ObjectBallsOnTable().Where(b => Constraints.MayCall(_match.State, b)).OrderBy(b => b.Value)];
 
     /// <summary>
     /// X: the cue aims at the ghost ball that sends the called ball (or, with no call, the nearest
@@ -210,7 +213,7 @@ public sealed class ShotCall
         {
             return null;
         }
-        var legal = _match.Ruleset.LegalTargets(_match.State, _physics.ObjectBallsOnTable());
+        var legal = Constraints.LegalTargets(_match.State, _physics.ObjectBallsOnTable());
         return aim?.Ball is { } aimed && legal.Contains(aimed) ? aimed : Nearest(_physics.CueBallPosition with { Z = 0 }, legal);
     }
 

@@ -67,7 +67,7 @@ public static class MatchLines
             {
                 lines.Add($"Ball in hand ({HandWords(physics.HandRegion)}): M and drag to place");
             }
-            string push = state.PushOut ? "  PUSH-OUT" : "";
+            string push = match.PushOut ? "  PUSH-OUT" : "";
             string pushKey = match.Ruleset.MayPushOut(state) ? "  O: push-out" : "";
             // Only a shot the rules call shows a call.
             string call = match.NeedsNomination ? $"Nominate: {(match.CurrentNomination is { } n ? physics.Simulation.BallSet.NameOf(n.Ball) : "none")} (B)  "

@@ -240,7 +240,7 @@ public static class ScoreboardBuilder
         {
             parts.Add($"ball in hand ({MatchLines.HandWords(physics.HandRegion)}): M, drag");
         }
-        if (state.PushOut)
+        if (match.PushOut)
         {
             parts.Add("PUSH-OUT");
         }

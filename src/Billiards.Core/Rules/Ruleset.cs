@@ -23,8 +23,10 @@ public readonly record struct Visit(int Player, int Shots, int Break, bool Open)
 /// called, push-out), what each option of the incoming player leads to, and what the HUD shows.
 /// The match, the computer player, the scene reader and the HUD ask the ruleset instead of asking
 /// which game is played; <see cref="For"/> is the one place that maps a game to its ruleset.
+/// Its members by role: <see cref="IShotConstraints"/>, <see cref="IRefereeRules"/>,
+/// <see cref="IGamePresentation"/> and <see cref="IPlannerPolicy"/>; a layer takes the role it needs.
 /// </summary>
-public abstract class Ruleset
+public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentation, IPlannerPolicy
 {
     private static readonly Lock RegistryLock = new();
     private static Ruleset[] _registered = [new EightBallRuleset(), new NineBallRuleset(), new TenBallRuleset(), new StraightPoolRuleset(), new SnookerRuleset()];

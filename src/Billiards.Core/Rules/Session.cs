@@ -27,7 +27,7 @@ public sealed class Session
     private readonly GameState _opening;
     private readonly List<Match> _games = [];
     // The game before each shot of the current game, newest last.
-    private readonly List<(MatchSnapshot Game, PerPlayer<int> GamesWon)> _timeline = [];
+    private readonly Timeline<(MatchSnapshot Game, PerPlayer<int> GamesWon)> _timeline = new();
 
     /// <summary>Seconds a game between two computers stays over before the next one starts by itself.</summary>
     public const double AutoRematchSeconds = 6;
@@ -263,7 +263,7 @@ public sealed class Session
         var sim = Game.Strike(shot);
         if (snapshot is not null)
         {
-            _timeline.Add((snapshot, GamesWon));
+            _timeline.Push((snapshot, GamesWon));
         }
         Message = null;
         Turn++;
@@ -349,12 +349,11 @@ public sealed class Session
     /// </summary>
     public bool TakeBack()
     {
-        if (!CanTakeBack)
+        if (!CanTakeBack || !_timeline.TryTakeBack(out var before))
         {
             return false;
         }
-        var (game, won) = _timeline[^1];
-        _timeline.RemoveAt(_timeline.Count - 1);
+        var (game, won) = before;
         Game.Restore(game);
         GamesWon = won;
         RematchIn = null;

@@ -144,4 +144,19 @@ public class TurnGateTests
         // first game's break, bit for bit; the old plan was for the second shot of the old rack.
         Assert.Equal(first.Shots[0].Input.Shot, second.Shots[0].Input.Shot);
     }
+
+    [Fact]
+    public void APushOutDeclaredInTheWindowIsShownAndIsTheStruckShots()
+    {
+        using var game = FourBallGames.Start(new GameState(GameRules.NineBall) { Shot = 1, Players = new PerPlayer<string>("Anna", "Ben") });
+        var match = game.World.Tree.Find<MatchNode>()!;
+        game.Frame();
+        game.Window.Press(Key.O);
+        Assert.True(match.PushOut);
+        Assert.Contains("declares a push-out", match.Message, StringComparison.Ordinal);
+        Assert.Contains("PUSH-OUT", game.Frame().Hud!.Board!.Status, StringComparison.Ordinal);
+        game.Window.Press(Key.Space);
+        Assert.True(match.Session.Shots[^1].Before.PushOut, "the strike was not judged as the declared push-out");
+        Assert.False(match.PushOut);
+    }
 }
