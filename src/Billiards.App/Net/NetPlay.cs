@@ -1,0 +1,305 @@
+using System.Security.Cryptography;
+using System.Text;
+using Billiards.Core.Cue;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Net;
+
+/// <summary>What the peer did, for the game loop to carry out: a shot to strike as the remote seat's, or a choice.</summary>
+public sealed record RemoteAction(GameShot? Shot, RefereeOption? Choice);
+
+/// <summary>
+/// A networked game over one <see cref="Session"/>: the local seat's shots and choices go out as
+/// messages (a placement and a call before their stroke), the peer's are checked against the
+/// session (the shot's number, the seat to play, the options offered) and handed to the game loop
+/// one at a time by <see cref="Poll"/>, which never waits. After every judged shot each side sends
+/// the hash of the balls at rest and of the ruling; on a mismatch the host's game wins: it sends
+/// its record and the joiner replays it and takes its state. A message that makes no sense for the
+/// game (a stroke out of turn, for a shot already played, an option not offered, a resync from the
+/// joiner) is one log line and a closed connection.
+/// </summary>
+public sealed class NetPlay
+{
+    private readonly Action<string> _log;
+    private readonly Dictionary<int, (string Balls, string Ruling)> _mine = [], _theirs = [];
+    private Placement? _placement;
+    private CallMessage? _call;
+    private Stroke? _stroke;
+    private Choice? _choice;
+
+    /// <summary>A networked game of <paramref name="session"/>, this side playing seat <paramref name="localSeat"/>.</summary>
+    public NetPlay(Session session, int localSeat, bool isHost, Action<string> log)
+    {
+        ArgumentNullException.ThrowIfNull(session);
+        ArgumentNullException.ThrowIfNull(log);
+        Session = session;
+        LocalSeat = localSeat;
+        IsHost = isHost;
+        _log = log;
+    }
+
+    /// <summary>The session played.</summary>
+    public Session Session { get; }
+
+    /// <summary>The seat this side plays (0 the host's).</summary>
+    public int LocalSeat { get; }
+
+    /// <summary>True on the host, whose game wins a mismatch.</summary>
+    public bool IsHost { get; }
+
+    /// <summary>The connection to the peer (replaced when a joiner comes back), or null while none.</summary>
+    public Connection? Connection { get; set; }
+
+    /// <summary>Mismatches found so far.</summary>
+    public int Mismatches { get; private set; }
+
+    /// <summary>Resyncs taken (the joiner) or sent (the host).</summary>
+    public int Resyncs { get; private set; }
+
+    /// <summary>Signal: the joiner took the host's game after a mismatch (the window shows the table again).</summary>
+    public event Action? Resynced;
+
+    /// <summary>The session's shot number of the next shot (every game's shots, in order).</summary>
+    public int NextShot => Session.Shots.Count;
+
+    /// <summary>Sends the local seat's shot just submitted (its placement and call first).</summary>
+    public void SendShot(GameShot shot)
+    {
+        ArgumentNullException.ThrowIfNull(shot);
+        int n = NextShot - 1;
+        if (shot.Place is { } p)
+        {
+            Send(new Placement(n, p.X, p.Y));
+        }
+        if (shot.Call is { } c)
+        {
+            Send(new CallMessage(n, c.Ball == Core.Balls.BallId.None ? null : c.Ball.Value, c.Pocket.IsPocket ? c.Pocket.Name : null));
+        }
+        var s = shot.Shot;
+        Send(new Stroke(n, s.Speed, s.AimDeg, s.TipSide, s.TipHeight, s.ElevationDeg, shot.PushOut));
+    }
+
+    /// <summary>Sends the local seat's choice after the last ruling.</summary>
+    public void SendChoice(RefereeOption option) => Send(new Choice(NextShot - 1, option.ToName()));
+
+    /// <summary>After a judged shot: sends its hashes and compares them with the peer's when both are in.</summary>
+    public void Judged(MatchShot played)
+    {
+        ArgumentNullException.ThrowIfNull(played);
+        int n = NextShot - 1;
+        var hashes = Hashes(played);
+        _mine[n] = hashes;
+        Send(new StateHash(n, hashes.Balls, hashes.Ruling));
+        Compare(n);
+    }
+
+    /// <summary>The hash of the balls at rest after a shot (their ids and the bits of their positions) and of its ruling (the record's words for it).</summary>
+    public static (string Balls, string Ruling) Hashes(MatchShot played)
+    {
+        ArgumentNullException.ThrowIfNull(played);
+        var balls = new StringBuilder();
+        foreach (var (id, pos) in played.After)
+        {
+            balls.Append(id.Value).Append(':').Append(BitConverter.DoubleToInt64Bits(pos.X)).Append(',')
+                 .Append(BitConverter.DoubleToInt64Bits(pos.Y)).Append(',').Append(BitConverter.DoubleToInt64Bits(pos.Z)).Append(';');
+        }
+        var r = played.Ruling;
+        string ruling = $"{r.Legal}|{string.Join(',', r.Fouls.Select(f => f.ToName()))}|{string.Join(',', r.Pocketed.Select(b => b.Value))}|{r.Continue}|{r.GameOver}|{r.Winner}|{r.Message}|{GameRecordFile.StateText(r.Next)}";
+        return (Hex(balls.ToString()), Hex(ruling));
+    }
+
+    private static string Hex(string s) => Convert.ToHexStringLower(SHA256.HashData(Encoding.UTF8.GetBytes(s)));
+
+    /// <summary>
+    /// Takes the peer's messages that arrived and returns the next thing the peer did that may be
+    /// carried out now (null when none): a choice among the options offered to the remote seat, or
+    /// a stroke of the remote seat's turn once no shot runs. Never waits.
+    /// </summary>
+    public RemoteAction? Poll()
+    {
+        var connection = Connection;
+        if (connection is null)
+        {
+            return null;
+        }
+        while (connection.IsOpen && connection.TryReceive(out var m))
+        {
+            if (!Take(connection, m))
+            {
+                return null;
+            }
+        }
+        if (!connection.IsOpen || Session.IsShotRunning)
+        {
+            return null;
+        }
+        bool remoteToPlay = !Session.IsOver && Session.Shooter.Kind == SeatKind.Remote;
+        if (_choice is { } choice)
+        {
+            _choice = null;
+            if (!remoteToPlay || Session.PendingOptions.Count == 0 || choice.Shot != NextShot - 1
+                || !RuleNames.TryParseOption(choice.Option, out var option) || !Session.PendingOptions.Contains(option))
+            {
+                return Hostile(connection, $"choice \"{MessageCodec.Clip(choice.Option)}\" after shot {choice.Shot} is not offered to the peer now");
+            }
+            return new RemoteAction(null, option);
+        }
+        if (_stroke is not { } s || s.Shot > NextShot)
+        {
+            // A stroke for the shot after the one still to be judged here waits for it.
+            return null;
+        }
+        _stroke = null;
+        if (s.Shot < NextShot)
+        {
+            return Hostile(connection, $"stroke for shot {s.Shot}, already played (next is {NextShot})");
+        }
+        if (!remoteToPlay || Session.WhyNot(SeatKind.Remote) is { } why)
+        {
+            return Hostile(connection, $"stroke out of turn: {(remoteToPlay ? Session.WhyNot(SeatKind.Remote) : $"it is {Session.State.ShooterName}'s turn")}");
+        }
+        Vec3? place = null;
+        if (_placement is { } p && p.Shot == s.Shot)
+        {
+            place = new Vec3(p.X, p.Y, 0);
+        }
+        Call? call = null;
+        if (_call is { } c && c.Shot == s.Shot)
+        {
+            var pocket = Core.Table.PocketId.None;
+            if (c.Pocket is { } name && !Session.Game.Setup.Table.Pockets.TryParse(name, out pocket))
+            {
+                return Hostile(connection, $"call of an unknown pocket \"{MessageCodec.Clip(name)}\"");
+            }
+            call = new Call(c.Ball is int b ? new Core.Balls.BallId(b) : Core.Balls.BallId.None, pocket);
+        }
+        _placement = null;
+        _call = null;
+        if (place is not null && Session.BallInHand == BallInHand.None)
+        {
+            return Hostile(connection, $"placement for shot {s.Shot} without ball in hand");
+        }
+        return new RemoteAction(new GameShot(new ShotSpec(s.Speed, s.AimDeg, s.TipSide, s.TipHeight, s.ElevationDeg), call, place, s.PushOut), null);
+    }
+
+    // One message taken in; false when it closed the connection.
+    private bool Take(Connection connection, Message m)
+    {
+        switch (m)
+        {
+            case Placement p when Near(p.Shot) && _placement is null:
+                _placement = p;
+                return true;
+            case CallMessage c when Near(c.Shot) && _call is null:
+                _call = c;
+                return true;
+            case Stroke s when Near(s.Shot) && _stroke is null:
+                _stroke = s;
+                return true;
+            case Choice c when _choice is null && _stroke is null:
+                _choice = c;
+                return true;
+            case StateHash h when h.Shot < NextShot + 1 && !_theirs.ContainsKey(h.Shot):
+                _theirs[h.Shot] = (h.Balls, h.Ruling);
+                Compare(h.Shot);
+                return true;
+            case Resync r when !IsHost:
+                TakeResync(connection, r);
+                return connection.IsOpen;
+            case Bye:
+                return false;
+            default:
+                Hostile(connection, m switch
+                {
+                    Hello => "a second hello",
+                    Resync => "a resync from the joiner (the host's game wins)",
+                    StateHash h => $"state hash for shot {h.Shot} twice or before it was played",
+                    Placement or CallMessage or Stroke => $"{m.Kind} for shot {ShotOf(m)} out of turn or twice (next is {NextShot})",
+                    _ => $"{m.Kind} out of place",
+                });
+                return false;
+        }
+    }
+
+    private static int ShotOf(Message m) => m switch { Placement p => p.Shot, CallMessage c => c.Shot, Stroke s => s.Shot, _ => -1 };
+
+    // The next shot, or the one after it while a shot still runs or waits for its ruling here.
+    private bool Near(int shot) => shot == NextShot || (shot == NextShot + 1 && Session.IsShotRunning) || (shot == NextShot && !Session.IsShotRunning);
+
+    private void Compare(int shot)
+    {
+        if (!_mine.TryGetValue(shot, out var mine) || !_theirs.TryGetValue(shot, out var theirs) || mine == theirs)
+        {
+            return;
+        }
+        Mismatches++;
+        string what = mine.Balls != theirs.Balls ? (mine.Ruling != theirs.Ruling ? "the balls at rest and the ruling" : "the balls at rest") : "the ruling";
+        if (IsHost)
+        {
+            Resyncs++;
+            _log($"net: desync after shot {shot}: {what} differ; the host's game wins and is sent whole");
+            var record = Encoding.UTF8.GetString(GameRecordFile.ToUtf8(Session.Game, indented: false)).TrimEnd('\n');
+            Send(new Resync(shot, record));
+        }
+        else
+        {
+            _log($"net: desync after shot {shot}: {what} differ; waiting for the host's game");
+        }
+    }
+
+    private void TakeResync(Connection connection, Resync r)
+    {
+        GameRecord record;
+        try
+        {
+            record = GameRecordFile.Parse(r.Record, "the host's resync");
+        }
+        catch (SceneException e)
+        {
+            Hostile(connection, $"unreadable resync ({MessageCodec.Clip(e.Message)})");
+            return;
+        }
+        // A record names its players in its shots' game blocks, not in its rack: the names are this side's.
+        var mine = Session.Game.Setup;
+        record = record with { Setup = record.Setup with { Start = record.Setup.Start with { Players = mine.Start.Players } } };
+        if (!Equals(record.Setup, mine) || Session.IsShotRunning)
+        {
+            Hostile(connection, "resync of another game, or while a shot runs");
+            return;
+        }
+        var replay = Replay(record, Session.Seats);
+        Session.Game.Restore(replay.Game.Snapshot());
+        // The hashes after the resync are the host's.
+        foreach (int k in _mine.Keys.Where(k => k >= r.Shot).ToList())
+        {
+            _mine.Remove(k);
+        }
+        Resyncs++;
+        _log($"net: resync: took the host's game ({record.Shots.Count} shots)");
+        Resynced?.Invoke();
+    }
+
+    /// <summary>A session of <paramref name="seats"/> that has played <paramref name="record"/>'s shots (a joiner coming back, a resync).</summary>
+    public static Session Replay(GameRecord record, IReadOnlyList<Seat> seats)
+    {
+        ArgumentNullException.ThrowIfNull(record);
+        var session = new Session(record.Setup, seats);
+        for (int k = 0; k < record.Shots.Count; k++)
+        {
+            int shot = k;
+            session.Play(record.Shots[k], session.Shooter.Kind, judged => record.ChoiceAfter(shot, judged.Ruling));
+        }
+        return session;
+    }
+
+    private RemoteAction? Hostile(Connection connection, string why)
+    {
+        _log($"net: {connection.Name}: refused: {why}");
+        connection.Close(why);
+        return null;
+    }
+
+    private void Send(Message m) => Connection?.Send(m);
+}

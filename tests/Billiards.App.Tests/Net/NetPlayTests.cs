@@ -1,0 +1,104 @@
+using Billiards.App.Cli;
+using Billiards.App.Net;
+using Billiards.Core.Cue;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Tests.Net;
+
+/// <summary>A networked game on loopback: the same game on both sides, the refusals of the handshake on both sides, a forced mismatch resynced.</summary>
+public class NetPlayTests
+{
+    private static string Record(Session s) => System.Text.Encoding.UTF8.GetString(GameRecordFile.ToJsonLines(s.RecordedGames));
+
+    [Fact]
+    public void BothSidesPlayTheSameGameAndTheirRecordsAreTheSameBytes()
+    {
+        using var game = new LoopbackGame();
+        game.Connect();
+        game.Play(12);
+        Assert.True(game.HostSession.Shots.Count >= 12 || game.HostSession.IsOver);
+        Assert.Equal(Record(game.HostSession), Record(game.JoinSession!));
+        LoopbackGame.Until(() => game.Join!.Poll() is null && game.Host.Poll() is null && game.Host.Mismatches == 0, "poll");
+        Assert.Equal(0, game.Host.Mismatches);
+        Assert.Equal(0, game.Join!.Mismatches);
+        Assert.NotNull(game.Host.Connection!.RoundTripMs ?? WaitForPing(game.Host.Connection));
+    }
+
+    private static double? WaitForPing(Connection c)
+    {
+        LoopbackGame.Until(() => c.RoundTripMs is not null, "no ping was answered");
+        return c.RoundTripMs;
+    }
+
+    [Fact]
+    public void AWrongCodeIsRefusedWithOneLineOnBothSides()
+    {
+        using var game = new LoopbackGame();
+        var e = Assert.Throws<CliException>(() => game.Connect("ZZZZZZ"));
+        Assert.Equal("join: the host refused: wrong code \"ZZZZZZ\"", e.Message);
+        LoopbackGame.Until(() => game.HostLog.Any(l => l.EndsWith("refused: wrong code \"ZZZZZZ\"", StringComparison.Ordinal)), "the host logged no refusal");
+    }
+
+    [Fact]
+    public void AnotherVersionIsRefusedWithOneLineOnBothSides()
+    {
+        using var game = new LoopbackGame();
+        var e = Assert.Throws<CliException>(() => game.Connect(program: "0.0.9"));
+        Assert.Contains($"version differs: billiards 0.0.9 there, {Handshake.ProgramVersion} here", e.Message, StringComparison.Ordinal);
+        LoopbackGame.Until(() => game.HostLog.Any(l => l.Contains("refused: version differs: billiards 0.0.9 there", StringComparison.Ordinal)), "the host logged no refusal");
+        // The joiner's side of it: a host of another version is refused by the joiner's own check too.
+        using var other = new LoopbackGame(hostProgram: "9.9.9");
+        Assert.Contains("version differs", Assert.Throws<CliException>(() => other.Connect()).Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void OtherPhysicsAreRefusedWithOneLineOnBothSides()
+    {
+        // A host whose build writes the physics otherwise: its hash is not the one the joiner computes.
+        static HostGame Other(GameSetup setup) => Handshake.Describe(setup) with { Hash = new string('e', 64) };
+        using var game = new LoopbackGame(describe: Other);
+        var e = Assert.Throws<CliException>(() => game.Connect());
+        Assert.StartsWith("join: refused: physics differ: the host's", e.Message, StringComparison.Ordinal);
+        LoopbackGame.Until(() => game.HostLog.Any(l => l.Contains("the peer said bye: refused: physics differ", StringComparison.Ordinal)), "the host logged no refusal");
+    }
+
+    [Fact]
+    public void AMismatchIsResyncedFromTheHostAndTheGameGoesOn()
+    {
+        using var game = new LoopbackGame();
+        game.Connect();
+        game.Play(2);
+        // The joiner's table drifts: the stroke that arrives is struck there a hair harder than it was sent.
+        var join = game.Join!;
+        var host = game.Host;
+        var local = host.Session.Shooter.Kind == SeatKind.Remote ? join : host;
+        var remote = local == host ? join : host;
+        var shot = new GameShot(new ShotSpec(2.5, 97));
+        var played = local.Session.Play(shot, SeatKind.Person, _ => null);
+        local.SendShot(shot);
+        local.Judged(played);
+        RemoteAction? action = null;
+        LoopbackGame.Until(() => (action = remote.Poll()) is not null, "the stroke never arrived");
+        var drifted = action!.Shot! with { Shot = action.Shot!.Shot with { Speed = action.Shot.Shot.Speed + 1e-6 } };
+        remote.Judged(remote.Session.Play(drifted, SeatKind.Remote, _ => null));
+        LoopbackGame.Until(() => { host.Poll(); join.Poll(); return join.Resyncs == 1; }, "no resync came");
+        Assert.Equal(1, host.Resyncs);
+        Assert.Contains(game.HostLog, l => l.StartsWith("net: desync after shot", StringComparison.Ordinal) && l.Contains("the host's game wins", StringComparison.Ordinal));
+        Assert.Contains(game.JoinLog, l => l.StartsWith("net: resync: took the host's game", StringComparison.Ordinal));
+        game.Play(4);
+        Assert.Equal(Record(game.HostSession), Record(game.JoinSession!));
+    }
+
+    [Fact]
+    public void AStrokeOutOfTurnClosesTheConnectionWithALine()
+    {
+        using var game = new LoopbackGame();
+        game.Connect();
+        // The host breaks: a stroke from the joiner now is out of turn.
+        game.Join!.Connection!.Send(new Stroke(0, 3, 0, 0, 0, 0, false));
+        LoopbackGame.Until(() => { game.Host.Poll(); return game.Host.Connection is { IsOpen: false }; }, "the host kept the connection");
+        Assert.Contains(game.HostLog, l => l.Contains("refused: stroke out of turn: it is Anna's turn", StringComparison.Ordinal));
+        Assert.Empty(game.HostSession.Shots);
+    }
+}
