@@ -56,8 +56,8 @@ internal static class Program
             foreach (double frame in new[] { 1.0 / 60, 0.05, 0.3 })
             {
                 var (match, _) = Run([.. script.Events], frame, script.Speed);
-                Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"frames of {frame:0.000} s: {match.Rulings.Count} rulings, winner {match.Winner}"));
-                foreach (var r in match.Rulings)
+                Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"frames of {frame:0.000} s: {match.Session.Rulings.Count} rulings, winner {match.Session.Winner}"));
+                foreach (var r in match.Session.Rulings)
                 {
                     Console.WriteLine("  " + r.Message);
                 }
@@ -83,7 +83,7 @@ internal static class Program
             var (match, host) = Run(events, 0.05);
             if (match.IsOver)
             {
-                Console.WriteLine($"game over: {match.State.Players[match.Winner ?? 0]} wins");
+                Console.WriteLine($"game over: {match.State.Players[match.Session.Winner ?? 0]} wins");
                 break;
             }
             var sim = host.World.Physics.Simulation;
@@ -124,11 +124,11 @@ internal static class Program
             foreach (var candidate in candidates)
             {
                 var (m, _) = Run(candidate, 0.05);
-                if (m.Rulings.Count != match.Rulings.Count + 1)
+                if (m.Session.Rulings.Count != match.Session.Rulings.Count + 1)
                 {
                     continue;
                 }
-                var r = m.LastRuling!;
+                var r = m.Session.LastRuling!;
                 bool scratch = r.Fouls.Contains(Foul.CueBallPocketed);
                 double score = r.GameOver ? (r.Winner == match.State.Shooter ? 100 : -100)
                     : scratch ? (!scratched && turn >= 3 ? 50 : -1)
@@ -168,7 +168,7 @@ internal static class Program
             if (match.PendingOptions.Count > 0)
             {
                 var position = new TablePosition(match.Game!.Shots[^1].After, live.Physics.CueBall);
-                var option = planner.ChooseOption(match.LastRuling!, position);
+                var option = planner.ChooseOption(match.Session.LastRuling!, position);
                 // The option's button, clicked (its key says the same).
                 var at = live.Host.World.Menu.CentreOf(option.ToName())!.Value;
                 live.Pause(0.4);
@@ -220,7 +220,7 @@ internal static class Program
             live.Add(new ScriptEvent(0, ScriptAction.WaitRest));
             live.CatchUp();
             shots++;
-            var r = match.LastRuling!;
+            var r = match.Session.LastRuling!;
             Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"shot {shots}: {decision.Kind} {decision.Target} at {power:0.00} m/s: {r.Message}"));
         }
         if (!live.Match.IsOver)
@@ -320,7 +320,7 @@ internal static class Program
             Events = events ?? [];
             var scriptClock = new ScriptClock(_clock);
             _scripted = new ScriptedInput(new NoWindow(), new InputScript(Events, duration, speed), scriptClock);
-            var match = new MatchSetup(s_rules, [new MatchPlayer("Anna"), new MatchPlayer("Ben")]);
+            var match = new MatchSetup(s_rules, [new Seat("Anna"), new Seat("Ben")]);
             Host = new GameHost(s_scene, SimulationFactory.Create, _scripted, scriptClock, match) { TimeScale = speed };
             _scripted.IsAtRest = () => Host.IsSettled;
             bool warm = false;
@@ -333,6 +333,8 @@ internal static class Program
                 warm = true;
             };
             Match = Host.Tree.Root.GetInTree<MatchNode>();
+            // A script's pixels are on the whole window's view, as play --script frames it.
+            Host.Tree.Root.GetInTree<CameraNode>().FramesBelowHud = false;
             // The first frame loads the table (the view turns to the ball on), the second starts the script.
             for (int i = 0; i < 2; i++)
             {

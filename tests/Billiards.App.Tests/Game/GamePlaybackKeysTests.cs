@@ -69,7 +69,7 @@ public sealed class GamePlaybackKeysTests : IDisposable
         Assert.Equal(0, code);
         Assert.True(window.Closed, "the playback never ended");
 
-        Assert.True(rulings.Count > 20, $"shot {node!.Shot} of {record.Shots.Count}: {node.Status}; rulings {rulings.Count}; clock {clock.Now}; {rulings[^1].Ruling.Message} / {record.Rulings[rulings[^1].Shot]}");
+        Assert.True(rulings.Count >= 3, $"shot {node!.Shot} of {record.Shots.Count}: {node.Status}; rulings {rulings.Count}; clock {clock.Now}; {rulings[^1].Ruling.Message} / {record.Rulings[rulings[^1].Shot]}");
         Assert.Equal([(8, 1), (11, 2), (14, 1)], seen.Select(s => (s.Frame, s.Shot)));
         // The record's shot 2 (from 0) is the third: counted from 1, "shot 3 of" the record's shots.
         Assert.Contains($"shot 3 of {record.Shots.Count}", seen[1].Status, StringComparison.Ordinal);
