@@ -103,3 +103,29 @@ public class DefaultCallTests
         return (p - (a + (t * ab))).Length();
     }
 }
+
+public class FreeBallNominationTests
+{
+    [Fact]
+    public void AFreeBallWhileOnTheRedsDefaultsToAColour()
+    {
+        const string Json = """
+            { "format": "billiards-scene/1", "table": { "preset": "snooker-12ft" },
+              "balls": [ { "id": "cue", "position": [-1.2, 0.0] }, { "id": "red-1", "position": [-0.9, 0.1] },
+                         { "id": "red-2", "position": [0.8, 0.3] }, { "id": "pink", "position": [0.9, 0.0] }, { "id": "black", "position": [1.46, 0.0] } ],
+              "game": { "rules": "snooker", "players": ["Anna", "Ben"], "shooter": 0, "shot": 3 } }
+            """;
+        var scene = SceneLoader.Parse(Json, "t.json");
+        scene = scene with { Game = scene.Game! with { FreeBall = true } };
+        using var game = new TestGame(scene, new MatchSetup(GameRules.Snooker, [new Seat("Anna"), new Seat("Ben")]));
+        var match = game.World.Tree.Root.GetInTree<MatchNode>();
+        game.Frame();
+        Assert.True(match.State.FreeBall && match.NeedsNomination);
+        foreach (double aim in new[] { 0.0, 18.0 }) // at nothing in particular, then at the nearest red
+        {
+            match.AimAt(aim);
+            var ball = match.CurrentNomination!.Ball;
+            Assert.True(SnookerRuleset.IsColour(ball), $"aim {aim}: the free ball defaults to the {ball.Value}, not a colour");
+        }
+    }
+}
