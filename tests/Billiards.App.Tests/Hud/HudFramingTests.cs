@@ -1,3 +1,4 @@
+using System.Globalization;
 using System.Numerics;
 using Billiards.App.Game;
 using Billiards.App.Rendering;
@@ -13,7 +14,8 @@ namespace Billiards.App.Tests.Hud;
 /// The scoreboard never covers what the player plays: over ten shipped positions of 8-ball, 10-ball
 /// and snooker, seen from behind the cue as a game opens, the called ball (or the ball the aim line
 /// meets) and its pocket lie below the scoreboard's band, and the rendered HUD (its panels and text)
-/// changes none of the called ball's pixels.
+/// changes none of the called ball's pixels; and in three positions at the head (baulk) end, the
+/// called ball would lie under the band if the camera framed the whole window.
 /// </summary>
 [Collection("GL")]
 public sealed class HudFramingTests(GlFixture gl)
@@ -23,11 +25,29 @@ public sealed class HudFramingTests(GlFixture gl)
         "eight-ball.json", "rules/eight-ball-break.json", "positions/eight-ball-in-hand.json", "positions/eight-ball-open-table.json",
         "positions/eight-ball-stripes.json", "rules/eight-ball-on-the-eight.json", "games/eight-ball-last-balls.json",
         "positions/ten-ball-corner.json", "positions/nine-ball-side-pocket.json", "snooker.json",
+        .. NearEnd.Keys,
     ];
+
+    // Positions the framing below the scoreboard must save: the cue ball against the head (baulk)
+    // cushion, so the camera behind it looks down steeply up the table, and the called ball and its
+    // pocket near that end, high in the view. Framed over the whole window instead, the called ball
+    // lies under the scoreboard's band.
+    private static readonly Dictionary<string, string> NearEnd = new()
+    {
+        ["near-end: the 3 into the head-left corner"] = Position("pool-9ft", "eight-ball", [-1.236, -0.3], """{ "id": "3", "position": [-1.1, 0.4] }, { "id": "8", "position": [0.9, 0.3] }"""),
+        ["near-end: the 3 into the side pocket"] = Position("pool-9ft", "eight-ball", [-1.236, -0.3], """{ "id": "3", "position": [-1.1, 0.6] }, { "id": "8", "position": [0.9, 0.3] }"""),
+        ["near-end: a red into the baulk corner, the brown on its spot"] = Position("snooker-12ft", "snooker", [-1.752, -0.3], """{ "id": "red-1", "position": [-1.56, 0.6] }, { "id": "brown", "position": [-1.047, 0.0] }, { "id": "black", "position": [1.46, 0.0] }"""),
+    };
+
+    private static string Position(string preset, string rules, double[] cue, string balls) => $$"""
+        { "format": "billiards-scene/1", "name": "near end", "table": { "preset": "{{preset}}" },
+          "balls": [ { "id": "cue", "position": [{{cue[0].ToString(CultureInfo.InvariantCulture)}}, {{cue[1].ToString(CultureInfo.InvariantCulture)}}] }, {{balls}} ],
+          "game": { "rules": "{{rules}}", "players": ["Anna", "Ben"], "shooter": 0, "shot": 3 } }
+        """;
 
     private static (TestGame Game, RenderFrame Frame, BallId Ball, Vector3? Pocket) Open(string file, int width, int height)
     {
-        var scene = SceneLoader.Load(Path.Combine(AssetFolder.Assets, "scenes", file));
+        var scene = NearEnd.TryGetValue(file, out var json) ? SceneLoader.Parse(json, "near-end.json") : SceneLoader.Load(Path.Combine(AssetFolder.Assets, "scenes", file));
         var rules = scene.Game?.Rules ?? (RuleNames.TryParseGame(scene.Rules, out var named) ? named : throw new InvalidOperationException($"{file} names no game"));
         var game = new TestGame(scene, new MatchSetup(rules, [new Seat("Player 1"), new Seat("Player 2")]));
         game.Window.FramebufferSize = (width, height);
