@@ -43,7 +43,7 @@ internal sealed class PlannerPosition
     /// </summary>
     public static PlannerPosition Snooker() => new(SnookerTable.Spec, BallSet.Snooker, BallSet.Snooker.DefaultParams,
         new RackSpec(RackGame.Snooker, 5), new ShotSpec(5, 2.6, 0, 0),
-        open => new GameState(GameRules.Snooker) { Shot = 1, BallOn = SnookerRuleset.Red, BallInHand = open.Cue is null ? BallInHand.D : BallInHand.None });
+        open => new GameState(GameRules.Snooker) { Shot = 1, BallInHand = open.Cue is null ? BallInHand.D : BallInHand.None, Part = new SnookerPart { BallOn = SnookerRuleset.Red } });
 
     /// <summary>The planner on the position's table.</summary>
     public ShotPlanner Planner { get; }

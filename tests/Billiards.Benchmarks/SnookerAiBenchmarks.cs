@@ -29,7 +29,7 @@ public class SnookerAiBenchmarks
         _eight = PlannerPosition.EightBall();
         _snooker = PlannerPosition.Snooker();
         _colourTable = _snooker.Table.Without(_snooker.Table.Ids.First(SnookerRuleset.IsRed));
-        _colourOn = _snooker.State with { Shot = 2, BallOn = SnookerRuleset.Colour, Score = new PerPlayer<int>(1, 0) };
+        _colourOn = _snooker.State with { Shot = 2, Score = new PerPlayer<int>(1, 0), Part = SnookerPart.Of(_snooker.State) with { BallOn = SnookerRuleset.Colour } };
     }
 
     /// <summary>The 8-ball level-5 decision on the open table after the break: the decisions' baseline.</summary>

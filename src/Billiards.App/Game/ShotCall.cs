@@ -101,7 +101,7 @@ public sealed class ShotCall
             var may = Nominatable();
             var aimed = _match.Aim?.Ball;
             // A free ball while on the reds is nominated as a colour (rules.md): the default is a colour.
-            List<BallId> byDefault = _match.State.FreeBall && _match.Ruleset is SnookerRuleset && SnookerRuleset.BallOnOf(_match.State) == SnookerRuleset.Red && may.Any(SnookerRuleset.IsColour)
+            List<BallId> byDefault = SnookerPart.Of(_match.State).FreeBall && _match.Ruleset is SnookerRuleset && SnookerRuleset.BallOnOf(_match.State) == SnookerRuleset.Red && may.Any(SnookerRuleset.IsColour)
                 ? [.. may.Where(SnookerRuleset.IsColour)]
                 : may;
             var ball = _calledBall is { } c && may.Contains(c) ? c

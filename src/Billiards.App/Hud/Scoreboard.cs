@@ -129,7 +129,7 @@ public static class ScoreboardBuilder
             {
                 // The colour or the free ball nominated now, before the strike makes it the state's call.
                 string ballName = BallSet.NameOfAny(nominated.Ball);
-                target = state.FreeBall
+                target = SnookerPart.Of(state).FreeBall
                     ? target with { Text = string.Create(CultureInfo.InvariantCulture, $"{state.Score[p]}, free ball: {ballName}") }
                     : ruleset.Target(state with { Call = nominated }, p, onTable);
             }
@@ -251,7 +251,7 @@ public static class ScoreboardBuilder
         if (match.NeedsNomination)
         {
             string ball = match.CurrentNomination is { } n ? BallSet.NameOfAny(n.Ball) : "none";
-            parts.Add(state.FreeBall ? $"FREE BALL: nominate {ball} (B, click a ball)" : $"Nominate: {ball} (B, click a ball)");
+            parts.Add(SnookerPart.Of(state).FreeBall ? $"FREE BALL: nominate {ball} (B, click a ball)" : $"Nominate: {ball} (B, click a ball)");
         }
         if (physics.BallInHand)
         {

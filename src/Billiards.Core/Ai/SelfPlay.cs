@@ -80,7 +80,7 @@ public sealed class SelfPlay
         var table = _planner.Table;
         var skills = new PerPlayer<SkillLevel>(SkillLevel.Of(levels.First), SkillLevel.Of(levels.Second));
         int rackSeed = (int)(PlannerRandom.Derive(seed, 7_000_000) & 0x3FFFFFFF);
-        var setup = new GameSetup(table.Table, _planner.PhysicsConfig, rackSeed, new GameState(rules) { Shooter = breaker, Breaker = breaker, Target = target });
+        var setup = new GameSetup(table.Table, _planner.PhysicsConfig, rackSeed, Ruleset.For(rules).BrokenBy(new GameState(rules) { Target = target }, breaker));
         var session = new Session(setup, Seat.Of(setup.Start.Players, SeatKind.Computer));
         var game = session.Game;
         var shots = new List<SelfPlayShot>();

@@ -71,7 +71,7 @@ public static class Snookers
                 continue;
             }
             var position = new TablePosition(balls, cueBall);
-            var state = new GameState(GameRules.EightBall) { Shot = 12, Groups = new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes) };
+            var state = new GameState(GameRules.EightBall) { Shot = 12, Part = new EightBallPart { Groups = new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes) } };
             if (PlannerTable.LegalTargets(state, position).All(t => planner.Blocked(position, cue, position.Positions[position.IndexOf(t)], t)))
             {
                 result.Add(new SnookerPosition(state, position));

@@ -39,7 +39,9 @@ public sealed record GameState
     public GameState(GameRules rules)
     {
         Rules = rules;
-        Target = (rules.Name is null ? null : Ruleset.Find(rules.Name))?.DefaultTarget ?? DefaultTarget;
+        var ruleset = rules.Name is null ? null : Ruleset.Find(rules.Name);
+        Target = ruleset?.DefaultTarget ?? DefaultTarget;
+        Part = ruleset?.StartPart;
     }
 
     /// <summary>Which game is played.</summary>
@@ -57,9 +59,6 @@ public sealed record GameState
     /// <summary>The shot's number in this rack; 0 is the break.</summary>
     public int Shot { get; init; }
 
-    /// <summary>8-ball: each player's group, or null while the table is open.</summary>
-    public PerPlayer<BallGroup>? Groups { get; init; }
-
     /// <summary>The shooter's call, or null when none was made (counts as calling nothing).</summary>
     public Call? Call { get; init; }
 
@@ -69,24 +68,11 @@ public sealed record GameState
     /// <summary>Consecutive fouls of each player.</summary>
     public PerPlayer<int> FoulsInRow { get; init; }
 
-    /// <summary>14.1 and snooker: each player's points.</summary>
+    /// <summary>14.1, snooker and three-cushion: each player's points.</summary>
     public PerPlayer<int> Score { get; init; }
 
     /// <summary>14.1 and three-cushion: the points that win (default 100 in 14.1, 40 in three-cushion).</summary>
     public int Target { get; init; } = DefaultTarget;
-
-    /// <summary>
-    /// Snooker: the ball on, as files write it: "red", "colour" (after a potted red: the colour
-    /// nominated in <see cref="Call"/>) or a colour's name once the reds are gone; null for the
-    /// start of a frame ("red").
-    /// </summary>
-    public string? BallOn { get; init; }
-
-    /// <summary>Snooker: the shooter was awarded a free ball (and may nominate any ball in <see cref="Call"/> as the ball on).</summary>
-    public bool FreeBall { get; init; }
-
-    /// <summary>Snooker: consecutive fouls and misses of each player.</summary>
-    public PerPlayer<int> MissesInRow { get; init; }
 
     /// <summary>
     /// Where the shooter may place the cue ball before this shot (the previous ruling's
@@ -100,24 +86,28 @@ public sealed record GameState
     /// </summary>
     public Vec3? Placement { get; init; }
 
-    /// <summary>Three-cushion: each player's cue ball, or null for the default (white for player 0, yellow for player 1).</summary>
-    public PerPlayer<Balls.BallId>? CueBalls { get; init; }
+    /// <summary>
+    /// The game's own part of the state (<see cref="GameStatePart"/>): 8-ball's groups, snooker's
+    /// ball on, three-cushion's innings; null where the game has none. A new state starts with its
+    /// ruleset's <see cref="IGameStateRules.StartPart"/>.
+    /// </summary>
+    public GameStatePart? Part { get; init; }
 
-    /// <summary>Three-cushion: each player's innings, the visits to the table begun (the one at the table counts once it has begun).</summary>
-    public PerPlayer<int> Innings { get; init; }
-
-    /// <summary>Three-cushion: the player who did not break gets a last inning once the breaker reaches the target (default true).</summary>
-    public bool Equalizing { get; init; } = true;
-
-    /// <summary>Three-cushion: the player who broke the game, 0 or 1.</summary>
-    public int Breaker { get; init; }
-
-    /// <summary>Three-cushion: the shooter's points in the inning at the table before this shot.</summary>
-    public int Run { get; init; }
+    /// <summary>
+    /// The game's own part as <typeparamref name="T"/>, or the start of one (<c>new T()</c>) when
+    /// the state holds none of that type (a state of another game).
+    /// </summary>
+    public T PartOf<T>() where T : GameStatePart, new() => Part as T ?? StartOf<T>.Value;
 
     /// <summary>The shooter's name.</summary>
     public string ShooterName => Players[Shooter];
 
     /// <summary>The incoming player's name.</summary>
     public string IncomingName => Players[Incoming];
+
+    // One start part per part type, shared: parts are immutable records.
+    private static class StartOf<T> where T : GameStatePart, new()
+    {
+        public static readonly T Value = new();
+    }
 }

@@ -100,8 +100,8 @@ internal sealed class RulingBuilder(GameState before, ShotFacts facts)
 
     public int? Winner { get; private set; }
 
-    /// <summary>The groups after the shot.</summary>
-    public PerPlayer<BallGroup>? Groups { get; set; } = before.Groups;
+    /// <summary>The game's own part of the state after the shot (8-ball's groups).</summary>
+    public GameStatePart? Part { get; set; } = before.Part;
 
     /// <summary>The score after the shot.</summary>
     public PerPlayer<int> Score { get; set; } = before.Score;
@@ -165,7 +165,7 @@ internal sealed class RulingBuilder(GameState before, ShotFacts facts)
             {
                 Shooter = nextShooter,
                 Shot = b.Shot + 1,
-                Groups = Groups,
+                Part = Part,
                 Call = null,
                 PushOut = false,
                 FoulsInRow = FoulsInRow,

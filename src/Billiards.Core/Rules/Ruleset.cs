@@ -1,3 +1,4 @@
+using System.Text.Json;
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Setup;
@@ -24,9 +25,10 @@ public readonly record struct Visit(int Player, int Shots, int Break, bool Open)
 /// The match, the computer player, the scene reader and the HUD ask the ruleset instead of asking
 /// which game is played; <see cref="For"/> is the one place that maps a game to its ruleset.
 /// Its members by role: <see cref="IShotConstraints"/>, <see cref="IRefereeRules"/>,
-/// <see cref="IGamePresentation"/> and <see cref="IPlannerPolicy"/>; a layer takes the role it needs.
+/// <see cref="IGamePresentation"/> and <see cref="IPlannerPolicy"/>, and its own part of the state,
+/// <see cref="IGameStateRules"/>; a layer takes the role it needs.
 /// </summary>
-public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentation, IPlannerPolicy
+public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentation, IPlannerPolicy, IGameStateRules
 {
     private static readonly Lock RegistryLock = new();
     private static Ruleset[] _registered = [new EightBallRuleset(), new NineBallRuleset(), new TenBallRuleset(), new StraightPoolRuleset(), new SnookerRuleset(), new ThreeCushionRuleset()];
@@ -365,11 +367,34 @@ public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentati
             RefereeOption.Rerack => new OptionOutcome(Rerack(next), true, []),
             RefereeOption.PassBack => new OptionOutcome(next with { Shooter = next.Incoming, BallInHand = BallInHand.None }, false, ruling.Spot),
             // The offender plays again from where the balls lie (from hand after an in-off); a free ball is the incoming player's only.
-            RefereeOption.PutBack => new OptionOutcome(next with { Shooter = next.Incoming, FreeBall = false }, false, ruling.Spot),
+            RefereeOption.PutBack => new OptionOutcome(PutBack(next), false, ruling.Spot),
             RefereeOption.Replace => new OptionOutcome(ruling.Replaced ?? throw new ArgumentException("the ruling has no replaced state", nameof(ruling)), false, []) { Replace = true },
             RefereeOption.Accept or RefereeOption.SpotEight or RefereeOption.Shoot or RefereeOption.Play => new OptionOutcome(next, false, ruling.Spot),
             _ => ChooseOther(ruling, option, next),
         };
+    }
+
+    /// <summary>
+    /// The words after the next shooter of a ruling took <paramref name="option"/>, with
+    /// <paramref name="state"/> the state it leads to, e.g. "Put back: Ben plays again.".
+    /// </summary>
+    public virtual string ChoiceMessage(RefereeOption option, GameState state)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        return option switch
+        {
+            RefereeOption.Play => $"{state.ShooterName} plays the balls as they lie.",
+            RefereeOption.PutBack => $"Put back: {state.ShooterName} plays again.",
+            RefereeOption.Replace => $"The balls are replaced: {state.ShooterName} plays again.",
+            _ => $"{option.ToName()}: {state.ShooterName} to shoot.",
+        };
+    }
+
+    /// <summary>The breaker's part of the start of a game that <paramref name="breaker"/> (0 or 1) breaks: by default they shoot first.</summary>
+    public virtual GameState BrokenBy(GameState start, int breaker)
+    {
+        ArgumentNullException.ThrowIfNull(start);
+        return start with { Shooter = breaker };
     }
 
     /// <summary>What a game's own option (three-cushion's <see cref="RefereeOption.SpotBreak"/>) leads to; by default the table as it lies.</summary>
@@ -380,7 +405,34 @@ public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentati
     }
 
     /// <summary>The state before the break of a rerack the ruling's next shooter chose: by default the chooser breaks.</summary>
-    protected virtual GameState Rerack(GameState next) => next with { Shot = 0, BallInHand = BallInHand.None, Groups = null };
+    protected virtual GameState Rerack(GameState next) => next with { Shot = 0, BallInHand = BallInHand.None };
+
+    /// <summary>The state when the ruling's next shooter puts the offender back in: by default the offender plays from where the balls lie.</summary>
+    protected virtual GameState PutBack(GameState next) => next with { Shooter = next.Incoming };
+
+    private static readonly string[] NoFields = [];
+
+    /// <summary>None by default: a game without a part of its own (9-ball, 14.1) keeps only the common state.</summary>
+    public virtual GameStatePart? StartPart => null;
+
+    /// <inheritdoc />
+    public virtual IReadOnlyList<string> PartFields => NoFields;
+
+    /// <inheritdoc />
+    public virtual GameStatePart? ReadPart(Scenes.GameBlockFields block) => StartPart;
+
+    /// <summary>Pool's call of a ball and a pocket by default (<see cref="Scenes.GameBlockReader.ReadPocketCall"/>).</summary>
+    public virtual Call ReadCall(JsonElement call, Scenes.GameBlockFields block) => Scenes.GameBlockReader.ReadPocketCall(call, this, block);
+
+    /// <summary>Nothing by default.</summary>
+    public virtual void WritePart(Utf8JsonWriter writer, GameState state, GameBlockSlot slot)
+    {
+    }
+
+    /// <summary>Nothing by default.</summary>
+    public virtual void WriteRulingFields(Utf8JsonWriter writer, Ruling ruling)
+    {
+    }
 
     /// <summary>
     /// Racks <paramref name="balls"/> again during a game (14.1's rerack of fourteen) on the balls

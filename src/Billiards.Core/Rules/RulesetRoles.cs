@@ -1,3 +1,4 @@
+using System.Text.Json;
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Table;
@@ -7,7 +8,8 @@ namespace Billiards.Core.Rules;
 // A ruleset's members by role, as pooltool splits its rulesets: what the next shot may be (the
 // constraints), how a shot is judged and what follows (the referee), what people are shown (the
 // presentation) and how the computer plays the game (the planner's policy). A layer takes the
-// role it needs; only a ruleset implements them, all four at once (Ruleset).
+// role it needs; only a ruleset implements them, all at once (Ruleset). A game's own part of the
+// state, and the game-block fields that carry it, are a fifth role (IGameStateRules).
 
 /// <summary>The next shot's constraints (pooltool's ShotConstraints): what may be cued, hit first, called, placed.</summary>
 public interface IShotConstraints
@@ -101,4 +103,32 @@ public interface IPlannerPolicy
 
     /// <inheritdoc cref="Ruleset.MaxShots"/>
     int MaxShots(GameState start);
+}
+
+/// <summary>
+/// A game's own part of the game state (<see cref="GameStatePart"/>) and the game-block fields
+/// that carry it (scene-format.md): the ruleset reads and writes them, so the block's reader and
+/// writer know only the fields every game shares.
+/// </summary>
+public interface IGameStateRules
+{
+    /// <summary>The game's own part at the start of a game, or null where the game has none.</summary>
+    GameStatePart? StartPart { get; }
+
+    /// <summary>The game-block fields of the game's own part, e.g. snooker's "ball_on".</summary>
+    IReadOnlyList<string> PartFields { get; }
+
+    /// <summary>Reads the game's own part from a block's fields (<see cref="StartPart"/> where it has none of them).</summary>
+    /// <exception cref="Scenes.SceneException">When a field is invalid.</exception>
+    GameStatePart? ReadPart(Scenes.GameBlockFields block);
+
+    /// <summary>Reads a block's "call" (not null): pool's <c>{"ball", "pocket"}</c>, snooker's nomination <c>{"ball"}</c>; <c>{"safety": true}</c> is read before.</summary>
+    /// <exception cref="Scenes.SceneException">When the call is invalid.</exception>
+    Call ReadCall(JsonElement call, Scenes.GameBlockFields block);
+
+    /// <summary>Writes the game's own fields of <paramref name="state"/> that go at <paramref name="slot"/> of the block.</summary>
+    void WritePart(Utf8JsonWriter writer, GameState state, GameBlockSlot slot);
+
+    /// <summary>Writes the game's own fields of a ruling (snooker's points, three-cushion's innings), after "message".</summary>
+    void WriteRulingFields(Utf8JsonWriter writer, Ruling ruling);
 }

@@ -309,13 +309,7 @@ public sealed class Session
         Turn++;
         TableReplaced?.Invoke();
         var state = State;
-        Message = state.Shot == 0 ? $"Rerack: {state.ShooterName} breaks." : option switch
-        {
-            RefereeOption.Play => $"{state.ShooterName} plays the balls as they lie{(state.FreeBall ? ", with a free ball" : "")}.",
-            RefereeOption.PutBack => $"Put back: {state.ShooterName} plays again.",
-            RefereeOption.Replace => $"The balls are replaced: {state.ShooterName} plays again.",
-            _ => $"{option.ToName()}: {state.ShooterName} to shoot.",
-        };
+        Message = state.Shot == 0 ? $"Rerack: {state.ShooterName} breaks." : Ruleset.ChoiceMessage(option, state);
         ShooterToPlay?.Invoke();
     }
 
@@ -448,7 +442,7 @@ public sealed class Session
         Placement = null,
         PushOut = false,
         BallInHand = BallInHand.None,
-        FreeBall = false,
+        Part = before.Part?.AtEnd,
         Score = ruling.Score,
     };
 }

@@ -14,13 +14,19 @@ namespace Billiards.Core.Scenes;
 /// Besides the contract's fields the block may carry "ball_in_hand" ("table", "kitchen" or "d"): the
 /// previous ruling's ball in hand, which the referee needs to judge the placement. Rulings write
 /// it into their "next" block, so that "next" is all the next shot needs.
+/// This reader knows only the fields every game shares (<see cref="CommonFields"/>); a game's own
+/// fields (8-ball's groups, snooker's ball on, three-cushion's innings) and the words of its call
+/// are read by its ruleset (<see cref="IGameStateRules"/>). Another game's field is refused unless
+/// it says "none" (null, false or zeros), as an 8-ball block may say "push_out": false.
 /// </remarks>
 public static class GameBlockReader
 {
-    /// <summary>The fields a game block may have.</summary>
-    public static IReadOnlyList<string> Fields { get; } =
-        ["rules", "players", "shooter", "shot", "groups", "call", "push_out", "fouls_in_row", "score", "target", "ball_in_hand", "ball_on", "free_ball", "misses_in_row",
-         "cue_balls", "innings", "equalizing", "breaker", "run"];
+    /// <summary>The fields of every game's block.</summary>
+    public static IReadOnlyList<string> CommonFields { get; } =
+        ["rules", "players", "shooter", "shot", "call", "push_out", "fouls_in_row", "score", "target", "ball_in_hand"];
+
+    /// <summary>The fields a game block may have: <see cref="CommonFields"/> and every registered game's own (<see cref="IGameStateRules.PartFields"/>).</summary>
+    public static IReadOnlyList<string> Fields => [.. CommonFields, .. Ruleset.All.SelectMany(r => r.PartFields).Distinct()];
 
     /// <summary>Reads a game block.</summary>
     /// <param name="element">The block.</param>
@@ -37,11 +43,12 @@ public static class GameBlockReader
             throw Error(path, $"expected an object, found {element.ValueKind.ToString().ToLowerInvariant()}");
         }
         var f = new Dictionary<string, JsonElement>(StringComparer.Ordinal);
+        var fields = Fields;
         foreach (var p in element.EnumerateObject())
         {
-            if (!Fields.Contains(p.Name))
+            if (!fields.Contains(p.Name))
             {
-                throw Error($"{path}.{p.Name}", $"unknown field (expected one of {Quote(Fields)})");
+                throw Error($"{path}.{p.Name}", $"unknown field (expected one of {Quote(fields)})");
             }
             if (!f.TryAdd(p.Name, p.Value))
             {
@@ -58,6 +65,7 @@ public static class GameBlockReader
             throw Error($"{path}.rules", $"unknown rules \"{rulesName}\" (expected one of {Quote(RuleNames.GameNames)})");
         }
         var state = new GameState(rules);
+        var ruleset = Ruleset.For(rules);
 
         if (f.TryGetValue("players", out var players))
         {
@@ -86,25 +94,6 @@ public static class GameBlockReader
             }
             state = state with { Shot = n };
         }
-        if (f.TryGetValue("groups", out var groups) && groups.ValueKind != JsonValueKind.Null)
-        {
-            if (!Ruleset.For(rules).HasGroups)
-            {
-                throw Error($"{path}.groups", $"{rules.ToName()} has no groups (only eight-ball has; leave \"groups\" out or null)");
-            }
-            if (groups.ValueKind != JsonValueKind.Array || groups.GetArrayLength() != 2
-                || !RuleNames.TryParseGroup(groups[0].ValueKind == JsonValueKind.String ? groups[0].GetString() : null, out var g0)
-                || !RuleNames.TryParseGroup(groups[1].ValueKind == JsonValueKind.String ? groups[1].GetString() : null, out var g1)
-                || g0 == g1)
-            {
-                throw Error($"{path}.groups", "expected null (an open table) or each player's group: [\"solids\", \"stripes\"] or [\"stripes\", \"solids\"]");
-            }
-            state = state with { Groups = new(g0, g1) };
-        }
-        if (f.TryGetValue("call", out var call) && call.ValueKind != JsonValueKind.Null)
-        {
-            state = state with { Call = ReadCall(call, rules, pockets, $"{path}.call", Error) };
-        }
         if (f.TryGetValue("push_out", out var push))
         {
             if (push.ValueKind is not (JsonValueKind.True or JsonValueKind.False))
@@ -112,7 +101,7 @@ public static class GameBlockReader
                 throw Error($"{path}.push_out", "expected true or false");
             }
             bool pushOut = push.GetBoolean();
-            if (pushOut && !Ruleset.For(rules).HasPushOut)
+            if (pushOut && !ruleset.HasPushOut)
             {
                 throw Error($"{path}.push_out", $"{rules.ToName()} has no push-out (only nine-ball and ten-ball have)");
             }
@@ -129,7 +118,7 @@ public static class GameBlockReader
             {
                 throw Error($"{path}.fouls_in_row", "each count must be 0 or more");
             }
-            if (Ruleset.For(rules).HasThreeFouls && (pair.First > 2 || pair.Second > 2))
+            if (ruleset.HasThreeFouls && (pair.First > 2 || pair.Second > 2))
             {
                 throw Error($"{path}.fouls_in_row", "each count must be 0, 1 or 2 (a third foul ends the count)");
             }
@@ -157,41 +146,21 @@ public static class GameBlockReader
             }
             state = state with { BallInHand = bih };
         }
-        bool snooker = Ruleset.For(rules).HasBallOn;
-        if (f.TryGetValue("ball_on", out var ballOn) && ballOn.ValueKind != JsonValueKind.Null)
+        var block = new GameBlockFields(f, state, pockets, file, path);
+        foreach (string name in f.Keys.Where(n => !CommonFields.Contains(n) && !ruleset.PartFields.Contains(n)))
         {
-            string name = Text(ballOn, $"{path}.ball_on");
-            if (!snooker || name is not (SnookerRuleset.Red or SnookerRuleset.Colour) && !BallSet.Colours.Contains(name))
+            if (!SaysNone(f[name]))
             {
-                throw Error($"{path}.ball_on", snooker
-                    ? $"unknown ball on \"{name}\" (expected \"red\", \"colour\" or a colour: {Quote(BallSet.Colours)})"
-                    : $"{rules.ToName()} has no ball on (only snooker has)");
+                string owner = Ruleset.All.First(r => r.PartFields.Contains(name)).Name;
+                throw Error($"{path}.{name}", $"{rules.ToName()} has no {name.Replace('_', ' ')} (only {owner} has; leave \"{name}\" out)");
             }
-            state = state with { BallOn = name };
         }
-        if (f.TryGetValue("free_ball", out var free))
+        state = state with { Part = ruleset.ReadPart(block) };
+        if (f.TryGetValue("call", out var call) && call.ValueKind != JsonValueKind.Null)
         {
-            if (free.ValueKind is not (JsonValueKind.True or JsonValueKind.False))
-            {
-                throw Error($"{path}.free_ball", "expected true or false");
-            }
-            if (free.GetBoolean() && !snooker)
-            {
-                throw Error($"{path}.free_ball", $"{rules.ToName()} has no free ball (only snooker has)");
-            }
-            state = state with { FreeBall = free.GetBoolean() };
+            state = state with { Call = ReadCall(call, ruleset, block, $"{path}.call", Error) };
         }
-        if (f.TryGetValue("misses_in_row", out var misses))
-        {
-            var pair = Pair(misses, $"{path}.misses_in_row");
-            // Misses without a full ball view go on counting past two (rules.md: only the third with a view loses).
-            if (pair.First < 0 || pair.Second < 0)
-            {
-                throw Error($"{path}.misses_in_row", "each count must be 0 or more");
-            }
-            state = state with { MissesInRow = pair };
-        }
-        return ReadCarom(f, state, path, Error);
+        return state;
 
         string Text(JsonElement e, string at) =>
             e.ValueKind == JsonValueKind.String ? e.GetString()! : throw Error(at, $"expected a string, found {e.GetRawText()}");
@@ -205,60 +174,7 @@ public static class GameBlockReader
                 : throw Error(at, $"expected one whole number per player, e.g. [0, 0], found {e.GetRawText()}");
     }
 
-    // Three-cushion's fields (scene-format.md): cue_balls, innings, equalizing, breaker, and run
-    // (ours: the shooter's points in the inning so far, which the ruling's run continues).
-    private static GameState ReadCarom(Dictionary<string, JsonElement> f, GameState state, string path, Func<string, string, SceneException> error)
-    {
-        var ruleset = Ruleset.For(state.Rules);
-        foreach (string name in new[] { "cue_balls", "innings", "equalizing", "breaker", "run" })
-        {
-            if (f.ContainsKey(name) && !ruleset.HasInnings)
-            {
-                throw error($"{path}.{name}", $"{state.Rules.ToName()} has no \"{name}\" (only three-cushion has)");
-            }
-        }
-        if (f.TryGetValue("cue_balls", out var cue))
-        {
-            var set = ruleset.BallSet;
-            string? Name(int i) => cue[i].ValueKind == JsonValueKind.String ? cue[i].GetString() : null;
-            if (cue.ValueKind != JsonValueKind.Array || cue.GetArrayLength() != 2
-                || !set.TryParse(Name(0), out var a) || !set.TryParse(Name(1), out var b) || a == b || !set.IsCueBall(a) || !set.IsCueBall(b))
-            {
-                throw error($"{path}.cue_balls", "expected each player's cue ball: [\"white\", \"yellow\"] or [\"yellow\", \"white\"]");
-            }
-            state = state with { CueBalls = new(a, b) };
-        }
-        if (f.TryGetValue("innings", out var innings))
-        {
-            if (innings.ValueKind != JsonValueKind.Array || innings.GetArrayLength() != 2
-                || innings.EnumerateArray().Any(x => x.ValueKind != JsonValueKind.Number || !x.TryGetInt32(out int v) || v < 0))
-            {
-                throw error($"{path}.innings", $"expected each player's innings, two whole numbers of 0 or more, found {innings.GetRawText()}");
-            }
-            state = state with { Innings = new(innings[0].GetInt32(), innings[1].GetInt32()) };
-        }
-        if (f.TryGetValue("equalizing", out var eq))
-        {
-            state = eq.ValueKind is JsonValueKind.True or JsonValueKind.False
-                ? state with { Equalizing = eq.GetBoolean() }
-                : throw error($"{path}.equalizing", "expected true or false");
-        }
-        if (f.TryGetValue("breaker", out var breaker))
-        {
-            state = breaker.ValueKind == JsonValueKind.Number && breaker.TryGetInt32(out int b) && b is 0 or 1
-                ? state with { Breaker = b }
-                : throw error($"{path}.breaker", $"expected the breaker's index, 0 or 1, found {breaker.GetRawText()}");
-        }
-        if (f.TryGetValue("run", out var run))
-        {
-            state = run.ValueKind == JsonValueKind.Number && run.TryGetInt32(out int r) && r >= 0
-                ? state with { Run = r }
-                : throw error($"{path}.run", $"expected the shooter's points in this inning, a whole number of 0 or more, found {run.GetRawText()}");
-        }
-        return state;
-    }
-
-    private static Call ReadCall(JsonElement e, GameRules rules, PocketSet pockets, string path, Func<string, string, SceneException> error)
+    private static Call ReadCall(JsonElement e, Ruleset ruleset, GameBlockFields block, string path, Func<string, string, SceneException> error)
     {
         if (e.ValueKind != JsonValueKind.Object)
         {
@@ -273,46 +189,47 @@ public static class GameBlockReader
         {
             throw error($"{path}.{name}", "unknown field (expected \"ball\" and \"pocket\", or \"safety\" alone)");
         }
-        if (Ruleset.For(rules).HasBallOn)
-        {
-            return Nomination(e, path, error);
-        }
+        return ruleset.ReadCall(e, block);
+    }
+
+    /// <summary>
+    /// Pool's call of a ball and a pocket, <c>{"ball": "3", "pocket": "foot-left"}</c>, of one of
+    /// <paramref name="ruleset"/>'s object balls (the default of <see cref="IGameStateRules.ReadCall"/>).
+    /// </summary>
+    /// <exception cref="SceneException">When the call names no such ball or pocket.</exception>
+    public static Call ReadPocketCall(JsonElement e, Ruleset ruleset, GameBlockFields block)
+    {
+        ArgumentNullException.ThrowIfNull(ruleset);
+        ArgumentNullException.ThrowIfNull(block);
         if (!e.TryGetProperty("ball", out var ball) || !e.TryGetProperty("pocket", out var pocket))
         {
-            throw error(path, "a call needs both \"ball\" and \"pocket\" (or {\"safety\": true})");
+            throw block.Error("call", "a call needs both \"ball\" and \"pocket\" (or {\"safety\": true})");
         }
         string? ballName = ball.ValueKind == JsonValueKind.String ? ball.GetString() : ball.GetRawText();
-        var ruleset = Ruleset.For(rules);
         var set = ruleset.BallSet;
         var objectBalls = ruleset.Balls.Where(b => !set.IsCueBall(b)).ToList();
         if (!set.TryParse(ballName, out var id) || !objectBalls.Contains(id))
         {
-            throw error($"{path}.ball", $"\"{ballName}\" is not an object ball of {rules.ToName()} (expected \"{set.NameOf(objectBalls[0])}\" .. \"{set.NameOf(objectBalls[^1])}\")");
+            throw block.Error("call.ball", $"\"{ballName}\" is not an object ball of {ruleset.Name} (expected \"{set.NameOf(objectBalls[0])}\" .. \"{set.NameOf(objectBalls[^1])}\")");
         }
         string? pocketName = pocket.ValueKind == JsonValueKind.String ? pocket.GetString() : pocket.GetRawText();
+        var pockets = block.Pockets;
         if (!pockets.TryParse(pocketName, out var pocketId))
         {
-            throw error($"{path}.pocket", pockets.Count == 0
+            throw block.Error("call.pocket", pockets.Count == 0
                 ? $"unknown pocket \"{pocketName}\" (this table has no pockets)"
                 : $"unknown pocket \"{pocketName}\" (expected one of {pockets.Describe()})");
         }
         return new Call(id, pocketId);
     }
 
-    // Snooker's call names a ball (a colour after a red, or a free ball) and no pocket.
-    private static Call Nomination(JsonElement e, string path, Func<string, string, SceneException> error)
+    // Another game's field that says "none": null, false or all zeros.
+    private static bool SaysNone(JsonElement e) => e.ValueKind switch
     {
-        if (e.TryGetProperty("pocket", out _) || !e.TryGetProperty("ball", out var ball))
-        {
-            throw error(path, "a snooker call nominates a ball and no pocket: {\"ball\": \"blue\"}");
-        }
-        string? name = ball.ValueKind == JsonValueKind.String ? ball.GetString() : ball.GetRawText();
-        if (!BallSet.Snooker.TryParse(name, out var id) || BallSet.Snooker.IsCueBall(id))
-        {
-            throw error($"{path}.ball", $"\"{name}\" is not an object ball of snooker (expected \"red-1\" .. \"red-15\" or a colour)");
-        }
-        return Call.Nominate(id);
-    }
+        JsonValueKind.Null or JsonValueKind.False => true,
+        JsonValueKind.Array => e.EnumerateArray().All(x => x.ValueKind == JsonValueKind.Number && x.TryGetInt32(out int v) && v == 0),
+        _ => false,
+    };
 
     private static string Quote(IEnumerable<string> values) => string.Join(", ", values.Select(v => $"\"{v}\""));
 }

@@ -9,8 +9,9 @@ namespace Billiards.Core.Scenes;
 public static class GameBlockWriter
 {
     /// <summary>
-    /// Writes a game block: the contract's fields that apply to the game (groups only for 8-ball,
-    /// push_out only when declared, the call only when made) and "ball_in_hand" when there is one.
+    /// Writes a game block: the fields every game shares (push_out only when declared, the call
+    /// only when made, "ball_in_hand" when there is one) and, at their places in the contract's
+    /// order, the game's own, which its ruleset writes (<see cref="IGameStateRules.WritePart"/>).
     /// <see cref="GameBlockReader.Read"/> reads it back to an equal state (the placement excepted).
     /// </summary>
     public static void WriteGame(Utf8JsonWriter w, GameState state)
@@ -25,23 +26,11 @@ public static class GameBlockWriter
         w.WriteEndArray();
         w.WriteNumber("shooter", state.Shooter);
         w.WriteNumber("shot", state.Shot);
-        if (Ruleset.For(state.Rules).HasGroups)
-        {
-            if (state.Groups is { } g)
-            {
-                w.WriteStartArray("groups");
-                w.WriteStringValue(g.First.ToName());
-                w.WriteStringValue(g.Second.ToName());
-                w.WriteEndArray();
-            }
-            else
-            {
-                w.WriteNull("groups");
-            }
-        }
+        var ruleset = Ruleset.For(state.Rules);
+        ruleset.WritePart(w, state, GameBlockSlot.AfterShot);
         if (state.Call is { } call)
         {
-            WriteCall(w, "call", call, Ruleset.For(state.Rules).BallSet);
+            WriteCall(w, "call", call, ruleset.BallSet);
         }
         if (state.PushOut)
         {
@@ -54,22 +43,7 @@ public static class GameBlockWriter
         {
             w.WriteString("ball_in_hand", state.BallInHand.ToName());
         }
-        if (Ruleset.For(state.Rules).HasBallOn)
-        {
-            w.WriteString("ball_on", SnookerRuleset.BallOnOf(state));
-            w.WriteBoolean("free_ball", state.FreeBall);
-            WritePair(w, "misses_in_row", state.MissesInRow);
-        }
-        if (Ruleset.For(state.Rules).HasInnings)
-        {
-            var cueBalls = state.CueBalls ?? ThreeCushionRuleset.DefaultCueBalls;
-            var set = Ruleset.For(state.Rules).BallSet;
-            WriteNames(w, "cue_balls", [set.NameOf(cueBalls.First), set.NameOf(cueBalls.Second)]);
-            WritePair(w, "innings", state.Innings);
-            w.WriteBoolean("equalizing", state.Equalizing);
-            w.WriteNumber("breaker", state.Breaker);
-            w.WriteNumber("run", state.Run);
-        }
+        ruleset.WritePart(w, state, GameBlockSlot.AtEnd);
         w.WriteEndObject();
     }
 
@@ -127,25 +101,7 @@ public static class GameBlockWriter
             w.WriteNull("winner");
         }
         w.WriteString("message", ruling.Message);
-        if (Ruleset.For(ruling.Next.Rules).HasBallOn)
-        {
-            w.WriteNumber("points", ruling.Points);
-            w.WriteNumber("penalty", ruling.Penalty);
-            w.WriteBoolean("foul_and_miss", ruling.FoulAndMiss);
-            w.WriteBoolean("free_ball", ruling.FreeBall);
-        }
-        if (Ruleset.For(ruling.Next.Rules).HasInnings)
-        {
-            w.WriteBoolean("point", ruling.Point);
-            w.WriteNumber("cushions", ruling.Cushions);
-            WritePair(w, "score", ruling.Score);
-            WritePair(w, "innings", ruling.Innings);
-            w.WriteStartArray("average");
-            w.WriteNumberValue(ThreeCushionRuleset.AverageValue(ruling.Score.First, ruling.Innings.First));
-            w.WriteNumberValue(ThreeCushionRuleset.AverageValue(ruling.Score.Second, ruling.Innings.Second));
-            w.WriteEndArray();
-            w.WriteNumber("run", ruling.Run);
-        }
+        Ruleset.For(ruling.Next.Rules).WriteRulingFields(w, ruling);
         w.WritePropertyName("next");
         WriteGame(w, ruling.Next);
         w.WriteEndObject();
@@ -162,7 +118,8 @@ public static class GameBlockWriter
         return stream.ToArray();
     }
 
-    private static void WritePair(Utf8JsonWriter w, string name, PerPlayer<int> pair)
+    /// <summary>Writes one whole number per player as <c>"name": [first, second]</c>.</summary>
+    public static void WritePair(Utf8JsonWriter w, string name, PerPlayer<int> pair)
     {
         w.WriteStartArray(name);
         w.WriteNumberValue(pair.First);
@@ -170,8 +127,11 @@ public static class GameBlockWriter
         w.WriteEndArray();
     }
 
-    private static void WriteNames(Utf8JsonWriter w, string name, IEnumerable<string> values)
+    /// <summary>Writes names as <c>"name": ["a", "b"]</c>.</summary>
+    public static void WriteNames(Utf8JsonWriter w, string name, IEnumerable<string> values)
     {
+        ArgumentNullException.ThrowIfNull(w);
+        ArgumentNullException.ThrowIfNull(values);
         w.WriteStartArray(name);
         foreach (string v in values)
         {

@@ -18,7 +18,7 @@ public class DefaultCallTests
     {
         var scene = SceneLoader.Parse(Json, "t.json") with
         {
-            Game = new GameState(GameRules.EightBall) { Shot = 5, Shooter = shooter, Groups = groups, Players = new PerPlayer<string>("Anna", "Ben") },
+            Game = new GameState(GameRules.EightBall) { Shot = 5, Shooter = shooter, Players = new PerPlayer<string>("Anna", "Ben"), Part = new EightBallPart { Groups = groups } },
         };
         var game = new TestGame(scene, new MatchSetup(GameRules.EightBall, [new Seat("Anna"), new Seat("Ben")]));
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
@@ -62,11 +62,11 @@ public class FreeBallNominationTests
               "game": { "rules": "snooker", "players": ["Anna", "Ben"], "shooter": 0, "shot": 3 } }
             """;
         var scene = SceneLoader.Parse(Json, "t.json");
-        scene = scene with { Game = scene.Game! with { FreeBall = true } };
+        scene = scene with { Game = scene.Game! with { Part = SnookerPart.Of(scene.Game!) with { FreeBall = true } } };
         using var game = new TestGame(scene, new MatchSetup(GameRules.Snooker, [new Seat("Anna"), new Seat("Ben")]));
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
         game.Frame();
-        Assert.True(match.State.FreeBall && match.NeedsNomination);
+        Assert.True(SnookerPart.Of(match.State).FreeBall && match.NeedsNomination);
         foreach (double aim in new[] { 0.0, 18.0 }) // at nothing in particular, then at the nearest red
         {
             match.AimAt(aim);

@@ -149,7 +149,7 @@ public class MatchHudTests
         // Groups taken (a scene's game block at shot 4, the 3 down): each player's line is followed by the balls still needed.
         var lines = new List<string>();
         var icons = new List<HudIcon>();
-        var taken = new GameState(GameRules.EightBall) { Players = new PerPlayer<string>("Anna", "Ben"), Groups = new PerPlayer<BallGroup>(BallGroup.Stripes, BallGroup.Solids), Shot = 4 };
+        var taken = new GameState(GameRules.EightBall) { Players = new PerPlayer<string>("Anna", "Ben"), Shot = 4, Part = new EightBallPart { Groups = new PerPlayer<BallGroup>(BallGroup.Stripes, BallGroup.Solids) } };
         var later = scene with { Game = taken, Balls = [.. scene.Balls.Where(b => b.Id != new BallId(3))] };
         using var grouped = new GameHost(later, SimulationFactory.Create, window, clock, new MatchSetup(GameRules.EightBall, [new("Anna"), new("Ben")]));
         Billiards.App.Hud.MatchLines.Add(lines, grouped.Tree.Root.GetInTree<MatchNode>(), grouped.World.Physics, icons: icons);

@@ -65,7 +65,7 @@ public class SnookerWindowTests
     [Fact]
     public void AfterARedBAndAClickNominateAColourAndTheStrikeCarriesTheNomination()
     {
-        using var game = Start(new GameState(GameRules.Snooker) { Shot = 3, BallOn = SnookerRuleset.Colour, Score = new PerPlayer<int>(1, 0) });
+        using var game = Start(new GameState(GameRules.Snooker) { Shot = 3, Score = new PerPlayer<int>(1, 0), Part = new SnookerPart { BallOn = SnookerRuleset.Colour } });
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
         game.Frame();
         Assert.True(match.NeedsNomination);
@@ -89,7 +89,7 @@ public class SnookerWindowTests
     [Fact]
     public void AMissOffersPlayPutBackAndReplaceAsButtonsAndReplacePutsTheBallsBack()
     {
-        using var game = Start(new GameState(GameRules.Snooker) { Shot = 3, BallOn = SnookerRuleset.Red });
+        using var game = Start(new GameState(GameRules.Snooker) { Shot = 3, Part = new SnookerPart { BallOn = SnookerRuleset.Red } });
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
         game.Frame();
         var before = game.World.Physics.CueBallPosition;
@@ -117,7 +117,7 @@ public class SnookerWindowTests
     [Fact]
     public void TheScoreboardShowsTheBreakThePointsRemainingTheBallOnAndWhoNeedsSnookers()
     {
-        using var game = Start(new GameState(GameRules.Snooker) { Shot = 9, BallOn = SnookerRuleset.Red, Score = new PerPlayer<int>(0, 60) });
+        using var game = Start(new GameState(GameRules.Snooker) { Shot = 9, Score = new PerPlayer<int>(0, 60), Part = new SnookerPart { BallOn = SnookerRuleset.Red } });
         var board = game.Frame().Hud!.Board!;
         Assert.Contains("remaining 35", board.Title, StringComparison.Ordinal);
         Assert.Contains("on a red", board.Players[0].Target, StringComparison.Ordinal);

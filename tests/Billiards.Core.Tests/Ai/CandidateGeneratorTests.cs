@@ -26,7 +26,7 @@ public class CandidateGeneratorTests
     public void SafetiesTakeEveryLegalTargetInTurnSoThatTheFirstFewCoverEveryBall()
     {
         var position = OpenTable();
-        var state = new GameState(GameRules.EightBall) { Shot = 5, Shooter = 1, Groups = new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes) };
+        var state = new GameState(GameRules.EightBall) { Shot = 5, Shooter = 1, Part = new EightBallPart { Groups = new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes) } };
 
         var safeties = CandidateGenerator.Safeties(Planner.Table, state, position, position.Cue!.Value);
 

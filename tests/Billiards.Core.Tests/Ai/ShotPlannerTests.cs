@@ -177,7 +177,7 @@ public class PositionPlayTests
     private static readonly GameState Solids = new(GameRules.EightBall)
     {
         Shot = 5,
-        Groups = new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes),
+        Part = new EightBallPart { Groups = new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes) },
     };
 
     [Fact]

@@ -49,7 +49,7 @@ public class SnookerPlannerTests
         // still win. The computer plays the game, not the rule's gap: it pots the black.
         // A long, cut black: a pot is far from sure, a foul is a sure end.
         var position = new TablePosition([(Cue, new Vec3(-0.9, 0.45, R)), (Black, SnookerTable.Spot(Table, "black", R))], Cue);
-        var state = new GameState(GameRules.Snooker) { Players = new("Anna", "Ben"), Shot = 60, BallOn = "black", Score = new PerPlayer<int>(60, 40) };
+        var state = new GameState(GameRules.Snooker) { Players = new("Anna", "Ben"), Shot = 60, Score = new PerPlayer<int>(60, 40), Part = new SnookerPart { BallOn = "black" } };
         var decision = Planner.Decide(state, position, SkillLevel.Of(5), new PlannerBudget(60_000, 2), 7);
         var record = Simulate(position, decision.Shot);
         var ruling = Referee.For(GameRules.Snooker, Table, R).Judge(state with { Call = decision.Call }, record);
@@ -61,7 +61,7 @@ public class SnookerPlannerTests
     public void AfterARedTheComputerNominatesTheColourItPotsAndPotsIt()
     {
         var position = BlueStraightIn();
-        var state = new GameState(GameRules.Snooker) { Shot = 8, BallOn = SnookerRuleset.Colour, Score = new PerPlayer<int>(1, 0) };
+        var state = new GameState(GameRules.Snooker) { Shot = 8, Score = new PerPlayer<int>(1, 0), Part = new SnookerPart { BallOn = SnookerRuleset.Colour } };
         var decision = Planner.Decide(state, position, SkillLevel.Of(4), new PlannerBudget(60_000, 2), 5);
 
         Assert.Equal(Call.Nominate(decision.Target), decision.Call);
@@ -85,7 +85,7 @@ public class SnookerPlannerTests
     [Fact]
     public void ALongPotOfLowChanceIsNotAttemptedAtLevelFiveButASafetyIsPlayed()
     {
-        var state = new GameState(GameRules.Snooker) { Shot = 10, BallOn = SnookerRuleset.Red };
+        var state = new GameState(GameRules.Snooker) { Shot = 10, Part = new SnookerPart { BallOn = SnookerRuleset.Red } };
         var level = SkillLevel.Of(5);
         var decision = Planner.Decide(state, LongRedsFromBaulk(), level, new PlannerBudget(60_000, 2), 1);
 
@@ -99,7 +99,7 @@ public class SnookerPlannerTests
     [Fact]
     public void ASurePotIsStillAttemptedAtLevelFive()
     {
-        var state = new GameState(GameRules.Snooker) { Shot = 8, BallOn = SnookerRuleset.Colour, Score = new PerPlayer<int>(1, 0) };
+        var state = new GameState(GameRules.Snooker) { Shot = 8, Score = new PerPlayer<int>(1, 0), Part = new SnookerPart { BallOn = SnookerRuleset.Colour } };
         var level = SkillLevel.Of(5);
         var decision = Planner.Decide(state, BlueStraightIn(), level, new PlannerBudget(60_000, 2), 5);
 
@@ -129,7 +129,7 @@ public class SnookerPlannerTests
     private static (Ruling Ruling, TablePosition After) Miss(Vec3 red, Vec3 cue)
     {
         var position = new TablePosition([(Cue, cue), (Red, red), (Black, SnookerTable.Spot(Table, "black", R))], Cue);
-        var state = new GameState(GameRules.Snooker) { Shot = 4, BallOn = SnookerRuleset.Red };
+        var state = new GameState(GameRules.Snooker) { Shot = 4, Part = new SnookerPart { BallOn = SnookerRuleset.Red } };
         var away = Math.Atan2(cue.Y - red.Y, cue.X - red.X) * 180 / Math.PI;
         var record = Simulate(position, new ShotSpec(0.3, away, 0, 0));
         var ruling = Referee.For(GameRules.Snooker, Table, R).Judge(state, record);
@@ -165,7 +165,7 @@ public class SnookerPlannerTests
         var blue = new Vec3(0, 0, R);
         var hidden = new TablePosition([(Cue, cue), (Blue, blue), (Red, new Vec3(2.05 * R, 0, R))], Cue);
         var open = new TablePosition([(Cue, cue), (Blue, blue), (Red, new Vec3(2.05 * R, 0.4, R))], Cue);
-        var state = new GameState(GameRules.Snooker) { Shot = 3, BallOn = SnookerRuleset.Red };
+        var state = new GameState(GameRules.Snooker) { Shot = 3, Part = new SnookerPart { BallOn = SnookerRuleset.Red } };
 
         Assert.True(Planner.Table.Snookered(hidden, state));
         Assert.False(Planner.Table.Snookered(open, state));

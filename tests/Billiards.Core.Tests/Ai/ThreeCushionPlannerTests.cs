@@ -54,7 +54,7 @@ public class ThreeCushionPlannerTests
             (BallSet.Yellow, new Vec3(0.4, -0.3, r)),
             (BallSet.Red, new Vec3(0.9, 0.4, r)),
         };
-        var state = new GameState(Game) { Shot = 3, Innings = new(2, 1) };
+        var state = new GameState(Game) { Shot = 3, Part = new ThreeCushionPart { Innings = new(2, 1) } };
         var position = new TablePosition(balls, BallSet.White);
         var decision = Planner.Decide(state, position, SkillLevel.Of(1), Budget, 11);
         var playable = CueClearance.Playable(decision.Shot, Table, r, position.Cue!.Value, position.Positions);

@@ -51,7 +51,7 @@ public class RulesetTests
         Assert.Equal(Some, Ruleset.For(GameRules.StraightPool).LegalTargets(new GameState(GameRules.StraightPool), Some.Reverse()));
         var eight = Ruleset.For(GameRules.EightBall);
         Assert.Equal([new BallId(2), new BallId(3), new BallId(9), new BallId(12)], eight.LegalTargets(new GameState(GameRules.EightBall), Some));
-        var stripes = new GameState(GameRules.EightBall) { Groups = new(BallGroup.Stripes, BallGroup.Solids) };
+        var stripes = new GameState(GameRules.EightBall) { Part = new EightBallPart { Groups = new(BallGroup.Stripes, BallGroup.Solids) } };
         Assert.Equal([new BallId(9), new BallId(12)], eight.LegalTargets(stripes, Some));
         Assert.Equal([new BallId(9), new BallId(12), new BallId(8)], eight.StillToPot(stripes, Some));
         Assert.Equal([new BallId(8)], eight.LegalTargets(stripes, [new BallId(2), new BallId(8)]));
@@ -80,7 +80,7 @@ public class RulesetTests
     [Fact]
     public void TheHudShowsWhatEachPlayerStillNeeds()
     {
-        var stripes = new GameState(GameRules.EightBall) { Groups = new(BallGroup.Stripes, BallGroup.Solids) };
+        var stripes = new GameState(GameRules.EightBall) { Part = new EightBallPart { Groups = new(BallGroup.Stripes, BallGroup.Solids) } };
         var eight = Ruleset.For(GameRules.EightBall);
         Assert.Equal("stripes: 9 12", eight.Target(stripes, 0, Some).Text);
         Assert.Equal([new BallId(2), new BallId(3)], eight.Target(stripes, 1, Some).Balls);

@@ -33,7 +33,7 @@ public class RulingWordsTests
     [Fact]
     public void PottingAnOwnBallThatWasNotCalledSaysWhichWentDownAndWhatWasCalled()
     {
-        var assigned = At(GameRules.EightBall, shot: 5) with { Groups = new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes), Call = Calls(3, PoolPockets.FootLeft) };
+        var assigned = At(GameRules.EightBall, shot: 5) with { Call = Calls(3, PoolPockets.FootLeft), Part = EightBallPart.Of(At(GameRules.EightBall, shot: 5)) with { Groups = new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes) } };
         var r = Judge(assigned, ShotBuilder.Of(GameRules.EightBall).Hit(4).Pocket(4, PoolPockets.FootRight));
         Assert.True(r.Legal);
         Assert.False(r.Continue);
@@ -43,7 +43,7 @@ public class RulingWordsTests
     [Fact]
     public void ASnookerFoulGivesItsPointsAndAPotItsScore()
     {
-        var frame = SnookerShot.Frame with { BallOn = "colour", Call = Call.Nominate(SnookerShot.Id("blue")) };
+        var frame = SnookerShot.Frame with { Call = Call.Nominate(SnookerShot.Id("blue")), Part = SnookerPart.Of(SnookerShot.Frame) with { BallOn = "colour" } };
         var foul = new SnookerShot().Hit("pink").Judge(frame);
         Assert.Contains($"6 points to {frame.Players[1]}.", foul.Message, StringComparison.Ordinal);
         var pot = new SnookerShot().Hit("red-3").Pot("red-3").Pot("red-7").Judge(SnookerShot.Frame);

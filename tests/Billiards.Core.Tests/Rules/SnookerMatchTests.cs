@@ -46,7 +46,7 @@ public class SnookerMatchTests
         {
             var state = match.State;
             var colours = match.Balls.Keys.Where(SnookerRuleset.IsColour).ToList();
-            Call? call = state.BallOn == "colour" && colours.Count > 0 ? Call.Nominate(colours[random.Next(colours.Count)]) : null;
+            Call? call = SnookerPart.Of(state).BallOn == "colour" && colours.Count > 0 ? Call.Nominate(colours[random.Next(colours.Count)]) : null;
             Vec3? place = match.BallInHand == BallInHand.D
                 ? new Vec3(SnookerTable.BaulkLineX(match.Setup.Table) - (random.NextDouble() * 0.2), (random.NextDouble() - 0.5) * 0.4, r)
                 : null;
@@ -97,7 +97,7 @@ public class SnookerMatchTests
         Assert.All(before, b => Assert.Equal(b.Value, match.Balls[b.Key]));
         Assert.Equal(1, match.State.Shooter);
         Assert.Equal(new PerPlayer<int>(4, 0), match.State.Score);
-        Assert.Equal(new PerPlayer<int>(0, 1), match.State.MissesInRow);
+        Assert.Equal(new PerPlayer<int>(0, 1), SnookerPart.Of(match.State).MissesInRow);
     }
 
     [Fact]

@@ -27,9 +27,9 @@ public class GameBlockTests
         {
             Players = new("Anna", "Ben"),
             Shot = 3,
-            Groups = new(BallGroup.Solids, BallGroup.Stripes),
             Call = new Call(new BallId(8), PoolPockets.FootLeft),
             FoulsInRow = new(0, 1),
+            Part = new EightBallPart { Groups = new(BallGroup.Solids, BallGroup.Stripes) },
         };
         Assert.Equal(expected, state);
     }
@@ -119,7 +119,7 @@ public class GameBlockTests
     {
         GameState[] states =
         [
-            new GameState(GameRules.EightBall) { Players = new("A", "B"), Shooter = 1, Shot = 7, Groups = new(BallGroup.Stripes, BallGroup.Solids), Call = new Call(new BallId(12), PoolPockets.SideRight), FoulsInRow = new(2, 1), BallInHand = BallInHand.Table },
+            new GameState(GameRules.EightBall) { Players = new("A", "B"), Shooter = 1, Shot = 7, Call = new Call(new BallId(12), PoolPockets.SideRight), FoulsInRow = new(2, 1), BallInHand = BallInHand.Table, Part = new EightBallPart { Groups = new(BallGroup.Stripes, BallGroup.Solids) } },
             new GameState(GameRules.NineBall) { Shot = 1, PushOut = true },
             new GameState(GameRules.TenBall) { Shot = 4, Call = Call.Safety, BallInHand = BallInHand.Table },
             new GameState(GameRules.StraightPool) { Shot = 40, Score = new(-3, 57), Target = 75, BallInHand = BallInHand.Kitchen },

@@ -2,9 +2,13 @@ using Billiards.App.Game;
 using Billiards.App.Platform;
 using Billiards.App.Tests.Cli;
 using Billiards.App.Tests.Game;
+using System.Text.Json;
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
+using Billiards.Core.Table;
 
 namespace Billiards.App.Tests.Rules.Pocketless;
 
@@ -95,5 +99,56 @@ public class TouchGameTests
         // Without --players two people sit down.
         var people = Billiards.App.Cli.PlayCommand.MatchFor(scene, rules, null)!;
         Assert.All(people.Players, p => Assert.True(p.IsHuman));
+    }
+
+    [Fact]
+    public void TouchReadsAndWritesItsOwnGameBlockFieldWhichOtherGamesRefuse()
+    {
+        TouchRuleset.Register();
+        string block = """{ "rules": "touch", "shooter": 1, "shot": 4, "score": [1, 2], "touch_misses": [2, 1] }""";
+        var state = GameBlockReader.Read(JsonDocument.Parse(block).RootElement, PocketSet.None, "touch.json");
+        Assert.Equal(new PerPlayer<int>(2, 1), state.PartOf<TouchPart>().Misses);
+        using var stream = new MemoryStream();
+        using (var w = new Utf8JsonWriter(stream))
+        {
+            GameBlockWriter.WriteGame(w, state);
+        }
+        string written = System.Text.Encoding.UTF8.GetString(stream.ToArray());
+        Assert.EndsWith("\"touch_misses\":[2,1]}", written);
+        Assert.Equal(state, GameBlockReader.Read(JsonDocument.Parse(written).RootElement, PocketSet.None, "touch.json"));
+
+        var refused = Assert.Throws<SceneException>(() => GameBlockReader.Read(
+            JsonDocument.Parse("""{ "rules": "eight-ball", "touch_misses": [1, 0] }""").RootElement, PocketSet.None, "eight.json"));
+        Assert.Contains("$.game.touch_misses", refused.Message);
+        Assert.Contains("eight-ball has no touch misses (only touch has", refused.Message);
+        var bad = Assert.Throws<SceneException>(() => GameBlockReader.Read(
+            JsonDocument.Parse("""{ "rules": "touch", "touch_misses": "two" }""").RootElement, PocketSet.None, "touch.json"));
+        Assert.Contains("$.game.touch_misses", bad.Message);
+    }
+
+    [Fact]
+    public void TouchCountsEachPlayersMissesInItsOwnPartOfTheState()
+    {
+        var rules = TouchRuleset.Register();
+        var referee = Ruleset.For(rules).Referee(TableSpec.FromPreset("pocketless"), 0.028575);
+        var before = new GameState(rules) { Shooter = 1, Shot = 3 };
+        var miss = referee.Judge(before, ShotRecordOf(rules, hit: false));
+        Assert.Equal(new PerPlayer<int>(0, 1), miss.Next.PartOf<TouchPart>().Misses);
+        var touch = referee.Judge(miss.Next, ShotRecordOf(rules, hit: true));
+        Assert.Equal(new PerPlayer<int>(0, 1), touch.Next.PartOf<TouchPart>().Misses);
+    }
+
+    // A shot of touch's two balls at rest: the cue ball strikes and, when hit, meets the 1.
+    private static ShotRecord ShotRecordOf(GameRules rules, bool hit)
+    {
+        var ruleset = Ruleset.For(rules);
+        BallId cue = ruleset.Balls[0], one = ruleset.Balls[1];
+        List<SimEvent> events = [new SimEvent(0, EventKind.CueStrike, cue, cue, -1, 2.0)];
+        if (hit)
+        {
+            events.Add(new SimEvent(0.5, EventKind.BallBall, cue, one, -1, 1.0));
+        }
+        BallState[] balls = [new() { Position = new Vec3(-0.6, 0, 0.028575) }, new() { Position = new Vec3(0.6, 0, 0.028575) }];
+        return ShotRecord.Of([.. events], [cue, one], balls, ballsBefore: balls);
     }
 }

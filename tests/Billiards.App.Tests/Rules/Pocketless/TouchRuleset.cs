@@ -1,7 +1,9 @@
+using System.Text.Json;
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
 using Billiards.Core.Table;
 
 namespace Billiards.App.Tests.Rules.Pocketless;
@@ -11,7 +13,8 @@ namespace Billiards.App.Tests.Rules.Pocketless;
 /// or the App names it): "touch", the cue ball and the 1. A shot whose cue ball meets the 1 scores
 /// a point and the shooter plays on; one that misses it hands the table over. The first to
 /// <see cref="Points"/> wins. Its rack (the 1 on the foot spot) and cue start (the head spot) are
-/// its own.
+/// its own, and so are its part of the game state (<see cref="TouchPart"/>: the misses of the
+/// whole game) and the game-block field that carries it ("touch_misses").
 /// </summary>
 internal sealed class TouchRuleset : Ruleset
 {
@@ -55,6 +58,21 @@ internal sealed class TouchRuleset : Ruleset
 
     public override IReferee Referee(TableSpec table, double ballRadius) => new TouchReferee(table, ballRadius);
 
+    public override GameStatePart? StartPart { get; } = new TouchPart();
+
+    public override IReadOnlyList<string> PartFields { get; } = [TouchPart.Field];
+
+    public override GameStatePart? ReadPart(GameBlockFields block) =>
+        block.TryGet(TouchPart.Field, out var misses) ? new TouchPart { Misses = block.Pair(TouchPart.Field, misses) } : StartPart;
+
+    public override void WritePart(Utf8JsonWriter writer, GameState state, GameBlockSlot slot)
+    {
+        if (slot == GameBlockSlot.AtEnd)
+        {
+            GameBlockWriter.WritePair(writer, TouchPart.Field, state.PartOf<TouchPart>().Misses);
+        }
+    }
+
     public override IReadOnlyList<BallId> LegalTargets(GameState state, IEnumerable<BallId> objectBalls) => [.. objectBalls.Where(b => b == One)];
 
     public override HudTarget Target(GameState state, int player, IReadOnlyCollection<BallId> objectBalls) =>
@@ -72,6 +90,7 @@ internal sealed class TouchRuleset : Ruleset
         {
             bool hit = shot.FirstContact == One;
             int shooter = before.Shooter;
+            var misses = before.PartOf<TouchPart>().Misses;
             var score = hit ? before.Score.With(shooter, before.Score[shooter] + 1) : before.Score;
             bool won = score[shooter] >= Points;
             string message = won ? $"{before.ShooterName} touches the 1 and wins."
@@ -79,10 +98,24 @@ internal sealed class TouchRuleset : Ruleset
                 : $"{before.ShooterName} misses the 1: {before.Players[before.Incoming]} is at the table.";
             var next = won
                 ? new GameState(Touch) { Players = before.Players, Shooter = shooter, Target = before.Target }
-                : before with { Shooter = hit ? shooter : before.Incoming, Shot = before.Shot + 1, Score = score, Call = null, PushOut = false, Placement = null, BallInHand = BallInHand.None };
+                : before with
+                {
+                    Shooter = hit ? shooter : before.Incoming, Shot = before.Shot + 1, Score = score, Call = null, PushOut = false, Placement = null, BallInHand = BallInHand.None,
+                    Part = new TouchPart { Misses = hit ? misses : misses.With(shooter, misses[shooter] + 1) },
+                };
             return new Ruling(true, [], [], hit && !won, BallInHand.None, [], [], won, won ? shooter : null, message, next) { Score = score };
         }
     }
+}
+
+/// <summary>Touch's own part of the game state: each player's misses of the 1 in the game.</summary>
+internal sealed record TouchPart : GameStatePart
+{
+    /// <summary>The game-block field that carries it.</summary>
+    public const string Field = "touch_misses";
+
+    /// <summary>Each player's misses.</summary>
+    public PerPlayer<int> Misses { get; init; }
 }
 
 /// <summary>Touch without a computer player: the window seats people only.</summary>

@@ -78,7 +78,7 @@ internal sealed class EightBallReferee(TableSpec table, double ballRadius) : Ref
 
     private static void Shot(GameState before, ShotFacts facts, RulingBuilder ruling)
     {
-        var groups = before.Groups;
+        var groups = EightBallPart.Of(before).Groups;
         bool open = groups is null;
         BallGroup? own = groups?[before.Shooter];
         bool cleared = own is { } g && !facts.OnTableBefore.Any(n => g.Contains(new BallId(n)));
@@ -121,7 +121,7 @@ internal sealed class EightBallReferee(TableSpec table, double ballRadius) : Ref
         {
             var group = BallGroup.Stripes.Contains(called) ? BallGroup.Stripes : BallGroup.Solids;
             var other = group == BallGroup.Solids ? BallGroup.Stripes : BallGroup.Solids;
-            ruling.Groups = before.Shooter == 0 ? new PerPlayer<BallGroup>(group, other) : new PerPlayer<BallGroup>(other, group);
+            ruling.Part = new EightBallPart { Groups = before.Shooter == 0 ? new PerPlayer<BallGroup>(group, other) : new PerPlayer<BallGroup>(other, group) };
             ruling.Note = $"{before.ShooterName} has the {group.ToName()}.";
             ruling.Continue = true;
         }

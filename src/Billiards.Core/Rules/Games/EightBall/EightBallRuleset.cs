@@ -1,4 +1,6 @@
+using System.Text.Json;
 using Billiards.Core.Balls;
+using Billiards.Core.Scenes;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
 
@@ -28,6 +30,21 @@ public sealed class EightBallRuleset : Ruleset
     /// <summary>No: 8-ball has no three-foul rule.</summary>
     public override bool HasThreeFouls => false;
 
+    /// <summary>The groups, open at the start.</summary>
+    public override GameStatePart? StartPart { get; } = new EightBallPart();
+
+    /// <inheritdoc />
+    public override IReadOnlyList<string> PartFields => EightBallPart.Fields;
+
+    /// <inheritdoc />
+    public override GameStatePart? ReadPart(GameBlockFields block) => EightBallPart.Read(block);
+
+    /// <inheritdoc />
+    public override void WritePart(Utf8JsonWriter writer, GameState state, GameBlockSlot slot) => EightBallPart.Of(state).Write(writer, slot);
+
+    /// <summary>The chooser breaks a new rack on an open table.</summary>
+    protected override GameState Rerack(GameState next) => base.Rerack(next) with { Part = StartPart };
+
     /// <inheritdoc />
     public override IReferee Referee(TableSpec table, double ballRadius) => new EightBallReferee(table, ballRadius);
 
@@ -36,7 +53,7 @@ public sealed class EightBallRuleset : Ruleset
     {
         ArgumentNullException.ThrowIfNull(state);
         var balls = Ordered(objectBalls);
-        if (state.Groups is not { } groups)
+        if (EightBallPart.Of(state).Groups is not { } groups)
         {
             var open = balls.Where(b => b != Eight).ToList();
             return open.Count > 0 ? open : balls;
@@ -61,14 +78,14 @@ public sealed class EightBallRuleset : Ruleset
         {
             return false;
         }
-        return state.Groups is not { } groups || groups[state.Shooter].Contains(ball);
+        return EightBallPart.Of(state).Groups is not { } groups || groups[state.Shooter].Contains(ball);
     }
 
     /// <inheritdoc />
     public override HudTarget Target(GameState state, int player, IReadOnlyCollection<BallId> objectBalls)
     {
         ArgumentNullException.ThrowIfNull(state);
-        if (state.Groups is not { } groups)
+        if (EightBallPart.Of(state).Groups is not { } groups)
         {
             return new HudTarget("open table", []);
         }

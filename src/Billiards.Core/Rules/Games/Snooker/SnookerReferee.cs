@@ -49,7 +49,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
             string ballOn = SnookerRuleset.BallOnOf(before);
             bool redsPhase = ballOn is SnookerRuleset.Red or SnookerRuleset.Colour;
             BallId? nominated = before.Call is { IsNomination: true } c ? c.Ball : null;
-            bool freeBall = before.FreeBall && nominated is not null;
+            bool freeBall = SnookerPart.Of(before).FreeBall && nominated is not null;
             if (ballOn == SnookerRuleset.Colour && nominated is null && facts.FirstContact is { } firstColour && SnookerRuleset.IsColour(firstColour))
             {
                 // No colour was nominated: the first colour struck is taken as the one nominated (ours).
@@ -162,7 +162,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
 
             // Foul and a miss, and the three-miss rule.
             bool miss = false;
-            var misses = before.MissesInRow;
+            var misses = SnookerPart.Of(before).MissesInRow;
             if (!ruling.Legal && missedTheBallOn)
             {
                 bool snookersNeeded = SnookerRuleset.NeedsSnookers(before.Score, ballOn, onTableBefore)
@@ -217,7 +217,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
                         Call = null,
                         Placement = null,
                         Score = score,
-                        MissesInRow = misses,
+                        Part = SnookerPart.Of(before) with { MissesInRow = misses },
                     };
                 }
                 if (offerFreeBall)
@@ -237,7 +237,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
             {
                 int winner = score.First > score.Second ? 0 : 1;
                 ruling.Win(winner, $"{before.Players[winner]} wins the frame {Math.Max(score.First, score.Second)}-{Math.Min(score.First, score.Second)}.");
-                return Finish(ruling.Legal ? 0 : penalty, points, false, false, null, before.MissesInRow.With(before.Shooter, 0), "black");
+                return Finish(ruling.Legal ? 0 : penalty, points, false, false, null, SnookerPart.Of(before).MissesInRow.With(before.Shooter, 0), "black");
             }
             ruling.SpotBall(BallSet.Colour("black"));
             ruling.Continue = false;
@@ -253,7 +253,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
                 : ruling.Legal && points > 0 ? string.Create(CultureInfo.InvariantCulture, $"{before.ShooterName} pots {PotWords(facts.Pocketed)}: {points} {(points == 1 ? "point" : "points")}.")
                 : null;
             var built = ruling.Build();
-            var next = built.GameOver ? built.Next : built.Next with { BallOn = nextOn, FreeBall = freeBall, MissesInRow = misses };
+            var next = built.GameOver ? built.Next : built.Next with { Part = new SnookerPart { BallOn = nextOn, FreeBall = freeBall, MissesInRow = misses } };
             return built with
             {
                 Next = next,

@@ -1,4 +1,6 @@
+using System.Text.Json;
 using Billiards.Core.Balls;
+using Billiards.Core.Scenes;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
@@ -68,12 +70,46 @@ public sealed class SnookerRuleset : Ruleset
     /// <summary>A ball's points: red 1, yellow 2 .. black 7 (0 for the cue ball).</summary>
     public static int ValueOf(BallId ball) => IsRed(ball) ? 1 : IsColour(ball) ? ball.Value - (BallSet.FirstRed + BallSet.Reds) + 2 : 0;
 
-    /// <summary>The ball on of <paramref name="state"/>: its <see cref="GameState.BallOn"/>, "red" at the start of a frame.</summary>
-    public static string BallOnOf(GameState state)
+    /// <summary>The ball on of <paramref name="state"/>: its <see cref="SnookerPart.BallOn"/>, "red" at the start of a frame.</summary>
+    public static string BallOnOf(GameState state) => SnookerPart.Of(state).BallOn ?? Red;
+
+    /// <summary>The ball on, a free ball and the misses in a row, at the start of a frame.</summary>
+    public override GameStatePart? StartPart { get; } = new SnookerPart();
+
+    /// <inheritdoc />
+    public override IReadOnlyList<string> PartFields => SnookerPart.Fields;
+
+    /// <inheritdoc />
+    public override GameStatePart? ReadPart(GameBlockFields block) => SnookerPart.Read(block);
+
+    /// <summary>A nomination of a ball, <c>{"ball": "blue"}</c>, with no pocket.</summary>
+    public override Call ReadCall(JsonElement call, GameBlockFields block) => SnookerPart.ReadNomination(call, block);
+
+    /// <inheritdoc />
+    public override void WritePart(Utf8JsonWriter writer, GameState state, GameBlockSlot slot) => SnookerPart.Of(state).Write(writer, slot);
+
+    /// <summary>The ruling's points, penalty, foul_and_miss and free_ball.</summary>
+    public override void WriteRulingFields(Utf8JsonWriter writer, Ruling ruling)
+    {
+        ArgumentNullException.ThrowIfNull(writer);
+        ArgumentNullException.ThrowIfNull(ruling);
+        writer.WriteNumber("points", ruling.Points);
+        writer.WriteNumber("penalty", ruling.Penalty);
+        writer.WriteBoolean("foul_and_miss", ruling.FoulAndMiss);
+        writer.WriteBoolean("free_ball", ruling.FreeBall);
+    }
+
+    /// <summary>Playing the balls as they lie says so when it is with a free ball.</summary>
+    public override string ChoiceMessage(RefereeOption option, GameState state)
     {
         ArgumentNullException.ThrowIfNull(state);
-        return state.BallOn ?? Red;
+        return option == RefereeOption.Play && SnookerPart.Of(state).FreeBall
+            ? $"{state.ShooterName} plays the balls as they lie, with a free ball."
+            : base.ChoiceMessage(option, state);
     }
+
+    /// <summary>The offender plays again from where the balls lie; a free ball was the incoming player's only.</summary>
+    protected override GameState PutBack(GameState next) => base.PutBack(next) with { Part = SnookerPart.Of(next) with { FreeBall = false } };
 
     /// <summary>The ball on at the start of a turn with <paramref name="objectBalls"/> on the table: a red while any remains, else the lowest colour.</summary>
     public static string TurnBallOn(IEnumerable<BallId> objectBalls)
@@ -95,7 +131,7 @@ public sealed class SnookerRuleset : Ruleset
     {
         ArgumentNullException.ThrowIfNull(state);
         var on = objectBalls.ToList();
-        if (state.FreeBall && state.Call is { IsNomination: true } free)
+        if (SnookerPart.Of(state).FreeBall && state.Call is { IsNomination: true } free)
         {
             return on.Contains(free.Ball) ? [free.Ball] : [];
         }
@@ -112,14 +148,14 @@ public sealed class SnookerRuleset : Ruleset
     public override bool MayCall(GameState state, BallId ball)
     {
         ArgumentNullException.ThrowIfNull(state);
-        return state.FreeBall ? !BallSet.IsCueBall(ball) : BallOnOf(state) == Colour && IsColour(ball);
+        return SnookerPart.Of(state).FreeBall ? !BallSet.IsCueBall(ball) : BallOnOf(state) == Colour && IsColour(ball);
     }
 
     /// <summary>A colour is nominated after a potted red, and any ball with a free ball.</summary>
     public override bool Nominates(GameState state)
     {
         ArgumentNullException.ThrowIfNull(state);
-        return state.FreeBall || BallOnOf(state) == Colour;
+        return SnookerPart.Of(state).FreeBall || BallOnOf(state) == Colour;
     }
 
     /// <summary>The break-off is a safety off the side of the pack, not a power break.</summary>
@@ -165,7 +201,7 @@ public sealed class SnookerRuleset : Ruleset
         }
         string on = BallOnOf(state);
         var balls = LegalTargets(state, objectBalls);
-        string text = state.FreeBall ? "free ball" : on switch
+        string text = SnookerPart.Of(state).FreeBall ? "free ball" : on switch
         {
             Red => "on a red",
             Colour => state.Call is { IsNomination: true } c ? $"on the {c.Ball}" : "on a colour",

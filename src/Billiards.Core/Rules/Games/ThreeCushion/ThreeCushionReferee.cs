@@ -12,7 +12,7 @@ namespace Billiards.Core.Rules;
 /// game state. Pure: the same state and record give the same ruling.
 /// </summary>
 /// <remarks>
-/// An inning is one visit: the state's <see cref="GameState.Innings"/> counts each player's visits
+/// An inning is one visit: the state's <see cref="ThreeCushionPart.Innings"/> counts each player's visits
 /// begun, the one at the table included (a state before the break that counts none has begun the
 /// breaker's first). A point keeps the shooter at the table; no point, or a foul, hands it over
 /// and begins the other player's next inning.
@@ -107,19 +107,20 @@ public sealed class ThreeCushionReferee(TableSpec table, double ballRadius) : IR
             fouls.Add(Foul.BallOffTable);
         }
         bool point = fouls.Count == 0 && contacts.IsPoint;
-        var innings = before.Innings.With(shooter, Math.Max(1, before.Innings[shooter]));
+        var part = ThreeCushionPart.Of(before);
+        var innings = part.Innings.With(shooter, Math.Max(1, part.Innings[shooter]));
         var score = point ? before.Score.With(shooter, before.Score[shooter] + 1) : before.Score;
-        int run = before.Run + (point ? 1 : 0);
+        int run = part.Run + (point ? 1 : 0);
         string name = before.ShooterName;
         var spot = BallSet.Carom.Ids.Where(offTable.Contains).ToList();
         string what = Describe(fouls, contacts, point, struck, cue);
 
-        bool breakerDone = score[before.Breaker] >= before.Target;
-        bool equalizing = before.Equalizing && shooter == before.Breaker && innings[other] < innings[shooter];
+        bool breakerDone = score[part.Breaker] >= before.Target;
+        bool equalizing = part.Equalizing && shooter == part.Breaker && innings[other] < innings[shooter];
         GameState Over() => new GameState(Rules)
         {
-            Players = before.Players, Target = before.Target, Equalizing = before.Equalizing, CueBalls = before.CueBalls,
-            Shooter = before.Breaker, Breaker = before.Breaker,
+            Players = before.Players, Target = before.Target, Shooter = part.Breaker,
+            Part = new ThreeCushionPart { Equalizing = part.Equalizing, CueBalls = part.CueBalls, Breaker = part.Breaker },
         };
         Ruling Make(bool keep, bool over, int? winner, string message, GameState next) =>
             new(fouls.Count == 0, fouls, [], keep, BallInHand.None, spot, keep || over ? [] : FrozenOptions(shot, next), over, winner, message, next)
@@ -134,25 +135,25 @@ public sealed class ThreeCushionReferee(TableSpec table, double ballRadius) : IR
                 var handed = Handed();
                 return Make(false, false, null, Invariant($"{name} {what}: {score[shooter]} in {innings[shooter]} innings. {before.IncomingName} has the equalizing inning."), handed);
             }
-            bool draw = shooter != before.Breaker && score[before.Breaker] >= before.Target;
+            bool draw = shooter != part.Breaker && score[part.Breaker] >= before.Target;
             return Make(false, true, draw ? null : shooter, draw
                 ? Invariant($"{name} {what} and equalizes: a draw, {score[0]}-{score[1]}.")
                 : Invariant($"{name} {what} and wins {score[shooter]}-{score[other]} in {innings[shooter]} innings (average {ThreeCushionRuleset.Average(score[shooter], innings[shooter])})."), Over());
         }
         if (point)
         {
-            var next = before with { Shot = before.Shot + 1, Score = score, Innings = innings, Run = run, Call = null, Placement = null, BallInHand = BallInHand.None };
+            var next = before with { Shot = before.Shot + 1, Score = score, Part = part with { Innings = innings, Run = run }, Call = null, Placement = null, BallInHand = BallInHand.None };
             return Make(true, false, null, Invariant($"{name} {what}: run {run}, {score[shooter]} of {before.Target}."), next);
         }
-        if (shooter != before.Breaker && breakerDone)
+        if (shooter != part.Breaker && breakerDone)
         {
-            return Make(false, true, before.Breaker, Invariant($"{name} {what}: {before.IncomingName} wins {score[before.Breaker]}-{score[shooter]}."), Over());
+            return Make(false, true, part.Breaker, Invariant($"{name} {what}: {before.IncomingName} wins {score[part.Breaker]}-{score[shooter]}."), Over());
         }
         return Make(false, false, null, Invariant($"{name} {what}. {before.IncomingName} to play."), Handed());
 
         GameState Handed() => before with
         {
-            Shooter = other, Shot = before.Shot + 1, Score = score, Innings = innings.With(other, innings[other] + 1), Run = 0,
+            Shooter = other, Shot = before.Shot + 1, Score = score, Part = part with { Innings = innings.With(other, innings[other] + 1), Run = 0 },
             Call = null, Placement = null, BallInHand = BallInHand.None,
         };
     }

@@ -1,6 +1,8 @@
 using System.Globalization;
+using System.Text.Json;
 using Billiards.Core.Balls;
 using Billiards.Core.Mathematics;
+using Billiards.Core.Scenes;
 using Billiards.Core.Setup;
 using Billiards.Core.Table;
 
@@ -63,6 +65,38 @@ public sealed class ThreeCushionRuleset : Ruleset
     /// <inheritdoc />
     public override int DefaultTarget => Target40;
 
+    /// <summary>The cue balls, innings, equalizing, breaker and run of a game's start.</summary>
+    public override GameStatePart? StartPart { get; } = new ThreeCushionPart();
+
+    /// <inheritdoc />
+    public override IReadOnlyList<string> PartFields => ThreeCushionPart.Fields;
+
+    /// <inheritdoc />
+    public override GameStatePart? ReadPart(GameBlockFields block) => ThreeCushionPart.Read(block, BallSet);
+
+    /// <inheritdoc />
+    public override void WritePart(Utf8JsonWriter writer, GameState state, GameBlockSlot slot) => ThreeCushionPart.Of(state).Write(writer, slot, BallSet);
+
+    /// <summary>The breaker shoots first and is the breaker of the equalizing inning.</summary>
+    public override GameState BrokenBy(GameState start, int breaker) =>
+        base.BrokenBy(start, breaker) with { Part = ThreeCushionPart.Of(start) with { Breaker = breaker } };
+
+    /// <summary>The ruling's point, cushions, score, innings, average and run.</summary>
+    public override void WriteRulingFields(Utf8JsonWriter writer, Ruling ruling)
+    {
+        ArgumentNullException.ThrowIfNull(writer);
+        ArgumentNullException.ThrowIfNull(ruling);
+        writer.WriteBoolean("point", ruling.Point);
+        writer.WriteNumber("cushions", ruling.Cushions);
+        GameBlockWriter.WritePair(writer, "score", ruling.Score);
+        GameBlockWriter.WritePair(writer, "innings", ruling.Innings);
+        writer.WriteStartArray("average");
+        writer.WriteNumberValue(AverageValue(ruling.Score.First, ruling.Innings.First));
+        writer.WriteNumberValue(AverageValue(ruling.Score.Second, ruling.Innings.Second));
+        writer.WriteEndArray();
+        writer.WriteNumber("run", ruling.Run);
+    }
+
     /// <inheritdoc />
     public override string BreakUnit => "points";
 
@@ -77,7 +111,7 @@ public sealed class ThreeCushionRuleset : Ruleset
     public static BallId CueBallOf(GameState state, int player)
     {
         ArgumentNullException.ThrowIfNull(state);
-        return (state.CueBalls ?? DefaultCueBalls)[player];
+        return (ThreeCushionPart.Of(state).CueBalls ?? DefaultCueBalls)[player];
     }
 
     /// <summary>The break with the white as the breaker's ball.</summary>
@@ -120,7 +154,7 @@ public sealed class ThreeCushionRuleset : Ruleset
     public override HudTarget Target(GameState state, int player, IReadOnlyCollection<BallId> objectBalls)
     {
         ArgumentNullException.ThrowIfNull(state);
-        int innings = state.Innings[player];
+        int innings = ThreeCushionPart.Of(state).Innings[player];
         return new(string.Create(CultureInfo.InvariantCulture,
             $"inn {innings}  avg {Average(state.Score[player], innings)}"), []);
     }

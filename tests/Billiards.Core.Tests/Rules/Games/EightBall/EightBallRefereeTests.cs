@@ -11,7 +11,7 @@ public class EightBallRefereeTests
     private static readonly GameState Break = Start(Game);
     private static readonly GameState Open = At(Game, shot: 2);
     // Anna (0) has the solids, Ben (1) the stripes.
-    private static readonly GameState Assigned = At(Game, shot: 5) with { Groups = new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes) };
+    private static readonly GameState Assigned = At(Game, shot: 5) with { Part = EightBallPart.Of(At(Game, shot: 5)) with { Groups = new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes) } };
 
     private static ShotBuilder Shot() => ShotBuilder.Of(Game);
 
@@ -21,7 +21,7 @@ public class EightBallRefereeTests
         var r = Judge(Break, Shot().Hit(1).Rail(2).Pocket(3, PoolPockets.FootLeft).Pocket(12, PoolPockets.SideRight));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 0);
         Assert.Equal(Ids(3, 12), r.Pocketed);
-        Assert.Null(r.Next.Groups);
+        Assert.Null(EightBallPart.Of(r.Next).Groups);
         Assert.Equal(1, r.Next.Shot);
         Assert.Empty(r.Options);
     }
@@ -58,7 +58,7 @@ public class EightBallRefereeTests
         Expect(r, [Foul.CueBallPocketed], cont: false, BallInHand.Table, nextShooter: 1);
         Assert.Equal(Ids(4), r.Pocketed);
         Assert.Empty(r.Spot);
-        Assert.Null(r.Next.Groups);
+        Assert.Null(EightBallPart.Of(r.Next).Groups);
     }
 
     [Fact]
@@ -104,7 +104,7 @@ public class EightBallRefereeTests
         var before = Open with { Shooter = 1, Call = Calls(10, PoolPockets.FootRight) };
         var r = Judge(before, Shot().Hit(10).Collide(10, 3).Pocket(10, PoolPockets.FootRight).Pocket(3, PoolPockets.SideLeft));
         Expect(r, [], cont: true, BallInHand.None, nextShooter: 1);
-        Assert.Equal(new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes), r.Next.Groups);
+        Assert.Equal(new PerPlayer<BallGroup>(BallGroup.Solids, BallGroup.Stripes), EightBallPart.Of(r.Next).Groups);
         Assert.Equal(Ids(10, 3), r.Pocketed);
         Assert.Empty(r.Spot);
     }
@@ -115,7 +115,7 @@ public class EightBallRefereeTests
         var before = Open with { Call = Calls(2, PoolPockets.FootLeft) };
         var r = Judge(before, Shot().Hit(2).Collide(2, 13).Pocket(13, PoolPockets.FootLeft));
         Expect(r, [], cont: false, BallInHand.None, nextShooter: 1);
-        Assert.Null(r.Next.Groups);
+        Assert.Null(EightBallPart.Of(r.Next).Groups);
     }
 
     [Fact]

@@ -14,7 +14,7 @@ public class SnookerRefereeTests
     // One red left on the rack's apex, the blue and black on their spots, the cue ball with a full view of the red.
     private static SnookerShot Clear() => new SnookerShot().Only("red-1", "blue", "black").At("cue", -1.0, 0.3);
 
-    private static GameState OnColour(string nominated) => Frame with { BallOn = "colour", Call = Call.Nominate(Id(nominated)) };
+    private static GameState OnColour(string nominated) => Frame with { Call = Call.Nominate(Id(nominated)), Part = SnookerPart.Of(Frame) with { BallOn = "colour" } };
 
     [Fact]
     public void ValuesRed1Yellow2Green3Brown4Blue5Pink6Black7()
@@ -36,7 +36,7 @@ public class SnookerRefereeTests
         Assert.True(ruling.Legal && ruling.Continue);
         Assert.Equal(2, ruling.Points);
         Assert.Equal(new PerPlayer<int>(2, 0), ruling.Next.Score);
-        Assert.Equal("colour", ruling.Next.BallOn);
+        Assert.Equal("colour", SnookerPart.Of(ruling.Next).BallOn);
         Assert.Empty(ruling.Spot);
     }
 
@@ -47,7 +47,7 @@ public class SnookerRefereeTests
         Assert.True(ruling.Legal && ruling.Continue);
         Assert.Equal(5, ruling.Points);
         Assert.Equal([Id("blue")], ruling.Spot);
-        Assert.Equal("red", ruling.Next.BallOn);
+        Assert.Equal("red", SnookerPart.Of(ruling.Next).BallOn);
     }
 
     [Fact]
@@ -61,13 +61,13 @@ public class SnookerRefereeTests
     [Fact]
     public void ColoursPhaseTheColoursInAscendingOrderStayDownOncePotted()
     {
-        var ruling = new SnookerShot().Only("yellow", "green", "black").Hit("yellow").Pot("yellow").Judge(Frame with { BallOn = "yellow" });
+        var ruling = new SnookerShot().Only("yellow", "green", "black").Hit("yellow").Pot("yellow").Judge(Frame with { Part = SnookerPart.Of(Frame) with { BallOn = "yellow" } });
         Assert.True(ruling.Legal && ruling.Continue);
         Assert.Equal(2, ruling.Points);
         Assert.Empty(ruling.Spot);
-        Assert.Equal("green", ruling.Next.BallOn);
+        Assert.Equal("green", SnookerPart.Of(ruling.Next).BallOn);
         // The green is not on while the yellow is.
-        var wrong = new SnookerShot().Only("yellow", "green", "black").Hit("green").Judge(Frame with { BallOn = "yellow" });
+        var wrong = new SnookerShot().Only("yellow", "green", "black").Hit("green").Judge(Frame with { Part = SnookerPart.Of(Frame) with { BallOn = "yellow" } });
         Assert.Equal([Foul.WrongBallFirst], wrong.Fouls);
     }
 
@@ -76,7 +76,7 @@ public class SnookerRefereeTests
     {
         var ruling = new SnookerShot().Only("yellow", "green", "brown", "blue", "pink", "black").Hit("black").Pot("black").Judge(OnColour("black"));
         Assert.Equal([Id("black")], ruling.Spot);
-        Assert.Equal("yellow", ruling.Next.BallOn);
+        Assert.Equal("yellow", SnookerPart.Of(ruling.Next).BallOn);
     }
 
     [Fact]
@@ -238,7 +238,7 @@ public class SnookerRefereeTests
         Assert.True(replace.Replace);
         Assert.Equal(0, replace.Next.Shooter);
         Assert.Equal(new PerPlayer<int>(0, 5), replace.Next.Score);
-        Assert.Equal(new PerPlayer<int>(1, 0), replace.Next.MissesInRow);
+        Assert.Equal(new PerPlayer<int>(1, 0), SnookerPart.Of(replace.Next).MissesInRow);
         // Striking the ball on and fouling otherwise is no miss.
         Assert.False(new SnookerShot().Hit("red-4").Pot("cue").Judge(OnRed).FoulAndMiss);
     }
@@ -246,7 +246,7 @@ public class SnookerRefereeTests
     [Fact]
     public void FoulAndAMissIsNotCalledWhenOnlyTheBlackRemains()
     {
-        var ruling = new SnookerShot().Only("black").Judge(Frame with { BallOn = "black", Score = new(30, 20) });
+        var ruling = new SnookerShot().Only("black").Judge(Frame with { Score = new(30, 20), Part = SnookerPart.Of(Frame) with { BallOn = "black" } });
         Assert.False(ruling.FoulAndMiss);
     }
 
@@ -254,11 +254,11 @@ public class SnookerRefereeTests
     public void FoulAndAMissIsNotCalledWhenAPlayerNeedsSnookers()
     {
         // Only pink and black: 13 points remain; 40 behind needs snookers.
-        var ruling = new SnookerShot().Only("pink", "black").Hit("black").Judge(Frame with { BallOn = "pink", Score = new(10, 50) });
+        var ruling = new SnookerShot().Only("pink", "black").Hit("black").Judge(Frame with { Score = new(10, 50), Part = SnookerPart.Of(Frame) with { BallOn = "pink" } });
         Assert.False(ruling.FoulAndMiss);
         // 40 behind 50 needs no snookers before, but after the 7 away it does: no miss either.
-        Assert.False(new SnookerShot().Only("pink", "black").Hit("black").Judge(Frame with { BallOn = "pink", Score = new(40, 50) }).FoulAndMiss);
-        var level = new SnookerShot().Only("pink", "black").Hit("black").Judge(Frame with { BallOn = "pink", Score = new(45, 50) });
+        Assert.False(new SnookerShot().Only("pink", "black").Hit("black").Judge(Frame with { Score = new(40, 50), Part = SnookerPart.Of(Frame) with { BallOn = "pink" } }).FoulAndMiss);
+        var level = new SnookerShot().Only("pink", "black").Hit("black").Judge(Frame with { Score = new(45, 50), Part = SnookerPart.Of(Frame) with { BallOn = "pink" } });
         Assert.True(level.FoulAndMiss);
     }
 
@@ -278,17 +278,17 @@ public class SnookerRefereeTests
     public void ThreeMissesWithAFullBallViewLoseTheFrameAndTheRefereeWarnsAfterTheSecond()
     {
         // A clear view of the last red (on the rack's apex) past the blue.
-        var second = Clear().Hit("blue").Judge(OnRed with { MissesInRow = new(1, 0) });
+        var second = Clear().Hit("blue").Judge(OnRed with { Part = SnookerPart.Of(OnRed) with { MissesInRow = new(1, 0) } });
         Assert.True(second.FoulAndMiss);
         Assert.Contains("Warning", second.Message, StringComparison.Ordinal);
         Assert.False(second.GameOver);
-        var third = Clear().Hit("blue").Judge(OnRed with { MissesInRow = new(2, 0) });
+        var third = Clear().Hit("blue").Judge(OnRed with { Part = SnookerPart.Of(OnRed) with { MissesInRow = new(2, 0) } });
         Assert.Contains(Foul.ThreeMisses, third.Fouls);
         Assert.True(third.GameOver);
         Assert.Equal(1, third.Winner);
         // Without a full ball view (snookered, the cue ball short of the red) the count goes on and loses nothing.
         var blind = new SnookerShot().Only("red-1", "pink", "black").At("cue", 0, 0.3).At("pink", 0.3, 0.3).At("red-1", 0.6, 0.3)
-            .Hit("pink").Judge(OnRed with { MissesInRow = new(2, 0) });
+            .Hit("pink").Judge(OnRed with { Part = SnookerPart.Of(OnRed) with { MissesInRow = new(2, 0) } });
         Assert.True(blind.FoulAndMiss);
         Assert.False(blind.GameOver);
     }
@@ -299,8 +299,8 @@ public class SnookerRefereeTests
         var ruling = new SnookerShot().Only("red-1", "pink", "black").At("cue", 0, 0.3).At("pink", 0.3, 0.3).At("red-1", 0.6, 0.3)
             .Hit("black").Judge(OnRed with { Shooter = 1 });
         Assert.True(ruling.FreeBall);
-        Assert.True(ruling.Next.FreeBall);
-        Assert.False(ruling.Choose(RefereeOption.PutBack).Next.FreeBall);
+        Assert.True(SnookerPart.Of(ruling.Next).FreeBall);
+        Assert.False(SnookerPart.Of(ruling.Choose(RefereeOption.PutBack).Next).FreeBall);
         // Not snookered, no free ball.
         Assert.False(Clear().Hit("black").Judge(OnRed with { Shooter = 1 }).FreeBall);
     }
@@ -308,18 +308,18 @@ public class SnookerRefereeTests
     [Fact]
     public void FreeBallNominatedAndPottedScoresAsTheBallOnAndIsRespotted()
     {
-        var state = OnRed with { FreeBall = true, Call = Call.Nominate(Id("pink")) };
+        var state = OnRed with { Call = Call.Nominate(Id("pink")), Part = SnookerPart.Of(OnRed) with { FreeBall = true } };
         var ruling = new SnookerShot().Only("red-1", "pink", "black").Hit("pink").Pot("pink").Judge(state);
         Assert.True(ruling.Legal && ruling.Continue);
         Assert.Equal(1, ruling.Points);
         Assert.Equal([Id("pink")], ruling.Spot);
-        Assert.Equal("colour", ruling.Next.BallOn);
+        Assert.Equal("colour", SnookerPart.Of(ruling.Next).BallOn);
         // In the colours phase it scores the colour on's value.
         var colours = new SnookerShot().Only("green", "pink", "black").Hit("pink").Pot("pink")
-            .Judge(Frame with { BallOn = "green", FreeBall = true, Call = Call.Nominate(Id("pink")) });
+            .Judge(Frame with { Call = Call.Nominate(Id("pink")), Part = SnookerPart.Of(Frame) with { BallOn = "green", FreeBall = true } });
         Assert.Equal(3, colours.Points);
         Assert.Equal([Id("pink")], colours.Spot);
-        Assert.Equal("green", colours.Next.BallOn);
+        Assert.Equal("green", SnookerPart.Of(colours.Next).BallOn);
         // Struck first, it is the ball on; the real ball on struck first is not.
         var wrong = new SnookerShot().Only("red-1", "pink", "black").Hit("red-1").Judge(state);
         Assert.Contains(Foul.WrongBallFirst, wrong.Fouls);
@@ -329,26 +329,26 @@ public class SnookerRefereeTests
     public void SnookeringTheOpponentBehindTheFreeBallIsAFoul()
     {
         // The free ball (pink) ends between the cue ball and the last red.
-        var state = OnRed with { FreeBall = true, Call = Call.Nominate(Id("pink")) };
+        var state = OnRed with { Call = Call.Nominate(Id("pink")), Part = SnookerPart.Of(OnRed) with { FreeBall = true } };
         var ruling = new SnookerShot().Only("red-1", "pink", "black").At("cue", 0, 0.3).At("pink", 0.5, 0.6).At("red-1", 0.6, 0.3)
             .Hit("pink").Rests("pink", 0.3, 0.3).Judge(state);
         Assert.Contains(Foul.SnookeredByFreeBall, ruling.Fouls);
         Assert.Equal(4, ruling.Penalty);
         // Unless only the pink and black remain.
         var late = new SnookerShot().Only("pink", "black").At("cue", 0, 0.3).At("black", 0.6, 0.3).At("pink", 0.5, 0.6)
-            .Hit("black").Rests("black", 0.3, 0.3).Judge(Frame with { BallOn = "pink", FreeBall = true, Call = Call.Nominate(Id("black")) });
+            .Hit("black").Rests("black", 0.3, 0.3).Judge(Frame with { Call = Call.Nominate(Id("black")), Part = SnookerPart.Of(Frame) with { BallOn = "pink", FreeBall = true } });
         Assert.DoesNotContain(Foul.SnookeredByFreeBall, late.Fouls);
     }
 
     [Fact]
     public void EndOfFrameTheLastBlackPottedGivesTheFrameToTheHigherScore()
     {
-        var ruling = new SnookerShot().Only("black").Hit("black").Pot("black").Judge(Frame with { BallOn = "black", Score = new(40, 44) });
+        var ruling = new SnookerShot().Only("black").Hit("black").Pot("black").Judge(Frame with { Score = new(40, 44), Part = SnookerPart.Of(Frame) with { BallOn = "black" } });
         Assert.True(ruling.GameOver);
         Assert.Equal(0, ruling.Winner);
         Assert.Equal(7, ruling.Points);
         // A foul on the last black ends it too.
-        var foul = new SnookerShot().Only("black").Hit("black").Pot("cue").Judge(Frame with { BallOn = "black", Score = new(40, 44) });
+        var foul = new SnookerShot().Only("black").Hit("black").Pot("cue").Judge(Frame with { Score = new(40, 44), Part = SnookerPart.Of(Frame) with { BallOn = "black" } });
         Assert.True(foul.GameOver);
         Assert.Equal(1, foul.Winner);
     }
@@ -356,11 +356,11 @@ public class SnookerRefereeTests
     [Fact]
     public void EndOfFrameOnEqualScoresTheBlackIsRespottedAndPlayedFromInHandInTheD()
     {
-        var ruling = new SnookerShot().Only("black").Hit("black").Pot("black").Judge(Frame with { BallOn = "black", Score = new(40, 47) });
+        var ruling = new SnookerShot().Only("black").Hit("black").Pot("black").Judge(Frame with { Score = new(40, 47), Part = SnookerPart.Of(Frame) with { BallOn = "black" } });
         Assert.False(ruling.GameOver);
         Assert.Equal([Id("black")], ruling.Spot);
         Assert.Equal(BallInHand.D, ruling.Next.BallInHand);
-        Assert.Equal("black", ruling.Next.BallOn);
+        Assert.Equal("black", SnookerPart.Of(ruling.Next).BallOn);
         Assert.Equal(new PerPlayer<int>(47, 47), ruling.Next.Score);
         // The first to score then decides it.
         var decider = new SnookerShot().Only("black").Hit("black").Pot("black").Judge(ruling.Next);

@@ -46,7 +46,7 @@ public class ThreeCushionMatchTests
     public void TheBreakPutsTheRedOnTheFootSpotAndTheBreakersBallBesideTheOpponents(int breaker)
     {
         var setup = GameSetup.Of(Game, 1);
-        setup = setup with { Start = setup.Start with { Shooter = breaker, Breaker = breaker } };
+        setup = setup with { Start = setup.Start with { Shooter = breaker, Part = ThreeCushionPart.Of(setup.Start) with { Breaker = breaker } } };
         var match = new Match(setup);
         double r = setup.BallRadius;
         var own = breaker == 0 ? BallSet.White : BallSet.Yellow;
@@ -112,7 +112,7 @@ public class ThreeCushionMatchTests
                 break;
             }
             Assert.True(match.State.Score.First >= before.Score.First && match.State.Score.Second >= before.Score.Second, shot.Ruling.Message);
-            Assert.True(match.State.Innings.First >= before.Innings.First && match.State.Innings.Second >= before.Innings.Second, shot.Ruling.Message);
+            Assert.True(ThreeCushionPart.Of(match.State).Innings.First >= ThreeCushionPart.Of(before).Innings.First && ThreeCushionPart.Of(match.State).Innings.Second >= ThreeCushionPart.Of(before).Innings.Second, shot.Ruling.Message);
             var balls = match.Balls.Values.ToList();
             Assert.Equal(3, balls.Count);
             for (int a = 0; a < balls.Count; a++)

@@ -12,7 +12,7 @@ public class ThreeCushionRefereeTests
     private static readonly IReferee Referee = Ruleset.For(Game).Referee(CaromShot.Table, R);
 
     // Player 0 (white) at the table on shot 5 of the game, 3-2 after 2 innings each.
-    private static readonly GameState Later = new GameState(Game) { Shot = 5, Score = new(3, 2), Innings = new(2, 2), Run = 1 };
+    private static readonly GameState Later = new GameState(Game) { Shot = 5, Score = new(3, 2), Part = new ThreeCushionPart { Innings = new(2, 2), Run = 1 } };
 
     private static Ruling Judge(GameState state, CaromShot shot) => Referee.Judge(state, shot.Build());
 
@@ -27,8 +27,8 @@ public class ThreeCushionRefereeTests
         Assert.Equal(new PerPlayer<int>(4, 2), r.Score);
         Assert.Equal(2, r.Run);
         Assert.Equal(0, r.Next.Shooter);
-        Assert.Equal(2, r.Next.Run);
-        Assert.Equal(new PerPlayer<int>(2, 2), r.Next.Innings);
+        Assert.Equal(2, ThreeCushionPart.Of(r.Next).Run);
+        Assert.Equal(new PerPlayer<int>(2, 2), ThreeCushionPart.Of(r.Next).Innings);
     }
 
     [Fact]
@@ -99,8 +99,8 @@ public class ThreeCushionRefereeTests
         Assert.True(r.Legal);
         Assert.Empty(r.Fouls);
         Assert.Equal(1, r.Next.Shooter);
-        Assert.Equal(new PerPlayer<int>(2, 3), r.Next.Innings);
-        Assert.Equal(0, r.Next.Run);
+        Assert.Equal(new PerPlayer<int>(2, 3), ThreeCushionPart.Of(r.Next).Innings);
+        Assert.Equal(0, ThreeCushionPart.Of(r.Next).Run);
         Assert.Equal(1, r.Run);
     }
 
@@ -119,7 +119,7 @@ public class ThreeCushionRefereeTests
     {
         var yellowUp = Later with { Shooter = 1 };
         Assert.True(Judge(yellowUp, Striking(Y).Cushions(Y, 3).Hit(Y, W).Hit(Y, Red)).Point);
-        var swapped = Later with { CueBalls = new(Y, W) };
+        var swapped = Later with { Part = ThreeCushionPart.Of(Later) with { CueBalls = new(Y, W) } };
         Assert.True(Judge(swapped, Striking(Y).Cushions(Y, 3).Hit(Y, W).Hit(Y, Red)).Point);
     }
 
@@ -132,7 +132,7 @@ public class ThreeCushionRefereeTests
         Assert.False(r.Point);
         Assert.Equal(1, r.Next.Shooter);
         Assert.Equal(new PerPlayer<int>(1, 0), r.Innings);
-        Assert.Equal(new PerPlayer<int>(1, 1), r.Next.Innings);
+        Assert.Equal(new PerPlayer<int>(1, 1), ThreeCushionPart.Of(r.Next).Innings);
         Assert.True(Judge(start, Striking(W).Hit(W, Red).Cushions(W, 3).Hit(W, Y)).Point);
     }
 
@@ -161,13 +161,13 @@ public class ThreeCushionRefereeTests
     public void TheRaceEndsAtTheTargetAfterTheEqualizingInning()
     {
         // The breaker (player 0) reaches 40 in his 20th inning; player 1 has had 19.
-        var nearly = new GameState(Game) { Shot = 70, Score = new(39, 30), Innings = new(20, 19) };
+        var nearly = new GameState(Game) { Shot = 70, Score = new(39, 30), Part = new ThreeCushionPart { Innings = new(20, 19) } };
         var r = Judge(nearly, Striking(W).Cushions(W, 3).Hit(W, Y).Hit(W, Red));
         Assert.True(r.Point);
         Assert.False(r.GameOver);
         Assert.False(r.Continue);
         Assert.Equal(1, r.Next.Shooter);
-        Assert.Equal(new PerPlayer<int>(20, 20), r.Next.Innings);
+        Assert.Equal(new PerPlayer<int>(20, 20), ThreeCushionPart.Of(r.Next).Innings);
         // The equalizing inning: a miss ends the game for the breaker.
         var last = r.Next;
         var miss = Judge(last, Striking(Y).Cushions(Y, 1));
@@ -183,7 +183,7 @@ public class ThreeCushionRefereeTests
     [Fact]
     public void WithoutEqualizingTheTargetWinsAtOnce()
     {
-        var nearly = new GameState(Game) { Shot = 70, Score = new(39, 30), Innings = new(20, 19), Equalizing = false };
+        var nearly = new GameState(Game) { Shot = 70, Score = new(39, 30), Part = new ThreeCushionPart { Innings = new(20, 19), Equalizing = false } };
         var r = Judge(nearly, Striking(W).Cushions(W, 3).Hit(W, Y).Hit(W, Red));
         Assert.True(r.GameOver);
         Assert.Equal(0, r.Winner);
@@ -192,7 +192,7 @@ public class ThreeCushionRefereeTests
     [Fact]
     public void TheNonBreakerReachingTheTargetFirstWins()
     {
-        var nearly = new GameState(Game) { Shooter = 1, Shot = 70, Score = new(30, 39), Innings = new(20, 20) };
+        var nearly = new GameState(Game) { Shooter = 1, Shot = 70, Score = new(30, 39), Part = new ThreeCushionPart { Innings = new(20, 20) } };
         var r = Judge(nearly, Striking(Y).Cushions(Y, 3).Hit(Y, W).Hit(Y, Red));
         Assert.True(r.GameOver);
         Assert.Equal(1, r.Winner);
@@ -208,7 +208,7 @@ public class ThreeCushionRefereeTests
         Assert.Equal("1.143", ThreeCushionRuleset.Average(8, 7));
         Assert.Equal("0.000", ThreeCushionRuleset.Average(0, 0));
         Assert.Equal(0.333, ThreeCushionRuleset.AverageValue(1, 3));
-        var r = Judge(Later with { Score = new(1, 2), Innings = new(3, 2) }, Striking(W).Cushions(W, 3).Hit(W, Y).Hit(W, Red));
+        var r = Judge(Later with { Score = new(1, 2), Part = ThreeCushionPart.Of(Later) with { Innings = new(3, 2) } }, Striking(W).Cushions(W, 3).Hit(W, Y).Hit(W, Red));
         string json = System.Text.Encoding.UTF8.GetString(GameBlockWriter.RulingToUtf8(r));
         Assert.Contains("\"average\": [\n    0.667,\n    1\n  ]", json.Replace("\r\n", "\n", StringComparison.Ordinal), StringComparison.Ordinal);
     }
