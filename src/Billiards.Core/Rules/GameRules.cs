@@ -152,7 +152,6 @@ public static class RuleNames
 {
     private static readonly string[] Groups = ["solids", "stripes"];
     private static readonly string[] Hands = ["none", "table", "kitchen", "d"];
-    private static readonly string[] Options = ["accept", "rerack", "spot-eight", "shoot", "pass-back", "play", "put-back", "replace", "spot-break"];
     private static readonly string[] Fouls =
     [
         "bad-placement", "cue-ball-pocketed", "no-contact", "wrong-ball-first", "no-rail", "bad-break",
@@ -174,8 +173,22 @@ public static class RuleNames
     /// <summary>"none", "table", "kitchen" or "d" (results write null for none).</summary>
     public static string ToName(this BallInHand hand) => Hands[(int)hand];
 
-    /// <summary>"accept", "rerack", "spot-eight", "shoot", "pass-back", "play", "put-back" or "replace".</summary>
-    public static string ToName(this RefereeOption option) => Options[(int)option];
+    /// <summary>
+    /// The option's word in files, e.g. "pass-back", as the registered game that offers it words it
+    /// (<see cref="Ruleset.OptionWords"/>); within one game <see cref="Ruleset.WordOf"/> says it.
+    /// </summary>
+    /// <exception cref="ArgumentOutOfRangeException">For an option no registered game offers.</exception>
+    public static string ToName(this RefereeOption option)
+    {
+        foreach (var ruleset in Ruleset.All)
+        {
+            if (ruleset.TryWordOf(option, out string? word))
+            {
+                return word;
+            }
+        }
+        throw new ArgumentOutOfRangeException(nameof(option), option, "no registered game offers the option");
+    }
 
     /// <summary>The foul's code, e.g. "cue-ball-pocketed".</summary>
     public static string ToName(this Foul foul) => Fouls[(int)foul];
@@ -194,8 +207,19 @@ public static class RuleNames
     public static bool TryParseBallInHand(string? name, out BallInHand hand) =>
         TryParse(Hands, name, out hand) && hand != BallInHand.None;
 
-    /// <summary>Parses an option name.</summary>
-    public static bool TryParseOption(string? name, out RefereeOption option) => TryParse(Options, name, out option);
+    /// <summary>Parses an option's word of any registered game; <see cref="Ruleset.TryParseOption"/> parses one game's.</summary>
+    public static bool TryParseOption(string? name, out RefereeOption option)
+    {
+        foreach (var ruleset in Ruleset.All)
+        {
+            if (ruleset.TryParseOption(name, out option))
+            {
+                return true;
+            }
+        }
+        option = default;
+        return false;
+    }
 
     /// <summary>Parses a foul code.</summary>
     public static bool TryParseFoul(string? name, out Foul foul) => TryParse(Fouls, name, out foul);

@@ -229,7 +229,7 @@ internal sealed class RulingBuilder(GameState before, ShotFacts facts)
         }
         if (Options.Count > 0 && !GameOver)
         {
-            text.Add($"{next} chooses: {string.Join(" or ", Options.Select(o => o.ToName()))}.");
+            text.Add($"{next} chooses: {string.Join(" or ", Options.Select(Ruleset.For(b.Rules).WordOf))}.");
         }
         if (Note is not null)
         {

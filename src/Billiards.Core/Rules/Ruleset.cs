@@ -359,7 +359,7 @@ public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentati
         ArgumentNullException.ThrowIfNull(ruling);
         if (!ruling.Options.Contains(option))
         {
-            throw new ArgumentException($"the ruling offers no \"{option.ToName()}\" (it offers {string.Join(", ", ruling.Options.Select(o => o.ToName()))})", nameof(option));
+            throw new ArgumentException($"the ruling offers no \"{(TryWordOf(option, out string? word) ? word : option.ToString())}\" (it offers {string.Join(", ", ruling.Options.Select(WordOf))})", nameof(option));
         }
         var next = ruling.Next;
         return option switch
@@ -374,6 +374,51 @@ public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentati
         };
     }
 
+    private static readonly (RefereeOption, string)[] NoOptions = [];
+
+    /// <summary>
+    /// The options the game's referee offers, each with its word in files (scene-format.md
+    /// "options", a game record's "choice"), e.g. (<see cref="RefereeOption.PassBack"/>, "pass-back"):
+    /// the game writes and parses its own words. None by default.
+    /// </summary>
+    public virtual IReadOnlyList<(RefereeOption Option, string Word)> OptionWords => NoOptions;
+
+    /// <summary>True, with its word, when the game offers <paramref name="option"/>.</summary>
+    public bool TryWordOf(RefereeOption option, [System.Diagnostics.CodeAnalysis.NotNullWhen(true)] out string? word)
+    {
+        foreach (var (o, w) in OptionWords)
+        {
+            if (o == option)
+            {
+                word = w;
+                return true;
+            }
+        }
+        word = null;
+        return false;
+    }
+
+    /// <summary>The word of <paramref name="option"/>, one of the game's (<see cref="OptionWords"/>).</summary>
+    /// <exception cref="ArgumentOutOfRangeException">When the game offers no such option.</exception>
+    public string WordOf(RefereeOption option) => TryWordOf(option, out string? word)
+        ? word
+        : throw new ArgumentOutOfRangeException(nameof(option), option, $"{Name} offers no such option");
+
+    /// <summary>Parses one of the game's option words (<see cref="OptionWords"/>).</summary>
+    public bool TryParseOption(string? word, out RefereeOption option)
+    {
+        foreach (var (o, w) in OptionWords)
+        {
+            if (w == word)
+            {
+                option = o;
+                return true;
+            }
+        }
+        option = default;
+        return false;
+    }
+
     /// <summary>
     /// The words after the next shooter of a ruling took <paramref name="option"/>, with
     /// <paramref name="state"/> the state it leads to, e.g. "Put back: Ben plays again.".
@@ -386,7 +431,7 @@ public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentati
             RefereeOption.Play => $"{state.ShooterName} plays the balls as they lie.",
             RefereeOption.PutBack => $"Put back: {state.ShooterName} plays again.",
             RefereeOption.Replace => $"The balls are replaced: {state.ShooterName} plays again.",
-            _ => $"{option.ToName()}: {state.ShooterName} to shoot.",
+            _ => $"{WordOf(option)}: {state.ShooterName} to shoot.",
         };
     }
 

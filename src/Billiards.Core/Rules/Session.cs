@@ -237,7 +237,7 @@ public sealed class Session
         }
         if (PendingOptions.Count > 0)
         {
-            return $"{State.ShooterName} must choose an option first: {string.Join(", ", PendingOptions.Select(o => o.ToName()))}.";
+            return $"{State.ShooterName} must choose an option first: {string.Join(", ", PendingOptions.Select(Ruleset.WordOf))}.";
         }
         return Shooter.Accepts(source) ? null : $"It is {State.ShooterName}'s turn.";
     }

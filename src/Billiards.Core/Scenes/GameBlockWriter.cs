@@ -90,7 +90,7 @@ public static class GameBlockWriter
             w.WriteString("ball_in_hand", ruling.BallInHand.ToName());
         }
         WriteNames(w, "spot", ruling.Spot.Select(set.NameOf));
-        WriteNames(w, "options", ruling.Options.Select(o => o.ToName()));
+        WriteNames(w, "options", ruling.Options.Select(Ruleset.For(ruling.Next.Rules).WordOf));
         w.WriteBoolean("game_over", ruling.GameOver);
         if (ruling.Winner is { } winner)
         {

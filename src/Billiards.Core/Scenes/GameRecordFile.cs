@@ -159,7 +159,7 @@ public static class GameRecordFile
             // snooker's "replace" (the balls go back) from its "put-back" (they stay).
             if (input.Choice is { } choice)
             {
-                w.WriteString("choice", choice.ToName());
+                w.WriteString("choice", setup.Ruleset.WordOf(choice));
             }
             w.WritePropertyName("ruling");
             GameBlockWriter.WriteRuling(w, played.Ruling);
@@ -381,7 +381,8 @@ public static class GameRecordFile
             RefereeOption? choice = null;
             if (s.TryGetProperty("choice", out var c) && c.ValueKind == JsonValueKind.String)
             {
-                choice = RuleNames.TryParseOption(c.GetString(), out var option) ? option : throw Error(at + ".choice", $"unknown option \"{c.GetString()}\"");
+                choice = setup.Ruleset.TryParseOption(c.GetString(), out var option) ? option
+                    : throw Error(at + ".choice", $"unknown option \"{c.GetString()}\" (expected one of {rules.ToName()}'s: {string.Join(", ", setup.Ruleset.OptionWords.Select(o => $"\"{o.Word}\""))})");
             }
             shots.Add(new GameShot(spec, before.Call, place, before.PushOut, choice));
             rulings.Add(System.Text.Encoding.UTF8.GetString(Reindent(Get(s, "ruling", at))));

@@ -45,6 +45,10 @@ public sealed class EightBallRuleset : Ruleset
     /// <summary>The chooser breaks a new rack on an open table.</summary>
     protected override GameState Rerack(GameState next) => base.Rerack(next) with { Part = StartPart };
 
+    /// <summary>After a foul on the break: accept, rerack; after the 8 on the break: rerack, spot-eight.</summary>
+    public override IReadOnlyList<(RefereeOption Option, string Word)> OptionWords { get; } =
+        [(RefereeOption.Accept, "accept"), (RefereeOption.Rerack, "rerack"), (RefereeOption.SpotEight, "spot-eight")];
+
     /// <inheritdoc />
     public override IReferee Referee(TableSpec table, double ballRadius) => new EightBallReferee(table, ballRadius);
 

@@ -16,6 +16,10 @@ public abstract class RotationRuleset : Ruleset
     /// <inheritdoc />
     public override bool HasPushOut => true;
 
+    /// <summary>After a push-out: shoot, or pass-back.</summary>
+    public override IReadOnlyList<(RefereeOption Option, string Word)> OptionWords { get; } =
+        [(RefereeOption.Shoot, "shoot"), (RefereeOption.PassBack, "pass-back")];
+
     /// <inheritdoc />
     public override IReferee Referee(TableSpec table, double ballRadius) => new RotationReferee(this, table, ballRadius);
 

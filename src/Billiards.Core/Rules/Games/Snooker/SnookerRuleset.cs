@@ -99,6 +99,10 @@ public sealed class SnookerRuleset : Ruleset
         writer.WriteBoolean("free_ball", ruling.FreeBall);
     }
 
+    /// <summary>After a foul: play, put-back, and after a foul and a miss replace.</summary>
+    public override IReadOnlyList<(RefereeOption Option, string Word)> OptionWords { get; } =
+        [(RefereeOption.Play, "play"), (RefereeOption.PutBack, "put-back"), (RefereeOption.Replace, "replace")];
+
     /// <summary>Playing the balls as they lie says so when it is with a free ball.</summary>
     public override string ChoiceMessage(RefereeOption option, GameState state)
     {

@@ -39,6 +39,10 @@ public sealed class StraightPoolRuleset : Ruleset
         return Math.Max(base.MaxShots(start), 10 * start.Target);
     }
 
+    /// <summary>After a foul on the opening break: accept or rerack.</summary>
+    public override IReadOnlyList<(RefereeOption Option, string Word)> OptionWords { get; } =
+        [(RefereeOption.Accept, "accept"), (RefereeOption.Rerack, "rerack")];
+
     /// <summary>A rerack after a foul is broken by the offender: the player who is not choosing.</summary>
     protected override GameState Rerack(GameState next) => next with { Shooter = next.Incoming, Shot = 0, BallInHand = BallInHand.None };
 

@@ -77,6 +77,10 @@ public sealed class ThreeCushionRuleset : Ruleset
     /// <inheritdoc />
     public override void WritePart(Utf8JsonWriter writer, GameState state, GameBlockSlot slot) => ThreeCushionPart.Of(state).Write(writer, slot, BallSet);
 
+    /// <summary>The incoming ball frozen to a ball: accept, or spot-break.</summary>
+    public override IReadOnlyList<(RefereeOption Option, string Word)> OptionWords { get; } =
+        [(RefereeOption.Accept, "accept"), (RefereeOption.SpotBreak, "spot-break")];
+
     /// <summary>The breaker shoots first and is the breaker of the equalizing inning.</summary>
     public override GameState BrokenBy(GameState start, int breaker) =>
         base.BrokenBy(start, breaker) with { Part = ThreeCushionPart.Of(start) with { Breaker = breaker } };
