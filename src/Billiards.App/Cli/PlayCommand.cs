@@ -382,7 +382,7 @@ public static class PlayCommand
     public static MatchSetup? MatchFor(Scene scene, GameRules? rules, string? players)
     {
         ArgumentNullException.ThrowIfNull(scene);
-        GameRules? game = rules ?? scene.Game?.Rules ?? (RuleNames.TryParseGame(scene.Rules, out var named) ? named : (GameRules?)null);
+        GameRules? game = rules ?? scene.PlayedAs;
         if (game is not { } g)
         {
             return players is null ? null : throw new CliException($"--players {players}: {scene.Path} names no rules; give --rules too");

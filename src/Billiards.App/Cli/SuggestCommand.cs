@@ -73,12 +73,11 @@ public static class SuggestCommand
         {
             return game;
         }
-        var rules = GameRules.EightBall;
-        if (scene.Rules is { } name && !RuleNames.TryParseGame(name, out rules))
+        if (scene.Rules is { } name && scene.PlayedAs is null)
         {
             throw new SceneException(scene.Path, "$.rules", $"unknown rules \"{name}\"");
         }
-        return new GameState(rules) { Shot = scene.Rack is null ? 1 : 0 };
+        return new GameState(scene.PlayedAs ?? GameRules.EightBall) { Shot = scene.Rack is null ? 1 : 0 };
     }
 
     /// <summary>The suggestion's JSON.</summary>

@@ -68,6 +68,12 @@ public sealed record Scene(
     /// </summary>
     public Rules.GameState? Game { get; init; }
 
+    /// <summary>
+    /// Which game the scene is played as (<see cref="SceneGame.Of(Scene)"/>): its game block's
+    /// rules, else its "rules"; null for a scene of no game (practice).
+    /// </summary>
+    public global::Billiards.Core.Rules.GameRules? PlayedAs => SceneGame.Of(this);
+
     /// <summary>The balls the scene is played with: its game's set, pool's without a game.</summary>
     public BallSet BallSet { get; init; } = BallSet.Pool;
 

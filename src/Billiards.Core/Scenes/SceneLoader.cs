@@ -168,37 +168,25 @@ public static class SceneLoader
             return scene;
         }
 
-        // The set of the scene's game (the game block's rules, else "rules"), pool's without one;
-        // a bad name is refused where the field is read.
-        // The balls a scene is played with, for its ball ids and the default radius and mass:
-        // carom's when it names the three-cushion rack or the carom table, snooker's when it names
-        // snooker (its rules, rack, game or table), else pool's.
+        // The balls a scene is played with, for its ball ids and the default radius and mass: its
+        // game's set (SceneGame.Of: the game block's rules, else "rules"), else that of the game
+        // its rack or table belongs to (SceneGame.BallSetOf); a bad name is refused where the field is read.
         // Read before the fields are validated, which happens as each is read.
         private static BallSet SceneBallSet(Dictionary<string, JsonElement> fields)
         {
-            static bool Is(JsonElement e, string property, string value) =>
-                e.ValueKind == JsonValueKind.Object && e.TryGetProperty(property, out var v)
-                && v.ValueKind == JsonValueKind.String && v.GetString() == value;
             string? game = null;
             if (fields.TryGetValue("game", out var g) && g.ValueKind == JsonValueKind.Object && g.TryGetProperty("rules", out var gr) && gr.ValueKind == JsonValueKind.String)
             {
                 game = gr.GetString();
             }
-            else if (fields.TryGetValue("rules", out var ru) && ru.ValueKind == JsonValueKind.String)
-            {
-                game = ru.GetString();
-            }
-            if (Rules.RuleNames.TryParseGame(game, out var rules))
+            string? rulesField = fields.TryGetValue("rules", out var ru) && ru.ValueKind == JsonValueKind.String ? ru.GetString() : null;
+            if (SceneGame.Of(game, rulesField) is { } rules)
             {
                 return Rules.Ruleset.For(rules).BallSet;
             }
-            bool hasRack = fields.TryGetValue("rack", out var rack), hasTable = fields.TryGetValue("table", out var table);
-            if ((hasRack && Is(rack, "game", "three-cushion")) || (hasTable && Is(table, "preset", CaromTable.Preset)))
-            {
-                return BallSet.Carom;
-            }
-            bool snooker = (hasRack && Is(rack, "game", "snooker")) || (hasTable && Is(table, "preset", SnookerTable.Preset));
-            return snooker ? BallSet.Snooker : BallSet.Pool;
+            static string? Text(Dictionary<string, JsonElement> f, string block, string property) =>
+                f.TryGetValue(block, out var e) && e.ValueKind == JsonValueKind.Object && e.TryGetProperty(property, out var v) && v.ValueKind == JsonValueKind.String ? v.GetString() : null;
+            return SceneGame.BallSetOf(Text(fields, "rack", "game"), Text(fields, "table", "preset"));
         }
 
         private void ValidatePlacement(List<(BallSetup Ball, string Path)> balls, TableSpec table, double radius)

@@ -48,7 +48,7 @@ public sealed class HudFramingTests(GlFixture gl)
     private static (TestGame Game, RenderFrame Frame, BallId Ball, Vector3? Pocket) Open(string file, int width, int height)
     {
         var scene = NearEnd.TryGetValue(file, out var json) ? SceneLoader.Parse(json, "near-end.json") : SceneLoader.Load(Path.Combine(AssetFolder.Assets, "scenes", file));
-        var rules = scene.Game?.Rules ?? (RuleNames.TryParseGame(scene.Rules, out var named) ? named : throw new InvalidOperationException($"{file} names no game"));
+        var rules = scene.PlayedAs ?? throw new InvalidOperationException($"{file} names no game");
         var game = new TestGame(scene, new MatchSetup(rules, [new Seat("Player 1"), new Seat("Player 2")]));
         game.Window.FramebufferSize = (width, height);
         var frame = game.Frame();

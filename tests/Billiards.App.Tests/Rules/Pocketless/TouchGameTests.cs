@@ -30,7 +30,7 @@ public class TouchGameTests
     {
         var rules = TouchRuleset.Register();
         var scene = SceneLoader.Parse(Scene, "touch.json");
-        Assert.Equal(rules, scene.Game?.Rules ?? GameRules.FromString(scene.Rules!));
+        Assert.Equal(rules, scene.PlayedAs);
         var window = new FakeWindow();
         var clock = new ManualClock();
         using var host = new GameHost(scene, SimulationFactory.Create, window, clock,
