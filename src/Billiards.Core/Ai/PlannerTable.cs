@@ -245,13 +245,13 @@ public sealed class PlannerTable
     /// True when the player at the table in <paramref name="state"/> is snookered in
     /// <paramref name="position"/>: no straight line of the cue ball reaches any part of any ball
     /// they may strike first (<see cref="Sightlines.AnyPart"/>, the referee's own test), in the
-    /// games whose rules know the snooker (<see cref="Ruleset.HasSnookers"/>); false without a cue ball.
+    /// games whose planner policy sees snookers (<see cref="PlannerPolicy.SeesSnookers"/>); false without a cue ball.
     /// </summary>
     public bool Snookered(TablePosition position, GameState state)
     {
         ArgumentNullException.ThrowIfNull(position);
         ArgumentNullException.ThrowIfNull(state);
-        if (!Ruleset.For(state.Rules).HasSnookers || position.Cue is not { } cue)
+        if (!Ruleset.For(state.Rules).Policy.SeesSnookers || position.Cue is not { } cue)
         {
             return false;
         }

@@ -144,7 +144,7 @@ public sealed partial class ShotPlanner
         double opponent = look ? Table.BestEase(after, ruling.Next, level.OpponentAimStdDeg) : EvenScore;
         double snookered = look && Table.Snookered(after, ruling.Next) ? SnookerScore : 0;
         // In a game of points (snooker) an open table gives the opponent a break, not one shot: it costs more.
-        double weight = Ruleset.For(before.Rules).HasSnookers ? SnookerOpponentWeight : OpponentWeight;
+        double weight = Ruleset.For(before.Rules).Policy.OpponentWeight;
         return SafetyScore - weight * opponent + snookered;
     }
 }

@@ -48,7 +48,7 @@ public sealed partial class ShotPlanner
         // search's pot counts once the middle round has given every field member enough samples.
         // A frame already decided (the last ball left, the opponent more than its points behind)
         // has no safety worth playing: any pot is attempted.
-        private readonly double _sureChance = Ruleset.For(state.Rules).HasSnookers && !Decided(state, position) ? level.SurePotChance : 0;
+        private readonly double _sureChance = Ruleset.For(state.Rules).Policy.PlaysSafeBelowSurePot && !Decided(state, position) ? level.SurePotChance : 0;
         private List<Variation> _variations = [];
         private int[]? _pots;
 

@@ -9,9 +9,6 @@ namespace Billiards.Core.Ai;
 /// <summary>The variations the search simulates: each candidate at several speeds and spins, and the break.</summary>
 public sealed partial class ShotPlanner
 {
-    // The most safeties a position of a game with snookers gets at levels 3 to 5.
-    private const int MaxSnookerSafeties = 24;
-
     /// <summary>The most samples <see cref="Sensitivity"/> takes.</summary>
     public const int MaxSensitivitySamples = 1000;
 
@@ -82,10 +79,10 @@ public sealed partial class ShotPlanner
                 // A nominated ball must be the one struck first and the one potted (snooker).
                 .Where(c => !nominates || c.Called == c.Target)
                 .OrderByDescending(c => c.Prior).Take(candidates).ToList();
-            // Where the game knows the snooker, frames turn on safety exchanges: the stronger
-            // levels try two safeties a ball on (up to 24), not just one for the first few balls.
+            // Where frames turn on safety exchanges (the policy counts safeties per ball, snooker's
+            // two a ball on up to 24), the stronger levels try that many, not just one for the first few balls.
             int safetyCount = level.Level < 3 ? 2
-                : ruleset.HasSnookers ? Math.Max(candidates / 2 + 2, Math.Min(MaxSnookerSafeties, 2 * PlannerTable.LegalTargets(state, root.Position).Count))
+                : ruleset.Policy.SafetiesPerTarget > 0 ? Math.Max(candidates / 2 + 2, Math.Min(ruleset.Policy.MaxSafeties, ruleset.Policy.SafetiesPerTarget * PlannerTable.LegalTargets(state, root.Position).Count))
                 : candidates / 2 + 2;
             var safeties = CandidateGenerator.Safeties(_table, state, root.Position, cue).Take(safetyCount).ToList();
             if (pots.Count == 0 && safeties.Count == 0)

@@ -46,7 +46,7 @@ namespace Billiards.Core.Ai;
 /// apart, to play the middle of the range that pots (0: the geometric aim as it is).
 /// </param>
 /// <param name="SurePotChance">
-/// In the games with snookers (<see cref="Rules.Ruleset.HasSnookers"/>), the pot chance below which
+/// In the games whose policy plays safe below it (<see cref="PlannerPolicy.PlaysSafeBelowSurePot"/>), the pot chance below which
 /// this player would rather play safe: a pot attempt loses <see cref="ShotPlanner.ShortfallWeight"/>
 /// of score per unit of chance short of it (0: none; the pool games never use it).
 /// </param>

@@ -510,6 +510,9 @@ public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentati
     /// </summary>
     public virtual bool PowerBreak => true;
 
+    /// <summary>How the computer player weighs the game (<see cref="Ai.PlannerPolicy"/>): pool's by default.</summary>
+    public virtual Ai.PlannerPolicy Policy => Ai.PlannerPolicy.Pool;
+
     /// <summary>True when the rules know the snooker (a player with no straight line to any ball on: snooker's miss and free ball).</summary>
     public virtual bool HasSnookers => false;
 

@@ -98,8 +98,8 @@ public interface IPlannerPolicy
     /// <inheritdoc cref="Ruleset.StillToPot"/>
     IReadOnlyList<BallId> StillToPot(GameState state, IEnumerable<BallId> objectBalls);
 
-    /// <inheritdoc cref="Ruleset.HasSnookers"/>
-    bool HasSnookers { get; }
+    /// <inheritdoc cref="Ruleset.Policy"/>
+    Ai.PlannerPolicy Policy { get; }
 
     /// <inheritdoc cref="Ruleset.MaxShots"/>
     int MaxShots(GameState start);

@@ -168,6 +168,9 @@ public sealed class SnookerRuleset : Ruleset
     /// <summary>Snooker's miss and free ball turn on whether a player is snookered.</summary>
     public override bool HasSnookers => true;
 
+    /// <summary>Snooker's: an open table gives a break; more safeties, sure pots and snookers (<see cref="Ai.PlannerPolicy.Snooker"/>).</summary>
+    public override Ai.PlannerPolicy Policy => Ai.PlannerPolicy.Snooker;
+
     /// <summary>A frame rarely lasts 300 shots; 600 leaves room for long safety exchanges.</summary>
     public override int MaxShots(GameState start) => 600;
 
