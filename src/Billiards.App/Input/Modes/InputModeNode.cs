@@ -286,12 +286,24 @@ public sealed class InputModeNode : Node
         PlaceCueBall(old, CueBallMover.ClampToBed(old + (step * (metres / step.LengthXY)), _physics.Table, _physics.BallRadius));
     }
 
+    // The ball where the drag or key puts it, else slid along the edge it meets: one of the move's
+    // two components alone (along the head string at the break, where the ball starts on it and a
+    // sideways drag a hair across it was refused whole).
     private void PlaceCueBall(Billiards.Core.Mathematics.Vec3 old, Billiards.Core.Mathematics.Vec3? moved)
     {
-        if (moved is { } p && _physics!.TryPlaceCueBall(p))
+        if (moved is not { } p)
         {
-            // Formel 35: camera = p + c with c = camera_old - ball_old, i.e. it moves with the ball.
-            _camera!.Camera.Translate(p - old);
+            return;
+        }
+        foreach (var at in new[] { p, p with { X = old.X }, p with { Y = old.Y } })
+        {
+            // A component of less than a micrometre is the other's rounding, not a move.
+            if ((at == p || (at - old).LengthXY > 1e-6) && _physics!.TryPlaceCueBall(at))
+            {
+                // Formel 35: camera = p + c with c = camera_old - ball_old, i.e. it moves with the ball.
+                _camera!.Camera.Translate(at - old);
+                return;
+            }
         }
     }
 

@@ -273,6 +273,26 @@ public class InputModeNodeTests
     }
 
     [Fact]
+    public void AtTheBreakTheBallInHandSlidesAlongTheHeadStringWhenDraggedAcrossTheTable()
+    {
+        // The break's ball in hand starts on the head string: a sideways drag whose bed points put
+        // it a hair beyond the line was refused whole, and the ball did not move at all.
+        var scene = Billiards.Core.Scenes.SceneLoader.Load(Billiards.App.Cli.PlayCommand.FindRulesScene(Billiards.Core.Rules.GameRules.EightBall));
+        using var game = new TestGame(scene, new MatchSetup(Billiards.Core.Rules.GameRules.EightBall, [new Billiards.Core.Rules.Seat("Anna"), new Billiards.Core.Rules.Seat("Ben")]));
+        game.Frame();
+        var frame = game.Frame();
+        var (before, _, start) = PressOnTheCueBallInMoveMode(game, frame);
+        for (int i = 1; i <= 6; i++)
+        {
+            game.Window.MoveTo(start.X + (10 * i), start.Y - (0.5f * i));   // right, a little up: across the line
+        }
+        game.Window.Up();
+        var after = game.World.Physics.CueBallPosition;
+        Assert.True(before.Y - after.Y > 0.02, $"the ball moved {(before.Y - after.Y) * 100:0.0} cm to the right");
+        Assert.True(after.X <= before.X, "the ball stays in the kitchen");
+    }
+
+    [Fact]
     public void TheCueBallCannotBeMovedOntoAnotherBall()
     {
         using var game = new TestGame();
