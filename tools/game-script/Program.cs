@@ -236,23 +236,21 @@ internal static class Program
         return live.Events;
     }
 
-    // Ball in hand: move mode (M), a drag that carries the cue ball to the place (in the default
-    // view the ball moves along the aim and across it, a centimetre a pixel), back to the view (V).
-    // Not only in the D: with ball in hand the aim keys and the drag do the same anywhere.
+    // Ball in hand: move mode (M), a drag that carries the cue ball to the place (the ball follows
+    // the pointer on the bed: the drag is the place's pixel less the ball's in the view drawn), back
+    // to the view (V). Not only in the D: with ball in hand the aim keys and the drag do the same anywhere.
     private static void PlaceByHand(LiveGame live, Vec3 place)
     {
         var physics = live.Physics;
-        var cue = live.Host.World.Tree.Root.GetInTree<CueNode>();
-        var d = place - physics.CueBallPosition;
-        var f = cue.AimDirection;
-        var side = ViewMath.BedRight(f);
-        double k = SeedControls.MoveMetresPerPixel;
-        var drag = new Vector2((float)(Vec3.Dot(d, side) / k), (float)(-Vec3.Dot(d, f) / k));
         live.Press(Key.M);
+        live.CatchUp();
+        var (vp, width, height) = live.Host.World.Tree.Root.GetInTree<CameraNode>().CurrentView()!.Value;
+        var from = RenderMath.ToPixel(vp, physics.CueBallPosition.ToVector3(), width, height)!.Value;
+        var to = RenderMath.ToPixel(vp, place.ToVector3(), width, height)!.Value;
         live.Add(new ScriptEvent(0, ScriptAction.MouseMove, Vector: new Vector2(640, 600)));
         live.Add(new ScriptEvent(0, ScriptAction.MouseDown, Button: MouseButton.Left));
         // One move: a drag in steps could meet a colour on its spot on the way, and stop there.
-        live.Add(new ScriptEvent(0, ScriptAction.MouseMoveBy, Vector: drag));
+        live.Add(new ScriptEvent(0, ScriptAction.MouseMoveBy, Vector: to - from));
         live.Add(new ScriptEvent(0, ScriptAction.MouseUp, Button: MouseButton.Left));
         live.Press(Key.V);
         live.CatchUp();

@@ -182,29 +182,39 @@ public sealed class CameraNode : Node
     }
 
     /// <summary>
-    /// Metres of bed per pixel in the overhead view last drawn (the seed's 1 cm before one is
-    /// drawn): a drag of the cue ball in that view moves it with the pointer, along the screen.
-    /// </summary>
-    public double OverheadMetresPerPixel { get; private set; } = SeedControls.MoveMetresPerPixel;
-
-    /// <summary>
     /// True (the default) to frame the view below the scoreboard; false frames the whole window, as
     /// the input scripts recorded before the scoreboard's band was framed out expect their pixels.
     /// </summary>
     public bool FramesBelowHud { get; set; } = true;
 
+    private (int Width, int Height) _drawn;
+
+    /// <summary>
+    /// The view-projection the next frame will show, on the framebuffer last drawn (as
+    /// <see cref="RenderMath.ViewProjection(RenderFrame)"/> gives it), and that framebuffer's size;
+    /// null before the first frame. A drag of the cue ball maps the pointer onto the bed through it.
+    /// </summary>
+    public (Matrix4x4 ViewProjection, int Width, int Height)? CurrentView()
+    {
+        var (width, height) = _drawn;
+        if (width <= 0 || height <= 0)
+        {
+            return null;
+        }
+        var (eye, target) = View(width, height);
+        var vp = RenderMath.View(eye, target) * RenderMath.Projection(FovYDegrees, (float)width / height);
+        float inset = FramesBelowHud ? RenderMath.HudInset(height) : 0;
+        return (inset > 0 ? vp * RenderMath.BelowHud(inset) : vp, width, height);
+    }
+
     /// <inheritdoc />
     protected override void Draw(FrameBuilder frame)
     {
+        _drawn = (frame.Frame.Width, frame.Frame.Height);
         frame.Frame.FovYDegrees = FovYDegrees;
         (frame.Frame.Eye, frame.Frame.Target) = View(frame.Frame.Width, frame.Frame.Height);
         // The view is framed below the scoreboard (RenderMath.BelowHud): the called ball, its pocket and the ball the aim meets are never under it.
         frame.Frame.TopInset = FramesBelowHud ? RenderMath.HudInset(frame.Frame.Height) : 0;
-        if (Overhead && _physics is not null)
-        {
-            double tan = Math.Tan(FovYDegrees * Math.PI / 360);
-            OverheadMetresPerPixel = 2 * (frame.Frame.Eye.Z - _physics.BallRadius) * tan / Math.Max(1, frame.Frame.Height * (1 - frame.Frame.TopInset));
-        }
     }
 
     /// <summary>

@@ -191,6 +191,7 @@ public static class PlayCommand
         if (startMenu || (script is null && statsPath is null && recordPath is null && match is not null))
         {
             host.World.Menu.StartSettings = host.World.Menu.PlayedSettings = settings;
+            platform.SetGraphics?.Invoke(settings.Graphics);
             RunWithStartMenu(host, platform, (next, fast) => Pace(new GameHost(next.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, next.Match, next.Practice), fastComputer || fast), audio, settingsPath, startMenu, dataFolder);
         }
         else
@@ -244,8 +245,12 @@ public static class PlayCommand
             h.World.Menu.DrillGallery = gallery;
             h.World.Menu.StartRequested += (rules, players) => pending = (rules, players, null, h.World.Menu.StartSettings);
             h.World.Menu.PracticeRequested += drill => pending = (null, null, drill, h.World.Menu.StartSettings);
-            // A new pace alone keeps the game: it is saved here, a new game saves its own.
-            h.World.Menu.SettingsChosen += chosen => chosen.Save(settingsPath, Console.Error);
+            // A new pace or graphics alone keeps the game: it is saved and applied here, a new game saves its own.
+            h.World.Menu.SettingsChosen += chosen =>
+            {
+                chosen.Save(settingsPath, Console.Error);
+                platform.SetGraphics?.Invoke(chosen.Graphics);
+            };
         }
         Listen(first);
         if (showAtStart)

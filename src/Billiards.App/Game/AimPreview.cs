@@ -97,13 +97,17 @@ public sealed record AimPreview(BallId? Ball, Vec3 Ghost, Vec3 ObjectDirection, 
     }
 
     /// <summary>The pocket whose direction from <paramref name="ball"/> is closest to <paramref name="heading"/>, nearer ones first among equals.</summary>
-    public static PocketId EasiestPocket(Vec3 ball, Vec3 heading, ReadOnlySpan<PocketCircle> pockets, PocketSet pocketSet)
+    public static PocketId EasiestPocket(Vec3 ball, Vec3 heading, ReadOnlySpan<PocketCircle> pockets, PocketSet pocketSet, Func<PocketId, bool>? allowed = null)
     {
         ArgumentNullException.ThrowIfNull(pocketSet);
         double bestScore = double.NegativeInfinity;
         var best = PocketId.None;
         foreach (var pocket in pockets)
         {
+            if (allowed is not null && !allowed(pocketSet.Id(pocket.Pocket)))
+            {
+                continue;
+            }
             var to = (pocket.Centre with { Z = 0 }) - ball;
             double distance = to.Length;
             if (distance < 1e-9)

@@ -31,6 +31,9 @@ public sealed record GamePlatform(IGameWindow Window, IFrameLoop Loop, IFrameRen
     /// <summary>Sets the window's title (a game chosen in the start menu names itself), or null where there is no title.</summary>
     public Action<string>? SetTitle { get; init; }
 
+    /// <summary>Applies the Settings screen's graphics to the renderer, or null where nothing is drawn.</summary>
+    public Action<GraphicsQuality>? SetGraphics { get; init; }
+
     /// <summary>Releases <see cref="Resources"/>.</summary>
     public void Dispose() => Resources?.Dispose();
 }

@@ -9,8 +9,8 @@ namespace Billiards.App.Game;
 /// The player's physics choice of the start menu, kept between runs in <c>settings.json</c> under
 /// the user's configuration folder ($XDG_CONFIG_HOME/billiards, else ~/.config/billiards; the
 /// platform's application data folder elsewhere): the cushion model and the cloth, how fast
-/// the computer plays, whether the players allow take-backs, the sound, and the last game and
-/// opponent chosen.
+/// the computer plays, whether the players allow take-backs, the sound, the graphics, and the last
+/// game and opponent chosen.
 /// </summary>
 /// <param name="Cushion">A cushion model of <see cref="ModelRegistry.BallCushionModels"/>.</param>
 /// <param name="Cloth">A cloth of <see cref="Core.Physics.Cloth.All"/>.</param>
@@ -26,6 +26,9 @@ public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth, bool F
 
     /// <summary>The sound is muted (U in the game).</summary>
     public bool Muted { get; init; }
+
+    /// <summary>How the 3D scene is drawn while the view moves (<see cref="GraphicsQuality"/>; automatic at first).</summary>
+    public GraphicsQuality Graphics { get; init; }
 
     /// <summary>The physics alone, which makes the game: the other settings (pace, take-backs, sound, the menu's last choices) do not change it.</summary>
     public GameSettings Physics => new(Cushion, Cloth);
@@ -84,6 +87,8 @@ public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth, bool F
             // A file from before take-backs has none: off, the default.
             bool takeBacks = root.TryGetProperty("take_backs", out var t) && t.ValueKind == JsonValueKind.True;
             bool muted = root.TryGetProperty("sound", out var m) && m.ValueKind == JsonValueKind.String && m.GetString() == "muted";
+            // A file from before the graphics setting, or one naming an unknown value: automatic.
+            var graphics = root.TryGetProperty("graphics", out var q) && q.ValueKind == JsonValueKind.String ? GraphicsWords.Parse(q.GetString()) : GraphicsQuality.Auto;
             // The last game and opponent: a file from before them, or one naming an unknown game, offers 8-ball against level 3.
             var game = root.TryGetProperty("game", out var g) && g.ValueKind == JsonValueKind.String && Billiards.Core.Rules.RuleNames.TryParseGame(g.GetString(), out var parsed) ? parsed : Billiards.Core.Rules.GameRules.EightBall;
             int? opponent = !root.TryGetProperty("opponent", out var o) ? 3
@@ -91,7 +96,7 @@ public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth, bool F
                 : o.ValueKind == JsonValueKind.String && o.GetString() == "person" ? null : 3;
             if (ModelRegistry.FindBallCushion(cushion) is { } model && Cloth.Find(cloth) is { } found)
             {
-                return new GameSettings(model, found, fast, takeBacks) { Game = game, Opponent = opponent, Muted = muted };
+                return new GameSettings(model, found, fast, takeBacks) { Game = game, Opponent = opponent, Muted = muted, Graphics = graphics };
             }
             warnings?.WriteLine($"billiards: {path}: unknown cushion model or cloth; using the defaults");
         }
@@ -117,6 +122,7 @@ public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth, bool F
                 w.WriteString("computer_pace", FastComputer ? "fast" : "watchable");
                 w.WriteBoolean("take_backs", TakeBacks);
                 w.WriteString("sound", Muted ? "muted" : "on");
+                w.WriteString("graphics", GraphicsWords.Name(Graphics));
                 w.WriteString("game", Billiards.Core.Rules.RuleNames.ToName(Game));
                 if (Opponent is int level)
                 {
@@ -135,4 +141,49 @@ public sealed record GameSettings(IBallCushionModel Cushion, Cloth Cloth, bool F
             warnings?.WriteLine($"billiards: {path}: cannot save the settings ({e.Message})");
         }
     }
+}
+
+/// <summary>How the 3D scene is drawn while the view moves (the Settings screen's Graphics line).</summary>
+public enum GraphicsQuality
+{
+    /// <summary>Full resolution on a graphics card; on a software rasteriser a moving view is drawn at reduced resolution and sharpened when it stops.</summary>
+    Auto,
+
+    /// <summary>Always full resolution, moving or not (smooth only on a fast renderer).</summary>
+    Sharp,
+
+    /// <summary>A moving view at reduced resolution on any renderer, sharp again as soon as it stands still.</summary>
+    Fast,
+}
+
+/// <summary>The names of <see cref="GraphicsQuality"/> in the settings file and in words on the Settings screen.</summary>
+public static class GraphicsWords
+{
+    /// <summary>The settings file's name: auto, sharp or fast.</summary>
+    public static string Name(GraphicsQuality quality) => quality switch
+    {
+        GraphicsQuality.Sharp => "sharp",
+        GraphicsQuality.Fast => "fast",
+        _ => "auto",
+    };
+
+    /// <summary>The quality a settings file names; automatic for anything else.</summary>
+    public static GraphicsQuality Parse(string? name) => name switch
+    {
+        "sharp" => GraphicsQuality.Sharp,
+        "fast" => GraphicsQuality.Fast,
+        _ => GraphicsQuality.Auto,
+    };
+
+    /// <summary>The Settings screen's words.</summary>
+    public static string Words(GraphicsQuality quality) => quality switch
+    {
+        GraphicsQuality.Sharp => "always sharp",
+        GraphicsQuality.Fast => "fast (softer while the view moves)",
+        _ => "automatic",
+    };
+
+    /// <summary>Whether a moving view is drawn at reduced resolution, on a software rasteriser or not.</summary>
+    public static bool ReducesWhileMoving(GraphicsQuality quality, bool softwareRenderer) =>
+        quality == GraphicsQuality.Fast || (quality == GraphicsQuality.Auto && softwareRenderer);
 }

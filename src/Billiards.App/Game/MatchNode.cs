@@ -1,5 +1,6 @@
 using Billiards.App.Camera;
 using Billiards.App.Input;
+using Billiards.App.Input.Modes;
 using Billiards.App.Nodes;
 using Billiards.App.Platform;
 using Billiards.Core.Balls;
@@ -262,7 +263,8 @@ public sealed class MatchNode : Node
                     Power = Math.Min(Power, DefaultPower);
                 }
                 return true;
-            case Key.Left or Key.Right or Key.A or Key.D:
+            // In move mode (ball in hand) the arrows nudge the cue ball (InputModeNode), A and D still aim.
+            case Key.Left or Key.Right or Key.A or Key.D when !(key.Key is Key.Left or Key.Right && FindInTree<InputModeNode>()?.Mode == InputMode.Move):
                 Turn(key.Key switch
                 {
                     Key.Left => key.Shift ? FineAimStepDegrees : AimStepDegrees,

@@ -50,6 +50,7 @@ public static class PlatformWiring
             return new GamePlatform(window, new WindowLoop(window), new FrameRenderer(renderer, window), resources, window.Gl.GetString(Gl.RendererName))
             {
                 SetTitle = window.SetTitle,
+                SetGraphics = quality => renderer.DynamicResolution = GraphicsWords.ReducesWhileMoving(quality, window.IsSoftwareRenderer),
             };
         }
         catch

@@ -197,20 +197,80 @@ public sealed class ShotCall
         {
             return chosen;
         }
-        if (aim is not null && aim.Ball == ball)
+        if (aim is not null && aim.Ball == ball && (!_match.NeedsCall || IsOpen(ball, aim.Pocket)))
         {
             return aim.Pocket;
         }
+        return (_match.NeedsCall ? OpenPocket(ball) : null) ?? (aim is not null && aim.Ball == ball ? aim.Pocket : EasiestPocket(ball, null));
+    }
+
+    // The easiest pocket along the line from the cue ball through the ball, among those allowed.
+    private PocketId? EasiestPocket(BallId ball, Func<PocketId, bool>? allowed)
+    {
         if (_physics is null || Geometry is null || _physics.Simulation.IndexOf(ball) is not (>= 0 and var i))
         {
             return null;
         }
         var target = _physics.Simulation.Balls[i].Position with { Z = 0 };
         var cue = _physics.CueBallPosition with { Z = 0 };
-        return AimPreview.EasiestPocket(target, (target - cue).Normalized(), Geometry.Pockets, Geometry.Spec.Pockets);
+        var pocket = AimPreview.EasiestPocket(target, (target - cue).Normalized(), Geometry.Pockets, Geometry.Spec.Pockets, allowed);
+        return pocket == PocketId.None ? null : pocket;
     }
 
-    // The aimed ball when the shooter may hit it first, else the nearest ball that they may.
+    // The ball's easiest open pocket, or null where every pocket is blocked.
+    private PocketId? OpenPocket(BallId ball) => EasiestPocket(ball, p => IsOpen(ball, p));
+
+    /// <summary>
+    /// True when the ball is an open pot into the pocket: no other ball lies across the object
+    /// ball's line to the pocket's centre, nor across the cue ball's line to the ghost ball.
+    /// </summary>
+    public bool IsOpen(BallId ball, PocketId pocket)
+    {
+        if (_physics is null || Geometry is null || _physics.Simulation.IndexOf(ball) is not (>= 0 and var i))
+        {
+            return false;
+        }
+        Vec3? centre = null;
+        foreach (var circle in Geometry.Pockets)
+        {
+            centre = circle.Pocket == pocket.Index ? circle.Centre with { Z = 0 } : centre;
+        }
+        if (centre is not { } c)
+        {
+            return false;
+        }
+        var sim = _physics.Simulation;
+        double r = _physics.BallRadius;
+        var target = sim.Balls[i].Position with { Z = 0 };
+        var cue = _physics.CueBallPosition with { Z = 0 };
+        var ghost = target - 2 * r * (c - target).Normalized();
+        for (int k = 0; k < sim.Ids.Count; k++)
+        {
+            if (k == i || sim.Balls[k].IsPocketed)
+            {
+                continue;
+            }
+            var at = sim.Balls[k].Position with { Z = 0 };
+            bool isCue = sim.Ids[k] == _physics.CueBall;
+            if (DistanceToSegment(at, target, c) < 2 * r || (!isCue && DistanceToSegment(at, cue, ghost) < 2 * r))
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static double DistanceToSegment(Vec3 p, Vec3 a, Vec3 b)
+    {
+        var ab = b - a;
+        double length2 = Vec3.Dot(ab, ab);
+        double t = length2 < 1e-18 ? 0 : Math.Clamp(Vec3.Dot(p - a, ab) / length2, 0, 1);
+        return (p - (a + (t * ab))).Length;
+    }
+
+    // The aimed ball when the shooter may hit it first and it has an open pot, else the nearest such
+    // ball; with no open pot anywhere, or in a game that calls no pocket, the aimed legal ball, else
+    // the nearest legal ball.
     private BallId? DefaultBall(AimPreview? aim)
     {
         if (_physics is null)
@@ -218,7 +278,18 @@ public sealed class ShotCall
             return null;
         }
         var legal = Constraints.LegalTargets(_match.State, _physics.ObjectBallsOnTable());
-        return aim?.Ball is { } aimed && legal.Contains(aimed) ? aimed : Nearest(_physics.CueBallPosition with { Z = 0 }, legal);
+        var cue = _physics.CueBallPosition with { Z = 0 };
+        if (!_match.NeedsCall)
+        {
+            return aim?.Ball is { } any && legal.Contains(any) ? any : Nearest(cue, legal);
+        }
+        if (aim?.Ball is { } aimed && legal.Contains(aimed) && (IsOpen(aimed, aim.Pocket) || OpenPocket(aimed) is not null))
+        {
+            return aimed;
+        }
+        // An open pot first: the nearest legal ball that some pocket takes with no ball in the way.
+        var open = legal.Where(b => OpenPocket(b) is not null).ToList();
+        return Nearest(cue, open) ?? (aim?.Ball is { } a && legal.Contains(a) ? a : Nearest(cue, legal));
     }
 
     private BallId? Nearest(Vec3 from, IReadOnlyList<BallId> among)

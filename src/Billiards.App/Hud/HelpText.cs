@@ -34,7 +34,7 @@ public static class HelpText
         "  S            shot: hold the left button, pull the mouse back, push it forward",
         "               past the start to strike; the push's speed is the shot's (meter below)",
         "  E            spin: left-drag moves the tip on the cue ball",
-        "  M            move the cue ball: left-drag (the camera follows); after a scratch",
+        "  M            move the cue ball: left-drag (Shift: fine), arrows nudge it; after a scratch",
         "               the cue ball is in hand anywhere on the table",
         "  While balls roll only view mode works; the camera looks down on the table.",
         "  T            overhead view / back to the cue ball",

@@ -175,7 +175,7 @@ public sealed partial class MenuNode
     }
 
     // The settings take effect on leaving their screen: the file keeps them, the game behind the menu
-    // takes the pace, take-backs and sound at once; the physics makes the next game started.
+    // takes the pace, take-backs, sound and graphics at once; the physics makes the next game started.
     private void ApplySettings()
     {
         SettingsChosen?.Invoke(StartSettings);
@@ -191,7 +191,7 @@ public sealed partial class MenuNode
         {
             audio.Output.Muted = StartSettings.Muted;
         }
-        PlayedSettings = PlayedSettings with { FastComputer = StartSettings.FastComputer, TakeBacks = StartSettings.TakeBacks, Muted = StartSettings.Muted };
+        PlayedSettings = PlayedSettings with { FastComputer = StartSettings.FastComputer, TakeBacks = StartSettings.TakeBacks, Muted = StartSettings.Muted, Graphics = StartSettings.Graphics };
     }
 
     private static T Cycle<T>(IReadOnlyList<T> all, T current) where T : class
@@ -331,6 +331,7 @@ public sealed partial class MenuNode
                     ($"Computer's pace: {(s.FastComputer ? "fast" : "watchable")}", () => StartSettings = StartSettings with { FastComputer = !StartSettings.FastComputer }),
                     ($"Take-backs: {(s.TakeBacks ? "allowed (Z)" : "off")}", () => StartSettings = StartSettings with { TakeBacks = !StartSettings.TakeBacks }),
                     ($"Sound: {(s.Muted ? "muted" : "on")}", () => StartSettings = StartSettings with { Muted = !StartSettings.Muted }),
+                    ($"Graphics: {GraphicsWords.Words(s.Graphics)}", () => StartSettings = StartSettings with { Graphics = (GraphicsQuality)(((int)StartSettings.Graphics + 1) % 3) }),
                 };
                 foreach (var (label, act) in items)
                 {

@@ -126,7 +126,14 @@ internal sealed class HudLayer : IDisposable
                 y0 = MathF.Min(y0, quads[v + 1]);
                 y1 = MathF.Max(y1, quads[v + 1]);
             }
-            bool opaque = quads[q + 8] == 0 && quads[q + 7] >= 1;
+            // Copied whole only where an opaque quad stands square on the screen: a tilted one (a
+            // line: the cue in the elevation diagram) does not cover the squares of its bounding box.
+            bool square = true;
+            for (int v = q; v < q + quadFloats; v += floatsPerVertex)
+            {
+                square &= (quads[v] == x0 || quads[v] == x1) && (quads[v + 1] == y0 || quads[v + 1] == y1);
+            }
+            bool opaque = square && quads[q + 8] == 0 && quads[q + 7] >= 1;
             // One pixel more on each side for antialiased edges.
             int c0 = Math.Max(0, (int)MathF.Floor((x0 - 1) / Tile)), c1 = Math.Min(_columns - 1, (int)MathF.Floor((x1 + 1) / Tile));
             int r0 = Math.Max(0, (int)MathF.Floor((y0 - 1) / Tile)), r1 = Math.Min(_rows - 1, (int)MathF.Floor((y1 + 1) / Tile));

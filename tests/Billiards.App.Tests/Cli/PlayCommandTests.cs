@@ -115,14 +115,40 @@ public class StartMenuTests
         }
     }
 
-    private static List<Billiards.App.Rendering.HudInfo> Run(TempSettings settings, Func<Billiards.Core.Scenes.Scene, Billiards.Core.Physics.Simulation> create, params string[] clicks)
+    private static List<Billiards.App.Rendering.HudInfo> Run(TempSettings settings, Func<Billiards.Core.Scenes.Scene, Billiards.Core.Physics.Simulation> create, params string[] clicks) =>
+        Run(settings, create, _ => { }, clicks);
+
+    private static List<Billiards.App.Rendering.HudInfo> Run(TempSettings settings, Func<Billiards.Core.Scenes.Scene, Billiards.Core.Physics.Simulation> create, Action<GraphicsQuality> graphics, params string[] clicks)
     {
         var clock = new ManualClock();
         var window = new FakeWindow { FramebufferSize = (1280, 720) };
         var renderer = new RecordingRenderer();
         var loop = new ClickingLoop(clock, window, renderer, clicks);
-        Assert.Equal(0, PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer), create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true, SettingsPath = settings.Path }));
+        Assert.Equal(0, PlayCommand.Play(null, _ => new GamePlatform(window, loop, renderer) { SetGraphics = graphics }, create, clock, new PlayCommand.PlayOptions(null, null) { StartMenu = true, SettingsPath = settings.Path }));
         return [.. renderer.Frames.Select(f => f.Hud!)];
+    }
+
+    [Fact]
+    public void TheGraphicsAreChosenInTheSettingsAppliedToTheRendererAtOnceAndRemembered()
+    {
+        using var settings = new TempSettings();
+        var applied = new List<GraphicsQuality>();
+        // Automatic at first; a click makes it always sharp, a second fast; Back applies and saves it.
+        var first = Run(settings, TestScenes.Create, applied.Add, "Settings", "Graphics", "Graphics", "Back");
+        Assert.Contains(first[1].Buttons!, b => b.Label == "Graphics: automatic");
+        Assert.Contains(first[2].Buttons!, b => b.Label == "Graphics: always sharp");
+        Assert.Contains(first[3].Buttons!, b => b.Label.StartsWith("Graphics: fast", StringComparison.Ordinal));
+        Assert.Equal([GraphicsQuality.Auto, GraphicsQuality.Fast], applied);
+        Assert.Contains("\"graphics\": \"fast\"", File.ReadAllText(settings.Path), StringComparison.Ordinal);
+        Assert.Equal(GameSettings.Default with { Graphics = GraphicsQuality.Fast }, GameSettings.Load(settings.Path));
+        // The next run starts with it on the renderer and on the screen.
+        applied.Clear();
+        var second = Run(settings, TestScenes.Create, applied.Add, "Settings");
+        Assert.Equal(GraphicsQuality.Fast, applied[0]);
+        Assert.Contains(second[1].Buttons!, b => b.Label.StartsWith("Graphics: fast", StringComparison.Ordinal));
+        Assert.True(GraphicsWords.ReducesWhileMoving(GraphicsQuality.Fast, softwareRenderer: false));
+        Assert.False(GraphicsWords.ReducesWhileMoving(GraphicsQuality.Sharp, softwareRenderer: true));
+        Assert.Equal(GraphicsWords.ReducesWhileMoving(GraphicsQuality.Auto, softwareRenderer: true), !GraphicsWords.ReducesWhileMoving(GraphicsQuality.Auto, softwareRenderer: false));
     }
 
     private static bool Chosen(Billiards.App.Rendering.HudInfo hud, string label) => hud.Buttons!.Any(b => b.Label == label && b.Chosen);

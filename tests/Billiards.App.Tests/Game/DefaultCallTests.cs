@@ -1,3 +1,4 @@
+using System.Numerics;
 using Billiards.App.Game;
 using Billiards.Core.Balls;
 using Billiards.Core.Rules;
@@ -47,6 +48,59 @@ public class DefaultCallTests
         using var _ = game;
         match.AimAt(0);
         Assert.Equal(new BallId(14), match.CurrentCall!.Ball);
+    }
+
+    // An open table: the 3 lies nearest the cue ball but straight behind the 8, which blocks every
+    // line from the cue ball to a ghost ball of the 3; the 5 off to the side is open.
+    private const string Blocked = """
+        { "format": "billiards-scene/1", "table": { "preset": "pool-9ft" }, "physics": { "dt": 0.00390625 },
+          "balls": [ { "id": "cue", "position": [-0.8, 0.0] }, { "id": "8", "position": [-0.4, 0.0] },
+                     { "id": "3", "position": [0.0, 0.0] }, { "id": "5", "position": [0.3, 0.5] } ] }
+        """;
+
+    [Fact]
+    public void TheDefaultCallIsAPotNoBallBlocks()
+    {
+        var scene = SceneLoader.Parse(Blocked, "t.json") with
+        {
+            Game = new GameState(GameRules.EightBall) { Shot = 5, Shooter = 0, Players = new PerPlayer<string>("Anna", "Ben") },
+        };
+        using var game = new TestGame(scene, new MatchSetup(GameRules.EightBall, [new Seat("Anna"), new Seat("Ben")]));
+        var match = game.World.Tree.Root.GetInTree<MatchNode>();
+        game.Frame();
+        foreach (double aim in new[] { 0.0, 24.4 }) // at the 8 (illegal first on an open table), then at the 5
+        {
+            match.AimAt(aim);
+            var call = match.CurrentCall!;
+            Assert.Equal(new BallId(5), call.Ball);
+            // Independently of the call: no ball within two radii of the 5's line to the pocket or of the cue ball's line to the ghost ball.
+            var table = scene.Table;
+            double r = scene.BallRadius;
+            var balls = scene.Balls.ToDictionary(b => b.Id, b => new Vector2((float)b.Position.X, (float)b.Position.Y));
+            var mouth = table.Pockets[call.Pocket.Index].MouthMiddle(table);
+            var pocket = new Vector2((float)mouth.X, (float)mouth.Y);
+            var five = balls[new BallId(5)];
+            var ghost = five - ((float)(2 * r) * Vector2.Normalize(pocket - five));
+            foreach (var (id, at) in balls)
+            {
+                if (id == new BallId(5))
+                {
+                    continue;
+                }
+                Assert.True(Distance(at, five, pocket) >= 2 * r - 1e-3, $"aim {aim}: the {id.Value} blocks the 5's line to pocket {call.Pocket.Index}");
+                if (id != scene.CueBall)
+                {
+                    Assert.True(Distance(at, balls[scene.CueBall], ghost) >= 2 * r - 1e-3, $"aim {aim}: the {id.Value} blocks the cue ball's line to the ghost ball");
+                }
+            }
+        }
+    }
+
+    private static double Distance(Vector2 p, Vector2 a, Vector2 b)
+    {
+        var ab = b - a;
+        float t = Math.Clamp(Vector2.Dot(p - a, ab) / ab.LengthSquared(), 0, 1);
+        return (p - (a + (t * ab))).Length();
     }
 }
 

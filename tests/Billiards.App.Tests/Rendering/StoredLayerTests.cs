@@ -90,6 +90,33 @@ public sealed class StoredLayerTests : IDisposable
         Assert.InRange(MaxDifference(fresh, stored), 0, 1);
     }
 
+    [Theory]
+    [InlineData(5)]
+    [InlineData(12)]
+    [InlineData(32)]
+    [InlineData(57)]
+    public void TheElevationDiagramFromTheStoredHudMatchesItDrawnAfresh(float elevation)
+    {
+        // The cue's line in the diagram is a tilted quad: above about 10 deg its bounding box held
+        // whole squares it does not cover, and those were copied from the stored layer as black.
+        var at = new Vector3(0.3f, -0.3f, R);
+        RenderFrame WithGauges()
+        {
+            // At 720 lines the HUD's scale is 2: the diagram's quarter circle is 88 px across.
+            var frame = Frame(at);
+            frame.Width = 1280;
+            frame.Height = 720;
+            frame.Hud = frame.Hud! with { ShowHelp = false, Gauges = new Billiards.App.Hud.CueGauges(Vector2.Zero, elevation, 0.5f) };
+            return frame;
+        }
+        byte[] fresh = _renderer.Render(WithGauges());
+        _renderer.Render(WithGauges());
+        long hud = _renderer.Renderer.HudReused;
+        byte[] stored = _renderer.Render(WithGauges());
+        Assert.True(_renderer.Renderer.HudReused > hud, "the third still frame did not come from the stored HUD");
+        Assert.InRange(MaxDifference(fresh, stored), 0, 1);
+    }
+
     [Fact]
     public void TheHudStaysStoredWhileTheAimLineFollowsAMovingView()
     {

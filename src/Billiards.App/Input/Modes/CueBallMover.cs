@@ -1,4 +1,6 @@
+using System.Numerics;
 using Billiards.App.Camera;
+using Billiards.App.Rendering;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Table;
 
@@ -28,6 +30,33 @@ public static class CueBallMover
         var s = ViewMath.BedRight(f);
         var p = ball + (-dy * f + dx * s) * SeedControls.MoveMetresPerPixel;
         return ClampToBed(p, table, radius);
+    }
+
+    /// <summary>
+    /// The drag in a view drawn: the ball moves as the bed under the pointer does, i.e. by the
+    /// bed's points under the ball's pixel and under that pixel moved by (dx, dy), so that in any
+    /// view (behind the ball or from above) it follows the pointer at the bed's own scale there
+    /// (a few millimetres a pixel behind the ball rather than the seed's centimetre); clamped to the
+    /// bed. Null when the ball or the moved pixel has no point of the bed in the view (above the horizon).
+    /// </summary>
+    /// <param name="ball">The ball's centre (m).</param>
+    /// <param name="viewProjection">The view-projection the player sees.</param>
+    /// <param name="width">Framebuffer width (pixels).</param>
+    /// <param name="height">Framebuffer height (pixels).</param>
+    /// <param name="dx">Pointer movement to the right (pixels).</param>
+    /// <param name="dy">Pointer movement down (pixels).</param>
+    /// <param name="table">The table, for the clamp.</param>
+    /// <param name="radius">Ball radius (m).</param>
+    public static Vec3? MoveOnBed(Vec3 ball, Matrix4x4 viewProjection, int width, int height, double dx, double dy, TableSpec table, double radius)
+    {
+        if (RenderMath.ToPixel(viewProjection, ball.ToVector3(), width, height) is not { } at
+            || RenderMath.ToPlane(viewProjection, at, width, height, (float)ball.Z) is not { } from
+            || RenderMath.ToPlane(viewProjection, at + new Vector2((float)dx, (float)dy), width, height, (float)ball.Z) is not { } to)
+        {
+            return null;
+        }
+        var shift = to - from;
+        return ClampToBed(ball + new Vec3(shift.X, shift.Y, 0), table, radius);
     }
 
     /// <summary>Clamps a centre into the bed (m): |x| ≤ L/2 - R, |y| ≤ W/2 - R.</summary>

@@ -101,15 +101,21 @@ public sealed class InputModeNode : Node
 
     private bool Handle(InputEvent e) => e switch
     {
-        KeyInput { Pressed: true } key => OnKey(key.Key),
+        KeyInput { Pressed: true } key => OnKey(key),
         MouseButtonInput button => OnButton(button),
         MouseMoveInput move => OnMove(move),
         ScrollInput scroll => OnScroll(scroll.Amount),
         _ => false,
     };
 
-    private bool OnKey(Key key)
+    private bool OnKey(KeyInput input)
     {
+        var key = input.Key;
+        if (Mode == InputMode.Move && !IsLocked && key is Key.Up or Key.Down or Key.Left or Key.Right)
+        {
+            NudgeCueBall(key, input.Shift ? SeedControls.FineKeyMoveMetres : SeedControls.KeyMoveMetres);
+            return true;
+        }
         switch (key)
         {
             case Key.V:
@@ -192,6 +198,9 @@ public sealed class InputModeNode : Node
             case InputMode.Spin when !IsLocked:
                 _cue!.Tip.Move(dx, dy);
                 break;
+            case InputMode.Move when !IsLocked && e.Shift:
+                MoveCueBall(dx * SeedControls.FineMoveFactor, dy * SeedControls.FineMoveFactor);
+                break;
             case InputMode.Move when !IsLocked:
                 MoveCueBall(dx, dy);
                 break;
@@ -240,18 +249,61 @@ public sealed class InputModeNode : Node
             return;
         }
         var old = _physics.CueBallPosition;
-        // From above, the ball follows the pointer on the screen (the table's length across it, +y
-        // up); behind the ball, along the cue's aim, the camera's azimuth: exact whatever the eye's
-        // height (a scripted drag places the ball bit for bit).
-        var moved = _camera.Overhead
-            ? CueBallMover.ClampToBed(old + (new Billiards.Core.Mathematics.Vec3(dx, -dy, 0) * _camera.OverheadMetresPerPixel), _physics.Table, _physics.BallRadius)
+        // In the view drawn the ball follows the pointer on the bed (behind the ball or from above);
+        // before any frame, Formel 34 along the cue's aim (or the camera's azimuth): exact whatever
+        // the eye's height.
+        Billiards.Core.Mathematics.Vec3? moved = _camera.CurrentView() is { } view
+            ? CueBallMover.MoveOnBed(old, view.ViewProjection, view.Width, view.Height, dx, dy, _physics.Table, _physics.BallRadius)
             : _cue is null
             ? CueBallMover.Move(old, _camera.Camera.Eye, dx, dy, _physics.Table, _physics.BallRadius)
             : CueBallMover.MoveAlong(old, _cue.AimDirection, dx, dy, _physics.Table, _physics.BallRadius);
-        if (_physics.TryPlaceCueBall(moved))
+        PlaceCueBall(old, moved);
+    }
+
+    // An arrow key in move mode: the ball a fixed distance along the screen's up, down, left or right on the bed.
+    private void NudgeCueBall(Key key, double metres)
+    {
+        if (_physics is null || _camera is null)
         {
-            // Formel 35: camera = p + c with c = camera_old - ball_old, i.e. it moves with the ball.
-            _camera.Camera.Translate(moved - old);
+            return;
+        }
+        var old = _physics.CueBallPosition;
+        var (px, py) = key switch
+        {
+            Key.Up => (0.0, -1.0),
+            Key.Down => (0.0, 1.0),
+            Key.Left => (-1.0, 0.0),
+            _ => (1.0, 0.0),
+        };
+        var onBed = _camera.CurrentView() is { } view
+            ? CueBallMover.MoveOnBed(old, view.ViewProjection, view.Width, view.Height, px, py, _physics.Table, _physics.BallRadius)
+            : CueBallMover.Move(old, _camera.Camera.Eye, px, py, _physics.Table, _physics.BallRadius);
+        if (onBed is not { } towards || (towards - old).LengthXY < 1e-12)
+        {
+            return;
+        }
+        var step = towards - old;
+        PlaceCueBall(old, CueBallMover.ClampToBed(old + (step * (metres / step.LengthXY)), _physics.Table, _physics.BallRadius));
+    }
+
+    // The ball where the drag or key puts it, else slid along the edge it meets: one of the move's
+    // two components alone (along the head string at the break, where the ball starts on it and a
+    // sideways drag a hair across it was refused whole).
+    private void PlaceCueBall(Billiards.Core.Mathematics.Vec3 old, Billiards.Core.Mathematics.Vec3? moved)
+    {
+        if (moved is not { } p)
+        {
+            return;
+        }
+        foreach (var at in new[] { p, p with { X = old.X }, p with { Y = old.Y } })
+        {
+            // A component of less than a micrometre is the other's rounding, not a move.
+            if ((at == p || (at - old).LengthXY > 1e-6) && _physics!.TryPlaceCueBall(at))
+            {
+                // Formel 35: camera = p + c with c = camera_old - ball_old, i.e. it moves with the ball.
+                _camera!.Camera.Translate(at - old);
+                return;
+            }
         }
     }
 

@@ -32,6 +32,15 @@ public static class SeedControls
     /// </summary>
     public const double MoveMetresPerPixel = 0.01;
 
+    /// <summary>The share of a drag of the cue ball (ball in hand, move mode) that moves it with Shift held: fine placement, an addition to the seed.</summary>
+    public const double FineMoveFactor = 0.1;
+
+    /// <summary>How far an arrow key moves the cue ball in move mode (m), along the screen's up and right on the bed; an addition to the seed.</summary>
+    public const double KeyMoveMetres = 0.005;
+
+    /// <summary>As <see cref="KeyMoveMetres"/> with Shift held (m): a half-millimetre nudge.</summary>
+    public const double FineKeyMoveMetres = 0.0005;
+
     /// <summary>The share of the orbit (Listing 5) a mouse drag with Shift held turns: fine aim, an addition to the seed.</summary>
     public const double FineOrbitFactor = 0.1;
 

@@ -202,6 +202,18 @@ public class InputModeNodeTests
         Assert.Equal(ball.Y - 0.2, cue.Position.Y, 9);
     }
 
+    // Move mode (M), the pointer on the cue ball's pixel in the frame drawn, the button down.
+    private static (Billiards.Core.Mathematics.Vec3 Ball, System.Numerics.Matrix4x4 ViewProjection, System.Numerics.Vector2 Pixel) PressOnTheCueBallInMoveMode(TestGame game, RenderFrame frame)
+    {
+        game.Window.Press(Key.M);
+        var ball = game.World.Physics.CueBallPosition;
+        var vp = RenderMath.ViewProjection(frame);
+        var start = RenderMath.ToPixel(vp, ball.ToVector3(), frame.Width, frame.Height)!.Value;
+        game.Window.MoveTo(start.X, start.Y);
+        game.Window.Down();
+        return (ball, vp, start);
+    }
+
     [Fact]
     public void FromAboveTheCueBallFollowsThePointerOnTheScreenNotTheCue()
     {
@@ -211,12 +223,7 @@ public class InputModeNodeTests
         game.Window.Press(Billiards.App.Camera.CameraNode.OverheadKey);
         var frame = game.Frame();
         Assert.True(cameraNode.Overhead);
-        game.Window.Press(Key.M);
-        var before = game.World.Physics.CueBallPosition;
-        var vp = RenderMath.ViewProjection(frame);
-        var start = RenderMath.ToPixel(vp, before.ToVector3(), frame.Width, frame.Height)!.Value;
-        game.Window.MoveTo(start.X, start.Y);
-        game.Window.Down();
+        var (before, _, start) = PressOnTheCueBallInMoveMode(game, frame);
         game.Window.MoveTo(start.X + 120, start.Y - 60);   // right and up on the screen
         game.Window.Up();
         var after = game.World.Physics.CueBallPosition;
@@ -225,6 +232,64 @@ public class InputModeNodeTests
         var end = RenderMath.ToPixel(RenderMath.ViewProjection(game.Frame()), after.ToVector3(), frame.Width, frame.Height)!.Value;
         Assert.InRange(end.X - (start.X + 120), -1.5, 1.5);
         Assert.InRange(end.Y - (start.Y - 60), -1.5, 1.5);
+    }
+
+    [Fact]
+    public void BehindTheBallTheCueBallFollowsThePointerOnTheBedFinelyWithShiftAndTheArrows()
+    {
+        // The seed's centimetre a pixel put the ball 1 m away for a 100 px drag: too coarse to place it.
+        using var game = new TestGame();
+        var frame = game.Frame();
+        var (before, vp, start) = PressOnTheCueBallInMoveMode(game, frame);
+        game.Window.MoveTo(start.X + 30, start.Y - 40);     // right and up on the screen
+        var after = game.World.Physics.CueBallPosition;
+        // In the view the drag began in, the ball lies under the pointer (within half a pixel).
+        var seen = RenderMath.ToPixel(vp, after.ToVector3(), frame.Width, frame.Height)!.Value;
+        Assert.InRange(seen.X - (start.X + 30), -0.5, 0.5);
+        Assert.InRange(seen.Y - (start.Y - 40), -0.5, 0.5);
+        // Away from the camera (+x here) and to its right (-y); a few millimetres a pixel, not the seed's centimetre.
+        Assert.True(after.X > before.X && after.Y < before.Y);
+        double coarse = (after - before).LengthXY;
+        Assert.InRange(coarse, 0.02, 0.25);
+
+        // Shift: a tenth as far for the same drag.
+        var mid = after;
+        game.Window.Hold(Key.Shift);
+        game.Window.MoveTo(start.X + 60, start.Y - 80);
+        game.Window.Release(Key.Shift);
+        game.Window.Up();
+        var fine = game.World.Physics.CueBallPosition;
+        Assert.InRange((fine - mid).LengthXY / coarse, 0.07, 0.13);
+
+        // The arrows: 5 mm a press away from the camera, 0.5 mm with Shift, and to the screen's left.
+        game.Window.Press(Key.Up);
+        Assert.Equal(fine.X + SeedControls.KeyMoveMetres, game.World.Physics.CueBallPosition.X, 9);
+        Assert.Equal(fine.Y, game.World.Physics.CueBallPosition.Y, 9);
+        game.Window.Hold(Key.Shift);
+        game.Window.Press(Key.Left);
+        game.Window.Release(Key.Shift);
+        Assert.Equal(fine.Y + SeedControls.FineKeyMoveMetres, game.World.Physics.CueBallPosition.Y, 9);
+        Assert.Equal(0, Cue(game).ElevationDegrees);   // the arrows moved the ball, not the cue
+    }
+
+    [Fact]
+    public void AtTheBreakTheBallInHandSlidesAlongTheHeadStringWhenDraggedAcrossTheTable()
+    {
+        // The break's ball in hand starts on the head string: a sideways drag whose bed points put
+        // it a hair beyond the line was refused whole, and the ball did not move at all.
+        var scene = Billiards.Core.Scenes.SceneLoader.Load(Billiards.App.Cli.PlayCommand.FindRulesScene(Billiards.Core.Rules.GameRules.EightBall));
+        using var game = new TestGame(scene, new MatchSetup(Billiards.Core.Rules.GameRules.EightBall, [new Billiards.Core.Rules.Seat("Anna"), new Billiards.Core.Rules.Seat("Ben")]));
+        game.Frame();
+        var frame = game.Frame();
+        var (before, _, start) = PressOnTheCueBallInMoveMode(game, frame);
+        for (int i = 1; i <= 6; i++)
+        {
+            game.Window.MoveTo(start.X + (10 * i), start.Y - (0.5f * i));   // right, a little up: across the line
+        }
+        game.Window.Up();
+        var after = game.World.Physics.CueBallPosition;
+        Assert.True(before.Y - after.Y > 0.02, $"the ball moved {(before.Y - after.Y) * 100:0.0} cm to the right");
+        Assert.True(after.X <= before.X, "the ball stays in the kitchen");
     }
 
     [Fact]
