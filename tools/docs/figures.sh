@@ -35,6 +35,8 @@ if [ "${1:-}" = window ]; then
   python3 tools/docs/cut-script.py $game G 5 10 "$tmp/aim.json"
   shot docs/hud-aiming.png "$tmp/aim.json" --rules eight-ball --players Anna,cpu:3
   shot docs/result-panel.png $game --rules eight-ball --players Anna,cpu:3
+  shot docs/three-cushion-aid.png assets/scripts/diamond-aid.json --drill corner-five
+  shot docs/three-cushion-result.png assets/scripts/three-cushion-game.json assets/scenes/three-cushion-race.json --rules three-cushion --players Anna,computer:4
   python3 tools/docs/cut-script.py assets/scripts/instant-replay.json Space 2 6 "$tmp/replay.json" before
   shot docs/instant-replay.png "$tmp/replay.json" --players Anna,Ben
 fi

@@ -25,7 +25,11 @@ using Billiards.Core.Scenes;
 // degrees on Left/Right and the rest by a drag of the view, W/Q for the power, Space; after a
 // foul the option the planner would choose is clicked on its button. --seed picks the planner's
 // seeds (the frame shipped is seed 4: it ends on the black potted, with an in-off along the way).
+// With --three-cushion it makes a whole three-cushion game against the computer (level 4), a race to
+// 3 on assets/scenes/three-cushion-race.json (assets/scripts/three-cushion-game.json): on each of
+// Anna's turns a hint (G), waited for, then Space.
 // Usage: dotnet run --project tools/game-script -c Release -- [--snooker] [--seed N] OUT.json | [--snooker] --check SCRIPT.json
+// or --three-cushion OUT.json
 internal static class Program
 {
     private const double Speed = 16;
@@ -33,8 +37,12 @@ internal static class Program
     // The snooker frame plays at the script's top speed, its keys a hundredth of a second apart: a
     // long frame in a short time.
     private const double SnookerSpeed = 64, EventGap = 0.01;
+
+    // The three-cushion game's computer (--three-cushion): Anna plays its hints against it.
+    private const int CaromComputerLevel = 4;
     private static Scene s_scene = SceneLoader.Load(Path.Combine(AssetFolder.Assets, "scenes", "eight-ball.json"));
     private static GameRules s_rules = GameRules.EightBall;
+    private static Seat[] s_seats = [new Seat("Anna"), new Seat("Ben")];
 
     private static int Main(string[] args)
     {
@@ -43,6 +51,18 @@ internal static class Program
             s_scene = SceneLoader.Load(Path.Combine(AssetFolder.Assets, "scenes", "snooker.json"));
             s_rules = GameRules.Snooker;
             args = args[1..];
+        }
+        if (args.Length > 0 && args[0] == "--three-cushion")
+        {
+            s_scene = SceneLoader.Load(Path.Combine(AssetFolder.Assets, "scenes", "three-cushion-race.json"));
+            s_rules = "three-cushion";
+            s_seats = [new Seat("Anna"), Seat.Parse($"computer:{CaromComputerLevel}", 1)!];
+            args = args[1..];
+            if (args.Length == 1)
+            {
+                File.WriteAllText(args[0], ToJson(CaromGame(200), SnookerSpeed, 4));
+                return 0;
+            }
         }
         ulong seed = 4;
         if (args.Length > 2 && args[0] == "--seed" && ulong.TryParse(args[1], out ulong chosen))
@@ -236,6 +256,42 @@ internal static class Program
         return live.Events;
     }
 
+    // The three-cushion game against the computer (see the file's head): on each of Anna's turns
+    // a hint (G), waited for, then Space; waiting for rest waits for the computer's whole inning.
+    private static List<ScriptEvent> CaromGame(int maxTurns)
+    {
+        var live = new LiveGame();
+        live.CatchUp();
+        int turns = 0, seen = 0;
+        while (!live.Match.IsOver && turns < maxTurns)
+        {
+            live.Pause(0.3);
+            live.Press(ComputerPlayerNode.HintKey);
+            live.Add(new ScriptEvent(0, ScriptAction.WaitRest));
+            live.CatchUp();
+            if (live.Match.PendingOptions.Count > 0)
+            {
+                throw new InvalidOperationException($"turn {turns}: an option to choose ({live.Match.Message})");
+            }
+            live.Pause(0.5);
+            live.Press(Key.Space);
+            live.Add(new ScriptEvent(0, ScriptAction.WaitRest));
+            live.CatchUp();
+            turns++;
+            var played = live.Match.Game.Shots;
+            for (; seen < played.Count; seen++)
+            {
+                var r = played[seen].Ruling;
+                Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"shot {seen} ({played[seen].Before.ShooterName}): {r.Message}"));
+            }
+        }
+        if (!live.Match.IsOver)
+        {
+            throw new InvalidOperationException($"the game did not end in {maxTurns} turns");
+        }
+        return live.Events;
+    }
+
     // Ball in hand: move mode (M), a drag that carries the cue ball to the place (the ball follows
     // the pointer on the bed: the drag is the place's pixel less the ball's in the view drawn), back
     // to the view (V). Not only in the D: with ball in hand the aim keys and the drag do the same anywhere.
@@ -318,8 +374,13 @@ internal static class Program
             Events = events ?? [];
             var scriptClock = new ScriptClock(_clock);
             _scripted = new ScriptedInput(new NoWindow(), new InputScript(Events, duration, speed), scriptClock);
-            var match = new MatchSetup(s_rules, [new Seat("Anna"), new Seat("Ben")]);
+            var match = new MatchSetup(s_rules, s_seats);
             Host = new GameHost(s_scene, SimulationFactory.Create, _scripted, scriptClock, match) { TimeScale = speed };
+            if (Host.Tree.Root.FindInTree<ComputerPlayerNode>() is { } computer)
+            {
+                // As play --script sets it: no search cut short by the clock.
+                computer.BudgetMs = 120_000;
+            }
             _scripted.IsAtRest = () => Host.IsSettled;
             bool warm = false;
             Host.FrameStarting += now =>

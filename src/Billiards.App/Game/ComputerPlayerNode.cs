@@ -76,7 +76,9 @@ public sealed class ComputerPlayerNode : Node
         string what = hint.Call is { IsSafety: false } call ? Hud.BallWords.Pot(call.Ball, call.Pocket)
             : hint.Call is { IsSafety: true } ? "a safety"
             : $"{hint.Kind.ToString().ToLowerInvariant()} on the {Hud.BallWords.Of(hint.Target)}";
-        string rate = ShotKinds.IsPot(hint.Kind, hint.Pocket) ? string.Create(c, $" (pots {hint.ExpectedPot * 100:0} % of the time)") : "";
+        // A carom with no pocket is a three-cushion point: it scores, it does not pot.
+        string verb = hint.Kind == ShotKind.Carom && hint.Pocket == Billiards.Core.Table.PocketId.None ? "scores" : "pots";
+        string rate = ShotKinds.IsPot(hint.Kind, hint.Pocket) ? string.Create(c, $" ({verb} {hint.ExpectedPot * 100:0} % of the time)") : "";
         return string.Create(c, $"Hint: {what} at {hint.Shot.Speed:0.0} m/s{rate}; Space shoots.");
     }
 

@@ -46,6 +46,7 @@ public static class GameSceneBuilder
         {
             root.AddChild(new CueNode());
             root.AddChild(new AimLineNode());
+            root.AddChild(new DiamondAidNode());
         }
         var modes = root.AddChild(new InputModeNode());
         if (match is not null && scene.Balls.Any(b => b.Id == scene.CueBall))

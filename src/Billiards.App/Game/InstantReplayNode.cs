@@ -354,6 +354,34 @@ public sealed class InstantReplayNode : Node, IShowsShot
         return shapes;
     }
 
+    /// <summary>
+    /// The tracking lines' cushion count on the carom table, for <paramref name="frame"/>'s camera
+    /// (pixels): "1", "2", "3"... beside each cushion contact of the struck ball, in order, up to the
+    /// replay's time while it is shown; none when the lines are off, balls roll, or off the carom table.
+    /// </summary>
+    public IReadOnlyList<HudLabel> Labels(RenderFrame frame)
+    {
+        ArgumentNullException.ThrowIfNull(frame);
+        if (!ShowTracks || _physics is not { IsRolling: false } physics || physics.Table.Preset != Core.Table.CaromTable.Preset
+            || (IsActive ? _replay : Build(wait: false)) is not { StrikeEvent: { } strike } r)
+        {
+            return [];
+        }
+        double until = IsActive ? r.Time : r.Duration;
+        var vp = RenderMath.ViewProjection(frame);
+        var labels = new List<HudLabel>();
+        int count = 0;
+        foreach (var mark in r.Marks.Where(m => m.Kind == EventKind.BallCushion && m.Ball == strike.A).OrderBy(m => m.Time))
+        {
+            count++;
+            if (mark.Time <= until && RenderMath.ToPixel(vp, new Vector3((float)mark.Position.X, (float)mark.Position.Y, ClothLift), frame.Width, frame.Height) is { } at)
+            {
+                labels.Add(new HudLabel(at.X + 6, at.Y - 20, count.ToString(CultureInfo.InvariantCulture), Gold: true));
+            }
+        }
+        return labels;
+    }
+
     private static readonly Vector4 BallMarkColour = new(1, 1, 1, 0.95f);
     private static readonly Vector4 CushionMarkColour = new(0.3f, 0.9f, 1f, 0.9f);
 

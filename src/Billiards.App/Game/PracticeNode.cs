@@ -258,7 +258,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         {
             return;
         }
-        var shot = DrillShot.Of(_physics.Simulation, _before?.Balls.Select(b => b.Id) ?? []);
+        var shot = DrillShot.Of(_physics.Simulation, _before?.Balls.Select(b => b.Id) ?? [], _physics.CueBall);
         if (attempt.Judge(shot) is { } outcome)
         {
             Record = setup.Records?.Record(attempt.Drill.Name, outcome, Console.Error) ?? (Record ?? DrillRecord.None).With(outcome);
@@ -608,6 +608,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
             {
                 lines.Add(a.Outcome is { } o
                     ? $"{(o.Success ? "SUCCESS" : "FAILED")}: {o.Reason} Enter: again, Backspace: retry the shot"
+                    : d.Carom ? CaromGoal(d)
                     : d.Sequence.Count > 1 ? $"Next: the {a.Next} ({a.Potted + 1} of {d.Sequence.Count})" : $"Pot the {a.Next}");
             }
             if (Record is { } r)
@@ -653,5 +654,12 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
             previous = pixel;
             first ??= pixel;
         }
+    }
+
+    /// <summary>A carom drill's task in a line: the point, and the balls in the pattern's order.</summary>
+    public static string CaromGoal(Drill drill)
+    {
+        ArgumentNullException.ThrowIfNull(drill);
+        return $"Score: the {drill.Sequence[0]}, then the {drill.Sequence[1]} after three cushions";
     }
 }

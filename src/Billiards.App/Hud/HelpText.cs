@@ -67,6 +67,7 @@ public static class HelpText
         "  N            one physics step while paused",
         "  F2           show / hide the developer lines (mode, raw numbers, frame rate)",
         "  F3           show / hide the collision geometry",
+        "  F4           carom: the diamond aid, the path to the 3rd cushion",
         "  + / -        sound volume up / down",
         "  U            mute / unmute the sound",
         "  H or F1      show / hide this help",

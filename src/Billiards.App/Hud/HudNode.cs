@@ -26,6 +26,7 @@ public sealed class HudNode : Node
     private ComputerPlayerNode? _computer;
     private AimLineNode? _aimLine;
     private InstantReplayNode? _instant;
+    private DiamondAidNode? _diamonds;
     private TakeBackNode? _takeBack;
     private Audio.AudioNode? _audio;
     private PracticeNode? _practice;
@@ -49,6 +50,7 @@ public sealed class HudNode : Node
         _computer = FindInTree<ComputerPlayerNode>();
         _aimLine = FindInTree<AimLineNode>();
         _instant = FindInTree<InstantReplayNode>();
+        _diamonds = FindInTree<DiamondAidNode>();
         _takeBack = FindInTree<TakeBackNode>();
         _practice = FindInTree<PracticeNode>();
         _help = HelpText.For(_match is not null, _practice is not null);
@@ -82,6 +84,7 @@ public sealed class HudNode : Node
         if (!replaying)
         {
             aids.AddRange(_aimLine?.Shapes(frame.Frame) ?? []);
+            aids.AddRange(_diamonds?.Shapes(frame.Frame) ?? []);
             if (_aimLine?.CallShapes(frame.Frame) is { } call)
             {
                 aids.AddRange(call);
@@ -112,6 +115,8 @@ public sealed class HudNode : Node
                 ? new CueGauges(cue.Tip.Fractions, GaugeDegrees(cue.EffectiveElevationDegrees), KeyboardPower())
                 : null,
             Result = _match is null ? null : ScoreboardBuilder.Result(_match),
+            // Text on the cloth: the tracking lines' cushion counts, the diamond aid's numbers.
+            Labels = [.. _instant?.Labels(frame.Frame) ?? [], .. replaying ? [] : _diamonds?.Labels(frame.Frame) ?? []],
         };
     }
 

@@ -288,9 +288,10 @@ public sealed partial class MenuNode
             }
             case MenuPage.Drills:
             {
-                // A gallery: four cards a row, each the drill's position from above, its title and its goal.
-                int columns = 4, count = DrillGallery.Count;
-                float cardW = MathF.Min(150 * u, (width - (5 * gap)) / columns);
+                // A gallery: four cards a row (more for more than 16 drills: at most four rows), each
+                // the drill's position from above, its title and its goal.
+                int count = DrillGallery.Count, columns = Math.Max(4, (count + 3) / 4);
+                float cardW = MathF.Min(150 * u, (width - ((columns + 1) * gap)) / columns);
                 float pictureH = cardW * 0.5f;
                 float cardH = pictureH + (5 * line);
                 int rows = Math.Max(1, (count + columns - 1) / columns);

@@ -34,7 +34,8 @@ public static class ModeBoards
         string status = attempt?.Outcome is { } o
             ? $"{(o.Success ? "Made it" : "Missed")}: Enter again, Backspace retries the shot"
             : attempt?.Next is { } next
-                ? drill.Sequence.Count > 1 ? string.Create(c, $"Next: the {next} ({attempt.Potted + 1} of {drill.Sequence.Count});  {power}") : $"Pot the {next};  {power}"
+                ? drill.Carom ? $"{PracticeNode.CaromGoal(drill)};  {power}"
+                : drill.Sequence.Count > 1 ? string.Create(c, $"Next: the {next} ({attempt.Potted + 1} of {drill.Sequence.Count});  {power}") : $"Pot the {next};  {power}"
                 : power;
         string message = attempt?.Outcome is { } outcome ? $"{(outcome.Success ? "Success" : "Failed")}: {outcome.Reason}" : practice.Message ?? $"Goal: {drill.Goal}";
         return new Scoreboard($"Drill: {drill.Title}", corner, [card], status, message, attempt?.Outcome is null ? [] : [$"Goal: {drill.Goal}"]);

@@ -196,6 +196,7 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
         290 => Key.F1,
         291 => Key.F2,
         292 => Key.F3,
+        293 => Key.F4,
         300 => Key.F11,
         294 => Key.F5,
         295 => Key.F6,

@@ -17,6 +17,8 @@ public enum Key
     F5, F6, F7, F9, Insert, Delete, Backspace,
     /// <summary>Either Shift key: fine aim.</summary>
     Shift,
+    /// <summary>Three-cushion's diamond aid.</summary>
+    F4,
 }
 
 /// <summary>Mouse buttons.</summary>

@@ -85,11 +85,14 @@ public sealed partial class ShotPlanner
 
         // First round: each stroke once, without error.
         var first = new Ruling[strokes.Count];
+        var firstBalls = new BallId[strokes.Count];
         Parallel.For(0, threads, new ParallelOptions { MaxDegreeOfParallelism = threads }, t =>
         {
             for (int i = t; i < strokes.Count; i += threads)
             {
                 first[i] = JudgeCarom(ref sims[t], records[t], snapshot, position, strokes[i], state, referee, out _);
+                // The decision names the ball the stroke meets first (a cushion-first stroke's too).
+                firstBalls[i] = ThreeCushionReferee.Read(records[t].Events, records[t].CueBall).FirstBall ?? BallId.None;
             }
         });
         int simulations = strokes.Count;
@@ -104,7 +107,7 @@ public sealed partial class ShotPlanner
         if (scoring.Count == 0)
         {
             int best = Fallback(strokes, first, state, position);
-            return CaromDecision(strokes[best], first[best], 0, 0, simulations, clock);
+            return CaromDecision(strokes[best], firstBalls[best], first[best], 0, 0, simulations, clock);
         }
 
         // The scoring strokes most surrounded by scoring neighbours (same speed and spin, the next aims) first.
@@ -139,11 +142,11 @@ public sealed partial class ShotPlanner
                 pick = k;
             }
         }
-        return CaromDecision(strokes[kept[pick]], first[kept[pick]], points[pick], means[pick], simulations, clock);
+        return CaromDecision(strokes[kept[pick]], firstBalls[kept[pick]], first[kept[pick]], points[pick], means[pick], simulations, clock);
     }
 
-    private static Decision CaromDecision(ShotSpec shot, Ruling expected, double chance, double score, int simulations, Stopwatch clock) =>
-        new(shot, null, null, false, ShotKind.Carom, BallId.None, global::Billiards.Core.Table.PocketId.None, chance, score, simulations, clock.Elapsed.TotalMilliseconds)
+    private static Decision CaromDecision(ShotSpec shot, BallId firstBall, Ruling expected, double chance, double score, int simulations, Stopwatch clock) =>
+        new(shot, null, null, false, ShotKind.Carom, firstBall, global::Billiards.Core.Table.PocketId.None, chance, score, simulations, clock.Elapsed.TotalMilliseconds)
         {
             ExpectedRuling = expected,
         };

@@ -47,6 +47,14 @@ public sealed record Drill(string Name, string Title, string Goal, Scene Scene, 
     /// <summary>The pocket each ball of the sequence must drop in (<see cref="PocketId.None"/>: any), index-aligned with <see cref="Sequence"/>.</summary>
     public IReadOnlyList<PocketId> Pockets { get; init; } = [];
 
+    /// <summary>
+    /// A three-cushion drill (<c>"carom": true</c>, the carom balls): the goal is a point, the
+    /// struck ball meeting both object balls with three cushions before the second
+    /// (<see cref="Rules.ThreeCushionReferee.Read"/>), no ball leaving the table; the sequence names
+    /// the two object balls in the order the pattern meets them, and one reference shot scores.
+    /// </summary>
+    public bool Carom { get; init; }
+
     /// <summary>The pocket the ball at <paramref name="index"/> of the sequence must drop in, or <see cref="PocketId.None"/> for any.</summary>
     public PocketId PocketFor(int index) => index < Pockets.Count ? Pockets[index] : PocketId.None;
 
@@ -65,7 +73,7 @@ public sealed record Drill(string Name, string Title, string Goal, Scene Scene, 
         {
             throw Bad("$", "expected an object");
         }
-        string[] allowed = ["format", "title", "goal", "scene", "sequence", "pockets", "zone", "reference"];
+        string[] allowed = ["format", "title", "goal", "scene", "sequence", "pockets", "zone", "reference", "carom"];
         foreach (var p in root.EnumerateObject())
         {
             if (!allowed.Contains(p.Name))
@@ -97,13 +105,25 @@ public sealed record Drill(string Name, string Title, string Goal, Scene Scene, 
         int i = 0;
         foreach (var item in seq.EnumerateArray())
         {
-            if (item.ValueKind != JsonValueKind.String || !scene.BallSet.TryParse(item.GetString(), out var id) || scene.BallSet.IsCueBall(id)
+            // The scene's cue ball is struck; carom's other cue ball (the yellow) is an object ball here.
+            if (item.ValueKind != JsonValueKind.String || !scene.BallSet.TryParse(item.GetString(), out var id) || id == scene.CueBall
                 || !scene.Balls.Any(b => b.Id == id) || sequence.Contains(id))
             {
                 throw Bad($"$.sequence[{i}]", "expected an object ball of the scene, once");
             }
             sequence.Add(id);
             i++;
+        }
+        bool carom = false;
+        if (root.TryGetProperty("carom", out var caromElement))
+        {
+            carom = caromElement.ValueKind == JsonValueKind.True ? true
+                : caromElement.ValueKind == JsonValueKind.False ? false
+                : throw Bad("$.carom", "expected true or false");
+            if (carom && (scene.BallSet != BallSet.Carom || sequence.Count != 2 || root.TryGetProperty("pockets", out _) || root.TryGetProperty("zone", out _)))
+            {
+                throw Bad("$.carom", "a carom drill has the carom balls, the two object balls as its sequence, and no pockets or zone");
+            }
         }
         var pockets = new List<PocketId>();
         if (root.TryGetProperty("pockets", out var ps))
@@ -139,9 +159,9 @@ public sealed record Drill(string Name, string Title, string Goal, Scene Scene, 
         var reference = new List<ShotSpec>();
         if (root.TryGetProperty("reference", out var refs))
         {
-            if (refs.ValueKind != JsonValueKind.Array || refs.GetArrayLength() != sequence.Count)
+            if (refs.ValueKind != JsonValueKind.Array || refs.GetArrayLength() != (carom ? 1 : sequence.Count))
             {
-                throw Bad("$.reference", "expected one shot per ball of the sequence");
+                throw Bad("$.reference", carom ? "expected one shot that scores the point" : "expected one shot per ball of the sequence");
             }
             int k = 0;
             foreach (var item in refs.EnumerateArray())
@@ -150,7 +170,7 @@ public sealed record Drill(string Name, string Title, string Goal, Scene Scene, 
             }
         }
         string name = System.IO.Path.GetFileNameWithoutExtension(path);
-        return new Drill(name, Text("title"), Text("goal"), scene, sequence, zone, reference) { Pockets = pockets };
+        return new Drill(name, Text("title"), Text("goal"), scene, sequence, zone, reference) { Pockets = pockets, Carom = carom };
     }
 }
 
@@ -160,8 +180,15 @@ public sealed record Drill(string Name, string Title, string Goal, Scene Scene, 
 /// <param name="CueAtRest">Where the cue ball stopped (m).</param>
 public sealed record DrillShot(IReadOnlyList<(BallId Ball, PocketId Pocket)> Potted, bool CueOnTable, Vec3 CueAtRest)
 {
-    /// <summary>How a shot left a simulation at rest: the object balls out of play now that were on the table before (<paramref name="before"/>), and the cue ball.</summary>
-    public static DrillShot Of(Physics.Simulation sim, IEnumerable<BallId> before)
+    /// <summary>What the struck ball met, read from the shot's events as three-cushion's referee reads them (a carom drill's goal).</summary>
+    public Rules.ThreeCushionReferee.Contacts Contacts { get; init; }
+
+    /// <summary>
+    /// How a shot left a simulation at rest: the object balls out of play now that were on the table
+    /// before (<paramref name="before"/>), the cue ball (<paramref name="cueBall"/>, else the set's
+    /// cue ball: carom has two) and what it met.
+    /// </summary>
+    public static DrillShot Of(Physics.Simulation sim, IEnumerable<BallId> before, BallId? cueBall = null)
     {
         ArgumentNullException.ThrowIfNull(sim);
         var onTable = before.ToHashSet();
@@ -172,7 +199,7 @@ public sealed record DrillShot(IReadOnlyList<(BallId Ball, PocketId Pocket)> Pot
         for (int i = 0; i < sim.Ids.Count; i++)
         {
             var id = sim.Ids[i];
-            if (sim.BallSet.IsCueBall(id))
+            if (cueBall is { } struck ? id == struck : sim.BallSet.IsCueBall(id))
             {
                 cueOn = !balls[i].IsOutOfPlay;
                 cueAt = balls[i].Position;
@@ -182,7 +209,8 @@ public sealed record DrillShot(IReadOnlyList<(BallId Ball, PocketId Pocket)> Pot
                 potted.Add((id, balls[i].IsPocketed ? sim.Table.Pockets.Id(balls[i].Pocket) : PocketId.None));
             }
         }
-        return new DrillShot(potted, cueOn, cueAt);
+        var cue = cueBall ?? sim.BallSet.CueBalls[0];
+        return new DrillShot(potted, cueOn, cueAt) { Contacts = Rules.ThreeCushionReferee.Read(sim.Events.AsSpan(), cue) };
     }
 }
 
@@ -224,6 +252,10 @@ public sealed class DrillAttempt(Drill drill)
         {
             return End(false, null, "The cue ball left the table.");
         }
+        if (Drill.Carom)
+        {
+            return JudgePoint(shot);
+        }
         if (!shot.Potted.Any(p => p.Ball == next))
         {
             return End(false, null, $"The {next} was not potted.");
@@ -250,6 +282,24 @@ public sealed class DrillAttempt(Drill drill)
                 : End(false, d, string.Create(CultureInfo.InvariantCulture, $"Potted, but the cue ball stopped {(d - zone.Radius) * 100:0.0} cm outside the zone."));
         }
         return End(true, null, Drill.Sequence.Count > 1 ? "Every ball potted in order." : $"The {next} went in.");
+    }
+
+    // A carom drill: one shot, a point or not (both balls count as made when it scores).
+    private DrillOutcome JudgePoint(DrillShot shot)
+    {
+        var c = shot.Contacts;
+        if (shot.Potted.Count > 0)
+        {
+            return End(false, null, $"The {shot.Potted[0].Ball} left the table.");
+        }
+        if (c.IsPoint)
+        {
+            Potted = Drill.Sequence.Count;
+            return End(true, null, string.Create(CultureInfo.InvariantCulture, $"A point: both balls, {c.Cushions} cushions before the second."));
+        }
+        return End(false, null, c.FirstBall is null ? "No point: the cue ball met neither ball."
+            : !c.BothBalls ? $"No point: the cue ball met only the {c.FirstBall}."
+            : string.Create(CultureInfo.InvariantCulture, $"No point: {c.Cushions} cushion{(c.Cushions == 1 ? "" : "s")} before the second ball."));
     }
 
     private DrillOutcome End(bool success, double? distance, string reason) =>

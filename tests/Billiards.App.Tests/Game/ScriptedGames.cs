@@ -17,9 +17,10 @@ internal static class ScriptedGames
 {
     /// <summary>
     /// Plays <paramref name="script"/> headless with frames <paramref name="frameSeconds"/> long
-    /// (the frame index to its length, s); returns the game record as written.
+    /// (the frame index to its length, s), on <paramref name="scene"/> (default: the rules' scene);
+    /// returns the game record as written.
     /// </summary>
-    public static string PlayHeadless(string script, string rules, string players, Func<int, double> frameSeconds)
+    public static string PlayHeadless(string script, string rules, string players, Func<int, double> frameSeconds, string? scene = null)
     {
         string record = Path.Combine(Path.GetTempPath(), $"record-{Guid.NewGuid():N}.json");
         try
@@ -27,7 +28,7 @@ internal static class ScriptedGames
             var clock = new ManualClock();
             var window = new FakeWindow { FramebufferSize = (1280, 720) };
             var loop = new UntilClosedLoop(clock, window, frameSeconds);
-            int code = PlayCommand.Play(null, _ => new GamePlatform(window, loop, new NullFrameRenderer()), SimulationFactory.Create, clock,
+            int code = PlayCommand.Play(scene, _ => new GamePlatform(window, loop, new NullFrameRenderer()), SimulationFactory.Create, clock,
                 new PlayCommand.PlayOptions(script, null) { Rules = rules, Players = players, Record = record });
             Assert.Equal(0, code);
             Assert.True(window.Closed, "the script never ended");
@@ -58,13 +59,13 @@ internal static class ScriptedGames
     /// Plays <paramref name="script"/> in a real window through <c>play</c>; returns the game
     /// record as written, and the HUD of every frame drawn to <paramref name="seen"/> when given.
     /// </summary>
-    public static string PlayInWindow(string script, string rules, string players, Action<RenderFrame>? seen = null, string? stats = null)
+    public static string PlayInWindow(string script, string rules, string players, Action<RenderFrame>? seen = null, string? stats = null, string? scene = null)
     {
         TestDisplay.Ensure();
         string record = Path.Combine(Path.GetTempPath(), $"record-{Guid.NewGuid():N}.json");
         try
         {
-            int code = PlayCommand.Play(null, title =>
+            int code = PlayCommand.Play(scene, title =>
             {
                 var platform = PlatformWiring.Open(title);
                 return seen is null ? platform : platform with { Renderer = new Watching(platform.Renderer, seen) };

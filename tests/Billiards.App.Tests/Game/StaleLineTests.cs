@@ -44,6 +44,9 @@ public class StaleLineTests
         Assert.Equal("Hint: a safety at 2.5 m/s; Space shoots.", safety);
         string pot = ComputerPlayerNode.HintLine(Hint(ShotKind.Direct, PoolPockets.FootRight, 0.83, new Call(new BallId(3), PoolPockets.FootRight)));
         Assert.Equal("Hint: the 3 in the foot-right pocket at 2.5 m/s (pots 83 % of the time); Space shoots.", pot);
+        // A three-cushion point (a carom, no pocket) scores; it does not pot.
+        var point = Hint(ShotKind.Carom, PocketId.None, 0.6, null) with { Target = BallSet.Red };
+        Assert.Equal("Hint: carom on the red at 2.5 m/s (scores 60 % of the time); Space shoots.", ComputerPlayerNode.HintLine(point));
     }
 
     [Fact]

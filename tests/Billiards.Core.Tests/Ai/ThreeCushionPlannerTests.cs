@@ -32,6 +32,8 @@ public class ThreeCushionPlannerTests
         Assert.True(decision.ExpectedRuling!.Point, decision.ExpectedRuling.Message);
         Assert.Empty(decision.ExpectedRuling.Fouls);
         Assert.InRange(decision.ExpectedRuling.Cushions, 3, int.MaxValue);
+        // The decision names the ball its stroke meets first: on the break, the red.
+        Assert.Equal(BallSet.Red, decision.Target);
     }
 
     [Fact]

@@ -32,8 +32,9 @@ public class DrillTests
     public void AtLeastTwelveDrillsShipWithTheClassicShotsAmongThem()
     {
         var names = DrillNames();
-        Assert.True(names.Count >= 12, $"{names.Count} drills");
-        foreach (string classic in (string[])["stop-shot", "draw-shot", "follow-shot", "bank-shot", "kick-shot", "cut-60", "position-route"])
+        Assert.True(names.Count >= 17, $"{names.Count} drills");
+        foreach (string classic in (string[])["stop-shot", "draw-shot", "follow-shot", "bank-shot", "kick-shot", "cut-60", "position-route",
+            "corner-five", "ticky", "umbrella", "reverse-end", "long-short-long"])
         {
             Assert.Contains(classic, names);
         }
@@ -59,7 +60,7 @@ public class DrillTests
             sim.Strike(shot);
             sim.AdvanceTo(120);
             Assert.True(sim.IsAtRest);
-            var played = DrillShot.Of(sim, position.Balls.Select(b => b.Id));
+            var played = DrillShot.Of(sim, position.Balls.Select(b => b.Id), position.CueBall);
             shots.Add(played);
             if (attempt.Judge(played) is { } outcome)
             {
@@ -84,8 +85,18 @@ public class DrillTests
     {
         var drill = Load(name);
         Assert.Equal(name, drill.Name);
-        Assert.Equal(drill.Sequence.Count, drill.Reference.Count);
         var (outcome, shots) = PlayReference(drill);
+        if (drill.Carom)
+        {
+            // One shot scores the point: both balls, three cushions before the second, none off the table.
+            Assert.NotNull(outcome);
+            Assert.True(outcome.Success, $"{name}: {outcome.Reason}");
+            var shot = Assert.Single(shots);
+            Assert.True(shot.Contacts.IsPoint);
+            Assert.Empty(shot.Potted);
+            return;
+        }
+        Assert.Equal(drill.Sequence.Count, drill.Reference.Count);
         Assert.NotNull(outcome);
         Assert.True(outcome.Success, $"{name}: {outcome.Reason}");
         Assert.Equal(drill.Sequence.Count, outcome.Potted);
@@ -105,6 +116,51 @@ public class DrillTests
             Assert.True(zone.Contains(shots[^1].CueAtRest));
             Assert.Equal(zone.DistanceTo(shots[^1].CueAtRest), outcome.ZoneDistance);
         }
+    }
+
+    /// <summary>
+    /// The three-cushion patterns: each reference shot takes its pattern's route, the struck ball's
+    /// balls (B, the sequence's first ball first) and cushions by the table's names for them, up to
+    /// the second ball.
+    /// </summary>
+    [Theory]
+    [InlineData("corner-five", "left-foot foot right-foot B B")]
+    [InlineData("long-short-long", "B left-head head right-head B")]
+    [InlineData("umbrella", "right-foot B left-foot foot B")]
+    [InlineData("ticky", "B left-foot right-foot foot B")]
+    [InlineData("reverse-end", "B foot left-head head B")]
+    public void TheThreeCushionDrillsAreTheirPatterns(string name, string route)
+    {
+        var drill = Load(name);
+        Assert.True(drill.Carom);
+        var sim = SimulationFactory.Create(drill.Scene);
+        sim.Strike(drill.Reference[0], drill.Scene.CueBall);
+        sim.AdvanceTo(120);
+        var white = drill.Scene.CueBall;
+        var steps = new List<string>();
+        var met = new List<BallId>();
+        foreach (var e in sim.Events.AsSpan())
+        {
+            if (met.Count == 2)
+            {
+                break;
+            }
+            if (e.Kind == EventKind.BallCushion && e.A == white)
+            {
+                steps.Add(sim.FeatureName(e.Kind, e.Feature));
+            }
+            else if (e.Kind == EventKind.BallBall && (e.A == white || e.B == white))
+            {
+                var other = e.A == white ? e.B : e.A;
+                if (!met.Contains(other))
+                {
+                    met.Add(other);
+                    steps.Add("B");
+                }
+            }
+        }
+        Assert.Equal(route, string.Join(' ', steps));
+        Assert.Equal(drill.Sequence, met);
     }
 
     [Fact]
