@@ -34,14 +34,14 @@ public static class NetCommands
         var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball, straight-pool, snooker or three-cushion (default eight-ball)." };
         var (script, record, stats) = PlayOptions();
         var host = new Command("host", VerbHelp.Verb("Wait for one player to join and play a game with them over the network.", "host")) { port, code, players, rules, script, record, stats };
-        host.SetAction(parse => Host(new HostOptions(parse.GetValue(port), parse.GetValue(code), parse.GetValue(players), parse.GetValue(rules), parse.GetValue(script), parse.GetValue(record), parse.GetValue(stats)), stdout, log.WriteLine, title => PlatformWiring.Open(title)));
+        host.SetAction(parse => Host(new HostOptions(parse.GetValue(port), parse.GetValue(code), parse.GetValue(players), parse.GetValue(rules), parse.GetValue(script), parse.GetValue(record), parse.GetValue(stats)) { OpenAudio = PlayCommand.OpenAudio }, stdout, log.WriteLine, title => PlatformWiring.Open(title)));
         root.Add(host);
 
         var address = new Argument<string>("address") { Description = $"HOST[:PORT]: the host's name or address (default port {DefaultPort})." };
         var joinCode = new Option<string?>("--code") { Description = "The host's code (required)." };
         var (joinScript, joinRecord, joinStats) = PlayOptions();
         var join = new Command("join", VerbHelp.Verb("Join a game hosted on another machine.", "join")) { address, joinCode, joinScript, joinRecord, joinStats };
-        join.SetAction(parse => Join(parse.GetValue(address)!, parse.GetValue(joinCode), new PlayCommand.PlayOptions(parse.GetValue(joinScript), parse.GetValue(joinStats)) { Record = parse.GetValue(joinRecord) }, log.WriteLine, title => PlatformWiring.Open(title)));
+        join.SetAction(parse => Join(parse.GetValue(address)!, parse.GetValue(joinCode), new PlayCommand.PlayOptions(parse.GetValue(joinScript), parse.GetValue(joinStats)) { Record = parse.GetValue(joinRecord) }, log.WriteLine, title => PlatformWiring.Open(title), openAudio: PlayCommand.OpenAudio));
         root.Add(join);
     }
 
@@ -61,6 +61,15 @@ public static class NetCommands
 
         /// <summary>Called with the listener once it listens (tests read its port).</summary>
         public Action<NetHost>? Listening { get; init; }
+
+        /// <summary>Listen on a port the system chooses instead of <see cref="Port"/> (tests).</summary>
+        public bool AnyPort { get; init; }
+
+        /// <summary>The clock of the game (the real one when null).</summary>
+        public IClock? Clock { get; init; }
+
+        /// <summary>Opens the sound output; silence when null (tests).</summary>
+        public Func<Audio.IAudioOutput>? OpenAudio { get; init; }
     }
 
     /// <summary>The host: checks the arguments, listens, and plays the game in a window; returns the exit code.</summary>
@@ -68,8 +77,8 @@ public static class NetCommands
     {
         ArgumentNullException.ThrowIfNull(options);
         ArgumentNullException.ThrowIfNull(stdout);
-        int port = options.Port ?? DefaultPort;
-        if (port is < 1 or > 65535)
+        int port = options.AnyPort ? 0 : options.Port ?? DefaultPort;
+        if (port is < 1 or > 65535 && !options.AnyPort)
         {
             throw new CliException($"--port {port}: expected 1-65535");
         }
@@ -102,11 +111,11 @@ public static class NetCommands
                 started?.Invoke(h);
             },
         };
-        return PlayCommand.Play(null, openPlatform, options: play, openAudio: PlayCommand.OpenAudio);
+        return PlayCommand.Play(null, openPlatform, clock: options.Clock, options: play, openAudio: options.OpenAudio);
     }
 
     /// <summary>The joiner: checks the arguments, connects and shakes hands, and plays the game in a window; returns the exit code.</summary>
-    public static int Join(string address, string? code, PlayCommand.PlayOptions options, Action<string> log, Func<string, GamePlatform> openPlatform, TimeSpan? comeBack = null)
+    public static int Join(string address, string? code, PlayCommand.PlayOptions options, Action<string> log, Func<string, GamePlatform> openPlatform, TimeSpan? comeBack = null, IClock? clock = null, Func<Audio.IAudioOutput>? openAudio = null)
     {
         ArgumentNullException.ThrowIfNull(options);
         var (hostName, port) = NetJoin.ParseAddress(address, DefaultPort);
@@ -127,7 +136,7 @@ public static class NetCommands
             var match = new MatchSetup(setup.Rules, [new Seat(names.First) { Kind = SeatKind.Remote }, new Seat(names.Second)]) { Game = setup };
             var link = new OnlineLink(false, code, log) { Connection = connection, ShotsAtJoin = hello.Shots, ComeBack = comeBack };
             log($"join: joined {hostName}:{port}: {Ruleset.For(setup.Rules).Title}, {names.First} (the host) against {names.Second}");
-            return PlayCommand.Play(null, openPlatform, options: options with { Online = new OnlineGame(scene, match, link) }, openAudio: PlayCommand.OpenAudio);
+            return PlayCommand.Play(null, openPlatform, clock: clock, options: options with { Online = new OnlineGame(scene, match, link) }, openAudio: openAudio);
         }
         finally
         {

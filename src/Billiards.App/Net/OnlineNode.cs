@@ -1,4 +1,3 @@
-using System.Collections.Concurrent;
 using System.Globalization;
 using Billiards.App.Game;
 using Billiards.App.Hud;
@@ -42,7 +41,6 @@ public sealed record OnlineLink(bool IsHost, string Code, Action<string> Log)
 public sealed class OnlineNode : Node
 {
     private readonly OnlineLink _link;
-    private readonly ConcurrentQueue<Connection> _admitted = new();
     private MatchNode? _match;
     private NetPlay? _net;
     private GameShot? _peerShot;
@@ -57,7 +55,6 @@ public sealed class OnlineNode : Node
         ArgumentNullException.ThrowIfNull(link);
         _link = link;
         Watch = new PeerWatch(link.ComeBack);
-        link.Listener?.PeerAdmitted += (connection, _) => _admitted.Enqueue(connection);
     }
 
     /// <summary>The pause and forfeit state.</summary>
@@ -125,7 +122,8 @@ public sealed class OnlineNode : Node
         }
         var session = _match.Session;
         Volatile.Write(ref _shots, session.Shots.Count);
-        while (_admitted.TryDequeue(out var connection))
+        // The listener's peer, admitted on its own task (perhaps before this window's first frame), or a new one coming back.
+        if (_link.Listener?.Peer is { } connection && !ReferenceEquals(connection, _net.Connection))
         {
             _net.Connection = connection;
             _peerShot = null;
