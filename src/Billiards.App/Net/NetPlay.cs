@@ -105,10 +105,10 @@ public sealed class NetPlay
         Send(new Stroke(n, s.Speed, s.AimDeg, s.TipSide, s.TipHeight, s.ElevationDeg, shot.PushOut));
     }
 
-    /// <summary>The host sends its whole game (a joiner coming back takes it as a resync): false while a shot runs or an option is pending.</summary>
+    /// <summary>The host sends its whole game (a joiner coming back takes it as a resync, an option still to be chosen included): false while a shot runs.</summary>
     public bool SendGame()
     {
-        if (!IsHost || Session.IsShotRunning || Session.PendingOptions.Count > 0)
+        if (!IsHost || Session.IsShotRunning)
         {
             return false;
         }
@@ -331,8 +331,21 @@ public sealed class NetPlay
             Hostile(connection, "resync of another game, or while a shot runs");
             return;
         }
-        var replay = Replay(record, Session.Seats);
-        Session.Game.Restore(replay.Game.Snapshot());
+        if (Session.Shots.Count == 0)
+        {
+            // A joiner coming back: its new game plays the host's shots itself, so it stands
+            // where the host's does, an option still to be chosen included.
+            for (int k = 0; k < record.Shots.Count; k++)
+            {
+                int shot = k;
+                Session.Play(record.Shots[k], Session.Shooter.Kind, judged => record.ChoiceAfter(shot, judged.Ruling));
+            }
+        }
+        else
+        {
+            var replay = Replay(record, Session.Seats);
+            Session.Game.Restore(replay.Game.Snapshot());
+        }
         // The hashes after the resync are the host's.
         foreach (int k in _mine.Keys.Where(k => k >= r.Shot).ToList())
         {

@@ -143,6 +143,11 @@ public sealed class OnlineNode : Node
             // Too late: the game was lost by forfeit.
             _net.Connection!.Close("the game ended by forfeit");
         }
+        else if (!open && Watch.State == LinkState.Connected && _net.Connection?.ClosedBecause is { } why && why.StartsWith("the peer said bye: refused: ", StringComparison.Ordinal))
+        {
+            // A joiner that refused the host's game (other physics) in its handshake never joined.
+            Watch.Withdrawn();
+        }
         else if (!open && Watch.State == LinkState.Connected)
         {
             Watch.Dropped();

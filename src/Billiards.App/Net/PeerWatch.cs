@@ -54,21 +54,38 @@ public sealed class PeerWatch
     /// <summary>True while the game must not go on (no peer, or a dropped one).</summary>
     public bool Holds => State is LinkState.Waiting or LinkState.Lost;
 
+    private (LinkState State, double LostFor) _beforeJoin;
+
     /// <summary>The peer is connected (first joined, or came back in time). False when it is too late.</summary>
     public bool Joined()
     {
         switch (State)
         {
             case LinkState.Waiting:
+                _beforeJoin = (State, LostFor);
                 State = LinkState.Connected;
                 return true;
             case LinkState.Lost:
+                _beforeJoin = (State, LostFor);
                 State = LinkState.Connected;
                 LostFor = 0;
                 Returns++;
                 return true;
             default:
                 return State == LinkState.Connected;
+        }
+    }
+
+    /// <summary>The peer that just joined refused the game in its handshake (other physics): the watch stands as before it came.</summary>
+    public void Withdrawn()
+    {
+        if (State == LinkState.Connected)
+        {
+            if (_beforeJoin.State == LinkState.Lost)
+            {
+                Returns--;
+            }
+            (State, LostFor) = _beforeJoin;
         }
     }
 

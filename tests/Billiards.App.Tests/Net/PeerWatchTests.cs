@@ -57,6 +57,24 @@ public class PeerWatchTests
     }
 
     [Fact]
+    public void APeerThatRefusedTheGameInItsHandshakeNeverJoined()
+    {
+        var watch = new PeerWatch(TimeSpan.FromSeconds(3));
+        watch.Joined();
+        watch.Withdrawn();
+        Assert.Equal(LinkState.Waiting, watch.State);
+        // While a dropped peer is awaited, another that refuses leaves the clock running on.
+        watch.Joined();
+        watch.Dropped();
+        watch.Tick(1);
+        watch.Joined();
+        watch.Withdrawn();
+        Assert.Equal(LinkState.Lost, watch.State);
+        Assert.Equal(0, watch.Returns);
+        Assert.True(watch.Tick(2));
+    }
+
+    [Fact]
     public void AGameOverAtTheTableWaitsForNoOne()
     {
         var watch = new PeerWatch(TimeSpan.FromSeconds(3));
