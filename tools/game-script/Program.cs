@@ -84,13 +84,93 @@ internal static class Program
             }
             return 0;
         }
+        if (args.Length == 4 && args[0] == "--split")
+        {
+            return Split(args[1], args[2], args[3]);
+        }
         if (args.Length != 1)
         {
-            Console.Error.WriteLine("usage: game-script OUT.json | --check SCRIPT.json");
+            Console.Error.WriteLine("usage: game-script OUT.json | --check SCRIPT.json | --split SCRIPT.json HOST.json JOIN.json");
             return 2;
         }
         var events = s_rules == GameRules.Snooker ? SnookerFrame(4, seed, 400) : Search();
         File.WriteAllText(args[0], ToJson(events, s_rules == GameRules.Snooker ? SnookerSpeed : Speed, s_rules == GameRules.Snooker ? 4 : 2));
+        return 0;
+    }
+
+    // A game of two people at one table split into the two scripts of a networked game: each
+    // shot's events (up to its wait for rest) go to the script of the seat that played it, after a
+    // wait for rest (over the network a wait also lasts through the other player's turn), with W/Q
+    // presses first where the one keyboard power of the table differed from this side's own.
+    private static int Split(string scriptPath, string hostPath, string joinPath)
+    {
+        var script = InputScript.Load(scriptPath);
+        var (match, _) = Run([.. script.Events], 0.05, script.Speed);
+        var shots = match.Session.Shots;
+        var segments = new List<List<ScriptEvent>> { new() };
+        foreach (var e in script.Events)
+        {
+            segments[^1].Add(e);
+            if (e.Action == ScriptAction.WaitRest)
+            {
+                segments.Add([]);
+            }
+        }
+        segments.RemoveAll(g => g.Count == 0);
+        if (segments.Count != shots.Count || match.Session.PendingOptions.Count > 0 || match.Session.Rulings.Any(r => r.Options.Count > 0))
+        {
+            Console.Error.WriteLine($"game-script: {scriptPath}: {segments.Count} shots of events for {shots.Count} shots played, or an option chosen: cannot split it");
+            return 2;
+        }
+        double table = MatchNode.DefaultPower;
+        double[] own = [MatchNode.DefaultPower, MatchNode.DefaultPower];
+        var sides = new List<ScriptEvent>[] { [], [] };
+        static double Step(double power, Key key) => key switch
+        {
+            Key.W => Math.Min(MatchNode.MaxPower, power + MatchNode.PowerStep),
+            Key.Q => Math.Max(MatchNode.MinPower, power - MatchNode.PowerStep),
+            _ => power,
+        };
+        for (int k = 0; k < shots.Count; k++)
+        {
+            var before = shots[k].Before;
+            int seat = before.Shooter;
+            var side = sides[seat];
+            var first = segments[k][0];
+            side.Add(new ScriptEvent(first.Time, ScriptAction.WaitRest));
+            int steps = (int)Math.Round((table - own[seat]) / MatchNode.PowerStep);
+            for (int i = 0; i < Math.Abs(steps); i++)
+            {
+                var key = steps > 0 ? Key.W : Key.Q;
+                side.Add(new ScriptEvent(first.Time, ScriptAction.KeyDown, Key: key));
+                side.Add(new ScriptEvent(first.Time, ScriptAction.KeyUp, Key: key));
+                own[seat] = Step(own[seat], key);
+            }
+            foreach (var e in segments[k])
+            {
+                side.Add(e);
+                if (e.Action == ScriptAction.KeyDown)
+                {
+                    table = Step(table, e.Key);
+                    own[seat] = Step(own[seat], e.Key);
+                }
+            }
+            if (before.Shot == 0 && match.Ruleset.PowerBreak)
+            {
+                // The break's power is the break's alone, on either side's keyboard.
+                table = Math.Min(table, MatchNode.DefaultPower);
+                own[seat] = Math.Min(own[seat], MatchNode.DefaultPower);
+            }
+        }
+        // Each side waits for the end of the game before its script ends.
+        double end = script.Events[^1].Time;
+        foreach (var side in sides)
+        {
+            side.Add(new ScriptEvent(end, ScriptAction.WaitRest));
+        }
+        File.WriteAllText(hostPath, ToJson(sides[0], script.Speed, 2));
+        File.WriteAllText(joinPath, ToJson(sides[1], script.Speed, 2));
+        Console.WriteLine($"{shots.Count} shots: {sides[0].Count(e => e.Action == ScriptAction.KeyDown && e.Key == Key.Space)} by {match.State.Players[0]} (host), {sides[1].Count(e => e.Action == ScriptAction.KeyDown && e.Key == Key.Space)} by {match.State.Players[1]} (join); winner {match.Session.Winner}");
         return 0;
     }
 

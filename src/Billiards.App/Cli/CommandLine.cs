@@ -47,6 +47,7 @@ public static class CommandLine
                 ReplayCommand.Create(stdout),
             };
             PlayCommand.AddTo(root);
+            NetCommands.AddTo(root, stdout, stderr);
             VersionLine.Install(root);
             var parse = root.Parse(args);
             if (parse.Errors.Count > 0)

@@ -103,8 +103,9 @@ public static class PlayCommand
         {
             throw new CliException($"--drill {options!.Drill}: a drill brings its own position (leave out the scene {scenePath})");
         }
-        string path = drill?.Scene.Path ?? scenePath ?? (practice ? FindPracticeScene() : gameRules is { } chosen ? FindRulesScene(chosen) : FindDefaultScene());
-        var scene = drill?.Scene ?? SceneLoader.Load(path);
+        var online = options?.Online;
+        string path = online?.Scene.Path ?? drill?.Scene.Path ?? scenePath ?? (practice ? FindPracticeScene() : gameRules is { } chosen ? FindRulesScene(chosen) : FindDefaultScene());
+        var scene = online?.Scene ?? drill?.Scene ?? SceneLoader.Load(path);
         string savePath = options?.SavePath is { } sp ? OutputFiles.Check("--save", sp, ".json") : Path.Combine(dataFolder, "practice", "position.json");
         PracticeSetup? practiceSetup = practice ? PracticeFor(scene, drill, savePath, dataFolder) : null;
         if (practiceSetup is not null)
@@ -127,7 +128,7 @@ public static class PlayCommand
         var script = options?.Script is { } scriptPath ? InputScript.Load(scriptPath) : null;
         string? statsPath = options?.Stats is { } s ? OutputFiles.Check("--stats", s, ".json") : null;
         string? recordPath = options?.Record is { } r ? OutputFiles.Check("--record", r, ".json") : null;
-        var match = practice ? null : MatchFor(scene, gameRules, options?.Players);
+        var match = online?.Match ?? (practice ? null : MatchFor(scene, gameRules, options?.Players));
         if (recordPath is not null && (match is null || !scene.Balls.Any(b => b.Id == scene.CueBall)))
         {
             throw new CliException($"--record {recordPath}: {path} has no match to record (it names no rules and no --rules was given, or it has no cue ball)");
@@ -146,6 +147,7 @@ public static class PlayCommand
         bool fastComputer = options?.FastComputer == true;
         Pace(host, fastComputer || settings.FastComputer);
         AllowTakeBacks(host, settings.TakeBacks);
+        var onlineNode = online is null ? null : host.Tree.Root.AddChild(new Net.OnlineNode(online.Link) { Fast = script is not null || fastComputer });
         options?.Started?.Invoke(host);
         if (scripted is not null)
         {
@@ -188,7 +190,7 @@ public static class PlayCommand
         // A game from the command line opens the start menu only from its result panel (Menu), and
         // a choice made there replaces it as it does from plain play; a scripted, measured or
         // recorded run keeps its one game.
-        if (startMenu || (script is null && statsPath is null && recordPath is null && match is not null))
+        if (online is null && (startMenu || (script is null && statsPath is null && recordPath is null && match is not null)))
         {
             host.World.Menu.StartSettings = host.World.Menu.PlayedSettings = settings;
             platform.SetGraphics?.Invoke(settings.Graphics);
@@ -208,7 +210,8 @@ public static class PlayCommand
         {
             var matchNode = host.Tree.Root.GetInTree<MatchNode>();
             // One record per game of the session, one per line, as self-play writes them.
-            OutputFiles.Write(recordPath, GameRecordFile.ToJsonLines(matchNode.Session.RecordedGames));
+            var records = GameRecordFile.ToJsonLines(matchNode.Session.RecordedGames);
+            OutputFiles.Write(recordPath, onlineNode is null ? records : onlineNode.Annotate(records));
         }
         return 0;
     }
@@ -367,6 +370,9 @@ public static class PlayCommand
 
         /// <summary>The start menu's settings file, or null for the user's (<see cref="GameSettings.DefaultPath"/>).</summary>
         public string? SettingsPath { get; init; }
+
+        /// <summary>A game over the network (<c>host</c>, <c>join</c>): its scene, its match and the link to the peer; null for a game at this table.</summary>
+        public OnlineGame? Online { get; init; }
     }
 
     private static GameRules? ParseRules(string? name)

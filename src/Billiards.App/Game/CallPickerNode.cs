@@ -61,7 +61,7 @@ public sealed class CallPickerNode : Node
     // The ball under the cursor calls that ball; else, with a ball called, the pocket under it.
     private bool Click(Vector2 at)
     {
-        if (_match is not { CanShoot: true, IsComputerActing: false } match || !(match.NeedsCall || match.NeedsNomination) || _physics is null || _size.Width == 0)
+        if (_match is not { CanShoot: true, IsWatching: false } match || !(match.NeedsCall || match.NeedsNomination) || _physics is null || _size.Width == 0)
         {
             return false;
         }

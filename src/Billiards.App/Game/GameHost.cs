@@ -62,10 +62,11 @@ public sealed class GameHost : IDisposable
 
     /// <summary>
     /// True when nothing moves and nobody but a person is to act: the balls rest, no computer
-    /// player is at work and no hint is being searched (a script that waits for rest after G
-    /// shoots the hint, not whatever the cue pointed at when the search was slower).
+    /// player is at work, no hint is being searched (a script that waits for rest after G
+    /// shoots the hint, not whatever the cue pointed at when the search was slower), and over the
+    /// network the peer is not to move and the game is not held (a script waits for its turn).
     /// </summary>
-    public bool IsSettled => !_world.Physics.IsRolling && _world.Tree.Root.FindInTree<MatchNode>() is not { IsComputerActing: true }
+    public bool IsSettled => !_world.Physics.IsRolling && _world.Tree.Root.FindInTree<MatchNode>() is not { IsWatching: true }
         && _world.Tree.Root.FindInTree<ComputerPlayerNode>() is not { IsHinting: true };
 
     /// <summary>

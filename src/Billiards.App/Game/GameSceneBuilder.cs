@@ -21,7 +21,11 @@ public sealed record GameWorld(SceneTree Tree, FixedStepLoop Loop, PhysicsNode P
 /// <summary>A match to play: the game and the two players.</summary>
 /// <param name="Rules">The game.</param>
 /// <param name="Players">The two players.</param>
-public sealed record MatchSetup(GameRules Rules, IReadOnlyList<Seat> Players);
+public sealed record MatchSetup(GameRules Rules, IReadOnlyList<Seat> Players)
+{
+    /// <summary>The game exactly (a networked game's, the same on both sides), or null for the scene's.</summary>
+    public GameSetup? Game { get; init; }
+}
 
 /// <summary>
 /// Builds the node tree a scene asks for: a scene loads only what it declares. Always: table,
@@ -51,7 +55,8 @@ public static class GameSceneBuilder
         var modes = root.AddChild(new InputModeNode());
         if (match is not null && scene.Balls.Any(b => b.Id == scene.CueBall))
         {
-            root.AddChild(new MatchNode(Session.OfScene(scene, match.Rules, match.Players, physics.Simulation, createSimulation)));
+            var session = match.Game is { } game ? new Session(game, match.Players, createSimulation) : Session.OfScene(scene, match.Rules, match.Players, physics.Simulation, createSimulation);
+            root.AddChild(new MatchNode(session));
             root.AddChild(new ComputerPlayerNode());
             root.AddChild(new CallPickerNode());
             root.AddChild(new TargetViewNode());

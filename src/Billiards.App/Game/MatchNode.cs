@@ -38,6 +38,7 @@ public sealed class MatchNode : Node
     private Call? _adoptedCall;
     private bool _hasAdoptedCall;
     private bool _computerStrikes;
+    private GameShot? _peerShot;
 
     /// <summary>A match in the window of <paramref name="session"/>.</summary>
     public MatchNode(Session session)
@@ -80,6 +81,24 @@ public sealed class MatchNode : Node
     /// <summary>True while the computer is to move.</summary>
     public bool IsComputerActing => Session.IsComputerActing;
 
+    /// <summary>True while the player at the other end of the network is to move (their shot or their choice).</summary>
+    public bool IsPeerActing => !IsOver && !Forfeited && Session.Shooter.Kind == SeatKind.Remote;
+
+    /// <summary>
+    /// Why the game waits for the network (no player joined yet, the connection lost), or null:
+    /// while it is set no one at this table may strike or choose.
+    /// </summary>
+    public string? Held { get; set; }
+
+    /// <summary>True once a networked game ended by forfeit (the peer did not come back): no more shots.</summary>
+    public bool Forfeited { get; set; }
+
+    /// <summary>True for a game over the network: no take-back, restart or rematch (the other side would not follow).</summary>
+    public bool Networked { get; set; }
+
+    /// <summary>True while the person at this table only watches: the computer's or the peer's move, or a game held by the network.</summary>
+    public bool IsWatching => IsComputerActing || IsPeerActing || (!IsOver && !Forfeited && Held is not null);
+
     /// <summary>True when the players allow take-backs (<see cref="Session.TakeBacks"/>).</summary>
     public bool TakeBacks { get => Session.TakeBacks; set => Session.TakeBacks = value; }
 
@@ -96,10 +115,10 @@ public sealed class MatchNode : Node
     public ulong ShotSeed(long stream) => Session.ShotSeed(MatchSeed, stream);
 
     /// <summary>True when the shooter may strike now: balls at rest, a cue ball, and the session's yes (no option pending, the game on).</summary>
-    public bool CanShoot => _physics is { IsRolling: false, HasCueBall: true } && !IsOver && PendingOptions.Count == 0;
+    public bool CanShoot => _physics is { IsRolling: false, HasCueBall: true } && !IsOver && !Forfeited && Held is null && PendingOptions.Count == 0;
 
     /// <summary>True when <see cref="TakeBack"/> can act now.</summary>
-    public bool CanTakeBack => Session.CanTakeBack && _physics is { IsRolling: false };
+    public bool CanTakeBack => !Networked && Session.CanTakeBack && _physics is { IsRolling: false };
 
     /// <summary>Takes the last shot back (<see cref="Session.TakeBack"/>); false while balls roll or when the session refuses.</summary>
     public bool TakeBack() => CanTakeBack && Session.TakeBack();
@@ -194,17 +213,87 @@ public sealed class MatchNode : Node
         }
     }
 
-    /// <summary>Carries out the incoming player's choice (<see cref="Session.Choose"/>).</summary>
+    /// <summary>
+    /// Carries out the incoming player's choice at this table (<see cref="Session.Choose"/>);
+    /// ignored while the peer chooses or the network holds the game.
+    /// </summary>
     /// <exception cref="ArgumentException">When the option is not offered now.</exception>
-    public void Choose(RefereeOption option) => Session.Choose(option);
+    public void Choose(RefereeOption option)
+    {
+        if (IsPeerActing || Forfeited || Held is not null)
+        {
+            return;
+        }
+        Session.Choose(option);
+        Chose?.Invoke(option);
+    }
 
-    /// <summary>A new game after the last one ended (<see cref="Session.Rematch"/>).</summary>
-    public void Rematch() => Session.Rematch();
+    /// <summary>Carries out the peer's choice, which came over the network (the session checks it is offered).</summary>
+    /// <exception cref="ArgumentException">When the option is not offered now.</exception>
+    public void ChooseAsPeer(RefereeOption option) => Session.Choose(option);
 
-    /// <summary>The game starts again (the pause menu), while no ball rolls (<see cref="Session.Restart"/>).</summary>
+    /// <summary>Signal: a shot struck at this table (by the keys, the mouse or the computer) was accepted by the session.</summary>
+    public event Action<GameShot>? Struck;
+
+    /// <summary>Signal: an option was chosen at this table.</summary>
+    public event Action<RefereeOption>? Chose;
+
+    /// <summary>
+    /// Strikes the peer's shot exactly as it came (its placement, call and push-out); the session
+    /// refuses it unless the remote seat is to play.
+    /// </summary>
+    public bool StrikeAsPeer(GameShot shot)
+    {
+        ArgumentNullException.ThrowIfNull(shot);
+        if (_physics is not { IsRolling: false, HasCueBall: true } physics || IsOver || Forfeited || PendingOptions.Count > 0)
+        {
+            return false;
+        }
+        ShowPeerPlacement(shot.Place);
+        _peerShot = shot;
+        try
+        {
+            physics.Strike(shot.Shot);
+        }
+        finally
+        {
+            _peerShot = null;
+        }
+        return physics.IsRolling;
+    }
+
+    /// <summary>Shows the peer's cue ball where they placed it (ball in hand), before their stroke.</summary>
+    public void ShowPeerPlacement(Billiards.Core.Mathematics.Vec3? place)
+    {
+        if (place is not { } p || _physics is null || Session.BallInHand == BallInHand.None)
+        {
+            return;
+        }
+        var old = _physics.CueBallPosition;
+        _physics.GiveBallInHand(Session.BallInHand.Region());
+        if (_physics.TryPlaceCueBall(p) && _camera is not null)
+        {
+            _camera.Camera.Translate(_physics.CueBallPosition - old);
+        }
+        _physics.EndBallInHand();
+    }
+
+    /// <summary>Shows the table as the session's game stands (after the host's game was taken whole).</summary>
+    public void Reload() => ShowTable();
+
+    /// <summary>A new game after the last one ended (<see cref="Session.Rematch"/>); not over the network.</summary>
+    public void Rematch()
+    {
+        if (!Networked)
+        {
+            Session.Rematch();
+        }
+    }
+
+    /// <summary>The game starts again (the pause menu), while no ball rolls (<see cref="Session.Restart"/>); not over the network.</summary>
     public void Restart()
     {
-        if (_physics is { IsRolling: false })
+        if (_physics is { IsRolling: false } && !Networked)
         {
             Session.Restart();
         }
@@ -241,9 +330,9 @@ public sealed class MatchNode : Node
         {
             return false;
         }
-        if (IsComputerActing)
+        if (IsWatching)
         {
-            // The computer's turn: the person watches (the camera and system keys still work).
+            // The computer's or the peer's turn: the person watches (the camera and system keys still work).
             return key.Key is >= Key.D1 and <= Key.D5 or Key.Space or Key.Left or Key.Right or Key.A or Key.D or Key.W or Key.Q or Key.O or Key.C or Key.B or Key.X;
         }
         switch (key.Key)
@@ -301,13 +390,29 @@ public sealed class MatchNode : Node
     // whether it may be struck now and makes its simulation from the balls at rest.
     private Core.Physics.Simulation? OnStrike(ShotSpec shot)
     {
+        if (_peerShot is { } peer)
+        {
+            // The peer's shot as it came: the session checks the seat, the placement and the call.
+            var struck = Session.Submit(peer with { Shot = shot }, SeatKind.Remote);
+            if (struck is not null)
+            {
+                ResetShot();
+            }
+            return struck;
+        }
+        if (Held is not null || Forfeited)
+        {
+            return null;
+        }
         bool inHand = Session.BallInHand != BallInHand.None;
         var call = _hasAdoptedCall ? _adoptedCall : NeedsCall ? CurrentCall : NeedsNomination ? CurrentNomination : null;
         var source = _computerStrikes ? SeatKind.Computer : SeatKind.Person;
-        var sim = Session.Submit(new GameShot(shot, call, inHand ? _physics!.CueBallPosition : null, PushOut), source);
+        var game = new GameShot(shot, call, inHand ? _physics!.CueBallPosition : null, PushOut);
+        var sim = Session.Submit(game, source);
         if (sim is not null)
         {
             ResetShot();
+            Struck?.Invoke(game);
         }
         return sim;
     }
@@ -324,7 +429,8 @@ public sealed class MatchNode : Node
         }
         _physics.CueBall = Ruleset.CueBall(Game.State);
         _physics.Load(Game.Layout());
-        if (Session.BallInHand == BallInHand.None || IsOver || PendingOptions.Count > 0)
+        // The peer places their own cue ball: it is not in this player's hand.
+        if (Session.BallInHand == BallInHand.None || IsOver || PendingOptions.Count > 0 || IsPeerActing)
         {
             _physics.EndBallInHand();
         }

@@ -324,7 +324,7 @@ public sealed partial class MenuNode : Node
                     y = height * 0.66f;
                     break;
                 }
-                if (_match is not { PendingOptions.Count: > 0, IsComputerActing: false } match)
+                if (_match is not { PendingOptions.Count: > 0, IsWatching: false } match)
                 {
                     return null;
                 }

@@ -92,10 +92,18 @@ public sealed class Connection : IDisposable
     /// <summary>Queues <paramref name="message"/> to be sent (never waits; dropped once closed).</summary>
     public void Send(Message message)
     {
-        if (IsOpen)
+        if (!IsOpen)
         {
-            _outbox.Writer.TryWrite(Framing.Frame(MessageCodec.Write(message)));
+            return;
         }
+        var json = MessageCodec.Write(message);
+        if (json.Length > Framing.MaxMessageBytes)
+        {
+            // Never sent half: a game too long for one message is not sent at all.
+            _log($"net: {Name}: not sent: a {message.Kind} of {json.Length} bytes is over the limit of {Framing.MaxMessageBytes}");
+            return;
+        }
+        _outbox.Writer.TryWrite(Framing.Frame(json));
     }
 
     /// <summary>Sends <paramref name="reason"/> as a bye and closes once it is written (within the frame deadline); never waits.</summary>

@@ -1,5 +1,6 @@
 using System.Net;
 using System.Net.Sockets;
+using System.Runtime.CompilerServices;
 using Billiards.App.Cli;
 using Billiards.Core.Rules;
 
@@ -33,7 +34,15 @@ public static class NetJoin
             client.Dispose();
             throw new EnvironmentException($"join: cannot connect to {host}:{port}: {s.Message}", s);
         }
-        var connection = new Connection(client, $"{host}:{port}", log, limits);
+        // During the handshake a refusal is this verb's one line: the connection's own line of it is left out.
+        var shaking = new StrongBox<bool>(true);
+        var connection = new Connection(client, $"{host}:{port}", line =>
+        {
+            if (!Volatile.Read(ref shaking.Value))
+            {
+                log(line);
+            }
+        }, limits);
         var mine = new Hello(program ?? Handshake.ProgramVersion, code, null, 0);
         connection.Send(mine);
         var first = connection.WaitFirst(Handshake.Timeout);
@@ -54,6 +63,7 @@ public static class NetJoin
                         connection.Close($"refused: {problem}");
                         throw new CliException($"join: refused: {problem}");
                     }
+                    Volatile.Write(ref shaking.Value, false);
                     return (connection, setup!, hello);
                 default:
                     throw new CliException($"join: expected the host's hello, not {first.Kind}");

@@ -24,10 +24,17 @@ public sealed class NetPlay
 {
     private readonly Action<string> _log;
     private readonly Dictionary<int, (string Balls, string Ruling)> _mine = [], _theirs = [];
-    private Placement? _placement;
-    private CallMessage? _call;
-    private Stroke? _stroke;
-    private Choice? _choice;
+    // The peer's moves not yet carried out here, in the order they came: a fast peer may be
+    // several shots ahead of a side still showing an earlier one.
+    private readonly Queue<Message> _moves = new();
+    private int _lastStroke = -1;
+    private bool _refused;
+
+    /// <summary>The peer's moves that came and wait to be carried out here.</summary>
+    public int MovesWaiting => _moves.Count;
+
+    /// <summary>Most moves of the peer waiting here at once (more is a flood of moves, not a game).</summary>
+    public const int MaxMovesAhead = 64;
 
     /// <summary>A networked game of <paramref name="session"/>, this side playing seat <paramref name="localSeat"/>.</summary>
     public NetPlay(Session session, int localSeat, bool isHost, Action<string> log)
@@ -49,8 +56,25 @@ public sealed class NetPlay
     /// <summary>True on the host, whose game wins a mismatch.</summary>
     public bool IsHost { get; }
 
-    /// <summary>The connection to the peer (replaced when a joiner comes back), or null while none.</summary>
-    public Connection? Connection { get; set; }
+    /// <summary>
+    /// The connection to the peer (replaced when a joiner comes back), or null while none. A new
+    /// connection starts afresh: what the old one left half-said (a placement or call without its
+    /// stroke, hashes of shots not compared, a refusal) is dropped.
+    /// </summary>
+    public Connection? Connection
+    {
+        get => _connection;
+        set
+        {
+            _moves.Clear();
+            _refused = false;
+            _lastStroke = NextShot - 1;
+            _theirs.Clear();
+            _connection = value;
+        }
+    }
+
+    private Connection? _connection;
 
     /// <summary>Mismatches found so far.</summary>
     public int Mismatches { get; private set; }
@@ -79,6 +103,19 @@ public sealed class NetPlay
         }
         var s = shot.Shot;
         Send(new Stroke(n, s.Speed, s.AimDeg, s.TipSide, s.TipHeight, s.ElevationDeg, shot.PushOut));
+    }
+
+    /// <summary>The host sends its whole game (a joiner coming back takes it as a resync, an option still to be chosen included): false while a shot runs.</summary>
+    public bool SendGame()
+    {
+        if (!IsHost || Session.IsShotRunning)
+        {
+            return false;
+        }
+        var record = Encoding.UTF8.GetString(GameRecordFile.ToUtf8(Session.Game, indented: false)).TrimEnd('\n');
+        Send(new Resync(NextShot, record));
+        _log($"net: sent the game so far ({Session.Game.Shots.Count} shots) to the player coming back");
+        return true;
     }
 
     /// <summary>Sends the local seat's choice after the last ruling.</summary>
@@ -124,21 +161,26 @@ public sealed class NetPlay
         {
             return null;
         }
-        while (connection.IsOpen && connection.TryReceive(out var m))
+        // What came before the peer left is still carried out (a last stroke, then its bye).
+        while (!_refused && connection.TryReceive(out var m))
         {
             if (!Take(connection, m))
             {
-                return null;
+                break;
             }
         }
-        if (!connection.IsOpen || Session.IsShotRunning)
+        if (_refused || Session.IsShotRunning)
         {
             return null;
         }
         bool remoteToPlay = !Session.IsOver && Session.Shooter.Kind == SeatKind.Remote;
-        if (_choice is { } choice)
+        if (!_moves.TryPeek(out var head))
         {
-            _choice = null;
+            return null;
+        }
+        if (head is Choice choice)
+        {
+            _moves.Dequeue();
             if (!remoteToPlay || Session.PendingOptions.Count == 0 || choice.Shot != NextShot - 1
                 || !RuleNames.TryParseOption(choice.Option, out var option) || !Session.PendingOptions.Contains(option))
             {
@@ -146,42 +188,65 @@ public sealed class NetPlay
             }
             return new RemoteAction(null, option);
         }
-        if (_stroke is not { } s || s.Shot > NextShot)
+        int shot = ShotOf(head);
+        if (shot > NextShot)
         {
-            // A stroke for the shot after the one still to be judged here waits for it.
+            // A move for a shot after one still to be played here waits for it.
             return null;
         }
-        _stroke = null;
-        if (s.Shot < NextShot)
+        if (shot < NextShot)
         {
-            return Hostile(connection, $"stroke for shot {s.Shot}, already played (next is {NextShot})");
+            return Hostile(connection, $"{head.Kind} for shot {shot}, already played (next is {NextShot})");
         }
-        if (!remoteToPlay || Session.WhyNot(SeatKind.Remote) is { } why)
+        if (!_moves.Any(m => m is Stroke))
+        {
+            // The placement or call came; its stroke is on its way.
+            return null;
+        }
+        Placement? p = null;
+        CallMessage? c = null;
+        Stroke? s = null;
+        while (s is null)
+        {
+            switch (_moves.Dequeue())
+            {
+                case Placement placement:
+                    p = placement;
+                    break;
+                case CallMessage call:
+                    c = call;
+                    break;
+                case Stroke stroke:
+                    s = stroke;
+                    break;
+                default:
+                    return Hostile(connection, "a choice between a shot's call and its stroke");
+            }
+        }
+        if (s.Shot != shot || (p is not null && p.Shot != shot) || (c is not null && c.Shot != shot))
+        {
+            return Hostile(connection, $"placement or call for shot {shot} without its stroke");
+        }
+        if (!remoteToPlay || Session.WhyNot(SeatKind.Remote) is not null)
         {
             return Hostile(connection, $"stroke out of turn: {(remoteToPlay ? Session.WhyNot(SeatKind.Remote) : $"it is {Session.State.ShooterName}'s turn")}");
         }
-        Vec3? place = null;
-        if (_placement is { } p && p.Shot == s.Shot)
-        {
-            place = new Vec3(p.X, p.Y, 0);
-        }
-        Call? call = null;
-        if (_call is { } c && c.Shot == s.Shot)
+        Vec3? place = p is null ? null : new Vec3(p.X, p.Y, 0);
+        Call? called = null;
+        if (c is not null)
         {
             var pocket = Core.Table.PocketId.None;
             if (c.Pocket is { } name && !Session.Game.Setup.Table.Pockets.TryParse(name, out pocket))
             {
                 return Hostile(connection, $"call of an unknown pocket \"{MessageCodec.Clip(name)}\"");
             }
-            call = new Call(c.Ball is int b ? new Core.Balls.BallId(b) : Core.Balls.BallId.None, pocket);
+            called = new Call(c.Ball is int b ? new Core.Balls.BallId(b) : Core.Balls.BallId.None, pocket);
         }
-        _placement = null;
-        _call = null;
         if (place is not null && Session.BallInHand == BallInHand.None)
         {
             return Hostile(connection, $"placement for shot {s.Shot} without ball in hand");
         }
-        return new RemoteAction(new GameShot(new ShotSpec(s.Speed, s.AimDeg, s.TipSide, s.TipHeight, s.ElevationDeg), call, place, s.PushOut), null);
+        return new RemoteAction(new GameShot(new ShotSpec(s.Speed, s.AimDeg, s.TipSide, s.TipHeight, s.ElevationDeg), called, place, s.PushOut), null);
     }
 
     // One message taken in; false when it closed the connection.
@@ -189,19 +254,18 @@ public sealed class NetPlay
     {
         switch (m)
         {
-            case Placement p when Near(p.Shot) && _placement is null:
-                _placement = p;
+            case Placement or CallMessage or Stroke when ShotOf(m) > _lastStroke && ShotOf(m) >= NextShot
+                    && !_moves.Any(q => q.Kind == m.Kind && ShotOf(q) == ShotOf(m)) && _moves.Count < MaxMovesAhead:
+                _moves.Enqueue(m);
+                if (m is Stroke s)
+                {
+                    _lastStroke = s.Shot;
+                }
                 return true;
-            case CallMessage c when Near(c.Shot) && _call is null:
-                _call = c;
+            case Choice c when c.Shot >= NextShot - 1 && _moves.Count < MaxMovesAhead:
+                _moves.Enqueue(c);
                 return true;
-            case Stroke s when Near(s.Shot) && _stroke is null:
-                _stroke = s;
-                return true;
-            case Choice c when _choice is null && _stroke is null:
-                _choice = c;
-                return true;
-            case StateHash h when h.Shot < NextShot + 1 && !_theirs.ContainsKey(h.Shot):
+            case StateHash h when h.Shot < NextShot + MaxMovesAhead && !_theirs.ContainsKey(h.Shot):
                 _theirs[h.Shot] = (h.Balls, h.Ruling);
                 Compare(h.Shot);
                 return true;
@@ -216,17 +280,15 @@ public sealed class NetPlay
                     Hello => "a second hello",
                     Resync => "a resync from the joiner (the host's game wins)",
                     StateHash h => $"state hash for shot {h.Shot} twice or before it was played",
-                    Placement or CallMessage or Stroke => $"{m.Kind} for shot {ShotOf(m)} out of turn or twice (next is {NextShot})",
+                    Placement or CallMessage or Stroke or Choice when _moves.Count >= MaxMovesAhead => $"more than {MaxMovesAhead} moves ahead",
+                    Placement or CallMessage or Stroke or Choice => $"{m.Kind} for shot {ShotOf(m)} out of turn or twice (next is {NextShot})",
                     _ => $"{m.Kind} out of place",
                 });
                 return false;
         }
     }
 
-    private static int ShotOf(Message m) => m switch { Placement p => p.Shot, CallMessage c => c.Shot, Stroke s => s.Shot, _ => -1 };
-
-    // The next shot, or the one after it while a shot still runs or waits for its ruling here.
-    private bool Near(int shot) => shot == NextShot || (shot == NextShot + 1 && Session.IsShotRunning) || (shot == NextShot && !Session.IsShotRunning);
+    private static int ShotOf(Message m) => m switch { Placement p => p.Shot, CallMessage c => c.Shot, Stroke s => s.Shot, Choice c => c.Shot, _ => -1 };
 
     private void Compare(int shot)
     {
@@ -269,8 +331,21 @@ public sealed class NetPlay
             Hostile(connection, "resync of another game, or while a shot runs");
             return;
         }
-        var replay = Replay(record, Session.Seats);
-        Session.Game.Restore(replay.Game.Snapshot());
+        if (Session.Shots.Count == 0)
+        {
+            // A joiner coming back: its new game plays the host's shots itself, so it stands
+            // where the host's does, an option still to be chosen included.
+            for (int k = 0; k < record.Shots.Count; k++)
+            {
+                int shot = k;
+                Session.Play(record.Shots[k], Session.Shooter.Kind, judged => record.ChoiceAfter(shot, judged.Ruling));
+            }
+        }
+        else
+        {
+            var replay = Replay(record, Session.Seats);
+            Session.Game.Restore(replay.Game.Snapshot());
+        }
         // The hashes after the resync are the host's.
         foreach (int k in _mine.Keys.Where(k => k >= r.Shot).ToList())
         {
@@ -297,6 +372,8 @@ public sealed class NetPlay
     private RemoteAction? Hostile(Connection connection, string why)
     {
         _log($"net: {connection.Name}: refused: {why}");
+        _refused = true;
+        _moves.Clear();
         connection.Close(why);
         return null;
     }

@@ -1,0 +1,187 @@
+using System.CommandLine;
+using System.Net;
+using System.Security.Cryptography;
+using Billiards.App.Game;
+using Billiards.App.Net;
+using Billiards.App.Platform;
+using Billiards.Core.Balls;
+using Billiards.Core.Mathematics;
+using Billiards.Core.Rules;
+using Billiards.Core.Scenes;
+
+namespace Billiards.App.Cli;
+
+/// <summary>
+/// <c>host</c> and <c>join</c>: a game between two machines (docs/network.md). The host chooses
+/// the game and the players' names and waits for one player with its code; the joiner connects,
+/// shakes hands (version, code, physics) and gets the game. Both then open the game window, each
+/// playing its own seat, the other seat remote. Arguments are checked and the connection made
+/// before any window opens: a bad argument or a refusal is one line and a non-zero exit.
+/// </summary>
+public static class NetCommands
+{
+    /// <summary>The port a host listens on by default.</summary>
+    public const int DefaultPort = 7538;
+
+    /// <summary>Adds <c>host</c> and <c>join</c> to the root command; log lines go to <paramref name="stderr"/>, the host's code to <paramref name="stdout"/>.</summary>
+    public static void AddTo(RootCommand root, TextWriter stdout, TextWriter stderr)
+    {
+        ArgumentNullException.ThrowIfNull(root);
+        var log = TextWriter.Synchronized(stderr);
+        var port = new Option<int?>("--port") { Description = $"The TCP port to listen on (default {DefaultPort})." };
+        var code = new Option<string?>("--code") { Description = $"The {MessageCodec.CodeLength}-character code the joiner must give (letters and digits without 0, O, 1, I); default: a new random one, shown." };
+        var players = new Option<string?>("--players") { Description = "The players' names, A,B: the host's first (default Player 1,Player 2)." };
+        var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball, straight-pool, snooker or three-cushion (default eight-ball)." };
+        var (script, record, stats) = PlayOptions();
+        var host = new Command("host", VerbHelp.Verb("Wait for one player to join and play a game with them over the network.", "host")) { port, code, players, rules, script, record, stats };
+        host.SetAction(parse => Host(new HostOptions(parse.GetValue(port), parse.GetValue(code), parse.GetValue(players), parse.GetValue(rules), parse.GetValue(script), parse.GetValue(record), parse.GetValue(stats)) { OpenAudio = PlayCommand.OpenAudio }, stdout, log.WriteLine, title => PlatformWiring.Open(title)));
+        root.Add(host);
+
+        var address = new Argument<string>("address") { Description = $"HOST[:PORT]: the host's name or address (default port {DefaultPort})." };
+        var joinCode = new Option<string?>("--code") { Description = "The host's code (required)." };
+        var (joinScript, joinRecord, joinStats) = PlayOptions();
+        var join = new Command("join", VerbHelp.Verb("Join a game hosted on another machine.", "join")) { address, joinCode, joinScript, joinRecord, joinStats };
+        join.SetAction(parse => Join(parse.GetValue(address)!, parse.GetValue(joinCode), new PlayCommand.PlayOptions(parse.GetValue(joinScript), parse.GetValue(joinStats)) { Record = parse.GetValue(joinRecord) }, log.WriteLine, title => PlatformWiring.Open(title), openAudio: PlayCommand.OpenAudio));
+        root.Add(join);
+    }
+
+    private static (Option<string?> Script, Option<string?> Record, Option<string?> Stats) PlayOptions() => (
+        new Option<string?>("--script") { Description = "Replay a timed list of input events, as play --script (a wait for rest also waits for the other player's turn)." },
+        new Option<string?>("--record") { Description = "Write the game record when the window closes, as play --record (both sides write the same record)." },
+        new Option<string?>("--stats") { Description = "Write the frame statistics when the game ends, as play --stats." });
+
+    /// <summary>The host's options.</summary>
+    public sealed record HostOptions(int? Port, string? Code, string? Players, string? Rules, string? Script, string? Record, string? Stats)
+    {
+        /// <summary>How long a dropped joiner may take to come back (<see cref="PeerWatch.DefaultComeBack"/> when null).</summary>
+        public TimeSpan? ComeBack { get; init; }
+
+        /// <summary>The address to listen on (all of this machine's by default).</summary>
+        public IPAddress? Address { get; init; }
+
+        /// <summary>Called with the listener once it listens (tests read its port).</summary>
+        public Action<NetHost>? Listening { get; init; }
+
+        /// <summary>Listen on a port the system chooses instead of <see cref="Port"/> (tests).</summary>
+        public bool AnyPort { get; init; }
+
+        /// <summary>The clock of the game (the real one when null).</summary>
+        public IClock? Clock { get; init; }
+
+        /// <summary>Opens the sound output; silence when null (tests).</summary>
+        public Func<Audio.IAudioOutput>? OpenAudio { get; init; }
+    }
+
+    /// <summary>The host: checks the arguments, listens, and plays the game in a window; returns the exit code.</summary>
+    public static int Host(HostOptions options, TextWriter stdout, Action<string> log, Func<string, GamePlatform> openPlatform, Action<GameHost>? started = null)
+    {
+        ArgumentNullException.ThrowIfNull(options);
+        ArgumentNullException.ThrowIfNull(stdout);
+        int port = options.AnyPort ? 0 : options.Port ?? DefaultPort;
+        if (port is < 1 or > 65535 && !options.AnyPort)
+        {
+            throw new CliException($"--port {port}: expected 1-65535");
+        }
+        string code = options.Code is { } given ? CheckCode(given) : new string(RandomNumberGenerator.GetItems<char>(MessageCodec.CodeAlphabet, MessageCodec.CodeLength));
+        var gameRules = options.Rules is { } r ? (RuleNames.TryParseGame(r, out var parsed) ? parsed : throw new CliException($"--rules {r}: unknown game (expected {string.Join(", ", RuleNames.GameNames)})")) : GameRules.EightBall;
+        var names = Names(options.Players);
+        var scene = SceneLoader.Load(PlayCommand.FindRulesScene(gameRules));
+        var opening = scene.Game is { } o && o.Rules == gameRules ? o : new GameState(gameRules) { Target = Ruleset.For(gameRules).DefaultTarget };
+        var setup = new GameSetup(scene.Table, scene.Physics, scene.Rack?.Seed ?? 1, opening with { Call = null, PushOut = false, Placement = null, Players = new PerPlayer<string>(names[0], names[1]) });
+        var game = Handshake.Describe(setup);
+        OnlineNode? online = null;
+        using var listener = new NetHost(options.Address ?? IPAddress.Any, port, () => new Hello(Handshake.ProgramVersion, code, game, online?.ShotsSoFar ?? 0), log);
+        options.Listening?.Invoke(listener);
+        stdout.WriteLine($"host: waiting for a player on port {listener.Port} with the code {code} (billiards join THIS-HOST:{listener.Port} --code {code})");
+        stdout.Flush();
+        var match = new MatchSetup(gameRules, [new Seat(names[0]), new Seat(names[1]) { Kind = SeatKind.Remote }]) { Game = setup };
+        var link = new OnlineLink(true, code, log)
+        {
+            Listener = listener,
+            ComeBack = options.ComeBack,
+            WaitingLine = $"Waiting for a player: code {code}, port {listener.Port}.",
+        };
+        var play = new PlayCommand.PlayOptions(options.Script, options.Stats)
+        {
+            Record = options.Record,
+            Online = new OnlineGame(scene, match, link),
+            Started = h =>
+            {
+                online = h.Tree.Root.FindInTree<OnlineNode>();
+                started?.Invoke(h);
+            },
+        };
+        return PlayCommand.Play(null, openPlatform, clock: options.Clock, options: play, openAudio: options.OpenAudio);
+    }
+
+    /// <summary>The joiner: checks the arguments, connects and shakes hands, and plays the game in a window; returns the exit code.</summary>
+    public static int Join(string address, string? code, PlayCommand.PlayOptions options, Action<string> log, Func<string, GamePlatform> openPlatform, TimeSpan? comeBack = null, IClock? clock = null, Func<Audio.IAudioOutput>? openAudio = null)
+    {
+        ArgumentNullException.ThrowIfNull(options);
+        var (hostName, port) = NetJoin.ParseAddress(address, DefaultPort);
+        if (code is null)
+        {
+            throw new CliException("join: --code is required (the code the host shows)");
+        }
+        code = CheckCode(code);
+        // The files are checked before the connection, so that a bad path is not found after the handshake.
+        _ = options.Script is { } s ? InputScript.Load(s) : null;
+        _ = options.Record is { } rec ? OutputFiles.Check("--record", rec, ".json") : null;
+        _ = options.Stats is { } st ? OutputFiles.Check("--stats", st, ".json") : null;
+        var (connection, setup, hello) = NetJoin.Connect(hostName, port, code, log);
+        try
+        {
+            var names = setup.Start.Players;
+            var scene = SceneOf(setup);
+            var match = new MatchSetup(setup.Rules, [new Seat(names.First) { Kind = SeatKind.Remote }, new Seat(names.Second)]) { Game = setup };
+            var link = new OnlineLink(false, code, log) { Connection = connection, ShotsAtJoin = hello.Shots, ComeBack = comeBack };
+            log($"join: joined {hostName}:{port}: {Ruleset.For(setup.Rules).Title}, {names.First} (the host) against {names.Second}");
+            return PlayCommand.Play(null, openPlatform, clock: clock, options: options with { Online = new OnlineGame(scene, match, link) }, openAudio: openAudio);
+        }
+        finally
+        {
+            connection.Close("the game closed");
+            connection.Dispose();
+        }
+    }
+
+    /// <summary>The scene the joiner's window shows: the host's table and physics with the game's rack.</summary>
+    public static Scene SceneOf(GameSetup setup)
+    {
+        ArgumentNullException.ThrowIfNull(setup);
+        var balls = (setup.Position ?? setup.Racked(0)).Select(b => new BallSetup(b.Id, b.Position, Vec3.Zero, Vec3.Zero)).ToList();
+        return new Scene("online", $"{Ruleset.For(setup.Rules).Title} online", setup.Table, setup.Physics, null, balls, null, setup.Rules.ToName());
+    }
+
+    /// <summary>A code as given (case does not matter), or one line saying what a code is.</summary>
+    public static string CheckCode(string code)
+    {
+        ArgumentNullException.ThrowIfNull(code);
+        string upper = code.Trim().ToUpperInvariant();
+        return MessageCodec.IsCode(upper) ? upper
+            : throw new CliException($"--code {code}: expected {MessageCodec.CodeLength} letters and digits (no 0, O, 1 or I)");
+    }
+
+    // The two names of --players: people only (the computer does not play over the network).
+    private static string[] Names(string? players)
+    {
+        string[] parts = (players ?? "human,human").Split(',');
+        if (parts.Length != 2)
+        {
+            throw new CliException($"--players {players}: expected two names A,B (the host's first)");
+        }
+        var seats = new Seat[2];
+        for (int i = 0; i < 2; i++)
+        {
+            seats[i] = Seat.Parse(parts[i], i) is { Kind: SeatKind.Person } seat ? seat
+                : throw new CliException($"--players {players}: \"{parts[i]}\" is not a person's name (1-{Seat.MaxNameLength} characters; the computer does not play over the network)");
+        }
+        return [.. PlayCommand.Distinct(seats).Select(s => s.Name)];
+    }
+}
+
+/// <summary>A networked game for <see cref="PlayCommand.Play"/>: the scene shown, the match (the game exactly, one seat remote) and the link to the peer.</summary>
+/// <param name="Scene">The scene (table and physics).</param>
+/// <param name="Match">The match, its <see cref="MatchSetup.Game"/> set.</param>
+/// <param name="Link">The host's listener or the joiner's connection.</param>
+public sealed record OnlineGame(Scene Scene, MatchSetup Match, OnlineLink Link);
