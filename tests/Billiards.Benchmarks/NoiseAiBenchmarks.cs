@@ -1,5 +1,6 @@
 using Billiards.Core.Ai;
 using Billiards.Core.Balls;
+using Billiards.Core.Rules;
 
 namespace Billiards.Benchmarks;
 
