@@ -9,7 +9,8 @@ namespace Billiards.App.Cli;
 /// <c>report accuracy [--out DIR]</c>: the error-against-run-time report (CSV, SVG plot, Markdown
 /// summary) with its cushion and reality pages; <c>report cushions [--out DIR]</c>: the cushion page alone;
 /// <c>report reality [--out DIR]</c>: the reality page alone (the engine against measured data);
-/// <c>report snookers</c>: the computer player's fouls from snookered positions, without and with jumps.
+/// <c>report snookers</c>: the computer player's fouls from snookered positions, without and with jumps;
+/// <c>report ai SUMMARY.json ... [--out DIR]</c>: the computer player under execution noise (<see cref="AiReport"/>).
 /// </summary>
 public static class ReportCommand
 {
@@ -108,6 +109,18 @@ public static class ReportCommand
             stdout.Write(SnookerReport.Run(n, l, k, parse.GetValue(seed), stderr));
             return 0;
         });
-        return new Command("report", VerbHelp.Verb("Write a report about the physics or the computer player.", "report")) { accuracy, cushions, reality, snookers };
+        var aiRuns = new Argument<string[]>("summaries") { Description = "The merged summaries of selfplay --noise fastfiz:K --planners noise,blind, one a noise level.", Arity = ArgumentArity.OneOrMore };
+        var aiOutput = new Option<string>("--out") { Description = "Folder for ai.md and ai-break-and-run.png.", DefaultValueFactory = _ => "out/ai" };
+        var ai = new Command("ai", VerbHelp.Verb("Tabulate the computer player under execution noise against the noise-blind planner, with 95 % intervals and a plot.", "report-ai")) { aiRuns, aiOutput };
+        ai.SetAction(parse =>
+        {
+            string dir = OutputFiles.CheckFolder("--out", parse.GetValue(aiOutput)!, [.. AiReport.FileNames]);
+            var files = AiReport.Files(AiReport.Read(parse.GetValue(aiRuns)!));
+            Directory.CreateDirectory(dir);
+            OutputFiles.WriteAll([.. files.Select(f => (Path.Combine(dir, f.Name), f.Bytes))]);
+            stdout.Write(Encoding.UTF8.GetString(files[0].Bytes));
+            return 0;
+        });
+        return new Command("report", VerbHelp.Verb("Write a report about the physics or the computer player.", "report")) { accuracy, cushions, reality, snookers, ai };
     }
 }

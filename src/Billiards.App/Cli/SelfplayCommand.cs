@@ -12,7 +12,7 @@ using Billiards.Core.Table;
 namespace Billiards.App.Cli;
 
 /// <summary>
-/// <c>selfplay --rules R --games N --levels A,B --seed S [--target P] [--shard K/N] [--threads N] [--out FILE.jsonl] [--summary FILE.json]</c>:
+/// <c>selfplay --rules R --games N --levels A,B --seed S [--target P] [--shard K/N] [--threads N] [--noise NAME[:K]] [--planners A,B] [--out FILE.jsonl] [--summary FILE.json]</c>:
 /// the computer against itself on its game's table (a 9 ft pool table, snooker's 12 ft); prints one summary JSON (<see cref="SelfPlaySummary"/>)
 /// or writes it to <c>--summary</c>, writes one game record per line with <c>--out</c>
 /// (<see cref="GameRecordFile"/>'s record on one line, so each replays ruling for ruling), and
@@ -47,10 +47,12 @@ public static class SelfplayCommand
         var output = new Option<string?>("--out") { Description = "Write the game records (billiards-game/1, one per line) to FILE.jsonl." };
         var summary = new Option<string?>("--summary") { Description = "Write the summary JSON to FILE instead of standard output." };
         var threads = new Option<int?>("--threads") { Description = "The threads each decision's search runs on (default: every core); the games are the same at any count." };
+        var noise = new Option<string?>("--noise") { Description = "NAME[:K]: strike every stroke with execution noise, fastfiz (the computational-pool tournaments') scaled by K (default 1)." };
+        var planners = new Option<string?>("--planners") { Description = "A,B: each player's planner, own (its level's error), noise (plays for the noise) or blind (one exact outcome per candidate); default noise,noise with --noise, else own,own." };
         var merge = new Option<string[]>("--merge") { Description = "Merge the summaries of every shard of one run into the run's summary.", AllowMultipleArgumentsPerToken = true, Arity = ArgumentArity.OneOrMore };
         var command = new Command("selfplay", VerbHelp.Verb("Play the computer against itself and print a summary JSON.", "selfplay"))
         {
-            rules, games, levels, seed, target, shard, output, summary, threads, merge,
+            rules, games, levels, seed, target, shard, output, summary, threads, noise, planners, merge,
         };
         command.SetAction(parse =>
         {
@@ -58,7 +60,8 @@ public static class SelfplayCommand
             if (parse.GetValue(merge) is { Length: > 0 } summaries)
             {
                 foreach (var (name, given) in new[] { ("--rules", parse.GetValue(rules) is not null), ("--games", parse.GetValue(games) is not null), ("--levels", parse.GetValue(levels) is not null),
-                    ("--seed", parse.GetValue(seed) is not null), ("--target", parse.GetValue(target) is not null), ("--shard", parse.GetValue(shard) is not null), ("--out", parse.GetValue(output) is not null), ("--threads", parse.GetValue(threads) is not null) })
+                    ("--seed", parse.GetValue(seed) is not null), ("--target", parse.GetValue(target) is not null), ("--shard", parse.GetValue(shard) is not null), ("--out", parse.GetValue(output) is not null), ("--threads", parse.GetValue(threads) is not null),
+                    ("--noise", parse.GetValue(noise) is not null), ("--planners", parse.GetValue(planners) is not null) })
                 {
                     if (given)
                     {
@@ -103,12 +106,15 @@ public static class SelfplayCommand
                 throw new CliException($"--threads {searchThreads}: expected 1 to {BatchSimulation.MaxThreads}");
             }
             var budget = Budget with { Threads = searchThreads };
+            var executionNoise = parse.GetValue(noise) is { } noiseText ? ParseNoise(noiseText) : null;
+            var searches = ParsePlanners(parse.GetValue(planners), executionNoise);
             string? outPath = parse.GetValue(output) is { } o ? OutputFiles.Check("--out", o) : null;
 
             var ruleset = Ruleset.For(game);
             var table = TableSpec.FromPreset(ruleset.TablePreset);
             var physics = ruleset.BallSet.DefaultParams;
             var selfPlay = new SelfPlay(table, physics);
+            var skills = new PerPlayer<SkillLevel>(Planner(SkillLevel.Of(pair.First), searches.First, executionNoise), Planner(SkillLevel.Of(pair.Second), searches.Second, executionNoise));
             int mine = part.GameCount(count);
             var played = new List<PlayedGame>(mine);
             var clock = Stopwatch.StartNew();
@@ -117,7 +123,7 @@ public static class SelfplayCommand
             foreach (int g in part.Games(count))
             {
                 // Game g has the same seed and breaker in every shard count: the shards play the run's games.
-                played.Add(selfPlay.Play(game, pair, g % 2, PlannerRandom.Derive((ulong)seedValue, g), budget, points));
+                played.Add(selfPlay.Play(game, skills, g % 2, PlannerRandom.Derive((ulong)seedValue, g), budget, points, executionNoise));
                 if (clock.Elapsed - lastReport > TimeSpan.FromSeconds(5) || played.Count == mine)
                 {
                     lastReport = clock.Elapsed;
@@ -130,7 +136,7 @@ public static class SelfplayCommand
             {
                 files.Add((outPath, GameRecordFile.ToJsonLines(played.Select(p => p.Record))));
             }
-            var result = SelfPlaySummary.Of(game, seedValue, pair, points, count, part, played, clock.Elapsed.TotalMilliseconds);
+            var result = SelfPlaySummary.Of(game, seedValue, pair, points, count, part, played, clock.Elapsed.TotalMilliseconds) with { Noise = executionNoise, Planners = searches };
             Emit(stdout, summaryPath, result.ToUtf8(), files);
             return 0;
         });
@@ -191,5 +197,41 @@ public static class SelfplayCommand
         return new PerPlayer<int>(a, b);
     }
 
-    // The record as GameRecordFile writes it, on one line (numbers keep their text).
+    /// <summary>Parses <c>--noise NAME[:K]</c> (<see cref="ExecutionNoise.TryParse"/>).</summary>
+    public static ExecutionNoise ParseNoise(string text) =>
+        ExecutionNoise.TryParse(text, out string problem) ?? throw new CliException($"--noise {text}: {problem}");
+
+    /// <summary>
+    /// Parses <c>--planners A,B</c> (own, noise or blind each); without it, both play for the
+    /// noise when there is one, else with their level's own error.
+    /// </summary>
+    public static PerPlayer<SearchError> ParsePlanners(string? text, ExecutionNoise? noise)
+    {
+        if (text is null)
+        {
+            return noise is null ? default : new PerPlayer<SearchError>(SearchError.Noise, SearchError.Noise);
+        }
+        var parts = text.Split(',');
+        if (parts.Length != 2 || SelfPlaySummary.TryParsePlanner(parts[0]) is not { } a || SelfPlaySummary.TryParsePlanner(parts[1]) is not { } b)
+        {
+            throw new CliException($"--planners {text}: expected two of own, noise and blind, e.g. noise,blind");
+        }
+        if (noise is null && (a == SearchError.Noise || b == SearchError.Noise))
+        {
+            throw new CliException($"--planners {text}: a planner that plays for the noise needs --noise");
+        }
+        return new PerPlayer<SearchError>(a, b);
+    }
+
+    /// <summary>The level's planner for <paramref name="error"/>: as it is, playing for <paramref name="noise"/>, or blind.</summary>
+    public static SkillLevel Planner(SkillLevel level, SearchError error, ExecutionNoise? noise)
+    {
+        ArgumentNullException.ThrowIfNull(level);
+        return error switch
+        {
+            SearchError.Noise => level.PlayingFor(noise ?? throw new ArgumentNullException(nameof(noise))),
+            SearchError.Exact => level.NoiseBlind(),
+            _ => level,
+        };
+    }
 }

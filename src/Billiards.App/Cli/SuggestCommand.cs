@@ -8,7 +8,7 @@ using Billiards.Core.Scenes;
 namespace Billiards.App.Cli;
 
 /// <summary>
-/// <c>suggest SCENE [--level 1..5] [--budget-ms MS]</c>: the computer player's choice for the
+/// <c>suggest SCENE [--level 1..5] [--budget-ms MS] [--noise NAME[:K]]</c>: the computer player's choice for the
 /// scene's position and game, printed as
 /// <c>{"shot": {...}, "place": [x, y] or null, "call": {...}, "expected": {"pot": p, "ruling": ...}, "simulations": n, "ms": t}</c>.
 /// </summary>
@@ -17,6 +17,8 @@ namespace Billiards.App.Cli;
 /// shot in it is ignored (scene-format.md). Without one it comes from the scene's "rules"
 /// (8-ball when it has none): a scene with a rack is a break, one without is a position after the
 /// break with an open table. The decision is seeded, so the same scene gives the same suggestion.
+/// With <c>--noise</c> the planner plays for that execution noise (<see cref="SkillLevel.PlayingFor"/>):
+/// its search samples the noise in place of the level's own error.
 /// </remarks>
 public static class SuggestCommand
 {
@@ -32,7 +34,8 @@ public static class SuggestCommand
         var scene = new Argument<string>("scene") { Description = "The scene file (billiards-scene/1 JSON)." };
         var level = new Option<int?>("--level") { Description = "The player's level, 1 (beginner) to 5 (strong professional); default 3." };
         var budget = new Option<int?>("--budget-ms") { Description = "Cap on the decision's wall-clock time (ms); default 3000." };
-        var command = new Command("suggest", VerbHelp.Verb("Print the computer player's shot for a scene.", "suggest")) { scene, level, budget };
+        var noise = new Option<string?>("--noise") { Description = "NAME[:K]: plan for this execution noise, fastfiz (the computational-pool tournaments') scaled by K (default 1)." };
+        var command = new Command("suggest", VerbHelp.Verb("Print the computer player's shot for a scene.", "suggest")) { scene, level, budget, noise };
         command.SetAction(parse =>
         {
             int levelValue = parse.GetValue(level) ?? DefaultLevel;
@@ -44,6 +47,11 @@ public static class SuggestCommand
             if (budgetValue < 1 || budgetValue > MaxBudgetMs)
             {
                 throw new CliException($"--budget-ms {budgetValue}: expected 1 to {MaxBudgetMs}");
+            }
+            var skill = SkillLevel.Of(levelValue);
+            if (parse.GetValue(noise) is { } noiseText)
+            {
+                skill = skill.PlayingFor(SelfplayCommand.ParseNoise(noiseText));
             }
             var loaded = SceneLoader.Load(parse.GetValue(scene)!);
             var state = StateOf(loaded);
@@ -58,7 +66,7 @@ public static class SuggestCommand
                 throw new SceneException(loaded.Path, "$.balls", "no object ball to play");
             }
             var planner = new ShotPlanner(loaded.Table, loaded.Physics.Params, loaded.Physics.Models);
-            var decision = planner.Decide(state, position, SkillLevel.Of(levelValue), new PlannerBudget(budgetValue), 1);
+            var decision = planner.Decide(state, position, skill, new PlannerBudget(budgetValue), 1);
             stdout.WriteLine(Encoding.UTF8.GetString(ToUtf8(decision, ruleset.BallSet)));
             return 0;
         });

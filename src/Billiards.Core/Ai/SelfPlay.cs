@@ -60,6 +60,9 @@ public sealed class SelfPlay
 
     private readonly ShotPlanner _planner;
 
+    // The index of the noise's stream among a shot's (1: the planner's, 2: the level's own error).
+    private const long NoiseStream = 3;
+
     /// <summary>Self-play on <paramref name="table"/> with <paramref name="physics"/>.</summary>
     public SelfPlay(TableSpec table, PhysicsParams physics)
     {
@@ -74,11 +77,24 @@ public sealed class SelfPlay
     /// breaks. Everything random follows from <paramref name="seed"/>; <paramref name="target"/> is
     /// the score to win of 14.1 and three-cushion (ignored by the other games).
     /// </summary>
-    public PlayedGame Play(GameRules rules, PerPlayer<int> levels, int breaker, ulong seed, PlannerBudget budget, int target = GameState.DefaultTarget)
+    public PlayedGame Play(GameRules rules, PerPlayer<int> levels, int breaker, ulong seed, PlannerBudget budget, int target = GameState.DefaultTarget) =>
+        Play(rules, new PerPlayer<SkillLevel>(SkillLevel.Of(levels.First), SkillLevel.Of(levels.Second)), breaker, seed, budget, target, null);
+
+    /// <summary>
+    /// Plays one game with the players' planners <paramref name="skills"/> (a level as it is, playing
+    /// for the noise or blind to it: <see cref="SkillLevel.PlayingFor"/>, <see cref="SkillLevel.NoiseBlind"/>).
+    /// With <paramref name="noise"/> every stroke (the break too) is struck with a draw of the noise
+    /// in place of the level's own error, from a stream of its own (derived from
+    /// <paramref name="seed"/> and the shot's index, apart from the planner's), so the planner never
+    /// sees the draws and the games are the same at any thread count.
+    /// </summary>
+    public PlayedGame Play(GameRules rules, PerPlayer<SkillLevel> skills, int breaker, ulong seed, PlannerBudget budget, int target, ExecutionNoise? noise)
     {
         ArgumentNullException.ThrowIfNull(budget);
+        ArgumentNullException.ThrowIfNull(skills.First);
+        ArgumentNullException.ThrowIfNull(skills.Second);
         var table = _planner.Table;
-        var skills = new PerPlayer<SkillLevel>(SkillLevel.Of(levels.First), SkillLevel.Of(levels.Second));
+        var levels = new PerPlayer<int>(skills.First.Level, skills.Second.Level);
         int rackSeed = (int)(PlannerRandom.Derive(seed, 7_000_000) & 0x3FFFFFFF);
         var setup = new GameSetup(table.Table, _planner.PhysicsConfig, rackSeed, Ruleset.For(rules).BrokenBy(new GameState(rules) { Target = target }, breaker));
         var session = new Session(setup, Seat.Of(setup.Start.Players, SeatKind.Computer));
@@ -92,7 +108,9 @@ public sealed class SelfPlay
             var position = new TablePosition(game.Balls.OrderBy(b => b.Key.Value).Select(b => (b.Key, b.Value)), game.Ruleset.CueBall(state));
             var decision = _planner.Decide(state, position, skill, budget, PlannerRandom.Derive(seed, k, 1));
             var place = game.BallInHand == BallInHand.None ? null : decision.Place;
-            var executed = skill.Execute(decision.Shot, new PlannerRandom(PlannerRandom.Derive(seed, k, 2)));
+            var executed = noise is null
+                ? skill.Execute(decision.Shot, new PlannerRandom(PlannerRandom.Derive(seed, k, 2)))
+                : noise.Apply(decision.Shot, new PlannerRandom(PlannerRandom.Derive(seed, k, NoiseStream)), table.R);
             RefereeOption? option = null;
             // The incoming player chooses from the table as the shot left it.
             var played = session.Play(new GameShot(executed, decision.Call, place, decision.PushOut), SeatKind.Computer,

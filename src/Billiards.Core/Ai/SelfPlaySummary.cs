@@ -85,6 +85,12 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
     /// <summary>The format tag of a summary.</summary>
     public const string Format = "billiards-selfplay/1";
 
+    /// <summary>The run's execution noise (<c>fastfiz:K</c>, the JSON's "noise"), or null for a run without.</summary>
+    public ExecutionNoise? Noise { get; init; }
+
+    /// <summary>What each player's search took the stroke's error to be (the JSON's "planners", written when one is not <see cref="SearchError.Own"/>).</summary>
+    public PerPlayer<SearchError> Planners { get; init; }
+
     /// <summary>The shots of every game counted, both players' (breaks included).</summary>
     public int Shots => Players.First.Shots + Players.Second.Shots;
 
@@ -125,6 +131,8 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
             Same(file, "$.seed", s.Seed, first.Seed, files[0]);
             Same(file, "$.levels", $"{s.Levels.First},{s.Levels.Second}", $"{first.Levels.First},{first.Levels.Second}", files[0]);
             Same(file, "$.target", s.Target, first.Target, files[0]);
+            Same(file, "$.noise", s.Noise?.ToString(), first.Noise?.ToString(), files[0]);
+            Same(file, "$.planners", s.Planners, first.Planners, files[0]);
             Same(file, "$.shard.run_games", s.RunGames, first.RunGames, files[0]);
             Same(file, "$.shard.count", s.Shard.Count, first.Shard.Count, files[0]);
             if (seen[s.Shard.Index] is { } other)
@@ -177,6 +185,17 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
             if (Ruleset.For(Rules).HasScore)
             {
                 w.WriteNumber("target", Target);
+            }
+            if (Noise is { } noise)
+            {
+                w.WriteString("noise", noise.ToString());
+            }
+            if (Planners != default)
+            {
+                w.WriteStartArray("planners");
+                w.WriteStringValue(PlannerName(Planners.First));
+                w.WriteStringValue(PlannerName(Planners.Second));
+                w.WriteEndArray();
             }
             if (!Shard.IsWhole)
             {
@@ -307,6 +326,17 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
                 throw new SceneException(file, "$.games", $"{games} games, but shard {index} of {count} of a run of {runGames} plays {shard.GameCount(runGames)}");
             }
         }
+        ExecutionNoise? noise = null;
+        if (root.TryGetProperty("noise", out var n))
+        {
+            string text = n.GetString() ?? "";
+            noise = ExecutionNoise.TryParse(text, out string problem) ?? throw new SceneException(file, "$.noise", problem);
+        }
+        var planners = default(PerPlayer<SearchError>);
+        if (root.TryGetProperty("planners", out var pl))
+        {
+            planners = new PerPlayer<SearchError>(ParsePlanner(pl[0].GetString(), file), ParsePlanner(pl[1].GetString(), file));
+        }
         var players = root.GetProperty("players");
         var stats = new PlayerStats[2];
         for (int p = 0; p < 2; p++)
@@ -314,8 +344,32 @@ public sealed record SelfPlaySummary(GameRules Rules, long Seed, PerPlayer<int> 
             stats[p] = ReadPlayer(players[p], file, p, p == 0 ? pair.First : pair.Second);
         }
         return new SelfPlaySummary(rules, root.GetProperty("seed").GetInt64(), pair, target, runGames, shard, games,
-            root.GetProperty("unfinished").GetInt32(), new PerPlayer<PlayerStats>(stats[0], stats[1]), root.GetProperty("ms").GetDouble());
+            root.GetProperty("unfinished").GetInt32(), new PerPlayer<PlayerStats>(stats[0], stats[1]), root.GetProperty("ms").GetDouble())
+        {
+            Noise = noise,
+            Planners = planners,
+        };
     }
+
+    /// <summary>A planner's name on the command line and in the summary: <c>own</c>, <c>noise</c> or <c>blind</c>.</summary>
+    public static string PlannerName(SearchError error) => error switch
+    {
+        SearchError.Noise => "noise",
+        SearchError.Exact => "blind",
+        _ => "own",
+    };
+
+    /// <summary>The planner named <paramref name="name"/> (<see cref="PlannerName"/>), or null.</summary>
+    public static SearchError? TryParsePlanner(string? name) => name switch
+    {
+        "own" => SearchError.Own,
+        "noise" => SearchError.Noise,
+        "blind" => SearchError.Exact,
+        _ => null,
+    };
+
+    private static SearchError ParsePlanner(string? name, string file) =>
+        TryParsePlanner(name) ?? throw new SceneException(file, "$.planners", $"unknown planner \"{name}\" (expected own, noise or blind)");
 
     private static PlayerStats ReadPlayer(JsonElement p, string file, int player, int level)
     {

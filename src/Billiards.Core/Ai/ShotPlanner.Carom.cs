@@ -121,7 +121,7 @@ public sealed partial class ShotPlanner
                 double sum = 0, made = 0;
                 for (int s = 0; s < level.Samples; s++)
                 {
-                    var executed = skill.Execute(strokes[kept[k]], new PlannerRandom(PlannerRandom.Derive(seed, kept[k], s + 1)));
+                    var executed = skill.SearchStroke(strokes[kept[k]], new PlannerRandom(PlannerRandom.Derive(seed, kept[k], s + 1)), Table.R);
                     var ruling = JudgeCarom(ref sims[t], records[t], snapshot, position, executed, state, referee, out var after);
                     if (ruling.Point)
                     {

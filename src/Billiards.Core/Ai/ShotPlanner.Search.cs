@@ -255,7 +255,7 @@ public sealed partial class ShotPlanner
             {
                 var (v, s) = items[i];
                 var random = new PlannerRandom(PlannerRandom.Derive(seed, v, s));
-                var shot = level.Execute(variations[v].Shot, random);
+                var shot = level.SearchStroke(variations[v].Shot, random, _table.R);
                 (scores[i], made[i], _) = worker.Run(variations[v], shot, _referee, level);
             });
             // Reduced in item order, whichever thread ran what.

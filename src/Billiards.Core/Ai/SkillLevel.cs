@@ -54,7 +54,7 @@ namespace Billiards.Core.Ai;
 /// Cap on the first round's simulations: with many variations (ball in hand searches several
 /// placements) each gets fewer samples, at least one, and the later rounds sort them out.
 /// </param>
-public sealed record SkillLevel(
+public sealed partial record SkillLevel(
     int Level,
     double AimStdDeg,
     double SpeedStdFraction,
@@ -130,8 +130,14 @@ public sealed record SkillLevel(
         double speed = planned.Speed * (1 + SpeedStdFraction * random.NextClampedGaussian());
         double side = planned.TipSide + TipStdFraction * random.NextClampedGaussian();
         double height = planned.TipHeight + TipStdFraction * random.NextClampedGaussian();
-        // The tip is in the cue's frame (scene-format.md), so the miscue limit is a circle about
-        // [0, 0] at any elevation: the player never strikes past it.
+        (side, height) = InsideMiscueLimit(side, height);
+        return planned with { AimDeg = aim, Speed = Math.Max(0.05, speed), TipSide = side, TipHeight = height };
+    }
+
+    // The tip is in the cue's frame (scene-format.md), so the miscue limit is a circle about
+    // [0, 0] at any elevation: the player never strikes past it.
+    internal static (double Side, double Height) InsideMiscueLimit(double side, double height)
+    {
         double r = Math.Sqrt(side * side + height * height);
         if (r > MaxTip)
         {
@@ -140,6 +146,6 @@ public sealed record SkillLevel(
             side *= k;
             height *= k;
         }
-        return planned with { AimDeg = aim, Speed = Math.Max(0.05, speed), TipSide = side, TipHeight = height };
+        return (side, height);
     }
 }

@@ -65,12 +65,17 @@ public sealed class SelfplayShardTests : IDisposable
     [InlineData("x", "--shard x: expected K/N")]
     public void ABadShardIsOneLineExitTwo(string shard, string expected)
     {
-        var (code, stdout, stderr) = CliRun.Run([.. Run, "--shard", shard, "--summary", P("s.json")]);
-        Assert.Equal(2, code);
-        Assert.Equal("", stdout);
-        Assert.Single(stderr.TrimEnd('\n').Split('\n'));
-        Assert.StartsWith($"billiards: {expected}", stderr, StringComparison.Ordinal);
-        Assert.False(File.Exists(P("s.json")));
+        AssertOneLineExitTwo(CliRun.Run([.. Run, "--shard", shard, "--summary", P("s.json")]), expected, P("s.json"));
+    }
+
+    /// <summary>A refused run: exit 2, nothing on stdout, one line on stderr starting with <paramref name="expected"/>, and <paramref name="unwritten"/> not written.</summary>
+    internal static void AssertOneLineExitTwo((int Code, string Out, string Err) run, string expected, string unwritten)
+    {
+        Assert.Equal(2, run.Code);
+        Assert.Equal("", run.Out);
+        Assert.Single(run.Err.TrimEnd('\n').Split('\n'));
+        Assert.StartsWith($"billiards: {expected}", run.Err, StringComparison.Ordinal);
+        Assert.False(File.Exists(unwritten));
     }
 
     [Fact]

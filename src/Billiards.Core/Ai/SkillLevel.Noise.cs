@@ -1,0 +1,62 @@
+using Billiards.Core.Cue;
+
+namespace Billiards.Core.Ai;
+
+/// <summary>What the planner's search takes the error of its own stroke to be.</summary>
+public enum SearchError
+{
+    /// <summary>The level's own error model (<see cref="SkillLevel"/>): the planner of the game and of a run without noise.</summary>
+    Own,
+
+    /// <summary>The execution noise it is told of (<see cref="SkillLevel.Noise"/>), sampled in its search: it plays for the noise.</summary>
+    Noise,
+
+    /// <summary>No error: one exact outcome per candidate (the noise-blind planner, kept for comparison).</summary>
+    Exact,
+}
+
+/// <summary>The level's planner under execution noise (<see cref="ExecutionNoise"/>).</summary>
+public sealed partial record SkillLevel
+{
+    /// <summary>The smallest aim error (deg) a position is judged with: a noise of 0x still leaves the look-ahead a width to judge.</summary>
+    public const double MinPositionAimStdDeg = 0.01;
+
+    /// <summary>What the search takes the stroke's error to be (<see cref="SearchError.Own"/> for the levels of <see cref="Of"/>).</summary>
+    public SearchError Error { get; init; } = SearchError.Own;
+
+    /// <summary>The execution noise the search samples when <see cref="Error"/> is <see cref="SearchError.Noise"/>, else null.</summary>
+    public ExecutionNoise? Noise { get; init; }
+
+    /// <summary>
+    /// This level playing for <paramref name="noise"/>: the same search (candidates, variations,
+    /// rounds and samples), each sample struck with a draw of the noise instead of the level's own
+    /// error, and the next position judged with the noise's aim error (<see cref="ExecutionNoise.AimStdDeg"/>)
+    /// in place of the level's: a candidate is scored by its outcomes under the noise, so its pot
+    /// chance, the position it leaves and its risk of a foul, and a pot too unlikely loses to a safety.
+    /// </summary>
+    public SkillLevel PlayingFor(ExecutionNoise noise)
+    {
+        ArgumentNullException.ThrowIfNull(noise);
+        return this with { Error = SearchError.Noise, Noise = noise, AimStdDeg = Math.Max(MinPositionAimStdDeg, noise.AimStdDeg) };
+    }
+
+    /// <summary>
+    /// This level blind to any error: the same search with one exact outcome per candidate (a
+    /// single simulation of each variation without error, no later rounds), for comparison with
+    /// the planner that plays for the noise.
+    /// </summary>
+    public SkillLevel NoiseBlind() =>
+        this with { Error = SearchError.Exact, Noise = null, Samples = 1, ScreenTop = 0, ScreenSamples = 0, RefineSamples = 0, FirstRoundSimulations = int.MaxValue };
+
+    /// <summary>
+    /// A stroke of the search aiming for <paramref name="planned"/> on a ball of radius
+    /// <paramref name="ballRadius"/> (m), as <see cref="Error"/> says: with the level's own error,
+    /// with a draw of the noise, or exact.
+    /// </summary>
+    public ShotSpec SearchStroke(ShotSpec planned, PlannerRandom random, double ballRadius) => Error switch
+    {
+        SearchError.Exact => planned,
+        SearchError.Noise when Noise is { } noise => noise.Apply(planned, random, ballRadius),
+        _ => Execute(planned, random),
+    };
+}
