@@ -3,6 +3,7 @@ using Billiards.App.Audio;
 using Billiards.App.Game;
 using Billiards.App.Platform;
 using Billiards.App.Rendering;
+using Billiards.Core.Balls;
 using Billiards.Core.Physics;
 using Billiards.Core.Physics.Collisions;
 using Billiards.Core.Practice;
@@ -366,7 +367,9 @@ public sealed partial class MenuNode
             var m = table.Pockets[i].MouthMiddle(table);
             pockets.Add(new Vector2((float)m.X, (float)m.Y));
         }
-        var balls = drill.Scene.Balls.Select(b => (new Vector2((float)b.Position.X, (float)b.Position.Y), b.Id == drill.Scene.CueBall ? 0 : b.Id.Value)).ToList();
+        // The picture draws pool's colours by number: carom's object balls as the pool ball of their colour.
+        static int Number(BallId id) => id == BallSet.Yellow ? 1 : id == BallSet.Red ? 3 : id.Value;
+        var balls = drill.Scene.Balls.Select(b => (new Vector2((float)b.Position.X, (float)b.Position.Y), b.Id == drill.Scene.CueBall ? 0 : Number(b.Id))).ToList();
         return new HudPicture((float)table.HalfLength, (float)table.HalfWidth, balls, pockets, targets.Count);
     }
 }
