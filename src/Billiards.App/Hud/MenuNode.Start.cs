@@ -49,6 +49,7 @@ public sealed partial class MenuNode
         "ten-ball" => "10-ball",
         "straight-pool" => "14.1 straight pool",
         "snooker" => "Snooker",
+        "three-cushion" => "Three-cushion",
         var other => other,
     };
 
