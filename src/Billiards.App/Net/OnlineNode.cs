@@ -150,8 +150,8 @@ public sealed class OnlineNode : Node
         }
         else if (!open && Watch.State == LinkState.Connected)
         {
+            // A stroke that came before the drop is carried out: the peer played it.
             Watch.Dropped();
-            _peerShot = null;
             _link.Log($"net: the connection to {PeerName} dropped: the game waits {Watch.ComeBack.TotalSeconds:0} s for them to come back");
         }
         if (Watch.Tick(dt))
