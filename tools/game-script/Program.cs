@@ -330,7 +330,7 @@ internal static class Program
         var played = live.Match.Game!.Shots;
         var last = played[^1].Ruling;
         Console.WriteLine($"summary: {played.Count} shots, {played.Count(p => p.Ruling.Fouls.Count > 0)} fouls, "
-            + $"{played.Count(p => p.Before.FreeBall)} free balls played, {played.Count(p => p.Ruling.FoulAndMiss)} misses, "
+            + $"{played.Count(p => SnookerPart.Of(p.Before).FreeBall)} free balls played, {played.Count(p => p.Ruling.FoulAndMiss)} misses, "
             + $"{played.Count(p => p.Ruling.Fouls.Contains(Foul.CueBallPocketed))} in-offs, {clicks} nominations ({(clicks + 1) / 2} clicked), "
             + $"ends: {(last.Fouls.Count > 0 ? "foul" : "pot")} on {string.Join(",", last.Pocketed)}: {last.Message}");
         return live.Events;

@@ -239,7 +239,7 @@ public sealed partial class MenuNode
             MenuPage.Play => "Play: choose the game and your opponent, then Start",
             MenuPage.Drills => "Drills: one shot to master, its goal under its picture",
             MenuPage.Settings => "Settings: click a line to change it; Back keeps them",
-            _ => "Pool and snooker",
+            _ => "Pool, snooker and three-cushion",
         };
         _labels.Add(new HudLabel(cx, y, subtitle, 1, Centred: true));
         y += 2 * line;
