@@ -324,7 +324,8 @@ public sealed partial class MenuNode : Node
                     y = height * 0.66f;
                     break;
                 }
-                if (_match is not { PendingOptions.Count: > 0, IsWatching: false } match)
+                // No choice over an instant replay: its buttons would hide the shot replayed.
+                if (_match is not { PendingOptions.Count: > 0, IsWatching: false } match || _replay is { IsActive: true })
                 {
                     return null;
                 }

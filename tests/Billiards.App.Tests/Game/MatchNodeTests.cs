@@ -138,6 +138,18 @@ public class MatchHudTests
         var buttons = frame.Hud!.Buttons!;
         Assert.Equal(match.PendingOptions.Select((o, i) => $"{o.ToName()} [{i + 1}]"), buttons.Select(b => b.Label));
         Assert.Equal("Ben chooses:", frame.Hud.Title);
+
+        // The instant replay of that break shows the shot, not the choice over it; leaving it
+        // brings the choice back.
+        window.Press(InstantReplayNode.ReplayKey);
+        clock.Advance(1.0 / 30);
+        Assert.True(host.Tree.Root.GetInTree<InstantReplayNode>().IsActive);
+        Assert.Null(host.RunFrame().Hud!.Buttons);
+        window.Press(InstantReplayNode.ReplayKey);
+        clock.Advance(1.0 / 30);
+        Assert.False(host.Tree.Root.GetInTree<InstantReplayNode>().IsActive);
+        Assert.Equal(buttons.Select(b => b.Label), host.RunFrame().Hud!.Buttons!.Select(b => b.Label));
+
         var rerack = buttons.Single(b => b.Label.StartsWith("rerack", StringComparison.Ordinal));
         window.MoveTo(rerack.X + 2, rerack.Y + 2);
         window.Down();
