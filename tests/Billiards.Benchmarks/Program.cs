@@ -9,5 +9,5 @@ var config = ManualConfig.Create(DefaultConfig.Instance)
     .AddDiagnoser(MemoryDiagnoser.Default)
     .AddColumn(StatisticColumn.Median);
 // A failed or invalid benchmark fails the run, so CI's dry smoke job notices a broken benchmark.
-var summaries = BenchmarkSwitcher.FromAssembly(typeof(Billiards.Benchmarks.StepBenchmarks).Assembly).Run(args, config);
+var summaries = BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args, config);
 return summaries.Any(s => s.HasCriticalValidationErrors || s.Reports.Any(r => !r.Success)) ? 1 : 0;
