@@ -269,6 +269,22 @@ public sealed class PhysicsNode : Node
         _simulation.Balls.CopyTo(_previous);
     }
 
+    /// <summary>
+    /// A cue ball that dropped comes back in hand on the whole table, at the free spot nearest
+    /// the head spot (<see cref="ReturnSpot"/>), and <see cref="CueBallReturned"/> says so.
+    /// </summary>
+    public void ReturnCueBall()
+    {
+        if (IsRolling || CueIndex is not int cue || !_simulation.Balls[cue].IsOutOfPlay)
+        {
+            return;
+        }
+        HandRegion = PlacementRegion.Table;
+        BallInHand = true;
+        Place(ReturnSpot());
+        CueBallReturned?.Invoke(CueBallPosition);
+    }
+
     /// <summary>Signal: the cue ball was pocketed and came back in hand at this position (m).</summary>
     public event Action<Vec3>? CueBallReturned;
 
@@ -403,13 +419,12 @@ public sealed class PhysicsNode : Node
             IsRolling = false;
             // Nothing moves any more: interpolation must not pull the picture back a step.
             _simulation.Balls.CopyTo(_previous);
-            if (!HandOnly && CueIndex is int cue && _simulation.Balls[cue].IsPocketed)
+            if (!HandOnly && StrikeThrough is null && CueIndex is int cue && _simulation.Balls[cue].IsPocketed)
             {
-                // Practice has no referee: a scratched cue ball comes back in hand instead of
-                // leaving the table without one. In a match only the referee decides.
-                BallInHand = true;
-                Place(ReturnSpot());
-                CueBallReturned?.Invoke(CueBallPosition);
+                // A scene played without a game: a scratched cue ball comes back in hand instead of
+                // leaving the table without one. A game's referee or practice's session decides
+                // through the node that strikes (ReturnCueBall).
+                ReturnCueBall();
             }
             var displacement = HasCueBall ? CueBallPosition - _cueAtStrike : Vec3.Zero;
             CameToRest?.Invoke(displacement);

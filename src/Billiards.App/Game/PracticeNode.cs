@@ -14,6 +14,7 @@ using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Practice;
+using Billiards.Core.Rules;
 using Billiards.Core.Scenes;
 using Billiards.Core.Setup;
 
@@ -44,7 +45,8 @@ public sealed record PracticeSetup(string SavePath, Drill? Drill = null, DrillRe
 /// for a miss, where the target ball stopped.
 /// </summary>
 /// <remarks>
-/// Every shot is struck on a new simulation of the position as a scene (the balls at rest, no
+/// Every shot goes through practice's <see cref="Session"/> (Core's turn controller without a referee) and
+/// is struck on a new simulation of the position as a scene (the balls at rest, no
 /// rack, the scene's physics), the scene the save key writes: <c>simulate</c> of a saved position
 /// plays the window's shot bit for bit.
 /// </remarks>
@@ -71,6 +73,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
     private CueNode? _cue;
     private InputModeNode? _modes;
     private ShotPlanner? _planner;
+    private Session? _session;
     private Scene? _before;
     private ShotSpec? _exact;
     private BallId? _dragging;
@@ -81,7 +84,8 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
     private (ShotSpec Shot, int Version)? _sampled;
     private (ShotSpec Shot, int Version)? _asked;
     private int _version;
-    private (Scene Position, ShotSpec Shot)? _attemptStart;
+    // The session's shot count when the drill's attempt under way struck its first shot.
+    private int? _attemptStart;
 
     /// <summary>The drill played, or null in free practice.</summary>
     public Drill? Drill => setup.Drill;
@@ -94,6 +98,12 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
 
     /// <summary>The keyboard power (m/s).</summary>
     public double Power { get; private set; } = 3.0;
+
+    /// <summary>
+    /// Practice's turn controller: the session of <see cref="PracticeRuleset"/> (no referee) that
+    /// strikes every shot and keeps the timeline the retry and the take-back go back on.
+    /// </summary>
+    public Session? Session => _session;
 
     /// <summary>The last shot struck, or null.</summary>
     public ShotSpec? LastShot { get; private set; }
@@ -163,6 +173,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         _physics.HandOnly = Drill is not null;
         _physics.StrikeThrough = OnStrike;
         _physics.CameToRest += _ => OnRest();
+        _session = Session.Practice(Position(), _physics.CreateSimulation);
         if (setup.Shot is { } shot)
         {
             SetCue(shot);
@@ -191,23 +202,39 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         Changed();
     }
 
-    /// <summary>Retry: the balls as they were before the last shot, and the cue set to it (aim, power, spin, elevation); false when there is no shot to retry or balls roll. It is practice's take-back too.</summary>
+    /// <summary>
+    /// Retry: back on the session's timeline to the balls as they were before the last shot, and
+    /// the cue set to it (aim, power, spin, elevation); false when there is no shot to retry or
+    /// balls roll. It is practice's take-back too: pressed again, it goes back a shot further.
+    /// </summary>
     public bool Retry()
     {
-        if (_physics is null || _physics.IsRolling || _before is null || LastShot is not { } shot)
+        if (_physics is null || _physics.IsRolling || _session is not { Game.Shots.Count: > 0 } session)
         {
             return false;
         }
         // A drill's attempt starts again from the drill's position with its first shot, whatever
         // shot it had reached: a sequence is judged from its first ball.
-        var (position, cue) = (_before, shot);
-        if (Drill is { } d && _attemptStart is { } first)
+        int back = Drill is not null && _attemptStart is int first && first < session.Game.Shots.Count ? session.Game.Shots.Count - first : 1;
+        var cue = session.Game.Shots[^back].Input.Shot;
+        for (int i = 0; i < back; i++)
+        {
+            session.TakeBack();
+        }
+        if (Drill is { } d)
         {
             Attempt = new DrillAttempt(d);
-            (position, cue) = first;
+            _attemptStart = null;
         }
-        _physics.Load(_physics.CreateSimulation(position));
-        _physics.EndBallInHand();
+        _physics.Load(session.Game.Layout());
+        if (session.BallInHand == BallInHand.None)
+        {
+            _physics.EndBallInHand();
+        }
+        else
+        {
+            _physics.ReturnCueBall();
+        }
         SetCue(cue);
         Say("Retry: the last shot's position and cue.");
         return true;
@@ -236,24 +263,35 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         Changed();
     }
 
-    private Simulation OnStrike(ShotSpec shot)
+    // Every strike goes through practice's session: from the balls as they lie now (moved by
+    // hand or not), kept on the timeline, struck on a simulation of them as a scene.
+    private Simulation? OnStrike(ShotSpec shot)
     {
         var position = Position();
-        _before = position;
-        LastShot = shot;
+        var session = _session!;
         if (Attempt is { Potted: 0, Outcome: null })
         {
-            _attemptStart = (position, shot);
+            _attemptStart = session.Game.Shots.Count;
         }
-        Message = null;
-        var sim = _physics!.CreateSimulation(position);
-        sim.Strike(shot, _physics.CueBall);
+        session.Reposition(position);
+        var sim = session.Submit(new GameShot(shot, null, null, false), SeatKind.Person);
+        if (sim is not null)
+        {
+            _before = position;
+            LastShot = shot;
+            Message = null;
+        }
         return sim;
     }
 
     private void OnRest()
     {
         Changed();
+        // No referee: the session notes the shot, and a cue ball that dropped comes back in hand.
+        if (_session?.Rest(_physics!.Simulation) is not null && _session.BallInHand != BallInHand.None && Drill is null)
+        {
+            _physics.ReturnCueBall();
+        }
         if (Attempt is not { Next: not null } attempt || _physics is null)
         {
             return;
@@ -552,6 +590,8 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         }
         _start = scene with { Shot = null, Game = null };
         Rebuild(_start);
+        // A loaded position is a new session on its physics.
+        _session = Session.Practice(Position(), _physics.CreateSimulation);
         if (scene.Shot is { } shot)
         {
             SetCue(shot);

@@ -40,7 +40,7 @@ public sealed class TakeBackNode : Node
         {
             return false;
         }
-        // Practice strikes through its own node, which keeps the position before the shot: its retry is the take-back.
+        // Practice strikes through its session (no referee): its retry is the take-back, shot after shot.
         bool done = _match is not null ? _match.TakeBack() : _practice is not null ? _practice.Retry() : _physics.Undo();
         Refusal = done ? null
             : _physics.IsRolling ? "No take-back while balls roll."

@@ -84,6 +84,7 @@ public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentati
     /// </example>
     /// <exception cref="ArgumentOutOfRangeException">For a game no ruleset is registered for.</exception>
     public static Ruleset For(GameRules game) => (game.Name is null ? null : Find(game.Name))
+        ?? (game == PracticeRuleset.Practice ? PracticeRuleset.Instance : null)
         ?? throw new ArgumentOutOfRangeException(nameof(game), game, "no such game");
 
     /// <summary>The game.</summary>

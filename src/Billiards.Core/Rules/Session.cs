@@ -112,6 +112,42 @@ public sealed class Session
         return new Session(racked ? setup : setup with { Position = balls }, seats, createSimulation, opening);
     }
 
+    /// <summary>
+    /// Practice on <paramref name="position"/>'s table and balls: the same timeline without a
+    /// referee (<see cref="PracticeRuleset"/>), one person at the table, take-backs on. Every shot
+    /// goes through <see cref="Submit"/> and <see cref="Rest"/> as in a game, and
+    /// <see cref="TakeBack"/> puts the balls back bit for bit, shot by shot.
+    /// </summary>
+    /// <param name="position">The table, the physics and the balls to start from (its shot is not played).</param>
+    /// <param name="createSimulation">Makes each shot's simulation (<see cref="SimulationFactory.Create"/> by default).</param>
+    /// <param name="player">The name the table shows.</param>
+    public static Session Practice(Scene position, Func<Scene, Simulation>? createSimulation = null, string player = "Practice")
+    {
+        ArgumentNullException.ThrowIfNull(position);
+        var start = new GameState(PracticeRuleset.Practice) { Players = new(player, player), Shot = 1, BallInHand = BallInHand.None };
+        var setup = new GameSetup(position.Table, position.Physics, 1, start) { Position = Layout(position) };
+        return new Session(setup, Seat.Of(start.Players, SeatKind.Person), createSimulation) { TakeBacks = true };
+    }
+
+    /// <summary>
+    /// Practice: the balls were moved by hand (dragged, added, taken off, a position loaded): the
+    /// game goes on from <paramref name="position"/>'s balls. The timeline keeps the shots before,
+    /// so a take-back still puts back the table before the last shot.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">In a game with a referee, or while a shot runs.</exception>
+    public void Reposition(Scene position)
+    {
+        ArgumentNullException.ThrowIfNull(position);
+        if (Ruleset is not PracticeRuleset || IsShotRunning)
+        {
+            throw new InvalidOperationException(IsShotRunning ? "a shot is still running" : "only practice moves balls by hand");
+        }
+        var now = Game.Snapshot();
+        Game.Restore(new MatchSnapshot(now.Setup, now.State with { BallInHand = BallInHand.None }, Layout(position), now.Shots, now.Racks));
+    }
+
+    private static List<(BallId Id, Vec3 Position)> Layout(Scene position) => [.. position.Balls.Select(b => (b.Id, b.Position))];
+
     /// <summary>The two seats, player 0 first.</summary>
     public IReadOnlyList<Seat> Seats { get; }
 

@@ -228,6 +228,50 @@ public sealed class PracticeTests : IDisposable
         Assert.Null(game.Host.Tree.Root.GetInTree<TakeBackNode>().Refusal);
     }
 
+    private static Dictionary<BallId, Vec3> OnTable(TestGame game)
+    {
+        var sim = game.World.Physics.Simulation;
+        var balls = new Dictionary<BallId, Vec3>();
+        for (int i = 0; i < sim.Ids.Count; i++)
+        {
+            if (!sim.Balls[i].IsOutOfPlay)
+            {
+                balls[sim.Ids[i]] = sim.Balls[i].Position;
+            }
+        }
+        return balls;
+    }
+
+    [Fact]
+    public void PracticeStrikesThroughItsSessionAndTakesBackShotAfterShotToWhereItBegan()
+    {
+        using var game = Practice();
+        game.Frame();
+        var practice = game.Host.Tree.Root.GetInTree<PracticeNode>();
+        var tables = new List<Dictionary<BallId, Vec3>>();
+        for (int k = 0; k < 3; k++)
+        {
+            tables.Add(OnTable(game));
+            game.Window.Press(Key.Left);
+            game.Window.Press(Key.W);
+            game.Window.Press(Key.Space);
+            game.RunUntilRest();
+            Assert.NotEqual(tables[^1], OnTable(game));
+        }
+        // Each shot went through practice's session: no referee, the player stays, every shot legal.
+        var session = practice.Session!;
+        Assert.Equal(3, session.Game.Shots.Count);
+        Assert.All(session.Game.Shots, s => Assert.True(s.Ruling.Legal && s.Ruling.Continue));
+        for (int k = 2; k >= 0; k--)
+        {
+            game.Window.Press(TakeBackNode.UndoKey);
+            Assert.Equal(tables[k], OnTable(game));
+            Assert.Equal(k, session.Game.Shots.Count);
+        }
+        game.Window.Press(TakeBackNode.UndoKey);
+        Assert.Equal("No shot to take back.", game.Host.Tree.Root.GetInTree<TakeBackNode>().Refusal);
+    }
+
     [Fact]
     public void TheSensitivityViewShowsHowOftenTheShotPotsAndDrawsEverySampleSEnding()
     {
