@@ -220,7 +220,7 @@ public static class PlayCommand
     {
         if (host.Tree.Root.FindInTree<MatchNode>() is { } match)
         {
-            match.TakeBacks = allowed;
+            match.Session.TakeBacks = allowed;
         }
     }
 

@@ -187,7 +187,7 @@ public sealed partial class MenuNode
         }
         if (_match is not null)
         {
-            _match.TakeBacks = StartSettings.TakeBacks;
+            _match.Session.TakeBacks = StartSettings.TakeBacks;
         }
         if (FindInTree<AudioNode>() is { } audio)
         {
