@@ -26,6 +26,14 @@ public enum MenuPage
     Drills,
     /// <summary>The start menu's settings: the physics in words, the computer's pace, take-backs, sound.</summary>
     Settings,
+    /// <summary>The start menu's "Play online": host a game or join one.</summary>
+    Online,
+    /// <summary>Hosting: the game to host (the physics are the settings'), then Host.</summary>
+    Host,
+    /// <summary>Joining: the host's address and the code typed, then Join.</summary>
+    Join,
+    /// <summary>The hosted game's code and address, while it waits for a player.</summary>
+    Hosting,
 }
 
 /// <summary>
@@ -151,7 +159,7 @@ public sealed partial class MenuNode : Node
         }
         if (e is KeyInput { Pressed: true } key)
         {
-            return OnKey(key.Key);
+            return TypeOnline(key.Key, key.Shift) || OnKey(key.Key);
         }
         // A menu takes every other input while it is open.
         return Page != MenuPage.None;
@@ -175,7 +183,7 @@ public sealed partial class MenuNode : Node
                 return true;
             case MenuPage.None:
                 return false;
-            case MenuPage.Start or MenuPage.Play or MenuPage.Drills or MenuPage.Settings:
+            case not MenuPage.Pause and not MenuPage.ConfirmQuit when IsStartScreen:
                 StartKey(key);
                 return true;
             case MenuPage.Pause:
@@ -233,6 +241,7 @@ public sealed partial class MenuNode : Node
             _restartAtRest = false;
             Restart();
         }
+        ProcessOnline();
     }
 
     private void Restart()

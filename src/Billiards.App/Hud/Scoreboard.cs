@@ -234,6 +234,11 @@ public static class ScoreboardBuilder
             string who = state.ShooterName.StartsWith("Computer", StringComparison.Ordinal) ? state.ShooterName : $"{state.ShooterName} (computer)";
             return physics.IsRolling ? $"{who} shoots." : $"{who} is at the table.";
         }
+        if (match.Session.IsRemoteActing && !physics.IsRolling)
+        {
+            // Over the network: the other player's turn, played at their machine.
+            return match.Session.PendingOptions.Count > 0 ? $"{state.ShooterName} chooses (online)." : $"{state.ShooterName} is at the table (online).";
+        }
         if (physics.IsRolling)
         {
             return "Balls rolling: the view only.";

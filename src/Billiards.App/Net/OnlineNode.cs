@@ -302,7 +302,7 @@ public sealed class OnlineNode : Node
     protected override void Draw(FrameBuilder frame)
     {
         var f = frame.Frame;
-        if (f.Hud is not { } hud || StatusLine.Length == 0)
+        if (f.Hud is not { } hud || StatusLine.Length == 0 || FindInTree<Hud.MenuNode>() is { IsStartScreen: true })
         {
             return;
         }

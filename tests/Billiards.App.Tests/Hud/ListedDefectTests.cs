@@ -165,8 +165,8 @@ public class ListedDefectTests
         game.World.Menu.ShowStart();
         game.Frame();
         Assert.Equal("Play", game.World.Menu.FocusedLabel);
-        // Drills: down twice, Enter; the first card has the focus; Right, Enter plays the second drill.
-        foreach (var key in new[] { Key.Down, Key.Down, Key.Enter, Key.Right, Key.Enter })
+        // Drills (after Play online and Practice): down three times, Enter; the first card has the focus; Right, Enter plays the second drill.
+        foreach (var key in new[] { Key.Down, Key.Down, Key.Down, Key.Enter, Key.Right, Key.Enter })
         {
             game.Window.Press(key);
             game.Frame();
