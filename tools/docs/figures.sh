@@ -4,6 +4,7 @@
 #   tools/docs/figures.sh            the renders and the sound's waveform (offscreen, no display)
 #   tools/docs/figures.sh window     also the window shots of hud-aiming, result-panel and instant-replay
 #   tools/docs/figures.sh reports    also the accuracy report and its cushion page (about a minute)
+#   tools/docs/figures.sh online     also the online pictures: the host's code, the joiner's entry, both tables
 # The other window shots (computer-turn, practice-*, flight/jump-in-window, flight/elevation-gauge)
 # are taken by hand under Xvfb (import -window root) in the game their caption names.
 set -euo pipefail
@@ -24,6 +25,12 @@ trap 'rm -rf "$tmp"' EXIT
 billiards render-audio assets/scenes/eight-ball-break.json --out "$tmp/break.wav"
 billiards simulate assets/scenes/eight-ball-break.json --out "$tmp/break.json"
 python3 docs/sound/waveform.py "$tmp/break.wav" "$tmp/break.json" docs/sound/break-waveform.svg
+
+if [ "${1:-}" = online ]; then
+  # "Play online" through the start menu (network.md): two processes, each under its own Xvfb
+  # display (:71 and :72 unless HOST_DISPLAY, JOIN_DISPLAY say otherwise), driven by xdotool.
+  tools/online/menu-screens.sh "$app" "${HOST_DISPLAY:-:71}" "${JOIN_DISPLAY:-:72}" docs
+fi
 
 if [ "${1:-}" = window ]; then
   # Window shots, each the last frame of an input script played under $DISPLAY (an Xvfb screen of

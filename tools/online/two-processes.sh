@@ -14,14 +14,8 @@ out=${4:-$(mktemp -d)}
 port=${PORT:-7538}
 code=K7PQ2M
 mkdir -p "$out"
-started=""
-for d in "$hd" "$jd"; do
-  if ! DISPLAY=$d xdpyinfo >/dev/null 2>&1; then
-    Xvfb "$d" -screen 0 1280x800x24 >/dev/null 2>&1 &
-    started="$started $!"
-    sleep 1
-  fi
-done
+. "$here/tools/online/displays.sh"
+start_displays 1280x800x24 "$hd" "$jd"
 trap 'for p in $started; do kill "$p" 2>/dev/null || true; done' EXIT
 echo "host: DISPLAY=$hd billiards host --port $port --code $code --players Anna,Ben --script online-eight-ball-host.json --record $out/host.json"
 DISPLAY=$hd "$bin" host --port "$port" --code "$code" --players Anna,Ben \

@@ -224,7 +224,8 @@ public sealed class AudioNode(IAudioOutput output) : Node
     /// <inheritdoc />
     protected override bool Input(InputEvent e)
     {
-        if (e is not KeyInput { Pressed: true } key)
+        // On a line of the menu that takes what is typed, U and - are letters, not the sound's keys.
+        if (e is not KeyInput { Pressed: true } key || FindInTree<Hud.MenuNode>() is { IsTyping: true })
         {
             return false;
         }

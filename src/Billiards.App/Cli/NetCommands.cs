@@ -82,36 +82,65 @@ public static class NetCommands
         {
             throw new CliException($"--port {port}: expected 1-65535");
         }
-        string code = options.Code is { } given ? CheckCode(given) : new string(RandomNumberGenerator.GetItems<char>(MessageCodec.CodeAlphabet, MessageCodec.CodeLength));
+        string code = options.Code is { } given ? CheckCode(given) : NewCode();
         var gameRules = options.Rules is { } r ? (RuleNames.TryParseGame(r, out var parsed) ? parsed : throw new CliException($"--rules {r}: unknown game (expected {string.Join(", ", RuleNames.GameNames)})")) : GameRules.EightBall;
         var names = Names(options.Players);
         var scene = SceneLoader.Load(PlayCommand.FindRulesScene(gameRules));
-        var opening = scene.Game is { } o && o.Rules == gameRules ? o : new GameState(gameRules) { Target = Ruleset.For(gameRules).DefaultTarget };
-        var setup = new GameSetup(scene.Table, scene.Physics, scene.Rack?.Seed ?? 1, opening with { Call = null, PushOut = false, Placement = null, Players = new PerPlayer<string>(names[0], names[1]) });
-        var game = Handshake.Describe(setup);
-        OnlineNode? online = null;
-        using var listener = new NetHost(options.Address ?? IPAddress.Any, port, () => new Hello(Handshake.ProgramVersion, code, game, online?.ShotsSoFar ?? 0), log);
+        using var online = Listen(scene, gameRules, names, code, options.Address ?? IPAddress.Any, port, log, options.ComeBack);
+        var listener = online.Link.Listener!;
         options.Listening?.Invoke(listener);
         stdout.WriteLine($"host: waiting for a player on port {listener.Port} with the code {code} (billiards join THIS-HOST:{listener.Port} --code {code})");
         stdout.Flush();
-        var match = new MatchSetup(gameRules, [new Seat(names[0]), new Seat(names[1]) { Kind = SeatKind.Remote }]) { Game = setup };
+        var play = new PlayCommand.PlayOptions(options.Script, options.Stats) { Record = options.Record, Online = online, Started = started };
+        return PlayCommand.Play(null, openPlatform, clock: options.Clock, options: play, openAudio: options.OpenAudio);
+    }
+
+    /// <summary>A new random code: <see cref="MessageCodec.CodeLength"/> characters of <see cref="MessageCodec.CodeAlphabet"/>.</summary>
+    public static string NewCode() => new(RandomNumberGenerator.GetItems<char>(MessageCodec.CodeAlphabet, MessageCodec.CodeLength));
+
+    /// <summary>
+    /// The host's game of <paramref name="rules"/> on <paramref name="scene"/>'s table and physics
+    /// between <paramref name="names"/> (the host's seat first), listening on
+    /// <paramref name="address"/>:<paramref name="port"/> for one player with <paramref name="code"/>:
+    /// what <c>host</c> and the start menu's "Play online" both start.
+    /// </summary>
+    /// <exception cref="EnvironmentException">When the port cannot be listened on.</exception>
+    public static OnlineGame Listen(Scene scene, GameRules rules, IReadOnlyList<string> names, string code, IPAddress address, int port, Action<string> log, TimeSpan? comeBack = null)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(names);
+        var opening = scene.Game is { } o && o.Rules == rules ? o : new GameState(rules) { Target = Ruleset.For(rules).DefaultTarget };
+        var setup = new GameSetup(scene.Table, scene.Physics, scene.Rack?.Seed ?? 1, opening with { Call = null, PushOut = false, Placement = null, Players = new PerPlayer<string>(names[0], names[1]) });
+        var game = Handshake.Describe(setup);
+        OnlineGame? online = null;
+        var listener = new NetHost(address, port, () => new Hello(Handshake.ProgramVersion, code, game, online?.Node?.ShotsSoFar ?? 0), log);
+        var match = new MatchSetup(rules, [new Seat(names[0]), new Seat(names[1]) { Kind = SeatKind.Remote }]) { Game = setup };
         var link = new OnlineLink(true, code, log)
         {
             Listener = listener,
-            ComeBack = options.ComeBack,
+            ComeBack = comeBack,
             WaitingLine = $"Waiting for a player: code {code}, port {listener.Port}.",
         };
-        var play = new PlayCommand.PlayOptions(options.Script, options.Stats)
-        {
-            Record = options.Record,
-            Online = new OnlineGame(scene, match, link),
-            Started = h =>
-            {
-                online = h.Tree.Root.FindInTree<OnlineNode>();
-                started?.Invoke(h);
-            },
-        };
-        return PlayCommand.Play(null, openPlatform, clock: options.Clock, options: play, openAudio: options.OpenAudio);
+        online = new OnlineGame(scene, match, link);
+        return online;
+    }
+
+    /// <summary>
+    /// Connects to <paramref name="hostName"/>:<paramref name="port"/> with <paramref name="code"/>
+    /// and shakes hands: the joiner's game as the host gave it (what <c>join</c> and the start
+    /// menu's "Play online" both start).
+    /// </summary>
+    /// <exception cref="CliException">The host refused, or its game differs here.</exception>
+    /// <exception cref="EnvironmentException">Nothing listens there, or no answer in time.</exception>
+    public static OnlineGame Connect(string hostName, int port, string code, Action<string> log, TimeSpan? comeBack = null)
+    {
+        ArgumentNullException.ThrowIfNull(log);
+        var (connection, setup, hello) = NetJoin.Connect(hostName, port, code, log);
+        var names = setup.Start.Players;
+        var match = new MatchSetup(setup.Rules, [new Seat(names.First) { Kind = SeatKind.Remote }, new Seat(names.Second)]) { Game = setup };
+        var link = new OnlineLink(false, code, log) { Connection = connection, ShotsAtJoin = hello.Shots, ComeBack = comeBack };
+        log($"join: joined {hostName}:{port}: {Ruleset.For(setup.Rules).Title}, {names.First} (the host) against {names.Second}");
+        return new OnlineGame(SceneOf(setup), match, link);
     }
 
     /// <summary>The joiner: checks the arguments, connects and shakes hands, and plays the game in a window; returns the exit code.</summary>
@@ -128,21 +157,8 @@ public static class NetCommands
         _ = options.Script is { } s ? InputScript.Load(s) : null;
         _ = options.Record is { } rec ? OutputFiles.Check("--record", rec, ".json") : null;
         _ = options.Stats is { } st ? OutputFiles.Check("--stats", st, ".json") : null;
-        var (connection, setup, hello) = NetJoin.Connect(hostName, port, code, log);
-        try
-        {
-            var names = setup.Start.Players;
-            var scene = SceneOf(setup);
-            var match = new MatchSetup(setup.Rules, [new Seat(names.First) { Kind = SeatKind.Remote }, new Seat(names.Second)]) { Game = setup };
-            var link = new OnlineLink(false, code, log) { Connection = connection, ShotsAtJoin = hello.Shots, ComeBack = comeBack };
-            log($"join: joined {hostName}:{port}: {Ruleset.For(setup.Rules).Title}, {names.First} (the host) against {names.Second}");
-            return PlayCommand.Play(null, openPlatform, clock: clock, options: options with { Online = new OnlineGame(scene, match, link) }, openAudio: openAudio);
-        }
-        finally
-        {
-            connection.Close("the game closed");
-            connection.Dispose();
-        }
+        using var online = Connect(hostName, port, code, log, comeBack);
+        return PlayCommand.Play(null, openPlatform, clock: clock, options: options with { Online = online }, openAudio: openAudio);
     }
 
     /// <summary>The scene the joiner's window shows: the host's table and physics with the game's rack.</summary>
@@ -180,8 +196,35 @@ public static class NetCommands
     }
 }
 
-/// <summary>A networked game for <see cref="PlayCommand.Play"/>: the scene shown, the match (the game exactly, one seat remote) and the link to the peer.</summary>
+/// <summary>
+/// A networked game for <see cref="PlayCommand.Play"/>: the scene shown, the match (the game
+/// exactly, one seat remote) and the link to the peer. Disposing it closes the host's listener
+/// (and its peer) or the joiner's connection.
+/// </summary>
 /// <param name="Scene">The scene (table and physics).</param>
 /// <param name="Match">The match, its <see cref="MatchSetup.Game"/> set.</param>
 /// <param name="Link">The host's listener or the joiner's connection.</param>
-public sealed record OnlineGame(Scene Scene, MatchSetup Match, OnlineLink Link);
+public sealed record OnlineGame(Scene Scene, MatchSetup Match, OnlineLink Link) : IDisposable
+{
+    /// <summary>The window's network node once the game is in a window (<see cref="Attach"/>).</summary>
+    public OnlineNode? Node { get; private set; }
+
+    /// <summary>Puts the game's network node into <paramref name="host"/>'s tree (the peer's strokes shown at a quarter of the pace when <paramref name="fast"/>).</summary>
+    public OnlineNode Attach(GameHost host, bool fast)
+    {
+        ArgumentNullException.ThrowIfNull(host);
+        Node = host.Tree.Root.AddChild(new OnlineNode(Link) { Fast = fast });
+        return Node;
+    }
+
+    /// <inheritdoc />
+    public void Dispose()
+    {
+        Link.Listener?.Dispose();
+        if (Link.Connection is { } connection)
+        {
+            connection.Close("the game closed");
+            connection.Dispose();
+        }
+    }
+}

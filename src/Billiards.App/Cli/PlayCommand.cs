@@ -147,7 +147,7 @@ public static class PlayCommand
         bool fastComputer = options?.FastComputer == true;
         Pace(host, fastComputer || settings.FastComputer);
         AllowTakeBacks(host, settings.TakeBacks);
-        var onlineNode = online is null ? null : host.Tree.Root.AddChild(new Net.OnlineNode(online.Link) { Fast = script is not null || fastComputer });
+        var onlineNode = online?.Attach(host, script is not null || fastComputer);
         options?.Started?.Invoke(host);
         if (scripted is not null)
         {
@@ -194,7 +194,8 @@ public static class PlayCommand
         {
             host.World.Menu.StartSettings = host.World.Menu.PlayedSettings = settings;
             platform.SetGraphics?.Invoke(settings.Graphics);
-            RunWithStartMenu(host, platform, (next, fast) => Pace(new GameHost(next.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, next.Match, next.Practice), fastComputer || fast), audio, settingsPath, startMenu, dataFolder);
+            using var menuOnline = new MenuOnline(options?.HostAt ?? new System.Net.IPEndPoint(System.Net.IPAddress.Any, NetCommands.DefaultPort), TextWriter.Synchronized(Console.Error).WriteLine);
+            RunWithStartMenu(host, platform, (next, fast) => Pace(new GameHost(next.Scene, createSimulation ?? SimulationFactory.Create, (IGameWindow?)scripted ?? platform.Window, gameClock, next.Match, next.Practice), fastComputer || fast), audio, settingsPath, startMenu, dataFolder, menuOnline);
         }
         else
         {
@@ -220,7 +221,7 @@ public static class PlayCommand
     {
         if (host.Tree.Root.FindInTree<MatchNode>() is { } match)
         {
-            match.TakeBacks = allowed;
+            match.Session.TakeBacks = allowed;
         }
     }
 
@@ -235,25 +236,44 @@ public static class PlayCommand
 
     // The start menu shows over the default game; a different choice replaces the game (a new host
     // on the same window) between two frames.
-    private static void RunWithStartMenu(GameHost first, GamePlatform platform, Func<(Scene Scene, MatchSetup? Match, PracticeSetup? Practice), bool, GameHost> create, IAudioOutput audio, string settingsPath, bool showAtStart, string dataFolder)
+    private static void RunWithStartMenu(GameHost first, GamePlatform platform, Func<(Scene Scene, MatchSetup? Match, PracticeSetup? Practice), bool, GameHost> create, IAudioOutput audio, string settingsPath, bool showAtStart, string dataFolder, MenuOnline online)
     {
         var current = first;
-        // A match (rules and players), or practice (a drill's name, or null for free practice).
-        (GameRules? Rules, Seat[]? Players, string? Drill, GameSettings Settings)? pending = null;
+        // A match (rules and players), or practice (a drill's name, or null for free practice); the start menu over it or not.
+        (GameRules? Rules, Seat[]? Players, string? Drill, GameSettings Settings, bool Menu)? pending = null;
         var gallery = DrillLibrary.All();
         var drills = gallery.Select(d => (d.Name, d.Title)).ToList();
         void Listen(GameHost h)
         {
             h.World.Menu.Drills = drills;
             h.World.Menu.DrillGallery = gallery;
-            h.World.Menu.StartRequested += (rules, players) => pending = (rules, players, null, h.World.Menu.StartSettings);
-            h.World.Menu.PracticeRequested += drill => pending = (null, null, drill, h.World.Menu.StartSettings);
+            h.World.Menu.StartRequested += (rules, players) => pending = (rules, players, null, h.World.Menu.StartSettings, false);
+            h.World.Menu.PracticeRequested += drill => pending = (null, null, drill, h.World.Menu.StartSettings, false);
+            h.World.Menu.OnlineRequested += request =>
+            {
+                var settings = h.World.Menu.StartSettings;
+                settings.Save(settingsPath, Console.Error);
+                online.Ask(request, settings.Apply(SceneLoader.Load(FindRulesScene(request.Rules ?? settings.Game))));
+            };
+            // A host that stops waiting gets a game at this table of the same rules, the start menu over it.
+            h.World.Menu.HostingCancelled += () => pending = (h.World.Menu.StartGame, [new Seat("Player 1"), new Seat("Player 2")], null, h.World.Menu.StartSettings, true);
             // A new pace or graphics alone keeps the game: it is saved and applied here, a new game saves its own.
             h.World.Menu.SettingsChosen += chosen =>
             {
                 chosen.Save(settingsPath, Console.Error);
                 platform.SetGraphics?.Invoke(chosen.Graphics);
             };
+        }
+        // The new game takes the window (the old one is let go, the first one being the caller's).
+        void Replace(GameHost next)
+        {
+            var settings = current.World.Menu.StartSettings;
+            // The first game too stops listening to the window (its menu would still take the keys); disposing it again is harmless.
+            current.Dispose();
+            current = next;
+            current.Tree.Root.AddChild(new AudioNode(audio));
+            current.World.Menu.StartSettings = current.World.Menu.PlayedSettings = settings;
+            Listen(current);
         }
         Listen(first);
         if (showAtStart)
@@ -264,25 +284,34 @@ public static class PlayCommand
         {
             platform.Loop.Run(() =>
             {
+                if (online.Poll(current.World.Menu) is { } game)
+                {
+                    Replace(create((game.Scene, game.Match, null), false));
+                    game.Attach(current, fast: false);
+                    platform.SetTitle?.Invoke(TitleFor(game.Scene, game.Match));
+                    if (game.Link.Listener is { } listener)
+                    {
+                        current.World.Menu.ShowHosting(game.Link.Code, listener.Port, MenuOnline.Addresses());
+                    }
+                }
                 if (pending is { } next)
                 {
                     pending = null;
+                    online.Drop();
                     next.Settings.Save(settingsPath, Console.Error);
                     var drill = next.Drill is { } name ? DrillLibrary.Load(name) : null;
                     // A drill's physics is its own: the goal was checked with it.
                     var chosen = drill?.Scene ?? next.Settings.Apply(SceneLoader.Load(next.Rules is { } r ? FindRulesScene(r) : FindPracticeScene()));
-                    if (current != first)
-                    {
-                        current.Dispose();
-                    }
                     var setup = next.Rules is { } rules ? new MatchSetup(rules, next.Players!) : null;
                     var practice = setup is null ? PracticeFor(chosen, drill, Path.Combine(dataFolder, "practice", "position.json"), dataFolder) : null;
-                    current = create((chosen with { Shot = practice is null ? chosen.Shot : null }, setup, practice), next.Settings.FastComputer);
+                    Replace(create((chosen with { Shot = practice is null ? chosen.Shot : null }, setup, practice), next.Settings.FastComputer));
                     AllowTakeBacks(current, next.Settings.TakeBacks);
                     platform.SetTitle?.Invoke(practice is not null ? PracticeTitle(practice) : TitleFor(chosen, setup));
-                    current.Tree.Root.AddChild(new AudioNode(audio));
                     current.World.Menu.StartSettings = current.World.Menu.PlayedSettings = next.Settings;
-                    Listen(current);
+                    if (next.Menu)
+                    {
+                        current.World.Menu.ShowStart();
+                    }
                 }
                 platform.Renderer.Draw(current.RunFrame());
             });
@@ -373,6 +402,9 @@ public static class PlayCommand
 
         /// <summary>A game over the network (<c>host</c>, <c>join</c>): its scene, its match and the link to the peer; null for a game at this table.</summary>
         public OnlineGame? Online { get; init; }
+
+        /// <summary>Where a game hosted from the start menu listens (every address, port <see cref="NetCommands.DefaultPort"/> by default; tests: loopback).</summary>
+        public System.Net.IPEndPoint? HostAt { get; init; }
     }
 
     private static GameRules? ParseRules(string? name)

@@ -50,7 +50,7 @@ public sealed class AimLineNode : Node
         _cue = FindInTree<CueNode>();
         _match = FindInTree<MatchNode>();
         _pockets = TableGeometry.Build(_physics.Table, _physics.BallRadius).Pockets.ToArray();
-        Visible = _match is null || _match.Players.Any(p => p.ComputerLevel is <= HelpedAgainstLevel);
+        Visible = _match is null || _match.Session.Seats.Any(p => p.ComputerLevel is <= HelpedAgainstLevel);
     }
 
     /// <inheritdoc />
@@ -128,8 +128,8 @@ public sealed class AimLineNode : Node
         // A call marks its ball and pocket; a snooker nomination (a colour, a free ball) its ball.
         var call = _match switch
         {
-            { NeedsCall: true, CurrentCall: { } c } => c,
-            { NeedsNomination: true, CurrentNomination: { } n } => n,
+            { NeedsCall: true, Call.CurrentCall: { } c } => c,
+            { NeedsNomination: true, Call.CurrentNomination: { } n } => n,
             _ => null,
         };
         if (call is null || _cue is not { IsVisible: true } || _physics is not { } physics)

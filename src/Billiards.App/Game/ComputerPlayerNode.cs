@@ -111,11 +111,11 @@ public sealed class ComputerPlayerNode : Node
         {
             return false;
         }
-        if (_match.IsComputerActing || !_match.CanShoot || _hinting is not null)
+        if (_match.Session.IsComputerActing || !_match.CanShoot || _hinting is not null)
         {
             return true;
         }
-        var state = _match.State;
+        var state = _match.Session.State;
         var position = TablePosition.Of(_physics.Simulation, _physics.CueBall);
         var planner = _planner;
         ulong seed = _match.ShotSeed(3);
@@ -158,7 +158,7 @@ public sealed class ComputerPlayerNode : Node
             return;
         }
         FinishHint();
-        if (_match.IsOver || !_match.IsComputerActing)
+        if (_match.Session.IsOver || !_match.Session.IsComputerActing)
         {
             _decision = null;
             if (_hinting is null)
@@ -173,7 +173,7 @@ public sealed class ComputerPlayerNode : Node
             return;
         }
         int level = _match.Session.Shooter.ComputerLevel ?? HintLevel;
-        if (_match.PendingOptions.Count > 0)
+        if (_match.Session.PendingOptions.Count > 0)
         {
             ChooseOption();
             return;
@@ -184,14 +184,14 @@ public sealed class ComputerPlayerNode : Node
         }
         if (_decision is null && _thinking is null)
         {
-            var state = _match.State;
+            var state = _match.Session.State;
             var position = TablePosition.Of(_physics.Simulation, _physics.CueBall);
             var planner = _planner;
             ulong seed = _match.ShotSeed(1);
             var budget = Budget(BudgetMs);
             _decisionLevel = level;
             _thinking = BackgroundWork.Run(() => planner.Decide(state, position, SkillLevel.Of(level), budget, seed));
-            Status = $"{_match.State.ShooterName} is thinking...";
+            Status = $"{_match.Session.State.ShooterName} is thinking...";
             return;
         }
         if (_thinking is { IsCompleted: true } done)
@@ -209,7 +209,7 @@ public sealed class ComputerPlayerNode : Node
             _aimFrom = _match.AimDegrees;
             _match.Adopt(_decision, exactCall: true);
             _aimTime = 0;
-            Status = AimStatus(_match.State.ShooterName, _decision);
+            Status = AimStatus(_match.Session.State.ShooterName, _decision);
         }
         if (_decision is { } d)
         {
@@ -240,18 +240,18 @@ public sealed class ComputerPlayerNode : Node
         {
             var ruling = _match!.Session.LastRuling!;
             // The table as the shot left it (a scratched cue ball is off it), as self-play chooses.
-            var position = new TablePosition(_match.Game!.Shots[^1].After, _physics!.CueBall);
+            var position = new TablePosition(_match.Session.Game!.Shots[^1].After, _physics!.CueBall);
             var planner = _planner!;
             _choosing = BackgroundWork.Run(() => planner.ChooseOption(ruling, position));
-            Status = $"{_match.State.ShooterName} chooses...";
+            Status = $"{_match.Session.State.ShooterName} chooses...";
             return;
         }
         if (_choosing.IsCompleted)
         {
-            var option = _choosing.IsCompletedSuccessfully ? _choosing.Result : _match!.PendingOptions[0];
+            var option = _choosing.IsCompletedSuccessfully ? _choosing.Result : _match!.Session.PendingOptions[0];
             _choosing = null;
             Status = null;
-            if (_match!.PendingOptions.Contains(option))
+            if (_match!.Session.PendingOptions.Contains(option))
             {
                 _match.Choose(option);
             }
@@ -266,7 +266,7 @@ public sealed class ComputerPlayerNode : Node
         }
         _hinting = null;
         Status = null;
-        if (done.IsCompletedSuccessfully && _match is { IsComputerActing: false, CanShoot: true })
+        if (done.IsCompletedSuccessfully && _match is { Session.IsComputerActing: false, CanShoot: true })
         {
             LastHint = done.Result;
             _match.Adopt(done.Result, exactCall: false);

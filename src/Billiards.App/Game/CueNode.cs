@@ -28,7 +28,7 @@ public sealed class CueNode : Node
     public double PullBackPixels { get; set; }
 
     /// <summary>True when the cue is drawn: a cue ball on the table, nothing rolling, and the game not over (the result panel is up).</summary>
-    public bool IsVisible => _physics is { IsRolling: false, HasCueBall: true } && _match is not { IsOver: true };
+    public bool IsVisible => _physics is { IsRolling: false, HasCueBall: true } && _match is not { Session.IsOver: true };
 
     /// <summary>
     /// The stroke direction (unit, bed plane): from the camera to the cue ball (seed 4.4.3). The

@@ -73,7 +73,7 @@ public sealed class DiamondAidNode : Node
     protected override void Process(double dt)
     {
         if (!Visible || _cue is not { IsVisible: true } cue || _physics is not { IsRolling: false, HasCueBall: true } physics
-            || _match is { IsComputerActing: true } or { IsOver: true })
+            || _match is { Session.IsComputerActing: true } or { Session.IsOver: true })
         {
             Path = null;
             _traced = null;

@@ -37,8 +37,9 @@ public sealed class MatchNode : Node
     private CameraNode? _camera;
     private Call? _adoptedCall;
     private bool _hasAdoptedCall;
-    private bool _computerStrikes;
-    private GameShot? _peerShot;
+    // Who strikes the shot passing through now (the keys and the mouse are a person's), and a shot given whole.
+    private SeatKind _source = SeatKind.Person;
+    private GameShot? _given;
 
     /// <summary>A match in the window of <paramref name="session"/>.</summary>
     public MatchNode(Session session)
@@ -54,53 +55,8 @@ public sealed class MatchNode : Node
     /// <summary>The turn controller: every game of this sitting, its state and its timeline.</summary>
     public Session Session { get; }
 
-    /// <summary>The game now being played (Core's state machine; its record is the game record).</summary>
-    public Match Game => Session.Game;
-
-    /// <summary>The game's ruleset.</summary>
-    public Ruleset Ruleset => Session.Ruleset;
-
-    /// <summary>The two seats.</summary>
-    public IReadOnlyList<Seat> Players => Session.Seats;
-
-    /// <summary>The session's game state before the next shot (<see cref="Session.State"/>).</summary>
-    public GameState State => Session.State;
-
-    /// <summary>The options the incoming player must choose from now (empty when none).</summary>
-    public IReadOnlyList<RefereeOption> PendingOptions => Session.PendingOptions;
-
-    /// <summary>The message shown now (<see cref="Session.Message"/>).</summary>
-    public string? Message => Session.Message;
-
-    /// <summary>True once the referee ended the game.</summary>
-    public bool IsOver => Session.IsOver;
-
-    /// <summary>Games won by each player in this sitting.</summary>
-    public PerPlayer<int> GamesWon => Session.GamesWon;
-
-    /// <summary>True while the computer is to move.</summary>
-    public bool IsComputerActing => Session.IsComputerActing;
-
-    /// <summary>True while the player at the other end of the network is to move (their shot or their choice).</summary>
-    public bool IsPeerActing => !IsOver && !Forfeited && Session.Shooter.Kind == SeatKind.Remote;
-
-    /// <summary>
-    /// Why the game waits for the network (no player joined yet, the connection lost), or null:
-    /// while it is set no one at this table may strike or choose.
-    /// </summary>
-    public string? Held { get; set; }
-
-    /// <summary>True once a networked game ended by forfeit (the peer did not come back): no more shots.</summary>
-    public bool Forfeited { get; set; }
-
-    /// <summary>True for a game over the network: no take-back, restart or rematch (the other side would not follow).</summary>
-    public bool Networked { get; set; }
-
     /// <summary>True while the person at this table only watches: the computer's or the peer's move, or a game held by the network.</summary>
-    public bool IsWatching => IsComputerActing || IsPeerActing || (!IsOver && !Forfeited && Held is not null);
-
-    /// <summary>True when the players allow take-backs (<see cref="Session.TakeBacks"/>).</summary>
-    public bool TakeBacks { get => Session.TakeBacks; set => Session.TakeBacks = value; }
+    public bool IsWatching => Session.IsComputerActing || Session.IsRemoteActing || Session.IsHeld;
 
     /// <summary>The keyboard power (m/s).</summary>
     public double Power { get; private set; } = DefaultPower;
@@ -115,19 +71,10 @@ public sealed class MatchNode : Node
     public ulong ShotSeed(long stream) => Session.ShotSeed(MatchSeed, stream);
 
     /// <summary>True when the shooter may strike now: balls at rest, a cue ball, and the session's yes (no option pending, the game on).</summary>
-    public bool CanShoot => _physics is { IsRolling: false, HasCueBall: true } && !IsOver && !Forfeited && Held is null && PendingOptions.Count == 0;
+    public bool CanShoot => _physics is { IsRolling: false, HasCueBall: true } && !Session.IsOver && !Session.IsHeld && Session.PendingOptions.Count == 0;
 
-    /// <summary>True when <see cref="TakeBack"/> can act now.</summary>
-    public bool CanTakeBack => !Networked && Session.CanTakeBack && _physics is { IsRolling: false };
-
-    /// <summary>Takes the last shot back (<see cref="Session.TakeBack"/>); false while balls roll or when the session refuses.</summary>
-    public bool TakeBack() => CanTakeBack && Session.TakeBack();
-
-    /// <summary>Signal: the referee ruled on a shot (after the table shows the ruling).</summary>
-    public event Action<Ruling>? Ruled { add => Session.Ruled += value; remove => Session.Ruled -= value; }
-
-    /// <summary>Signal: the game moved on and the shooter may play; raised within the change, so the view has turned before the next input.</summary>
-    public event Action? ShooterToPlay { add => Session.ShooterToPlay += value; remove => Session.ShooterToPlay -= value; }
+    /// <summary>Takes the last shot back (<see cref="Session.TakeBack"/>, which the network never allows); false while balls roll or when the session refuses.</summary>
+    public bool TakeBack() => _physics is { IsRolling: false } && Session.TakeBack();
 
     /// <summary>The aim preview of the moment, or null without a cue ball or while balls roll.</summary>
     public AimPreview? Aim => _physics is { IsRolling: false, HasCueBall: true } physics && _cue is not null && _call.Geometry is { } geometry
@@ -137,17 +84,11 @@ public sealed class MatchNode : Node
     /// <summary>The cue's aim now (deg, from +x counter-clockwise).</summary>
     public double AimDegrees => _cue is null ? 0 : ViewMath.AimDegrees(_cue.AimDirection);
 
-    /// <summary>The call the shooter makes now (<see cref="ShotCall.CurrentCall"/>).</summary>
-    public Call? CurrentCall => _call.CurrentCall;
-
-    /// <summary>The nomination the shooter makes now (<see cref="ShotCall.CurrentNomination"/>).</summary>
-    public Call? CurrentNomination => _call.CurrentNomination;
-
     /// <summary>True when the rules call this shot.</summary>
-    public bool NeedsCall => Ruleset.NeedsCall(State);
+    public bool NeedsCall => Session.Ruleset.NeedsCall(Session.State);
 
     /// <summary>True when the shooter nominates a ball without a pocket.</summary>
-    public bool NeedsNomination => Ruleset.Nominates(State);
+    public bool NeedsNomination => Session.Ruleset.Nominates(Session.State);
 
     /// <summary>The call being picked for the next shot (B, C, a click, a plan's).</summary>
     public ShotCall Call => _call;
@@ -183,16 +124,12 @@ public sealed class MatchNode : Node
         }
         if (decision.Place is { } place && _physics.BallInHand)
         {
-            var old = _physics.CueBallPosition;
-            if (_physics.TryPlaceCueBall(place) && _camera is not null)
-            {
-                _camera.Camera.Translate(_physics.CueBallPosition - old);
-            }
+            PlaceCueBall(place);
         }
         _call.Take(decision.Call);
         _adoptedCall = exactCall ? decision.Call : null;
         _hasAdoptedCall = exactCall;
-        PushOut |= decision.PushOut && Ruleset.MayPushOut(State);
+        PushOut |= decision.PushOut && Session.Ruleset.MayPushOut(Session.State);
         if (!exactCall)
         {
             // A hint sets the person's power; the computer strikes its own shot and leaves the person's power alone.
@@ -202,14 +139,22 @@ public sealed class MatchNode : Node
         AimAt(decision.Shot.AimDeg);
     }
 
+    /// <summary>Places the cue ball in hand at <paramref name="place"/> when it may lie there, the view following it.</summary>
+    public void PlaceCueBall(Billiards.Core.Mathematics.Vec3 place)
+    {
+        var old = _physics!.CueBallPosition;
+        if (_physics.TryPlaceCueBall(place) && _camera is not null)
+        {
+            _camera.Camera.Translate(_physics.CueBallPosition - old);
+        }
+    }
+
     /// <summary>Strikes a shot the computer plays (its plan with its own error), with the call it adopted; the session refuses it when it is not the computer's turn.</summary>
     public void StrikeAsComputer(ShotSpec shot)
     {
         if (CanShoot)
         {
-            _computerStrikes = true;
-            _physics!.Strike(_cue?.Playable(shot) ?? shot);
-            _computerStrikes = false;
+            StrikeFrom(SeatKind.Computer, _cue?.Playable(shot) ?? shot, null);
         }
     }
 
@@ -220,84 +165,44 @@ public sealed class MatchNode : Node
     /// <exception cref="ArgumentException">When the option is not offered now.</exception>
     public void Choose(RefereeOption option)
     {
-        if (IsPeerActing || Forfeited || Held is not null)
+        if (!Session.IsRemoteActing && !Session.IsHeld)
         {
-            return;
+            Session.Choose(option);
         }
-        Session.Choose(option);
-        Chose?.Invoke(option);
     }
 
-    /// <summary>Carries out the peer's choice, which came over the network (the session checks it is offered).</summary>
-    /// <exception cref="ArgumentException">When the option is not offered now.</exception>
-    public void ChooseAsPeer(RefereeOption option) => Session.Choose(option);
-
-    /// <summary>Signal: a shot struck at this table (by the keys, the mouse or the computer) was accepted by the session.</summary>
-    public event Action<GameShot>? Struck;
-
-    /// <summary>Signal: an option was chosen at this table.</summary>
-    public event Action<RefereeOption>? Chose;
-
     /// <summary>
-    /// Strikes the peer's shot exactly as it came (its placement, call and push-out); the session
-    /// refuses it unless the remote seat is to play.
+    /// Strikes a whole shot as it was made elsewhere (its placement, call and push-out: a network
+    /// peer's) from <paramref name="source"/>; false when the session refuses it (not that seat's turn).
     /// </summary>
-    public bool StrikeAsPeer(GameShot shot)
+    public bool StrikeGiven(GameShot shot, SeatKind source)
     {
         ArgumentNullException.ThrowIfNull(shot);
-        if (_physics is not { IsRolling: false, HasCueBall: true } physics || IsOver || Forfeited || PendingOptions.Count > 0)
-        {
-            return false;
-        }
-        ShowPeerPlacement(shot.Place);
-        _peerShot = shot;
+        return _physics is { IsRolling: false, HasCueBall: true } && StrikeFrom(source, shot.Shot, shot);
+    }
+
+    private bool StrikeFrom(SeatKind source, ShotSpec shot, GameShot? given)
+    {
+        (_source, _given) = (source, given);
         try
         {
-            physics.Strike(shot.Shot);
+            _physics!.Strike(shot);
         }
         finally
         {
-            _peerShot = null;
+            (_source, _given) = (SeatKind.Person, null);
         }
-        return physics.IsRolling;
+        return _physics.IsRolling;
     }
-
-    /// <summary>Shows the peer's cue ball where they placed it (ball in hand), before their stroke.</summary>
-    public void ShowPeerPlacement(Billiards.Core.Mathematics.Vec3? place)
-    {
-        if (place is not { } p || _physics is null || Session.BallInHand == BallInHand.None)
-        {
-            return;
-        }
-        var old = _physics.CueBallPosition;
-        _physics.GiveBallInHand(Session.BallInHand.Region());
-        if (_physics.TryPlaceCueBall(p) && _camera is not null)
-        {
-            _camera.Camera.Translate(_physics.CueBallPosition - old);
-        }
-        _physics.EndBallInHand();
-    }
-
-    /// <summary>Shows the table as the session's game stands (after the host's game was taken whole).</summary>
-    public void Reload() => ShowTable();
 
     /// <summary>A new game after the last one ended (<see cref="Session.Rematch"/>); not over the network.</summary>
-    public void Rematch()
-    {
-        if (!Networked)
-        {
-            Session.Rematch();
-        }
-    }
+    public bool Rematch() => !Networked && Session.Rematch();
 
     /// <summary>The game starts again (the pause menu), while no ball rolls (<see cref="Session.Restart"/>); not over the network.</summary>
-    public void Restart()
-    {
-        if (_physics is { IsRolling: false } && !Networked)
-        {
-            Session.Restart();
-        }
-    }
+    public bool Restart() => _physics is { IsRolling: false } && !Networked && Session.Restart();
+
+    // A game with a remote seat: no take-back, restart or rematch (the other side would not follow).
+    private bool Networked => Session.Seats.Any(s => s.Kind == SeatKind.Remote);
 
     /// <inheritdoc />
     protected override void Ready()
@@ -337,14 +242,14 @@ public sealed class MatchNode : Node
         }
         switch (key.Key)
         {
-            case >= Key.D1 and <= Key.D5 when (int)(key.Key - Key.D1) < PendingOptions.Count:
-                Choose(PendingOptions[key.Key - Key.D1]);
+            case >= Key.D1 and <= Key.D5 when (int)(key.Key - Key.D1) < Session.PendingOptions.Count:
+                Choose(Session.PendingOptions[key.Key - Key.D1]);
                 return true;
-            case Key.Enter when IsOver:
+            case Key.Enter when Session.IsOver:
                 Rematch();
                 return true;
             case Key.Space when CanShoot && _cue is not null:
-                bool power = State.Shot == 0 && Ruleset.PowerBreak;
+                bool power = Session.State.Shot == 0 && Session.Ruleset.PowerBreak;
                 _physics!.Strike(_cue.MakeShot(Power));
                 if (power)
                 {
@@ -368,9 +273,9 @@ public sealed class MatchNode : Node
             case Key.Q:
                 Power = Math.Max(MinPower, Power - PowerStep);
                 return true;
-            case Key.O when CanShoot && Ruleset.MayPushOut(State):
+            case Key.O when CanShoot && Session.Ruleset.MayPushOut(Session.State):
                 PushOut = !PushOut;
-                Session.Say(PushOut ? $"{State.ShooterName} declares a push-out." : "Push-out withdrawn.");
+                Session.Say(PushOut ? $"{Session.State.ShooterName} declares a push-out." : "Push-out withdrawn.");
                 return true;
             case Key.C when CanShoot:
                 _call.CyclePocket();
@@ -386,33 +291,22 @@ public sealed class MatchNode : Node
         }
     }
 
-    // Every strike in the window (Space, the mouse, the computer) arrives here: the session says
+    // Every strike in the window (Space, the mouse, the computer, a peer) arrives here: the session says
     // whether it may be struck now and makes its simulation from the balls at rest.
     private Core.Physics.Simulation? OnStrike(ShotSpec shot)
     {
-        if (_peerShot is { } peer)
-        {
-            // The peer's shot as it came: the session checks the seat, the placement and the call.
-            var struck = Session.Submit(peer with { Shot = shot }, SeatKind.Remote);
-            if (struck is not null)
-            {
-                ResetShot();
-            }
-            return struck;
-        }
-        if (Held is not null || Forfeited)
+        if (_given is null && Session.Held is not null)
         {
             return null;
         }
         bool inHand = Session.BallInHand != BallInHand.None;
-        var call = _hasAdoptedCall ? _adoptedCall : NeedsCall ? CurrentCall : NeedsNomination ? CurrentNomination : null;
-        var source = _computerStrikes ? SeatKind.Computer : SeatKind.Person;
-        var game = new GameShot(shot, call, inHand ? _physics!.CueBallPosition : null, PushOut);
-        var sim = Session.Submit(game, source);
+        var call = _hasAdoptedCall ? _adoptedCall : NeedsCall ? _call.CurrentCall : NeedsNomination ? _call.CurrentNomination : null;
+        // A shot given whole (a peer's) as it came: the session checks the seat, the placement and the call.
+        var game = _given is { } given ? given with { Shot = shot } : new GameShot(shot, call, inHand ? _physics!.CueBallPosition : null, PushOut);
+        var sim = Session.Submit(game, _source);
         if (sim is not null)
         {
             ResetShot();
-            Struck?.Invoke(game);
         }
         return sim;
     }
@@ -427,10 +321,10 @@ public sealed class MatchNode : Node
         {
             return;
         }
-        _physics.CueBall = Ruleset.CueBall(Game.State);
-        _physics.Load(Game.Layout());
+        _physics.CueBall = Session.Ruleset.CueBall(Session.Game.State);
+        _physics.Load(Session.Game.Layout());
         // The peer places their own cue ball: it is not in this player's hand.
-        if (Session.BallInHand == BallInHand.None || IsOver || PendingOptions.Count > 0 || IsPeerActing)
+        if (Session.BallInHand == BallInHand.None || Session.IsOver || Session.PendingOptions.Count > 0 || Session.IsRemoteActing)
         {
             _physics.EndBallInHand();
         }

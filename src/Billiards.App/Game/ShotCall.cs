@@ -22,7 +22,7 @@ public sealed class ShotCall
     internal ShotCall(MatchNode match) => _match = match;
 
     // The call asks the game's constraints only: which balls may be hit first and called.
-    private IShotConstraints Constraints => _match.Ruleset;
+    private IShotConstraints Constraints => _match.Session.Ruleset;
 
     /// <summary>The table's geometry (pocket circles), once the match is in the tree.</summary>
     public TableGeometry? Geometry { get; private set; }
@@ -50,7 +50,7 @@ public sealed class ShotCall
     /// <summary>Calls a ball: its easiest pocket until a pocket is called; in snooker it nominates the ball where the shooter may nominate it.</summary>
     public void CallBall(BallId ball)
     {
-        if (_match.CanShoot && (!_match.NeedsNomination || Constraints.MayCall(_match.State, ball)))
+        if (_match.CanShoot && (!_match.NeedsNomination || Constraints.MayCall(_match.Session.State, ball)))
         {
             _calledBall = ball;
             _calledPocket = null;
@@ -101,7 +101,7 @@ public sealed class ShotCall
             var may = Nominatable();
             var aimed = _match.Aim?.Ball;
             // A free ball while on the reds is nominated as a colour (rules.md): the default is a colour.
-            List<BallId> byDefault = SnookerPart.Of(_match.State).FreeBall && _match.Ruleset is SnookerRuleset && SnookerRuleset.BallOnOf(_match.State) == SnookerRuleset.Red && may.Any(SnookerRuleset.IsColour)
+            List<BallId> byDefault = SnookerPart.Of(_match.Session.State).FreeBall && _match.Session.Ruleset is SnookerRuleset && SnookerRuleset.BallOnOf(_match.Session.State) == SnookerRuleset.Red && may.Any(SnookerRuleset.IsColour)
                 ? [.. may.Where(SnookerRuleset.IsColour)]
                 : may;
             var ball = _calledBall is { } c && may.Contains(c) ? c
@@ -111,7 +111,7 @@ public sealed class ShotCall
         }
     }
 
-    private List<BallId> Nominatable() => [.. _physics!.ObjectBallsOnTable().Where(b => Constraints.MayCall(_match.State, b)).OrderBy(b => b.Value)];
+    private List<BallId> Nominatable() => [.. _physics!.ObjectBallsOnTable().Where(b => Constraints.MayCall(_match.Session.State, b)).OrderBy(b => b.Value)];
 
     /// <summary>
     /// X: the cue aims at the ghost ball that sends the called ball (or, with no call, the nearest
@@ -277,7 +277,7 @@ public sealed class ShotCall
         {
             return null;
         }
-        var legal = Constraints.LegalTargets(_match.State, _physics.ObjectBallsOnTable());
+        var legal = Constraints.LegalTargets(_match.Session.State, _physics.ObjectBallsOnTable());
         var cue = _physics.CueBallPosition with { Z = 0 };
         if (!_match.NeedsCall)
         {

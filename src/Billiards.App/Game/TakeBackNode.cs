@@ -7,7 +7,7 @@ namespace Billiards.App.Game;
 /// <summary>
 /// The take-back (<see cref="UndoKey"/>): back to the position and the game state before the last
 /// shot. Always in practice (<see cref="PhysicsNode.Undo"/>); in a match only when the players allow
-/// take-backs (<see cref="MatchNode.TakeBacks"/>), through Core's match snapshot. Not while balls
+/// take-backs (<see cref="Core.Rules.Session.TakeBacks"/>), through Core's match snapshot. Not while balls
 /// roll or the instant replay is shown.
 /// </summary>
 public sealed class TakeBackNode : Node
@@ -44,7 +44,7 @@ public sealed class TakeBackNode : Node
         bool done = _match is not null ? _match.TakeBack() : _practice is not null ? _practice.Retry() : _physics.Undo();
         Refusal = done ? null
             : _physics.IsRolling ? "No take-back while balls roll."
-            : _match is { TakeBacks: false } ? "Take-backs are off in this game (start menu, or play --take-backs)."
+            : _match is { Session.TakeBacks: false } ? "Take-backs are off in this game (start menu, or play --take-backs)."
             : "No shot to take back.";
         return done;
     }

@@ -8,7 +8,7 @@ namespace Billiards.App.Game;
 /// After each shot, and when a new game starts, turns the view (and with it the cue) from the cue
 /// ball to the nearest ball the shooter may play (<see cref="Billiards.Core.Rules.Ruleset.LegalTargets"/>),
 /// rather than leaving the last shot's aim, which often looks at an empty rail. It turns the moment
-/// the shooter may play (<see cref="MatchNode.ShooterToPlay"/>: the ruling, the choice after a
+/// the shooter may play (<see cref="Core.Rules.Session.ShooterToPlay"/>: the ruling, the choice after a
 /// foul, the new rack), not in a later frame: a key pressed in the same frame as the choice then
 /// turns from the new view, as it does a frame later, so a script plays the same at any frame rate.
 /// The first rack's view turns in the first frame, once every node is ready.
@@ -27,7 +27,7 @@ public sealed class TargetViewNode : Node
     {
         _match = GetInTree<MatchNode>();
         _physics = GetInTree<PhysicsNode>();
-        _match.ShooterToPlay += Turn;
+        _match.Session.ShooterToPlay += Turn;
         _pending = true; // the first game's break
     }
 
@@ -43,7 +43,7 @@ public sealed class TargetViewNode : Node
     private void Turn()
     {
         _pending = false;
-        if (_match is { Ruleset.HasSnookers: true } && _physics is not null && ReachableAim(_match, _physics) is { } reachable)
+        if (_match is { Session.Ruleset.HasSnookers: true } && _physics is not null && ReachableAim(_match, _physics) is { } reachable)
         {
             LastTarget = reachable.Id;
             _match.AimAt(reachable.AimDegrees);
@@ -67,7 +67,7 @@ public sealed class TargetViewNode : Node
         var cue = physics.CueBallPosition;
         (BallId Id, Vec3 Position)? best = null;
         double nearest = double.PositiveInfinity;
-        foreach (var id in match.Ruleset.LegalTargets(match.State, onTable))
+        foreach (var id in match.Session.Ruleset.LegalTargets(match.Session.State, onTable))
         {
             var p = sim.Balls[sim.IndexOf(id)].Position;
             double d = (p - cue).LengthXY;
@@ -95,7 +95,7 @@ public sealed class TargetViewNode : Node
         ArgumentNullException.ThrowIfNull(physics);
         var sim = physics.Simulation;
         var onTable = physics.ObjectBallsOnTable();
-        var legal = match.Ruleset.LegalTargets(match.State, onTable);
+        var legal = match.Session.Ruleset.LegalTargets(match.Session.State, onTable);
         var cue = physics.CueBallPosition with { Z = 0 };
         int cueIndex = sim.IndexOf(physics.CueBall);
         foreach (var id in legal.OrderBy(b => ((sim.Balls[sim.IndexOf(b)].Position with { Z = 0 }) - cue).LengthXY))

@@ -111,7 +111,7 @@ public sealed class HudNode : Node
             Board = board,
             Developer = _keys?.ShowDeveloper ?? false,
             // Not at game over; the person's power not on the computer's turn.
-            Gauges = _cue is { IsVisible: true } cue && _match is not { IsOver: true } && !replaying
+            Gauges = _cue is { IsVisible: true } cue && _match is not { Session.IsOver: true } && !replaying
                 ? new CueGauges(cue.Tip.Fractions, GaugeDegrees(cue.EffectiveElevationDegrees), KeyboardPower())
                 : null,
             Result = _match is null ? null : ScoreboardBuilder.Result(_match),
@@ -121,7 +121,7 @@ public sealed class HudNode : Node
     }
 
     // The keyboard's power as a share of the strongest: the match's on a person's turn, practice's always.
-    private float? KeyboardPower() => _match is { IsComputerActing: false } m ? (float)(m.Power / MatchNode.MaxPower)
+    private float? KeyboardPower() => _match is { Session.IsComputerActing: false } m ? (float)(m.Power / MatchNode.MaxPower)
         : _match is null && _practice is not null ? (float)(_practice.Power / MatchNode.MaxPower) : null;
 
     /// <summary>Steps the elevation diagram is drawn in (degrees).</summary>
@@ -168,7 +168,7 @@ public sealed class HudNode : Node
             string locked = _modes.IsLocked ? " (balls rolling: view only)" : "";
             _lines.Add($"Mode: {ModeName(_modes.Mode)}{locked}");
         }
-        if (_physics is { BallInHand: true } && _match is not { IsComputerActing: true })
+        if (_physics is { BallInHand: true } && _match is not { Session.IsComputerActing: true })
         {
             _lines.Add("Ball in hand: drag it (move mode, M), then S to shoot");
         }

@@ -20,22 +20,22 @@ public static class MatchLines
         ArgumentNullException.ThrowIfNull(lines);
         ArgumentNullException.ThrowIfNull(match);
         ArgumentNullException.ThrowIfNull(physics);
-        var state = match.State;
+        var state = match.Session.State;
         var onTable = physics.ObjectBallsOnTable();
         // The ruleset's own words: snooker's frames, not games.
-        lines.Add($"{state.Rules.ToName()}  shot {state.Shot}  {match.Ruleset.GameWord}s {match.GamesWon.First}-{match.GamesWon.Second}");
+        lines.Add($"{state.Rules.ToName()}  shot {state.Shot}  {match.Session.Ruleset.GameWord}s {match.Session.GamesWon.First}-{match.Session.GamesWon.Second}");
         for (int p = 0; p < 2; p++)
         {
-            string mark = p == state.Shooter && !match.IsOver ? "> " : "  ";
+            string mark = p == state.Shooter && !match.Session.IsOver ? "> " : "  ";
             var sb = new StringBuilder();
-            var target = match.Ruleset.Target(state, p, onTable);
+            var target = match.Session.Ruleset.Target(state, p, onTable);
             sb.Append(CultureInfo.InvariantCulture, $"{mark}{state.Players[p]}: {target.Text}");
             // A game with a ball on (snooker) has the score in its target's words and no score to reach.
-            if (match.Ruleset.HasScore && !match.Ruleset.HasBallOn)
+            if (match.Session.Ruleset.HasScore && !match.Session.Ruleset.HasBallOn)
             {
                 sb.Append(CultureInfo.InvariantCulture, $"  score {state.Score[p]} of {state.Target}");
             }
-            if (match.Ruleset.HasThreeFouls && state.FoulsInRow[p] > 0)
+            if (match.Session.Ruleset.HasThreeFouls && state.FoulsInRow[p] > 0)
             {
                 sb.Append(CultureInfo.InvariantCulture, $"  fouls in a row {state.FoulsInRow[p]}");
             }
@@ -45,7 +45,7 @@ public static class MatchLines
                 icons?.Add(new Rendering.HudIcon(lines.Count - 1, ball.Value));
             }
         }
-        if (match.IsOver)
+        if (match.Session.IsOver)
         {
             string next = match.Session.RematchIn is double left ? $"Next game in {Math.Max(1, (int)Math.Ceiling(left))} s" : "Enter: rematch";
             lines.Add(match.Session.Winner is int w ? $"GAME OVER: {state.Players[w]} wins. {next}" : $"GAME OVER. {next}");
@@ -54,13 +54,13 @@ public static class MatchLines
         {
             lines.Add(computerStatus);
         }
-        else if (match.IsComputerActing)
+        else if (match.Session.IsComputerActing)
         {
             lines.Add($"{state.ShooterName} (computer) is at the table.");
         }
-        else if (match.PendingOptions.Count > 0)
+        else if (match.Session.PendingOptions.Count > 0)
         {
-            var options = match.PendingOptions.Select((o, i) => $"[{i + 1}] {o.ToName()}");
+            var options = match.Session.PendingOptions.Select((o, i) => $"[{i + 1}] {o.ToName()}");
             lines.Add($"{state.ShooterName} chooses: {string.Join("  ", options)}");
         }
         else
@@ -70,18 +70,18 @@ public static class MatchLines
                 lines.Add($"Ball in hand ({HandWords(physics.HandRegion)}): M and drag to place");
             }
             string push = match.PushOut ? "  PUSH-OUT" : "";
-            string pushKey = match.Ruleset.MayPushOut(state) ? "  O: push-out" : "";
+            string pushKey = match.Session.Ruleset.MayPushOut(state) ? "  O: push-out" : "";
             // Only a shot the rules call shows a call.
-            string call = match.NeedsNomination ? $"Nominate: {(match.CurrentNomination is { } n ? physics.Simulation.BallSet.NameOf(n.Ball) : "none")} (B)  "
-                : !match.NeedsCall ? "" : match.CurrentCall is { } c ? $"Call: {physics.Simulation.BallSet.NameOf(c.Ball)} in {c.Pocket.ToName()} (B ball, C pocket)  " : "Call: none (B ball, C pocket)  ";
+            string call = match.NeedsNomination ? $"Nominate: {(match.Call.CurrentNomination is { } n ? physics.Simulation.BallSet.NameOf(n.Ball) : "none")} (B)  "
+                : !match.NeedsCall ? "" : match.Call.CurrentCall is { } c ? $"Call: {physics.Simulation.BallSet.NameOf(c.Ball)} in {c.Pocket.ToName()} (B ball, C pocket)  " : "Call: none (B ball, C pocket)  ";
             lines.Add(string.Create(CultureInfo.InvariantCulture, $"{call}Power {match.Power:0.00} m/s (Q/W, Space shoots, G hint){push}{pushKey}"));
         }
         // This game's: a rematch starts without the last game's ruling.
-        if (match.Game?.LastRuling is { } last)
+        if (match.Session.Game?.LastRuling is { } last)
         {
             lines.Add($"Last ruling: {last.Message}");
         }
-        if (match.Message is { } message && message != match.Game?.LastRuling?.Message)
+        if (match.Session.Message is { } message && message != match.Session.Game?.LastRuling?.Message)
         {
             lines.Add(message);
         }

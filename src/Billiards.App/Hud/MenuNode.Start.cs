@@ -26,7 +26,7 @@ public sealed partial class MenuNode
     public const string GameTitle = "Billiards";
 
     /// <summary>True while one of the start menu's screens is shown.</summary>
-    public bool IsStartScreen => Page is MenuPage.Start or MenuPage.Play or MenuPage.Drills or MenuPage.Settings;
+    public bool IsStartScreen => Page is MenuPage.Start or MenuPage.Play or MenuPage.Drills or MenuPage.Settings || IsOnlinePage(Page);
 
     /// <summary>The drills the start menu's gallery shows, with their pictures and goals; set by the host (none by default).</summary>
     public IReadOnlyList<Drill> DrillGallery { get; set; } = [];
@@ -83,7 +83,7 @@ public sealed partial class MenuNode
     {
         Page = page;
         _focus = 0;
-        if (page == MenuPage.Play)
+        if (page is MenuPage.Play or MenuPage.Host)
         {
             _focus = -1; // Start, found by the layout
         }
@@ -173,7 +173,7 @@ public sealed partial class MenuNode
         {
             ApplySettings();
         }
-        Go(MenuPage.Start);
+        Go(IsOnlinePage(Page) ? OnlineBack() : MenuPage.Start);
     }
 
     // The settings take effect on leaving their screen: the file keeps them, the game behind the menu
@@ -187,7 +187,7 @@ public sealed partial class MenuNode
         }
         if (_match is not null)
         {
-            _match.TakeBacks = StartSettings.TakeBacks;
+            _match.Session.TakeBacks = StartSettings.TakeBacks;
         }
         if (FindInTree<AudioNode>() is { } audio)
         {
@@ -195,6 +195,21 @@ public sealed partial class MenuNode
         }
         PlayedSettings = PlayedSettings with { FastComputer = StartSettings.FastComputer, TakeBacks = StartSettings.TakeBacks, Muted = StartSettings.Muted, Graphics = StartSettings.Graphics };
     }
+
+    // The games to choose from, under their label, the one chosen marked; returns the y below.
+    private float GameRow(float y, float line, float u, float cx, Action<float, float, IReadOnlyList<(string Label, Action Act, bool Chosen)>> row)
+    {
+        var games = Ruleset.All.Select(r => r.Game).ToList();
+        float gameW = (games.Max(g => HudFont.Width(GameName(g))) + 16) * u;
+        _labels.Add(new HudLabel(cx, y, "Game", 1, Gold: true, Centred: true));
+        y += line + (2 * u);
+        row(y, gameW, [.. games.Select(g => (GameName(g), (Action)(() => StartGame = g), StartGame == g))]);
+        return y + line + (10 * u) + (2 * line);
+    }
+
+    private void NextCushion() => StartSettings = StartSettings with { Cushion = Cycle(ModelRegistry.BallCushionModels, StartSettings.Cushion) };
+
+    private void NextCloth() => StartSettings = StartSettings with { Cloth = Cycle(Cloth.All, StartSettings.Cloth) };
 
     private static T Cycle<T>(IReadOnlyList<T> all, T current) where T : class
     {
@@ -239,6 +254,7 @@ public sealed partial class MenuNode
             MenuPage.Play => "Play: choose the game and your opponent, then Start",
             MenuPage.Drills => "Drills: one shot to master, its goal under its picture",
             MenuPage.Settings => "Settings: click a line to change it; Back keeps them",
+            _ when IsOnlinePage(Page) => OnlineSubtitle(Page),
             _ => "Pool, snooker and three-cushion",
         };
         _labels.Add(new HudLabel(cx, y, subtitle, 1, Centred: true));
@@ -250,6 +266,7 @@ public sealed partial class MenuNode
                 foreach (var (label, act) in new (string, Action)[]
                 {
                     ("Play", () => Go(MenuPage.Play)),
+                    ("Play online", () => Go(MenuPage.Online)),
                     ("Practice", () => RequestPractice(null)),
                     ("Drills", () => Go(MenuPage.Drills)),
                     ("Settings", () => Go(MenuPage.Settings)),
@@ -264,12 +281,7 @@ public sealed partial class MenuNode
                 break;
             case MenuPage.Play:
             {
-                var games = Ruleset.All.Select(r => r.Game).ToList();
-                float gameW = (games.Max(g => HudFont.Width(GameName(g))) + 16) * u;
-                _labels.Add(new HudLabel(cx, y, "Game", 1, Gold: true, Centred: true));
-                y += line + (2 * u);
-                Row(y, gameW, [.. games.Select(g => (GameName(g), (Action)(() => StartGame = g), StartGame == g))]);
-                y += buttonH + (2 * line);
+                y = GameRow(y, line, u, cx, Row);
                 _labels.Add(new HudLabel(cx, y, "Opponent: a second player at this computer, or the computer (level 1 easy, 5 strong)", 1, Gold: true, Centred: true));
                 y += line + (2 * u);
                 var opponents = new List<(string, Action, bool)> { ("Person", () => StartOpponent = null, StartOpponent is null) };
@@ -329,8 +341,8 @@ public sealed partial class MenuNode
                 var s = StartSettings;
                 var items = new (string, Action)[]
                 {
-                    ($"Cushion: {CushionName(s.Cushion)}", () => StartSettings = StartSettings with { Cushion = Cycle(ModelRegistry.BallCushionModels, StartSettings.Cushion) }),
-                    ($"Cloth: {ClothName(s.Cloth)}", () => StartSettings = StartSettings with { Cloth = Cycle(Cloth.All, StartSettings.Cloth) }),
+                    ($"Cushion: {CushionName(s.Cushion)}", NextCushion),
+                    ($"Cloth: {ClothName(s.Cloth)}", NextCloth),
                     ($"Computer's pace: {(s.FastComputer ? "fast" : "watchable")}", () => StartSettings = StartSettings with { FastComputer = !StartSettings.FastComputer }),
                     ($"Take-backs: {(s.TakeBacks ? "allowed (Z)" : "off")}", () => StartSettings = StartSettings with { TakeBacks = !StartSettings.TakeBacks }),
                     ($"Sound: {(s.Muted ? "muted" : "on")}", () => StartSettings = StartSettings with { Muted = !StartSettings.Muted }),
@@ -346,6 +358,9 @@ public sealed partial class MenuNode
                 Row(y, wide, [("Back", Back, false)]);
                 break;
             }
+            default:
+                LayoutOnline(ref y, wide, line, u, cx, Row);
+                break;
         }
         if (_buttons.Count > 0)
         {

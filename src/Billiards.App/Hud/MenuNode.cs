@@ -26,6 +26,14 @@ public enum MenuPage
     Drills,
     /// <summary>The start menu's settings: the physics in words, the computer's pace, take-backs, sound.</summary>
     Settings,
+    /// <summary>The start menu's "Play online": host a game or join one.</summary>
+    Online,
+    /// <summary>Hosting: the game to host (the physics are the settings'), then Host.</summary>
+    Host,
+    /// <summary>Joining: the host's address and the code typed, then Join.</summary>
+    Join,
+    /// <summary>The hosted game's code and address, while it waits for a player.</summary>
+    Hosting,
 }
 
 /// <summary>
@@ -101,14 +109,14 @@ public sealed partial class MenuNode : Node
     private void Begin()
     {
         Resume();
-        if (_match is not null && _match.Session.Rules == StartGame && _match.Players[1].ComputerLevel == StartOpponent && _match.Players[0].IsHuman && StartSettings.Physics == PlayedSettings.Physics)
+        if (_match is not null && _match.Session.Rules == StartGame && _match.Session.Seats[1].ComputerLevel == StartOpponent && _match.Session.Seats[0].IsHuman && StartSettings.Physics == PlayedSettings.Physics)
         {
             // The game behind the menu is the one chosen; a new pace or take-back setting takes effect in it at once.
             if (FindInTree<ComputerPlayerNode>() is { } computer)
             {
                 computer.Fast = StartSettings.FastComputer;
             }
-            _match.TakeBacks = StartSettings.TakeBacks;
+            _match.Session.TakeBacks = StartSettings.TakeBacks;
             PlayedSettings = StartSettings;
             SettingsChosen?.Invoke(StartSettings);
             return;
@@ -151,7 +159,7 @@ public sealed partial class MenuNode : Node
         }
         if (e is KeyInput { Pressed: true } key)
         {
-            return OnKey(key.Key);
+            return TypeOnline(key.Key, key.Shift) || OnKey(key.Key);
         }
         // A menu takes every other input while it is open.
         return Page != MenuPage.None;
@@ -170,12 +178,12 @@ public sealed partial class MenuNode : Node
             case MenuPage.None when key == Key.Escape:
                 Open();
                 return true;
-            case MenuPage.None when key == MenuKey && _match is { IsOver: true, Session.RematchIn: null }:
+            case MenuPage.None when key == MenuKey && _match is { Session.IsOver: true, Session.RematchIn: null }:
                 ShowStart();
                 return true;
             case MenuPage.None:
                 return false;
-            case MenuPage.Start or MenuPage.Play or MenuPage.Drills or MenuPage.Settings:
+            case not MenuPage.Pause and not MenuPage.ConfirmQuit when IsStartScreen:
                 StartKey(key);
                 return true;
             case MenuPage.Pause:
@@ -233,6 +241,7 @@ public sealed partial class MenuNode : Node
             _restartAtRest = false;
             Restart();
         }
+        ProcessOnline();
     }
 
     private void Restart()
@@ -316,23 +325,23 @@ public sealed partial class MenuNode : Node
                 y = height / 2f;
                 break;
             default:
-                if (_match is { IsOver: true, Session.RematchIn: null } over)
+                if (_match is { Session.IsOver: true, Session.RematchIn: null } over)
                 {
                     // Under the result panel (HudRenderer draws it above 0.64 of the height).
-                    items.Add(("Rematch [Enter]", over.Rematch));
+                    items.Add(("Rematch [Enter]", () => over.Rematch()));
                     items.Add(($"Menu [{MenuKey}]", () => ShowStart()));
                     y = height * 0.66f;
                     break;
                 }
                 // No choice over an instant replay: its buttons would hide the shot replayed.
-                if (_match is not { PendingOptions.Count: > 0, IsWatching: false } match || _replay is { IsActive: true })
+                if (_match is not { Session.PendingOptions.Count: > 0, IsWatching: false } match || _replay is { IsActive: true })
                 {
                     return null;
                 }
-                title = $"{match.State.ShooterName} chooses:";
-                for (int i = 0; i < match.PendingOptions.Count; i++)
+                title = $"{match.Session.State.ShooterName} chooses:";
+                for (int i = 0; i < match.Session.PendingOptions.Count; i++)
                 {
-                    var option = match.PendingOptions[i];
+                    var option = match.Session.PendingOptions[i];
                     items.Add(($"{option.ToName()} [{i + 1}]", () => match.Choose(option)));
                 }
                 // Low in the view, clear of the table's middle.

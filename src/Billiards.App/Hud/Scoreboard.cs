@@ -115,17 +115,17 @@ public static class ScoreboardBuilder
     {
         ArgumentNullException.ThrowIfNull(match);
         ArgumentNullException.ThrowIfNull(physics);
-        var state = match.State;
+        var state = match.Session.State;
         var onTable = physics.ObjectBallsOnTable();
-        var shots = match.Game?.Shots ?? [];
+        var shots = match.Session.Game?.Shots ?? [];
         var fouls = FoulsInRow(match, shots);
         var cards = new PlayerCard[2];
-        var ruleset = match.Ruleset;
+        var ruleset = match.Session.Ruleset;
         int? remaining = ruleset.PointsRemaining(state, onTable);
         for (int p = 0; p < 2; p++)
         {
             var target = ruleset.Target(state, p, onTable);
-            if (p == state.Shooter && match.CurrentNomination is { } nominated)
+            if (p == state.Shooter && match.Call.CurrentNomination is { } nominated)
             {
                 // The colour or the free ball nominated now, before the strike makes it the state's call.
                 string ballName = BallSet.NameOfAny(nominated.Ball);
@@ -139,11 +139,11 @@ public static class ScoreboardBuilder
             {
                 detail.Add(string.Create(CultureInfo.InvariantCulture, $"score {state.Score[p]} of {state.Target}"));
             }
-            if (ruleset.HasScore && p == state.Shooter && !match.IsOver)
+            if (ruleset.HasScore && p == state.Shooter && !match.Session.IsOver)
             {
                 detail.Add(string.Create(CultureInfo.InvariantCulture, $"{ruleset.BreakWord} {CurrentBreak(ruleset, shots, p)}"));
             }
-            if (!match.IsOver && ruleset.NeedsSnookers(state, p, onTable))
+            if (!match.Session.IsOver && ruleset.NeedsSnookers(state, p, onTable))
             {
                 detail.Add("needs snookers");
             }
@@ -152,38 +152,38 @@ public static class ScoreboardBuilder
             {
                 detail.Add(string.Create(CultureInfo.InvariantCulture, $"fouls in a row {fouls[p]}"));
             }
-            string name = match.Players[p].IsHuman || state.Players[p].StartsWith("Computer", StringComparison.Ordinal) ? state.Players[p] : $"{state.Players[p]} (computer)";
-            if (ruleset.HasBallOn && match.IsOver)
+            string name = match.Session.Seats[p].IsHuman || state.Players[p].StartsWith("Computer", StringComparison.Ordinal) ? state.Players[p] : $"{state.Players[p]} (computer)";
+            if (ruleset.HasBallOn && match.Session.IsOver)
             {
                 // The game is over: the final score, no ball on.
                 target = new HudTarget(string.Create(CultureInfo.InvariantCulture, $"{state.Score[p]}"), []);
             }
-            cards[p] = new PlayerCard(name, p == state.Shooter && !match.IsOver, target.Text, [.. target.Balls.Select(b => b.Value)], string.Join("  ", detail));
+            cards[p] = new PlayerCard(name, p == state.Shooter && !match.Session.IsOver, target.Text, [.. target.Balls.Select(b => b.Value)], string.Join("  ", detail));
         }
         string points = remaining is int r ? string.Create(CultureInfo.InvariantCulture, $"  remaining {r}") : "";
-        string title = $"{GameName(state.Rules)}  shot {state.Shot}{points}  {ruleset.GameWord}s {match.GamesWon.First}-{match.GamesWon.Second}{(paused ? "  PAUSED (P)" : "")}";
+        string title = $"{GameName(state.Rules)}  shot {state.Shot}{points}  {ruleset.GameWord}s {match.Session.GamesWon.First}-{match.Session.GamesWon.Second}{(paused ? "  PAUSED (P)" : "")}";
         string corner = sound is null ? "H help" : $"H help  {SoundWord(sound)}";
-        var rulings = shots.Select(s => s.Ruling.Message).Reverse().Where(m => m != match.Message).Take(LogLength).ToList();
-        return new Scoreboard(title, corner, cards, Status(match, physics, computerStatus), match.Message, rulings);
+        var rulings = shots.Select(s => s.Ruling.Message).Reverse().Where(m => m != match.Session.Message).Take(LogLength).ToList();
+        return new Scoreboard(title, corner, cards, Status(match, physics, computerStatus), match.Session.Message, rulings);
     }
 
     /// <summary>The result panel, or null while the game is on.</summary>
     public static ResultPanel? Result(MatchNode match)
     {
         ArgumentNullException.ThrowIfNull(match);
-        if (!match.IsOver || match.Game is not { } game)
+        if (!match.Session.IsOver || match.Session.Game is not { } game)
         {
             return null;
         }
-        var names = match.State.Players;
-        var score = match.State.Score;
-        var ruleset = match.Ruleset;
+        var names = match.Session.State.Players;
+        var score = match.Session.State.Score;
+        var ruleset = match.Session.Ruleset;
         string title = match.Session.Winner is int w
             ? ruleset.HasScore
                 ? string.Create(CultureInfo.InvariantCulture, $"{names[w]} wins {ruleset.TheGame} {score[w]}-{score[1 - w]}")
                 : $"{names[w]} wins {ruleset.TheGame}"
             : $"{Capitalised(ruleset.TheGame)} ends without a winner";
-        return new ResultPanel(title, names, PlayerStats.Of(ruleset, game.Shots), match.GamesWon) { BreakWord = ruleset.BreakWord, GameWord = ruleset.GameWord, ScoreSheet = ruleset.HasInnings };
+        return new ResultPanel(title, names, PlayerStats.Of(ruleset, game.Shots), match.Session.GamesWon) { BreakWord = ruleset.BreakWord, GameWord = ruleset.GameWord, ScoreSheet = ruleset.HasInnings };
     }
 
     /// <summary>
@@ -208,8 +208,8 @@ public static class ScoreboardBuilder
     // three, not the two its state had before that shot.
     private static PerPlayer<int> FoulsInRow(MatchNode match, IReadOnlyList<MatchShot> shots)
     {
-        var fouls = match.State.FoulsInRow;
-        if (match.IsOver && shots.Count > 0 && shots[^1] is { Ruling.Legal: false } last)
+        var fouls = match.Session.State.FoulsInRow;
+        if (match.Session.IsOver && shots.Count > 0 && shots[^1] is { Ruling.Legal: false } last)
         {
             int p = last.Before.Shooter;
             fouls = fouls.With(p, last.Before.FoulsInRow[p] + 1);
@@ -219,8 +219,8 @@ public static class ScoreboardBuilder
 
     private static string Status(MatchNode match, PhysicsNode physics, string? computerStatus)
     {
-        var state = match.State;
-        if (match.IsOver)
+        var state = match.Session.State;
+        if (match.Session.IsOver)
         {
             return match.Session.RematchIn is double left ? $"Next game in {Math.Max(1, (int)Math.Ceiling(left))} s" : "Game over: Enter or click Rematch; M: menu";
         }
@@ -228,29 +228,34 @@ public static class ScoreboardBuilder
         {
             return computerStatus;
         }
-        if (match.IsComputerActing)
+        if (match.Session.IsComputerActing)
         {
             // "(computer)" only where the name does not say so already (as on the cards).
             string who = state.ShooterName.StartsWith("Computer", StringComparison.Ordinal) ? state.ShooterName : $"{state.ShooterName} (computer)";
             return physics.IsRolling ? $"{who} shoots." : $"{who} is at the table.";
         }
+        if (match.Session.IsRemoteActing && !physics.IsRolling)
+        {
+            // Over the network: the other player's turn, played at their machine.
+            return match.Session.PendingOptions.Count > 0 ? $"{state.ShooterName} chooses (online)." : $"{state.ShooterName} is at the table (online).";
+        }
         if (physics.IsRolling)
         {
             return "Balls rolling: the view only.";
         }
-        if (match.PendingOptions.Count > 0)
+        if (match.Session.PendingOptions.Count > 0)
         {
-            var options = match.PendingOptions.Select((o, i) => $"[{i + 1}] {o.ToName()}");
+            var options = match.Session.PendingOptions.Select((o, i) => $"[{i + 1}] {o.ToName()}");
             return $"{state.ShooterName} chooses: {string.Join("  ", options)}";
         }
         var parts = new List<string>();
         if (match.NeedsCall)
         {
-            parts.Add(match.CurrentCall is { } c ? $"Call: {physics.Simulation.BallSet.NameOf(c.Ball)} in {c.Pocket.ToName()} (B, C)" : "Call: none (B, C)");
+            parts.Add(match.Call.CurrentCall is { } c ? $"Call: {physics.Simulation.BallSet.NameOf(c.Ball)} in {c.Pocket.ToName()} (B, C)" : "Call: none (B, C)");
         }
         if (match.NeedsNomination)
         {
-            string ball = match.CurrentNomination is { } n ? BallSet.NameOfAny(n.Ball) : "none";
+            string ball = match.Call.CurrentNomination is { } n ? BallSet.NameOfAny(n.Ball) : "none";
             parts.Add(SnookerPart.Of(state).FreeBall ? $"FREE BALL: nominate {ball} (B, click a ball)" : $"Nominate: {ball} (B, click a ball)");
         }
         if (physics.BallInHand)
@@ -261,7 +266,7 @@ public static class ScoreboardBuilder
         {
             parts.Add("PUSH-OUT");
         }
-        else if (match.Ruleset.MayPushOut(state))
+        else if (match.Session.Ruleset.MayPushOut(state))
         {
             parts.Add("O push-out");
         }

@@ -344,7 +344,7 @@ public sealed class NetPlay
         else
         {
             var replay = Replay(record, Session.Seats);
-            Session.Game.Restore(replay.Game.Snapshot());
+            Session.Restore(replay.Game.Snapshot());
         }
         // The hashes after the resync are the host's.
         foreach (int k in _mine.Keys.Where(k => k >= r.Shot).ToList())

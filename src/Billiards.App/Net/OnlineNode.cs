@@ -42,12 +42,16 @@ public sealed class OnlineNode : Node
 {
     private readonly OnlineLink _link;
     private MatchNode? _match;
+    private PhysicsNode? _physics;
     private NetPlay? _net;
     private GameShot? _peerShot;
     private double _aimFrom, _aimTime;
     private bool _sendGame;
     private bool _awaitGame;
     private int _shots;
+    // True while this node carries out what came from the network (the peer's moves, the host's game):
+    // the session's signals of those shots and choices are not sent back.
+    private bool _carrying;
 
     /// <summary>The network side of a window's game.</summary>
     public OnlineNode(OnlineLink link) : base("Online")
@@ -70,7 +74,7 @@ public sealed class OnlineNode : Node
     public int ShotsSoFar => Volatile.Read(ref _shots);
 
     /// <summary>The winner by forfeit (0 or 1), or null.</summary>
-    public int? ForfeitWinner { get; private set; }
+    public int? ForfeitWinner => _match?.Session.ForfeitWinner;
 
     /// <summary>What the HUD says of the connection now.</summary>
     public string StatusLine { get; private set; } = "";
@@ -83,22 +87,30 @@ public sealed class OnlineNode : Node
     protected override void Ready()
     {
         _match = GetInTree<MatchNode>();
-        _match.Networked = true;
-        _match.TakeBacks = false;
+        _physics = GetInTree<PhysicsNode>();
         var session = _match.Session;
+        session.TakeBacks = false;
         _net = new NetPlay(session, LocalSeat, _link.IsHost, _link.Log);
-        _match.Struck += shot =>
+        session.Submitted += (shot, source) =>
         {
-            _net.SendShot(shot);
-            _link.Log($"net: shot {_net.NextShot - 1}: stroke sent at {Stamp()}");
+            if (source != SeatKind.Remote && !_carrying)
+            {
+                _net.SendShot(shot);
+                _link.Log($"net: shot {_net.NextShot - 1}: stroke sent at {Stamp()}");
+            }
         };
-        _match.Chose += option => _net.SendChoice(option);
+        session.Chosen += option =>
+        {
+            if (!_carrying)
+            {
+                _net.SendChoice(option);
+            }
+        };
         session.Ruled += _ => _net.Judged(session.Game.Shots[^1]);
         _net.Resynced += () =>
         {
             _awaitGame = false;
             _peerShot = null;
-            _match.Reload();
         };
         if (_link.Connection is { } connection)
         {
@@ -156,12 +168,10 @@ public sealed class OnlineNode : Node
         }
         if (Watch.Tick(dt))
         {
-            ForfeitWinner = LocalSeat;
-            _match.Forfeited = true;
-            _match.Session.Say($"{PeerName} did not come back: {session.State.Players[LocalSeat]} wins by forfeit.");
+            session.Forfeit(LocalSeat, $"{PeerName} did not come back: {session.State.Players[LocalSeat]} wins by forfeit.");
             _link.Log($"net: {PeerName} did not come back within {Watch.ComeBack.TotalSeconds:0} s: {session.State.Players[LocalSeat]} wins by forfeit");
         }
-        _match.Held = Watch.State switch
+        session.Held = Watch.State switch
         {
             LinkState.Waiting => _link.WaitingLine ?? "Waiting for the other player.",
             LinkState.Lost => $"Connection lost: waiting for {PeerName} to come back ({Clock(Watch.Left)}).",
@@ -174,9 +184,9 @@ public sealed class OnlineNode : Node
                 string.Create(CultureInfo.InvariantCulture, $"Online: {PeerName} connected, {(c.RoundTripMs is double rtt ? $"{rtt:0} ms" : "-- ms")}"),
             LinkState.Ended => "Online: the game is over.",
             LinkState.Forfeit => $"Online: {PeerName} forfeits.",
-            _ => $"Online: {_match.Held}",
+            _ => $"Online: {session.Held}",
         };
-        if ((_match.Held is null || (_awaitGame && open) || _peerShot is not null || _net.MovesWaiting > 0) && !_match.Forfeited)
+        if ((session.Held is null || (_awaitGame && open) || _peerShot is not null || _net.MovesWaiting > 0) && session.ForfeitWinner is null)
         {
             // A joiner coming back takes the host's game from the wire too.
             PeerMoves(dt);
@@ -197,20 +207,20 @@ public sealed class OnlineNode : Node
         var match = _match!;
         if (_peerShot is null)
         {
-            if (_net!.Poll() is not { } action)
+            if (Carry(_net!.Poll) is not { } action)
             {
                 return;
             }
             if (action.Choice is { } option)
             {
-                match.ChooseAsPeer(option);
+                Carry(() => match.Session.Choose(option));
                 return;
             }
             _peerShot = action.Shot;
             _aimFrom = match.AimDegrees;
             _aimTime = 0;
             _link.Log($"net: shot {_net.NextShot}: stroke arrived, the cue turns at {Stamp()}");
-            match.ShowPeerPlacement(_peerShot!.Place);
+            ShowPeerPlacement(_peerShot!.Place);
             match.Call.Take(_peerShot.Call);
         }
         var shot = _peerShot!;
@@ -228,10 +238,43 @@ public sealed class OnlineNode : Node
             return;
         }
         _peerShot = null;
-        if (!match.StrikeAsPeer(shot))
+        ShowPeerPlacement(shot.Place);
+        if (!match.StrikeGiven(shot, SeatKind.Remote))
         {
-            _link.Log($"net: the peer's stroke for shot {_net!.NextShot} could not be struck here: {match.Message}");
+            _link.Log($"net: the peer's stroke for shot {_net!.NextShot} could not be struck here: {match.Session.Message}");
         }
+    }
+
+    private T Carry<T>(Func<T> what)
+    {
+        _carrying = true;
+        try
+        {
+            return what();
+        }
+        finally
+        {
+            _carrying = false;
+        }
+    }
+
+    private void Carry(Action what) => Carry(() =>
+    {
+        what();
+        return 0;
+    });
+
+    // The peer's cue ball where they placed it (ball in hand), before their stroke: it is not in this player's hand.
+    private void ShowPeerPlacement(Billiards.Core.Mathematics.Vec3? place)
+    {
+        var session = _match!.Session;
+        if (place is not { } p || _physics is not { IsRolling: false } physics || session.BallInHand == BallInHand.None)
+        {
+            return;
+        }
+        physics.GiveBallInHand(session.BallInHand.Region());
+        _match.PlaceCueBall(p);
+        physics.EndBallInHand();
     }
 
     /// <summary>
@@ -259,13 +302,13 @@ public sealed class OnlineNode : Node
     protected override void Draw(FrameBuilder frame)
     {
         var f = frame.Frame;
-        if (f.Hud is not { } hud || StatusLine.Length == 0)
+        if (f.Hud is not { } hud || StatusLine.Length == 0 || FindInTree<Hud.MenuNode>() is { IsStartScreen: true })
         {
             return;
         }
         int scale = HudRenderer.Scale(f.Height);
         float line = HudFont.LineHeight * scale;
-        var labels = new List<HudLabel>(hud.Labels ?? []) { new(f.Width / 2f, f.Height - (2.2f * line), StatusLine, Centred: true, Gold: _match?.Held is not null) };
+        var labels = new List<HudLabel>(hud.Labels ?? []) { new(f.Width / 2f, f.Height - (2.2f * line), StatusLine, Centred: true, Gold: _match?.Session.Held is not null) };
         f.Hud = hud with { Labels = labels };
     }
 }

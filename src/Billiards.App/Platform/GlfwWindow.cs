@@ -206,6 +206,8 @@ internal sealed unsafe class GlfwWindow : IGameWindow, IDisposable
         261 => Key.Delete,
         259 => Key.Backspace,
         340 or 344 => Key.Shift,
+        46 or 330 => Key.Period,
+        59 => Key.Semicolon,
         _ => Key.Unknown,
     };
 

@@ -19,6 +19,8 @@ public enum Key
     Shift,
     /// <summary>Three-cushion's diamond aid.</summary>
     F4,
+    /// <summary>The full stop and the semicolon (a colon with Shift): typed into an address.</summary>
+    Period, Semicolon,
 }
 
 /// <summary>Mouse buttons.</summary>

@@ -244,6 +244,48 @@ public sealed class Session
     /// <summary>Seconds until the next game starts by itself (two computers at the table), or null when a person decides.</summary>
     public double? RematchIn { get; private set; }
 
+    /// <summary>
+    /// Why the game waits for the other end of a network (no player joined yet, the connection
+    /// lost, the game so far on its way), or null. While it is set no one at this table strikes or
+    /// chooses; the remote seat's moves that came are still carried out.
+    /// </summary>
+    public string? Held { get; set; }
+
+    /// <summary>The winner (0 or 1) of a game the other player forfeited (a network peer that did not come back), or null; after it no shot is struck.</summary>
+    public int? ForfeitWinner { get; private set; }
+
+    /// <summary>True while a player elsewhere is to move: their shot, or their choice among a ruling's options.</summary>
+    public bool IsRemoteActing => !IsOver && ForfeitWinner is null && Shooter.Kind == SeatKind.Remote;
+
+    /// <summary>True while the game is on but held for the network (<see cref="Held"/>) or ended by forfeit.</summary>
+    public bool IsHeld => !IsOver && (Held is not null || ForfeitWinner is not null);
+
+    /// <summary>Ends the game by forfeit: <paramref name="winner"/> wins, <paramref name="message"/> is said, and no shot is struck any more.</summary>
+    public void Forfeit(int winner, string message)
+    {
+        ForfeitWinner = winner;
+        Message = message;
+        Turn++;
+    }
+
+    /// <summary>
+    /// Takes another game's state whole (a network host's game after a mismatch): the balls, the
+    /// game state and the shots as <paramref name="game"/> has them; the table is replaced.
+    /// </summary>
+    public void Restore(MatchSnapshot game)
+    {
+        ArgumentNullException.ThrowIfNull(game);
+        Game.Restore(game);
+        Turn++;
+        TableReplaced?.Invoke();
+    }
+
+    /// <summary>Signal: a shot was accepted by <see cref="Submit"/>, with where it came from (a network sends the local seat's).</summary>
+    public event Action<GameShot, SeatKind>? Submitted;
+
+    /// <summary>Signal: an option was chosen (<see cref="Choose"/>).</summary>
+    public event Action<RefereeOption>? Chosen;
+
     /// <summary>Signal: the referee ruled on a shot.</summary>
     public event Action<Ruling>? Ruled;
 
@@ -266,6 +308,10 @@ public sealed class Session
         if (IsOver)
         {
             return "The game is over: no more shots.";
+        }
+        if (ForfeitWinner is not null)
+        {
+            return "The game ended by forfeit: no more shots.";
         }
         if (IsShotRunning)
         {
@@ -303,6 +349,7 @@ public sealed class Session
         }
         Message = null;
         Turn++;
+        Submitted?.Invoke(shot, source);
         return sim;
     }
 
@@ -346,6 +393,7 @@ public sealed class Session
         TableReplaced?.Invoke();
         var state = State;
         Message = state.Shot == 0 ? $"Rerack: {state.ShooterName} breaks." : Ruleset.ChoiceMessage(option, state);
+        Chosen?.Invoke(option);
         ShooterToPlay?.Invoke();
     }
 

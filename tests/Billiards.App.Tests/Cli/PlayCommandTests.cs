@@ -161,7 +161,7 @@ public class StartMenuTests
         var first = hud[0];
         // A title and screens, and nothing of the game behind: no scoreboard, no keys, no "PAUSED".
         Assert.Contains(first.Labels!, l => l.Text == "Billiards");
-        Assert.Equal(["Play", "Practice", "Drills", "Settings", "Controls", "Quit"], first.Buttons!.Select(b => b.Label));
+        Assert.Equal(["Play", "Play online", "Practice", "Drills", "Settings", "Controls", "Quit"], first.Buttons!.Select(b => b.Label));
         Assert.Null(first.Board);
         Assert.Empty(first.Lines);
         Assert.True(first.Backdrop);

@@ -121,7 +121,7 @@ public class CallLineTests
         var scene = TestScenes.TwoBalls(rules: name) with { Game = new GameState(rules) { Shot = shot, Players = new PerPlayer<string>("Anna", "Ben") } };
         using var host = new GameHost(scene, TestScenes.Create, new FakeWindow(), new ManualClock(), new MatchSetup(rules, players));
         var lines = host.RunFrame().Hud!.Lines;
-        Assert.Equal(shot, host.Tree.Root.GetInTree<MatchNode>().State.Shot);
+        Assert.Equal(shot, host.Tree.Root.GetInTree<MatchNode>().Session.State.Shot);
         Assert.Equal(shown, lines.Any(l => l.StartsWith("Call: ", StringComparison.Ordinal)));
         Assert.Contains(lines, l => l.Contains("Space shoots", StringComparison.Ordinal));
     }
@@ -145,7 +145,7 @@ public class CallPickerTests
         }
         var frame = host.RunFrame();
         // With nothing aimed at, the call defaults to the nearest legal ball: the 1, the only one.
-        Assert.Equal(new BallId(1), match.CurrentCall!.Ball);
+        Assert.Equal(new BallId(1), match.Call.CurrentCall!.Ball);
         var vp = RenderMath.ViewProjection(frame);
         var r = (float)host.World.Physics.BallRadius;
         var ball = RenderMath.ToPixel(vp, new Vector3(0.635f, 0, r), 1280, 720)!.Value;
@@ -156,17 +156,17 @@ public class CallPickerTests
         window.MoveTo(ball.X, ball.Y);
         window.Down();
         window.Up();
-        Assert.Equal(new BallId(1), match.CurrentCall!.Ball);
+        Assert.Equal(new BallId(1), match.Call.CurrentCall!.Ball);
         window.MoveTo(pocket.X, pocket.Y);
         window.Down();
         window.Up();
-        Assert.Equal(new Call(new BallId(1), PoolPockets.FootLeft), match.CurrentCall);
+        Assert.Equal(new Call(new BallId(1), PoolPockets.FootLeft), match.Call.CurrentCall);
         var footRight = pockets.Single(p => PoolPockets.Set.Id(p.Pocket) == PoolPockets.FootRight);
         var other = RenderMath.ToPixel(vp, footRight.Centre.ToVector3() with { Z = 0 }, 1280, 720)!.Value;
         window.MoveTo(other.X, other.Y);
         window.Down();
         window.Up();
-        Assert.Equal(new Call(new BallId(1), PoolPockets.FootRight), match.CurrentCall);
+        Assert.Equal(new Call(new BallId(1), PoolPockets.FootRight), match.Call.CurrentCall);
 
         // A drag that starts on a pocket orbits the camera and calls nothing.
         var left = RenderMath.ToPixel(vp, footLeft.Centre.ToVector3() with { Z = 0 }, 1280, 720)!.Value;
@@ -174,7 +174,7 @@ public class CallPickerTests
         window.Down();
         window.MoveTo(left.X + 40, left.Y);
         window.Up();
-        Assert.Equal(new Call(new BallId(1), PoolPockets.FootRight), match.CurrentCall);
+        Assert.Equal(new Call(new BallId(1), PoolPockets.FootRight), match.Call.CurrentCall);
     }
 
     [Fact]
@@ -207,6 +207,6 @@ public class CallPickerTests
         window.MoveTo(holePixel.X, holePixel.Y);
         window.Down();
         window.Up();
-        Assert.Equal(new Call(new BallId(1), PoolPockets.FootRight), match.CurrentCall);
+        Assert.Equal(new Call(new BallId(1), PoolPockets.FootRight), match.Call.CurrentCall);
     }
 }

@@ -98,15 +98,15 @@ public class ComputerPlayerTests
         game.Press(Key.Q, 8); // 1 m/s: a bad break, the computer chooses accept or rerack
         game.Press(Key.Space);
         game.RunUntil(() => game.Match.Session.Rulings.Count >= 1 && !game.Host.World.Physics.IsRolling, "the break never ended");
-        Assert.NotEmpty(game.Match.PendingOptions);
-        Assert.True(game.Match.IsComputerActing);
+        Assert.NotEmpty(game.Match.Session.PendingOptions);
+        Assert.True(game.Match.Session.IsComputerActing);
         // Anna's keys do nothing on the computer's turn.
         game.Press(Key.D1);
         game.Press(Key.Space);
         Assert.False(game.Host.World.Physics.IsRolling);
         // The computer chooses, then shoots (after turning its cue), and the referee rules.
         game.RunUntil(() => game.Match.Session.Shots.Count >= 2 && !game.Host.World.Physics.IsRolling && game.Match.Session.Rulings.Count >= 2, "the computer never played");
-        Assert.Empty(game.Match.PendingOptions);
+        Assert.Empty(game.Match.Session.PendingOptions);
         var shot = game.Match.Session.Shots[1];
         Assert.Equal(1, shot.Before.Shooter);
         Assert.True(game.Match.Session.Rulings.Count == game.Match.Session.Shots.Count);
@@ -135,11 +135,11 @@ public class ComputerPlayerTests
             clock.Advance(1.0 / 30);
             host.RunFrame();
         }
-        for (int i = 0; i < 30 * 60 && !match.IsOver; i++)
+        for (int i = 0; i < 30 * 60 && !match.Session.IsOver; i++)
         {
             Frame();
         }
-        Assert.True(match.IsOver, "the scene's shot did not end the game");
+        Assert.True(match.Session.IsOver, "the scene's shot did not end the game");
         return (host, match, Frame);
     }
 
@@ -155,15 +155,15 @@ public class ComputerPlayerTests
             {
                 frame();
             }
-            Assert.True(match.IsOver, "the next game started before its time");
-            for (int i = 0; i < 60 && match.IsOver; i++)
+            Assert.True(match.Session.IsOver, "the next game started before its time");
+            for (int i = 0; i < 60 && match.Session.IsOver; i++)
             {
                 frame();
             }
-            Assert.False(match.IsOver, "the next game never started");
+            Assert.False(match.Session.IsOver, "the next game never started");
             Assert.Null(match.Session.RematchIn);
-            Assert.Equal(0, match.State.Shot);
-            Assert.Equal(1, match.State.Shooter); // the other player breaks
+            Assert.Equal(0, match.Session.State.Shot);
+            Assert.Equal(1, match.Session.State.Shooter); // the other player breaks
         }
     }
 
@@ -178,7 +178,7 @@ public class ComputerPlayerTests
             {
                 frame();
             }
-            Assert.True(match.IsOver);
+            Assert.True(match.Session.IsOver);
         }
     }
 
@@ -195,7 +195,7 @@ public class ComputerPlayerTests
             game.Frame();
             Thread.Sleep(2);
         }
-        Assert.NotEmpty(game.Match.PendingOptions);
+        Assert.NotEmpty(game.Match.Session.PendingOptions);
         Assert.Single(game.Match.Session.Shots);
         game.Press(Key.P);
         game.RunUntil(() => game.Match.Session.Shots.Count >= 2, "the computer never played after the pause");
@@ -212,7 +212,7 @@ public class ComputerPlayerTests
         var hint = game.Computer.LastHint!;
         Assert.Equal(hint.Shot.AimDeg, game.Match.AimDegrees, 9);
         Assert.Equal(Math.Clamp(hint.Shot.Speed, MatchNode.MinPower, MatchNode.MaxPower), game.Match.Power, 12);
-        Assert.StartsWith("Hint: ", game.Match.Message, StringComparison.Ordinal);
+        Assert.StartsWith("Hint: ", game.Match.Session.Message, StringComparison.Ordinal);
         if (hint.Place is { } place)
         {
             Assert.Equal(place.X, game.Host.World.Physics.CueBallPosition.X, 9);

@@ -35,7 +35,7 @@ public class DefaultCallTests
         match.AimAt(0); // straight at the 14
         Assert.Equal(new BallId(14), match.Aim!.Ball);
         Assert.True(match.NeedsCall);
-        var call = match.CurrentCall!;
+        var call = match.Call.CurrentCall!;
         Assert.True(call.Ball.Value is >= 1 and <= 7, $"the default call is the {call.Ball}");
         // The nearest legal ball is the 3.
         Assert.Equal(new BallId(3), call.Ball);
@@ -47,7 +47,7 @@ public class DefaultCallTests
         var (game, match) = Start(0, new PerPlayer<BallGroup>(BallGroup.Stripes, BallGroup.Solids));
         using var _ = game;
         match.AimAt(0);
-        Assert.Equal(new BallId(14), match.CurrentCall!.Ball);
+        Assert.Equal(new BallId(14), match.Call.CurrentCall!.Ball);
     }
 
     // An open table: the 3 lies nearest the cue ball but straight behind the 8, which blocks every
@@ -71,7 +71,7 @@ public class DefaultCallTests
         foreach (double aim in new[] { 0.0, 24.4 }) // at the 8 (illegal first on an open table), then at the 5
         {
             match.AimAt(aim);
-            var call = match.CurrentCall!;
+            var call = match.Call.CurrentCall!;
             Assert.Equal(new BallId(5), call.Ball);
             // Independently of the call: no ball within two radii of the 5's line to the pocket or of the cue ball's line to the ghost ball.
             var table = scene.Table;
@@ -120,11 +120,11 @@ public class FreeBallNominationTests
         using var game = new TestGame(scene, new MatchSetup(GameRules.Snooker, [new Seat("Anna"), new Seat("Ben")]));
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
         game.Frame();
-        Assert.True(SnookerPart.Of(match.State).FreeBall && match.NeedsNomination);
+        Assert.True(SnookerPart.Of(match.Session.State).FreeBall && match.NeedsNomination);
         foreach (double aim in new[] { 0.0, 18.0 }) // at nothing in particular, then at the nearest red
         {
             match.AimAt(aim);
-            var ball = match.CurrentNomination!.Ball;
+            var ball = match.Call.CurrentNomination!.Ball;
             Assert.True(SnookerRuleset.IsColour(ball), $"aim {aim}: the free ball defaults to the {ball.Value}, not a colour");
         }
     }

@@ -63,7 +63,7 @@ public class DiamondAidNodeTests
         var whites = events.Where(e => e.Kind == EventKind.BallCushion && e.A == BallSet.White).ToList();
         var cushions = whites.Take(DiamondAid.Cushions).ToList();
         Assert.Equal(path.Contacts.Select(k => k.Time), cushions.Select(e => e.Time));
-        var played = game.World.Tree.Root.GetInTree<MatchNode>().Game.Shots[^1];
+        var played = game.World.Tree.Root.GetInTree<MatchNode>().Session.Game.Shots[^1];
         Assert.Equal(planned, played.Input.Shot);
 
         // The tracking lines (K) count the struck ball's cushions: 1, 2, 3 ... at its contacts (the aid off).

@@ -81,7 +81,7 @@ public class InstantReplayTests
         Assert.Contains(samples, s => s.Active && s.Shapes > 20);
 
         // The replay is the shot: its end is the table the referee judged, bit for bit.
-        var atRest = match.Game!.Shots[0].After;
+        var atRest = match.Session.Game!.Shots[0].After;
         foreach (var (id, position) in atRest)
         {
             int i = shown.Ids.ToList().IndexOf(id);

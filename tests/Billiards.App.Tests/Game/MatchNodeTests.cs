@@ -67,7 +67,7 @@ public class MatchNodeTests
         Assert.True(game.Host.World.Physics.IsRolling, "the scene's shot plays at once");
         game.RunUntilRest();
         var ruling = Assert.Single(game.Match.Session.Rulings);
-        Assert.Equal([RefereeOption.Shoot, RefereeOption.PassBack], game.Match.PendingOptions);
+        Assert.Equal([RefereeOption.Shoot, RefereeOption.PassBack], game.Match.Session.PendingOptions);
 
         var (code, stdout, stderr) = Cli.CliRun.Run("simulate", path);
         Assert.True(code == 0, stderr);
@@ -77,7 +77,7 @@ public class MatchNodeTests
 
         // The record starts from the scene's position, not a rack, and replays.
         game.Press(Key.D2); // pass back
-        var record = GameRecordFile.Parse(System.Text.Encoding.UTF8.GetString(GameRecordFile.ToUtf8(game.Match.Game!)), "w.json");
+        var record = GameRecordFile.Parse(System.Text.Encoding.UTF8.GetString(GameRecordFile.ToUtf8(game.Match.Session.Game!)), "w.json");
         Assert.Equal(6, record.Setup.Position!.Count);
         Assert.Equal(RefereeOption.PassBack, record.Shots[0].Choice);
         Assert.Null(GameRecordFile.Verify(record, out _).FirstDifference);
@@ -94,16 +94,16 @@ public class MatchNodeTests
         game.RunUntilRest();
         var ruling = Assert.Single(game.Match.Session.Rulings);
         Assert.Contains(Foul.BadBreak, ruling.Fouls);
-        Assert.Equal(ruling.Options, game.Match.PendingOptions);
-        Assert.Equal(1, game.Match.State.Shooter);
+        Assert.Equal(ruling.Options, game.Match.Session.PendingOptions);
+        Assert.Equal(1, game.Match.Session.State.Shooter);
         // Space does nothing while a choice is pending.
         game.Press(Key.Space);
         Assert.False(game.Host.World.Physics.IsRolling);
         int rerack = ruling.Options.ToList().IndexOf(RefereeOption.Rerack);
         Assert.True(rerack >= 0);
         game.Press(Key.D1 + rerack);
-        Assert.Empty(game.Match.PendingOptions);
-        Assert.Equal(0, game.Match.State.Shot);
+        Assert.Empty(game.Match.Session.PendingOptions);
+        Assert.Equal(0, game.Match.Session.State.Shot);
         Assert.Equal(PlacementRegion.Kitchen, game.Host.World.Physics.HandRegion);
     }
 }
@@ -134,9 +134,9 @@ public class MatchHudTests
         }
         clock.Advance(1.0 / 30);
         var frame = host.RunFrame();
-        Assert.NotEmpty(match.PendingOptions);
+        Assert.NotEmpty(match.Session.PendingOptions);
         var buttons = frame.Hud!.Buttons!;
-        Assert.Equal(match.PendingOptions.Select((o, i) => $"{o.ToName()} [{i + 1}]"), buttons.Select(b => b.Label));
+        Assert.Equal(match.Session.PendingOptions.Select((o, i) => $"{o.ToName()} [{i + 1}]"), buttons.Select(b => b.Label));
         Assert.Equal("Ben chooses:", frame.Hud.Title);
 
         // The instant replay of that break shows the shot, not the choice over it; leaving it
@@ -154,8 +154,8 @@ public class MatchHudTests
         window.MoveTo(rerack.X + 2, rerack.Y + 2);
         window.Down();
         window.Up();
-        Assert.Empty(match.PendingOptions);
-        Assert.Equal(0, match.State.Shot);
+        Assert.Empty(match.Session.PendingOptions);
+        Assert.Equal(0, match.Session.State.Shot);
         Assert.Null(host.RunFrame().Hud!.Buttons);
 
         // Groups taken (a scene's game block at shot 4, the 3 down): each player's line is followed by the balls still needed.
@@ -206,12 +206,12 @@ public class SeatTests
         using (var unnamed = FourBallGames.Start(new GameState(GameRules.StraightPool) { Shot = 5, Score = new PerPlayer<int>(99, 40) }))
         {
             var match = unnamed.World.Tree.Root.GetInTree<MatchNode>();
-            Assert.Equal(new PerPlayer<string>("Anna", "Ben"), match.State.Players);
-            Assert.Equal(new PerPlayer<int>(99, 40), match.State.Score);
+            Assert.Equal(new PerPlayer<string>("Anna", "Ben"), match.Session.State.Players);
+            Assert.Equal(new PerPlayer<int>(99, 40), match.Session.State.Score);
             Assert.StartsWith("Anna", unnamed.Frame().Hud!.Board!.Players[0].Name, StringComparison.Ordinal);
         }
         using var named = FourBallGames.Start(new GameState(GameRules.StraightPool) { Shot = 5, Players = new PerPlayer<string>("Cleo", "Dan") });
-        Assert.Equal(new PerPlayer<string>("Cleo", "Dan"), named.World.Tree.Root.GetInTree<MatchNode>().State.Players);
+        Assert.Equal(new PerPlayer<string>("Cleo", "Dan"), named.World.Tree.Root.GetInTree<MatchNode>().Session.State.Players);
     }
 
     [Theory]

@@ -72,16 +72,16 @@ public class SnookerWindowTests
         Assert.False(match.NeedsCall);
         // B goes round the colours on the table only (never the red): the blue, then the black.
         game.Window.Press(Key.B);
-        var first = match.CurrentNomination!.Ball;
+        var first = match.Call.CurrentNomination!.Ball;
         game.Window.Press(Key.B);
-        var second = match.CurrentNomination!.Ball;
+        var second = match.Call.CurrentNomination!.Ball;
         Assert.Equal(new HashSet<BallId> { Blue, Black }, new HashSet<BallId> { first, second });
         Assert.Contains($"Nominate: {BallSet.NameOfAny(second)}", game.Frame().Hud!.Board!.Status, StringComparison.Ordinal);
         // A click on the red nominates nothing (a red is not a colour); a click on a colour does.
         match.Call.CallBall(BallSet.Snooker.Ids.First(SnookerRuleset.IsRed));
-        Assert.Equal(second, match.CurrentNomination!.Ball);
+        Assert.Equal(second, match.Call.CurrentNomination!.Ball);
         match.Call.CallBall(first);
-        Assert.Equal(first, match.CurrentNomination!.Ball);
+        Assert.Equal(first, match.Call.CurrentNomination!.Ball);
         game.Window.Press(Key.Space);
         Assert.Equal(Call.Nominate(first), match.Session.Shots[^1].Before.Call);
     }
@@ -97,20 +97,20 @@ public class SnookerWindowTests
         game.Window.Press(Key.Space);
         game.RunUntilRest();
         var hud = game.Frame().Hud!;
-        Assert.Equal([RefereeOption.Play, RefereeOption.PutBack, RefereeOption.Replace], match.PendingOptions);
+        Assert.Equal([RefereeOption.Play, RefereeOption.PutBack, RefereeOption.Replace], match.Session.PendingOptions);
         Assert.Contains(hud.Buttons!, b => b.Label == "play [1]");
         Assert.Contains(hud.Buttons!, b => b.Label == "put-back [2]");
         Assert.Contains(hud.Buttons!, b => b.Label == "replace [3]");
-        Assert.Equal(1, match.State.Shooter);
-        Assert.Equal(4, match.State.Score[1]);
+        Assert.Equal(1, match.Session.State.Shooter);
+        Assert.Equal(4, match.Session.State.Score[1]);
 
         var centre = game.World.Menu.CentreOf("replace")!.Value;
         game.Window.MoveTo(centre.X, centre.Y);
         game.Window.Down();
         game.Window.Up();
         game.Frame();
-        Assert.Empty(match.PendingOptions);
-        Assert.Equal(0, match.State.Shooter);
+        Assert.Empty(match.Session.PendingOptions);
+        Assert.Equal(0, match.Session.State.Shooter);
         Assert.Equal(before, game.World.Physics.CueBallPosition);
     }
 

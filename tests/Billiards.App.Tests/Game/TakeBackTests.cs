@@ -38,7 +38,7 @@ public class TakeBackTests
         {
             // The table as the first frame shows it, before any input.
             run.First ??= run.Physics.Simulation.Balls.ToArray();
-            run.FirstState ??= run.Match?.State;
+            run.FirstState ??= run.Match?.Session.State;
         });
         int code = PlayCommand.Play(AssetFolder.Scene(scene), _ => new GamePlatform(window, new UntilClosedLoop(clock, window, 1.0 / 60), renderer), SimulationFactory.Create, clock,
             new PlayCommand.PlayOptions(Script, null)
@@ -51,7 +51,7 @@ public class TakeBackTests
                     run.Host = h;
                     var physics = h.Tree.Root.GetInTree<PhysicsNode>();
                     var match = h.Tree.Root.FindInTree<MatchNode>();
-                    physics.Struck += _ => run.Strikes.Add((match?.State.Shot ?? 0, match?.State.Shooter ?? 0));
+                    physics.Struck += _ => run.Strikes.Add((match?.Session.State.Shot ?? 0, match?.Session.State.Shooter ?? 0));
                 },
             });
         Assert.Equal(0, code);
@@ -78,9 +78,9 @@ public class TakeBackTests
         var match = run.Match!;
         Assert.Single(run.Strikes);
         Assert.Equal(1, match.Session.TakeBackCount);
-        Assert.Empty(match.Game!.Shots);
+        Assert.Empty(match.Session.Game!.Shots);
         Assert.Empty(match.Session.Rulings);
-        Assert.Equal(run.FirstState, match.State);
+        Assert.Equal(run.FirstState, match.Session.State);
         AssertSameTable(run.First!, run.Physics.Simulation.Balls);
         // The rack really moved in between: the break was struck and judged.
         Assert.True(run.Physics.LastShot is not null);
@@ -91,8 +91,8 @@ public class TakeBackTests
     {
         var run = Play("eight-ball.json", "Anna,Ben", takeBacks: false);
         var match = run.Match!;
-        Assert.False(match.TakeBacks);
-        Assert.Single(match.Game!.Shots);
+        Assert.False(match.Session.TakeBacks);
+        Assert.Single(match.Session.Game!.Shots);
         Assert.Equal(0, match.Session.TakeBackCount);
         Assert.StartsWith("Take-backs are off", run.Host!.Tree.Root.GetInTree<TakeBackNode>().Refusal, StringComparison.Ordinal);
         Assert.False(run.First!.AsSpan().SequenceEqual(run.Physics.Simulation.Balls));
@@ -123,7 +123,7 @@ public class TakeBackTests
         Assert.All(run.Strikes, s => Assert.Equal(0, s.Shooter));
         int again = Enumerable.Range(1, run.Strikes.Count - 1).Single(k => run.Strikes[k] == run.Strikes[k - 1]);
         // The game's record holds that shot once: the second try.
-        Assert.Equal(1, match.Game!.Shots.Count(s => s.Before.Shot == run.Strikes[again].Shot));
-        Assert.Equal(run.Strikes.Count - 1, match.Game.Shots.Count);
+        Assert.Equal(1, match.Session.Game!.Shots.Count(s => s.Before.Shot == run.Strikes[again].Shot));
+        Assert.Equal(run.Strikes.Count - 1, match.Session.Game.Shots.Count);
     }
 }

@@ -36,7 +36,7 @@ public class TargetViewTests
         game.RunUntilRest();
         game.Frame();
         game.Frame();
-        Assert.Equal(1, match.State.Shooter);            // a foul: Ben to shoot
+        Assert.Equal(1, match.Session.State.Shooter);            // a foul: Ben to shoot
         var nearest = TargetViewNode.NearestTarget(match, game.World.Physics)!.Value;
         Assert.NotEqual(new BallId(8), nearest.Id);
         Assert.Equal(nearest.Id, view.LastTarget);
@@ -51,13 +51,13 @@ public class TargetViewTests
         var view = game.World.Tree.Root.GetInTree<TargetViewNode>();
         // The 8 goes down early: Anna loses, the game is over.
         FourBallGames.PotTheEightEarly(game);
-        Assert.True(match.IsOver);
+        Assert.True(match.Session.IsOver);
         match.AimAt(150);
         match.Rematch();
         game.Frame();
         game.Frame();
-        Assert.False(match.IsOver);
-        Assert.Equal(0, match.State.Shot);
+        Assert.False(match.Session.IsOver);
+        Assert.Equal(0, match.Session.State.Shot);
         var nearest = TargetViewNode.NearestTarget(match, game.World.Physics)!.Value;
         Assert.Equal(nearest.Id, view.LastTarget);
         Assert.Equal(AimTo(game, nearest.Id), match.AimDegrees, 9);

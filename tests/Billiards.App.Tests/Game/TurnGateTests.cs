@@ -41,14 +41,14 @@ public class TurnGateTests
             new MatchSetup(GameRules.EightBall, [new Seat("Computer L1", 1), new Seat("Anna")]));
         var match = host.Tree.Root.GetInTree<MatchNode>();
         host.Tree.Root.GetInTree<ComputerPlayerNode>().BudgetMs = 120_000;
-        string? before = match.Message;
+        string? before = match.Session.Message;
         MouseStroke(window, clock);
         clock.Advance(1.0 / 60);
         host.RunFrame();
         Assert.False(host.World.Physics.IsRolling, "the person's stroke was played on the computer's turn");
-        Assert.Empty(match.Game!.Shots);
-        Assert.NotEqual(before, match.Message);
-        Assert.Contains("turn", match.Message, StringComparison.Ordinal);
+        Assert.Empty(match.Session.Game!.Shots);
+        Assert.NotEqual(before, match.Session.Message);
+        Assert.Contains("turn", match.Session.Message, StringComparison.Ordinal);
     }
 
     [Fact]
@@ -77,15 +77,15 @@ public class TurnGateTests
         {
             Frame();
         }
-        Assert.NotEmpty(match.PendingOptions);
-        string? before = match.Message;
+        Assert.NotEmpty(match.Session.PendingOptions);
+        string? before = match.Session.Message;
         MouseStroke(window, clock);
         Frame();
         Assert.False(host.World.Physics.IsRolling, "a stroke was played with an option pending");
-        Assert.Single(match.Game!.Shots);
-        Assert.NotEmpty(match.PendingOptions);
-        Assert.NotEqual(before, match.Message);
-        Assert.Contains("option", match.Message, StringComparison.Ordinal);
+        Assert.Single(match.Session.Game!.Shots);
+        Assert.NotEmpty(match.Session.PendingOptions);
+        Assert.NotEqual(before, match.Session.Message);
+        Assert.Contains("option", match.Session.Message, StringComparison.Ordinal);
     }
 
     [Fact]
@@ -94,15 +94,15 @@ public class TurnGateTests
         using var game = FourBallGames.EightBall();
         FourBallGames.PotTheEightEarly(game);
         var match = game.World.Tree.Find<MatchNode>()!;
-        Assert.True(match.IsOver);
-        string? before = match.Message;
+        Assert.True(match.Session.IsOver);
+        string? before = match.Session.Message;
         int strikes = game.Simulation.Strikes.Count;
         MouseStroke(game.Window, game.Clock);
         game.Frame();
         Assert.False(game.World.Physics.IsRolling, "a stroke was played after the game was over");
         Assert.Equal(strikes, game.Simulation.Strikes.Count);
-        Assert.NotEqual(before, match.Message);
-        Assert.Contains("over", match.Message, StringComparison.Ordinal);
+        Assert.NotEqual(before, match.Session.Message);
+        Assert.Contains("over", match.Session.Message, StringComparison.Ordinal);
     }
 
     [Fact]
@@ -130,14 +130,14 @@ public class TurnGateTests
             }
             Assert.True(done(), what);
         }
-        var first = match.Game!;
+        var first = match.Session.Game!;
         RunUntil(() => first.Shots.Count == 1 && !host.World.Physics.IsRolling, "the computer never broke");
         // The second shot aimed: its plan is for the table the break left.
         RunUntil(() => computer.Status?.Contains(" aims", StringComparison.Ordinal) == true, "the computer never aimed its second shot");
         Assert.Single(first.Shots);
         window.Press(Key.Escape);
         window.Press(Key.R);
-        var second = match.Game!;
+        var second = match.Session.Game!;
         Assert.NotSame(first, second);
         RunUntil(() => second.Shots.Count >= 1, "the computer never broke the new rack");
         // The same rack and the same seeds as the first game: a plan made for the new rack is the
@@ -153,7 +153,7 @@ public class TurnGateTests
         game.Frame();
         game.Window.Press(Key.O);
         Assert.True(match.PushOut);
-        Assert.Contains("declares a push-out", match.Message, StringComparison.Ordinal);
+        Assert.Contains("declares a push-out", match.Session.Message, StringComparison.Ordinal);
         Assert.Contains("PUSH-OUT", game.Frame().Hud!.Board!.Status, StringComparison.Ordinal);
         game.Window.Press(Key.Space);
         Assert.True(match.Session.Shots[^1].Before.PushOut, "the strike was not judged as the declared push-out");

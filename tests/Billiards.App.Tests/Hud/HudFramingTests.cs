@@ -56,11 +56,11 @@ public sealed class HudFramingTests(GlFixture gl)
         frame.BallSet = scene.BallSet; // the fake simulation's set is pool's
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
         var aim = game.World.Tree.Root.GetInTree<AimLineNode>();
-        BallId? ball = match.CurrentCall?.Ball ?? match.CurrentNomination?.Ball ?? aim.Preview?.Ball;
+        BallId? ball = match.Call.CurrentCall?.Ball ?? match.Call.CurrentNomination?.Ball ?? aim.Preview?.Ball;
         Assert.True(ball is not null, $"{file}: no called ball and the aim line meets none");
         Vector3? pocket = null;
         var table = scene.Table;
-        var pocketId = match.CurrentCall?.Pocket ?? aim.Preview?.Pocket;
+        var pocketId = match.Call.CurrentCall?.Pocket ?? aim.Preview?.Pocket;
         if (pocketId is { } p && p.Index >= 0 && p.Index < table.Pockets.Count)
         {
             var m = table.Pockets[p.Index].MouthMiddle(table);

@@ -64,8 +64,8 @@ public class ListedDefectTests
         game.RunUntilRest();
         game.Frame();
         Assert.False(game.World.Menu.RestartPending);
-        Assert.Equal(0, match.State.Shot);
-        Assert.StartsWith("Restart", match.Message, StringComparison.Ordinal);
+        Assert.Equal(0, match.Session.State.Shot);
+        Assert.StartsWith("Restart", match.Session.Message, StringComparison.Ordinal);
     }
 
     [Fact]
@@ -82,7 +82,7 @@ public class ListedDefectTests
         game.Window.Press(Key.R);
         game.Frame();
         Assert.Null(computer.Status);
-        Assert.StartsWith("Restart", game.World.Tree.Root.GetInTree<MatchNode>().Message, StringComparison.Ordinal);
+        Assert.StartsWith("Restart", game.World.Tree.Root.GetInTree<MatchNode>().Session.Message, StringComparison.Ordinal);
     }
 
     [Fact]
@@ -165,8 +165,8 @@ public class ListedDefectTests
         game.World.Menu.ShowStart();
         game.Frame();
         Assert.Equal("Play", game.World.Menu.FocusedLabel);
-        // Drills: down twice, Enter; the first card has the focus; Right, Enter plays the second drill.
-        foreach (var key in new[] { Key.Down, Key.Down, Key.Enter, Key.Right, Key.Enter })
+        // Drills (after Play online and Practice): down three times, Enter; the first card has the focus; Right, Enter plays the second drill.
+        foreach (var key in new[] { Key.Down, Key.Down, Key.Down, Key.Enter, Key.Right, Key.Enter })
         {
             game.Window.Press(key);
             game.Frame();

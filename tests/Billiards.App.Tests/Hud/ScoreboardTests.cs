@@ -16,7 +16,7 @@ public class ScoreboardTests
         using var game = FourBallGames.EightBall();
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
         FourBallGames.PotTheEightEarly(game);
-        Assert.True(match.IsOver);
+        Assert.True(match.Session.IsOver);
         var hud = game.Frame().Hud!;
         var result = hud.Result!;
         Assert.Equal("Ben wins the 8-ball game", result.Title);
@@ -25,7 +25,7 @@ public class ScoreboardTests
         Assert.Equal(1, result.Games.Second);
         Assert.Contains(hud.Buttons!, b => b.Label == "Rematch [Enter]");
         Assert.Contains(hud.Buttons!, b => b.Label == $"Menu [{MenuNode.MenuKey}]");
-        string lastRuling = match.Game!.LastRuling!.Message;
+        string lastRuling = match.Session.Game!.LastRuling!.Message;
         Assert.Equal(lastRuling, hud.Board!.Message);
 
         // M opens the start menu over the game, without the result panel; Escape keeps the game and brings it back.
@@ -42,7 +42,7 @@ public class ScoreboardTests
         game.Window.Down();
         game.Window.Up();
         hud = game.Frame().Hud!;
-        Assert.False(match.IsOver);
+        Assert.False(match.Session.IsOver);
         Assert.Null(hud.Result);
         Assert.Empty(hud.Board!.Log);
         Assert.NotEqual(lastRuling, hud.Board.Message);
@@ -87,7 +87,7 @@ public class ScoreboardTests
         nine.Window.Press(Key.Space);
         nine.RunUntilRest();
         nine.Frame();
-        Assert.True(match.IsOver);
+        Assert.True(match.Session.IsOver);
         Assert.Contains("fouls in a row 3", nine.Frame().Hud!.Board!.Players[0].Detail, StringComparison.Ordinal);
     }
 
@@ -151,7 +151,7 @@ public class ScoreboardTests
         using var game = FourBallGames.Start(new GameState(GameRules.StraightPool) { Shot = 5, Target = 100, Score = new PerPlayer<int>(99, 40), Players = new PerPlayer<string>("Anna", "Ben") });
         var match = game.World.Tree.Root.GetInTree<MatchNode>();
         game.Frame();
-        var call = Assert.IsType<Call>(match.CurrentCall);
+        var call = Assert.IsType<Call>(match.Call.CurrentCall);
         game.Window.Press(Key.Space);
         game.Frame();
         // The cue ball hits the called ball, which drops in the called pocket: a legal pot, the 100th point.
@@ -159,7 +159,7 @@ public class ScoreboardTests
         game.Simulation.Pocket(call.Ball, call.Pocket.Index);
         game.RunUntilRest();
         var hud = game.Frame().Hud!;
-        Assert.True(match.IsOver);
+        Assert.True(match.Session.IsOver);
         Assert.Equal("Anna wins the 14.1 game 100-40", hud.Result!.Title);
         Assert.StartsWith("score 100 of 100", hud.Board!.Players[0].Detail, StringComparison.Ordinal);
         Assert.StartsWith("score 40 of 100", hud.Board.Players[1].Detail, StringComparison.Ordinal);

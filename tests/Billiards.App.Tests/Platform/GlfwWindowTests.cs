@@ -76,6 +76,9 @@ public class GlfwWindowTests
     [InlineData(334, Key.Plus)]
     [InlineData(340, Key.Shift)]
     [InlineData(344, Key.Shift)]
+    [InlineData(46, Key.Period)]
+    [InlineData(330, Key.Period)]
+    [InlineData(59, Key.Semicolon)]
     [InlineData(999, Key.Unknown)]
     public void MapKeyTranslatesGlfwKeyCodes(int glfwKey, Key expected)
     {

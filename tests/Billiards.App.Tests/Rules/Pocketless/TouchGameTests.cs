@@ -40,7 +40,7 @@ public class TouchGameTests
         computer.BudgetMs = 120_000;
         computer.Fast = true;
         var limit = DateTime.UtcNow.AddSeconds(240);
-        while (!match.IsOver && DateTime.UtcNow < limit)
+        while (!match.Session.IsOver && DateTime.UtcNow < limit)
         {
             clock.Advance(1.0 / 30);
             host.RunFrame();
@@ -49,11 +49,11 @@ public class TouchGameTests
                 Thread.Sleep(2);
             }
         }
-        Assert.True(match.IsOver, $"the game never ended ({match.Game.Shots.Count} shots)");
+        Assert.True(match.Session.IsOver, $"the game never ended ({match.Session.Game.Shots.Count} shots)");
         int winner = match.Session.Winner!.Value;
-        Assert.Equal(TouchRuleset.Points, match.State.Score[winner]);
-        Assert.Equal(1, match.GamesWon[winner]);
-        var record = GameRecordFile.Parse(System.Text.Encoding.UTF8.GetString(GameRecordFile.ToUtf8(match.Game)), "touch-game.json");
+        Assert.Equal(TouchRuleset.Points, match.Session.State.Score[winner]);
+        Assert.Equal(1, match.Session.GamesWon[winner]);
+        var record = GameRecordFile.Parse(System.Text.Encoding.UTF8.GetString(GameRecordFile.ToUtf8(match.Session.Game)), "touch-game.json");
         Assert.Null(GameRecordFile.Verify(record, out _).FirstDifference);
     }
 

@@ -33,7 +33,7 @@ public class ThreeCushionGameTests
         computer.BudgetMs = 120_000;
         computer.Fast = true;
         var limit = DateTime.UtcNow.AddSeconds(400);
-        while (!match.IsOver && DateTime.UtcNow < limit)
+        while (!match.Session.IsOver && DateTime.UtcNow < limit)
         {
             clock.Advance(1.0 / 30);
             host.RunFrame();
@@ -42,11 +42,11 @@ public class ThreeCushionGameTests
                 Thread.Sleep(2);
             }
         }
-        Assert.True(match.IsOver, $"the game never ended ({match.Game.Shots.Count} shots)");
-        var last = match.Game.Shots[^1].Ruling;
+        Assert.True(match.Session.IsOver, $"the game never ended ({match.Session.Game.Shots.Count} shots)");
+        var last = match.Session.Game.Shots[^1].Ruling;
         Assert.True(last.Score.First >= 3 || last.Score.Second >= 3, last.Message);
-        Assert.All(match.Game.Shots, s => Assert.Equal(Ruleset.For(rules).CueBall(s.Before), s.Before.Shooter == 0 ? BallSet.White : BallSet.Yellow));
-        var record = GameRecordFile.Parse(System.Text.Encoding.UTF8.GetString(GameRecordFile.ToUtf8(match.Game)), "three-cushion-game.json");
+        Assert.All(match.Session.Game.Shots, s => Assert.Equal(Ruleset.For(rules).CueBall(s.Before), s.Before.Shooter == 0 ? BallSet.White : BallSet.Yellow));
+        var record = GameRecordFile.Parse(System.Text.Encoding.UTF8.GetString(GameRecordFile.ToUtf8(match.Session.Game)), "three-cushion-game.json");
         Assert.Null(GameRecordFile.Verify(record, out _).FirstDifference);
     }
 
