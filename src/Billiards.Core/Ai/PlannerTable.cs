@@ -158,10 +158,24 @@ public sealed class PlannerTable
     /// whose next-but-one choice is easier wins (a run goes on when the first way is missed in
     /// position). With one legal ball (9-ball, or the last of a group) it is b.
     /// </summary>
-    public double PositionQuality(TablePosition position, GameState state, double aimStdDeg)
+    public double PositionQuality(TablePosition position, GameState state, double aimStdDeg) =>
+        PositionQuality(position, state, aimStdDeg, BestShotWeight, SecondShotWeight);
+
+    /// <summary>The weight of the best next shot in <see cref="PositionQuality(TablePosition, GameState, double)"/>.</summary>
+    public const double BestShotWeight = 0.85;
+
+    /// <summary>The weight of the best shot on another ball in <see cref="PositionQuality(TablePosition, GameState, double)"/>.</summary>
+    public const double SecondShotWeight = 0.15;
+
+    /// <summary>
+    /// <see cref="PositionQuality(TablePosition, GameState, double)"/> with the weights of the best next
+    /// shot and of the best shot on another ball given: <paramref name="bestWeight"/> b + <paramref name="secondWeight"/> s
+    /// with more than one legal ball, else b.
+    /// </summary>
+    public double PositionQuality(TablePosition position, GameState state, double aimStdDeg, double bestWeight, double secondWeight)
     {
         var (best, second) = Shots(position, state, aimStdDeg);
-        return LegalTargets(state, position).Count > 1 ? 0.85 * best + 0.15 * second : best;
+        return LegalTargets(state, position).Count > 1 ? bestWeight * best + secondWeight * second : best;
     }
 
     /// <summary>

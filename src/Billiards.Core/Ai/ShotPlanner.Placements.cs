@@ -31,7 +31,12 @@ public sealed partial class ShotPlanner
             double r = _table.R;
             double x = -t.HalfLength / 2 - 2 * r;
             var spots = new List<Vec3> { new(x, 0, r) };
-            if (level.Level >= 3)
+            if (PlaysBreakForNoise)
+            {
+                // Playing for the noise: the spots across the kitchen towards either rail (NoiseBreakSpots).
+                spots = [.. NoiseBreakSpots.Select(f => new Vec3(x, f * (t.HalfWidth - r), r))];
+            }
+            else if (level.Level >= 3)
             {
                 spots.Add(new Vec3(x, 0.45 * t.HalfWidth, r));
                 spots.Add(new Vec3(x, -0.45 * t.HalfWidth, r));

@@ -133,9 +133,10 @@ public sealed partial class ShotPlanner
             // Position counts, but less than the pot: for a strong player a moderate next shot is
             // still likely, and the pot in hand is certain. Each ball left without a straight way
             // to a pocket costs a little, so that shots which free a cluster are preferred.
-            double q = look ? Table.PositionQuality(after, ruling.Next, level.PositionAimStdDeg) : EvenScore;
+            var weights = level.Leave;
+            double q = look ? Table.PositionQuality(after, ruling.Next, level.PositionAimStdDeg, weights.BestShot, weights.SecondShot) : EvenScore;
             double problems = look ? ProblemBallCost * Table.ProblemBalls(after, ruling.Next) : 0;
-            return ContinueScore + PositionWeight * q - problems + (PointScore * ruling.Points);
+            return weights.Stay + weights.Position * q - problems + (PointScore * ruling.Points);
         }
         if (!ruling.Legal)
         {

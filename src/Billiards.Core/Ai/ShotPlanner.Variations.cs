@@ -57,6 +57,9 @@ public sealed partial class ShotPlanner
 
     private sealed partial class Search
     {
+        // The levels that look ahead (3 to 5) search the wide break grid when they play for the noise.
+        private bool PlaysBreakForNoise => level.Error == SearchError.Noise && level.LookAhead > 0;
+
         private void AddVariations(int rootIndex, Root root, int candidates, List<Variation> variations)
         {
             var cue = root.Cue;
@@ -123,6 +126,11 @@ public sealed partial class ShotPlanner
             var foot = Setup.Initializer.FootSpot(_table.Table, _table.R);
             var apex = balls.OrderBy(b => (b.Position - foot).LengthXY).First();
             var before = state with { Placement = root.Place, Call = null, PushOut = false };
+            if (PlaysBreakForNoise)
+            {
+                AddBreakUnderNoise(rootIndex, root, balls, foot, before, variations);
+                return;
+            }
             var n = (apex.Position - root.Cue).XY.Normalized();
             var side = new Vec3(-n.Y, n.X, 0);
             var offsets = level.Level >= 3 ? new[] { 0.0, 0.3, -0.3 } : [0.0];
@@ -136,6 +144,40 @@ public sealed partial class ShotPlanner
                     var d = aimPoint - root.Cue;
                     var shot = new ShotSpec(speed * _table.TipScale, DeterministicMath.Atan2(d.Y, d.X) * 180 / Math.PI, 0, -0.2, 0);
                     variations.Add(new Variation(rootIndex, c, shot, before));
+                }
+            }
+        }
+
+        // The break of the planner that plays for the noise (NoiseBreakSpots and the grids beside
+        // it): from each spot, at the head ball and at the second-row ball nearer the cue ball, full
+        // or cut, at every speed and tip height of the grid; the search's rounds then keep the one
+        // whose outcomes under the noise on this rack (its own gaps) score best. In the rotation
+        // games a second-row ball struck first is a foul, which the search scores as one.
+        private void AddBreakUnderNoise(int rootIndex, Root root, List<(BallId Id, Vec3 Position)> balls, Vec3 foot, GameState before, List<Variation> variations)
+        {
+            var cue = root.Cue;
+            var byFoot = balls.OrderBy(b => (b.Position - foot).LengthXY).ToList();
+            var second = byFoot.Skip(1).Take(2).OrderBy(b => (b.Position - cue).LengthXY).ToList();
+            var targets = second.Count > 0 ? new[] { byFoot[0], second[0] } : [byFoot[0]];
+            // The cut mirrors with the spot: from the y >= 0 half to the ball's side nearer the -y rail, and back.
+            double towards = cue.Y >= 0 ? -1 : 1;
+            foreach (var target in targets)
+            {
+                var n = (target.Position - cue).XY.Normalized();
+                var side = new Vec3(-n.Y, n.X, 0);
+                foreach (double offset in NoiseBreakOffsets)
+                {
+                    var aimPoint = target.Position + side * (towards * offset * _table.R);
+                    var d = aimPoint - cue;
+                    double aim = DeterministicMath.Atan2(d.Y, d.X) * 180 / Math.PI;
+                    var c = new Candidate(ShotKind.Break, target.Id, target.Id, PocketId.None, target.Position, Vec3.Zero, aimPoint, 7, 0.5);
+                    foreach (double speed in NoiseBreakSpeeds)
+                    {
+                        foreach (double height in NoiseBreakHeights)
+                        {
+                            variations.Add(new Variation(rootIndex, c, new ShotSpec(speed * _table.TipScale, aim, 0, height, 0), before));
+                        }
+                    }
                 }
             }
         }

@@ -33,7 +33,7 @@ namespace Billiards.Core.Ai;
 /// before every shot), with the standard model's event integrator, several times with the player's
 /// own error (<see cref="SkillLevel"/>); the referee judges each result and a score says how good
 /// it is for the shooter: a won game 1, a lost game 0, staying at the table 0.7 plus 0.3 times the
-/// quality of the position for the next shot (<see cref="PlannerTable.PositionQuality"/>, with the
+/// quality of the position for the next shot (<see cref="PlannerTable.PositionQuality(TablePosition, GameState, double)"/>, with the
 /// shooter's own error) less 0.04 per ball left without a straight way to a pocket
 /// (<see cref="PlannerTable.ProblemBalls"/>), a legal miss 0.5 less 0.4 times the opponent's best shot (how
 /// safeties are judged; the opponent judged at least as good as the player,
@@ -78,6 +78,20 @@ public sealed partial class ShotPlanner
     // A level takes the first of these (sorted before use): the strongest players also try the
     // speeds in between.
     private static readonly double[] SpeedFactors = [1.0, 1.5, 2.3, 0.75, 3.2, 1.2, 1.85];
+
+    // The break of the planner that plays for the noise (SkillLevel.PlayingFor): the same break is
+    // struck every rack and decides whether the breaker stays, and under the noise the rack's own
+    // gaps decide which break drops a ball, so it searches a wide grid on the rack before it: the cue
+    // ball's spots on the head string's side of the kitchen (fractions of the half width less R,
+    // from the long axis towards either rail), the cue speeds (m/s, elastic tip), the tip heights
+    // (fractions of R) and the cuts (R off the full-ball aim, to the side of the ball away from the
+    // spot's rail) at the head ball and at the second-row ball nearer the cue ball.
+    // 7 x 4 x 4 x 4 x 2 = 896 breaks; the search's rounds keep the best by its outcomes under the
+    // noise (a ball down and the cue ball up, and the leave).
+    private static readonly double[] NoiseBreakSpots = [0, 0.3, 0.6, 0.85, -0.3, -0.6, -0.85];
+    private static readonly double[] NoiseBreakSpeeds = [7.5, 9, 10.5, 12];
+    private static readonly double[] NoiseBreakHeights = [-0.3, 0, 0.2, 0.4];
+    private static readonly double[] NoiseBreakOffsets = [0, 0.4, 0.8, 1.2];
 
     // (side, height, elevation deg): stun, follow, draw, side either way, elevated draw; then
     // half follow, half draw and side with draw either way.

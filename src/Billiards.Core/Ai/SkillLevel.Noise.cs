@@ -15,6 +15,29 @@ public enum SearchError
     Exact,
 }
 
+/// <summary>
+/// How the search scores a shot that keeps its player at the table: <paramref name="Stay"/> plus
+/// <paramref name="Position"/> times the next position's quality, that quality being
+/// <paramref name="BestShot"/> times the best next shot plus <paramref name="SecondShot"/> times the
+/// best shot on another ball (<see cref="PlannerTable.PositionQuality(TablePosition, Rules.GameState, double, double, double)"/>).
+/// </summary>
+/// <param name="Stay">Score of staying at the table before the position counts.</param>
+/// <param name="Position">Weight of the next position's quality.</param>
+/// <param name="BestShot">Weight of the best next shot in the position's quality.</param>
+/// <param name="SecondShot">Weight of the best shot on another ball in the position's quality.</param>
+public sealed record LeaveWeights(double Stay, double Position, double BestShot, double SecondShot)
+{
+    /// <summary>The levels' own weights (<see cref="ShotPlanner.ContinueScore"/>, <see cref="ShotPlanner.PositionWeight"/>, <see cref="PlannerTable.BestShotWeight"/>, <see cref="PlannerTable.SecondShotWeight"/>).</summary>
+    public static LeaveWeights Default { get; } = new(ShotPlanner.ContinueScore, ShotPlanner.PositionWeight, PlannerTable.BestShotWeight, PlannerTable.SecondShotWeight);
+
+    /// <summary>
+    /// The weights of the planner that plays for the noise: under the noise a run is as long as its
+    /// leaves are easy, so the leave weighs more (0.45 against the levels' 0.3, staying 0.55 against 0.7), and a leave with
+    /// a second easy ball more (0.3 against 0.15), for when the first way is missed in position.
+    /// </summary>
+    public static LeaveWeights UnderNoise { get; } = new(0.55, 0.45, 0.7, 0.3);
+}
+
 /// <summary>The level's planner under execution noise (<see cref="ExecutionNoise"/>).</summary>
 public sealed partial record SkillLevel
 {
@@ -23,6 +46,9 @@ public sealed partial record SkillLevel
 
     /// <summary>What the search takes the stroke's error to be (<see cref="SearchError.Own"/> for the levels of <see cref="Of"/>).</summary>
     public SearchError Error { get; init; } = SearchError.Own;
+
+    /// <summary>How the search scores a shot that keeps its player at the table (<see cref="LeaveWeights.Default"/>; <see cref="LeaveWeights.UnderNoise"/> when playing for the noise).</summary>
+    public LeaveWeights Leave { get; init; } = LeaveWeights.Default;
 
     /// <summary>The execution noise the search samples when <see cref="Error"/> is <see cref="SearchError.Noise"/>, else null.</summary>
     public ExecutionNoise? Noise { get; init; }
@@ -37,7 +63,7 @@ public sealed partial record SkillLevel
     public SkillLevel PlayingFor(ExecutionNoise noise)
     {
         ArgumentNullException.ThrowIfNull(noise);
-        return this with { Error = SearchError.Noise, Noise = noise, AimStdDeg = Math.Max(MinPositionAimStdDeg, noise.AimStdDeg) };
+        return this with { Error = SearchError.Noise, Noise = noise, AimStdDeg = Math.Max(MinPositionAimStdDeg, noise.AimStdDeg), Leave = LeaveWeights.UnderNoise };
     }
 
     /// <summary>
