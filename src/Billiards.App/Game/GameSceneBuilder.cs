@@ -61,6 +61,11 @@ public static class GameSceneBuilder
             root.AddChild(new CallPickerNode());
             root.AddChild(new TargetViewNode());
         }
+        if (match is null && practice is null && scene.Balls.Any(b => b.Id == scene.CueBall))
+        {
+            // A scene without a game: its shots go through a session without a referee too.
+            root.AddChild(new FreeTableNode());
+        }
         // Added after the modes: input runs from the last child back, so these keys come first.
         var keys = root.AddChild(new SystemKeysNode(loop));
         // After the physics node (the replay draws its balls over the table's) and before the

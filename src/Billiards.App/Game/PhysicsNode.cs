@@ -137,39 +137,43 @@ public sealed class PhysicsNode : Node
         LastStrike = (shot, atStrike, stepping);
     }
 
-    // Practice: the table before each shot, newest last (Undo takes them back one by one).
-    private readonly Timeline<(SimulationSnapshot Table, bool InHand, PlacementRegion Region, ShotSpec? Shot)> _beforeShots = new(MaxTakeBacks);
-
-    /// <summary>The most shots practice can take back one after another.</summary>
-    public const int MaxTakeBacks = 50;
-
-    /// <summary>True when practice can take a shot back (<see cref="Undo"/>): a shot was played and the balls rest.</summary>
-    public bool CanUndo => !IsRolling && StrikeThrough is null && _beforeShots.Count > 0;
-
     /// <summary>
-    /// Practice: puts the table back as it was before the last shot (every ball bit for bit, the
-    /// clock, the events and the cue ball in hand as they were); false when there is none to take
-    /// back or balls roll. A match takes back through its own state (<see cref="MatchNode.TakeBack"/>).
+    /// Shows <paramref name="table"/>, a table taken back to (the session's layout before the
+    /// last shot), with the cue ball in hand or not: the last shot's replay and lines are
+    /// forgotten (<see cref="Undone"/>).
     /// </summary>
-    public bool Undo()
+    public void TakeBackTo(Simulation table, bool inHand)
     {
-        if (!CanUndo || !_beforeShots.TryTakeBack(out var before))
-        {
-            return false;
-        }
-        var (table, inHand, region, shot) = before;
-        _simulation.Restore(table);
-        _simulation.Balls.CopyTo(_previous);
-        _eventsSeen = _simulation.Events.Count;
-        BallInHand = inHand;
-        HandRegion = region;
-        LastShot = shot;
+        Load(table);
+        LastShot = null;
         LastStrike = null;
+        if (inHand)
+        {
+            GiveBallInHand(PlacementRegion.Table);
+        }
+        else
+        {
+            EndBallInHand();
+        }
         Undone?.Invoke();
-        return true;
     }
 
-    /// <summary>Signal: practice took a shot back.</summary>
+    /// <summary>The balls on the table now (not pocketed or off it), at rest, sorted by id: a scene's balls.</summary>
+    public List<BallSetup> BallsAtRest()
+    {
+        var balls = new List<BallSetup>();
+        for (int i = 0; i < _simulation.Ids.Count; i++)
+        {
+            if (!_simulation.Balls[i].IsOutOfPlay)
+            {
+                balls.Add(new BallSetup(_simulation.Ids[i], _simulation.Balls[i].Position, Vec3.Zero, Vec3.Zero));
+            }
+        }
+        balls.Sort((a, b) => a.Id.Value.CompareTo(b.Id.Value));
+        return balls;
+    }
+
+    /// <summary>Signal: a shot was taken back (<see cref="TakeBackTo"/>).</summary>
     public event Action? Undone;
 
     private void CaptureStrike()
@@ -343,7 +347,6 @@ public sealed class PhysicsNode : Node
     {
         _simulation.Reset();
         _simulation.Balls.CopyTo(_previous);
-        _beforeShots.Clear();
         LastStrike = null;
         _eventsSeen = 0;
         IsRolling = false;
@@ -377,10 +380,6 @@ public sealed class PhysicsNode : Node
         }
         else
         {
-            if (_simulation.KeepsSnapshots)
-            {
-                _beforeShots.Push((_simulation.CreateSnapshot(), BallInHand, HandRegion, LastShot));
-            }
             EndBallInHand();
             _simulation.Strike(shot, CueBall);
         }

@@ -130,20 +130,8 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
     public event Action<DrillOutcome>? AttemptEnded;
 
     /// <summary>The balls at rest now as a scene of the start's table and physics (no shot), sorted by id.</summary>
-    public Scene Position()
-    {
-        var sim = _physics!.Simulation;
-        var balls = new List<BallSetup>();
-        for (int i = 0; i < sim.Ids.Count; i++)
-        {
-            if (!sim.Balls[i].IsOutOfPlay)
-            {
-                balls.Add(new BallSetup(sim.Ids[i], sim.Balls[i].Position, Vec3.Zero, Vec3.Zero));
-            }
-        }
-        balls.Sort((a, b) => a.Id.Value.CompareTo(b.Id.Value));
-        return _start with { Path = "practice", Name = _start.Name ?? "Practice position", Rack = null, Balls = balls, Shot = null, Rules = null };
-    }
+    public Scene Position() =>
+        _start with { Path = "practice", Name = _start.Name ?? "Practice position", Rack = null, Balls = _physics!.BallsAtRest(), Shot = null, Rules = null };
 
     /// <summary>The shot the cue would play now: the restored one while nothing changed it, else the cue's at the keyboard power.</summary>
     public ShotSpec? CurrentShot()
@@ -226,15 +214,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
             Attempt = new DrillAttempt(d);
             _attemptStart = null;
         }
-        _physics.Load(session.Game.Layout());
-        if (session.BallInHand == BallInHand.None)
-        {
-            _physics.EndBallInHand();
-        }
-        else
-        {
-            _physics.ReturnCueBall();
-        }
+        _physics.TakeBackTo(session.Game.Layout(), session.BallInHand != BallInHand.None);
         SetCue(cue);
         Say("Retry: the last shot's position and cue.");
         return true;

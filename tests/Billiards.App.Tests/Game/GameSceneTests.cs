@@ -105,20 +105,23 @@ public class GameSceneTests
     }
 
     [Fact]
-    public void InAMatchThePhysicsLeavesAScratchedCueBallToTheReferee()
+    public void WithoutAGameTheScratchIsTheFreeTableSessionsToRuleAndItGivesTheCueBallBackInHand()
     {
-        // HandOnly: a match is driving; the physics node does not put the cue ball in hand itself.
+        // The physics node returns no cue ball of its own where a node strikes through it: the
+        // scene's session without a referee rules on the shot and gives the ball back.
         using var game = new TestGame(TestScenes.TwoBalls(withShot: true));
         var physics = game.World.Physics;
-        physics.HandOnly = true;
+        var session = game.World.Tree.Find<FreeTableNode>()!.Session!;
         bool returned = false;
         physics.CueBallReturned += _ => returned = true;
         game.Frame();
         game.Simulation.Pocket(PoolBalls.Cue);
         game.RunUntilRest();
-        Assert.False(returned);
-        Assert.False(physics.BallInHand);
-        Assert.False(physics.HasCueBall);
+        Assert.True(returned);
+        Assert.True(physics.BallInHand);
+        Assert.Equal(Billiards.Core.Rules.BallInHand.Table, session.BallInHand);
+        var ruled = Assert.Single(session.Game.Shots).Ruling;
+        Assert.True(ruled.Legal && ruled.Continue);
     }
 
     [Fact]

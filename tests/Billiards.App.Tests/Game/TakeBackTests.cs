@@ -101,7 +101,7 @@ public class TakeBackTests
     [Fact]
     public void InPracticeTheScriptTakesTheScenesBreakBackToTheSceneBitForBit()
     {
-        // A scene without rules is practice: its own break plays at once, and Z takes it back.
+        // A scene without rules has no referee: its own break plays at once, and Z takes it back.
         var run = Play("eight-ball-break.json", null, takeBacks: false);
         Assert.Null(run.Match);
         var scene = SceneLoader.Load(AssetFolder.Scene("eight-ball-break.json"));
@@ -109,7 +109,11 @@ public class TakeBackTests
         fresh.TrackOrientation = true;
         AssertSameTable(fresh.Balls.ToArray(), run.Physics.Simulation.Balls);
         Assert.Equal(0, run.Physics.Simulation.Time);
-        Assert.False(run.Physics.CanUndo);
+        // The break went through the scene's session without a referee, and was taken back on its timeline: nothing is left.
+        var session = run.Host!.Tree.Root.GetInTree<FreeTableNode>().Session!;
+        Assert.Equal(1, session.TakeBackCount);
+        Assert.Empty(session.Game.Shots);
+        Assert.False(session.CanTakeBack);
     }
 
     [Fact]
