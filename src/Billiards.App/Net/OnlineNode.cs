@@ -308,7 +308,9 @@ public sealed class OnlineNode : Node
         }
         int scale = HudRenderer.Scale(f.Height);
         float line = HudFont.LineHeight * scale;
-        var labels = new List<HudLabel>(hud.Labels ?? []) { new(f.Width / 2f, f.Height - (2.2f * line), StatusLine, Centred: true, Gold: _match?.Session.Held is not null) };
+        // Above the power bar's label when the bar is shown, else where the bar would be.
+        float y = f.Height - ((hud.Power is null ? 2.2f : 3.8f) * line);
+        var labels = new List<HudLabel>(hud.Labels ?? []) { new(f.Width / 2f, y, StatusLine, Centred: true, Gold: _match?.Session.Held is not null) };
         f.Hud = hud with { Labels = labels };
     }
 }
