@@ -7,6 +7,8 @@
 #   play --script assets/scripts/eight-ball-game.json --record plays the whole game to its end,
 #     the Linux build's replay --verify finds every shot the same, and the Linux build playing the
 #     same script records the same game;
+#   host on Linux and join under wine play a whole 8-ball game by their scripts, the two records
+#     the same and each verifying (tools/online/wine-joiner.sh);
 #   selfplay records the Linux build's games byte for byte, and they verify on Linux;
 #   render-audio writes the Linux build's WAV byte for byte.
 # Installs what it needs with apt-get when missing. Everything it makes stays in build/ (git-ignored):
@@ -44,25 +46,9 @@ dotnet build src/Billiards.App -c Release -v quiet -nologo >"$out/build.log" 2>&
 linux="$repo/src/Billiards.App/bin/Release/net10.0/billiards"
 step "publish"
 
-# --- wine: its own prefix in build/, no debug output, Windows 10 (the .NET runtime needs it), no
-# Mono or Gecko offered, no audio driver (the game then falls silent with one line, as
-# on a Linux machine without a sound card). W^X off: wine 8 crashes in the runtime's finalizer of
-# dynamic methods with it on (real Windows does not need this).
-wine=/usr/lib/wine/wine64
-[ -x "$wine" ] || wine="$(command -v wine64 || command -v wine)"
-wineserver=/usr/lib/wine/wineserver64
-[ -x "$wineserver" ] || wineserver="$(command -v wineserver)"
-export WINEPREFIX="$out/wineprefix" WINEDEBUG=-all DOTNET_EnableWriteXorExecute=0
-if [ ! -f "$WINEPREFIX/.billiards-ready" ]; then
-  rm -rf "$WINEPREFIX"
-  # mscoree and mshtml off while the prefix is made: no Mono or Gecko to offer. Not later: wine
-  # needs its mscoree to load the .NET runtime's assemblies.
-  WINEDLLOVERRIDES="mscoree,mshtml=" "$wine" wineboot --init >"$out/wineboot.log" 2>&1
-  "$wine" reg add 'HKCU\Software\Wine' /v Version /d win10 /f >/dev/null 2>&1
-  "$wine" reg add 'HKCU\Software\Wine\Drivers' /v Audio /d '' /f >/dev/null 2>&1
-  "$wineserver" -w
-  touch "$WINEPREFIX/.billiards-ready"
-fi
+# --- wine: its own prefix in build/ (tools/windows/wine-prefix.sh says how it is made).
+. tools/windows/wine-prefix.sh
+wine_prefix "$out/wineprefix" "$out/wineboot.log"
 step "wine prefix"
 
 # A free display number (WINDOWS_CHECK_DISPLAY=:N chooses one).
@@ -161,6 +147,14 @@ EOF
 cmp <(tr -d '\r' < "$run/W.json") "$run/L.json" >/dev/null || fail "the scripted game differs between Windows and Linux"
 echo "windows check: play, the Linux build's game byte for byte"
 step "play and replay"
+
+# Over the network: the Linux build hosts, this Windows build joins under wine, each playing its
+# script of a whole 8-ball game; the two records the same and each verifies (about a minute).
+WINE_EXE="$exe" HOST_DISPLAY="$display" JOIN_DISPLAY="$display" PORT="${WINDOWS_CHECK_PORT:-7591}" \
+  tools/online/wine-joiner.sh "$out/wine-joiner" >"$run/wine-joiner.log" 2>&1 \
+  || { cat "$run/wine-joiner.log"; fail "the networked game with a wine joiner failed"; }
+grep "records are\|passed in" "$run/wine-joiner.log"
+step "online: a wine joiner"
 
 win selfplay --rules eight-ball --games 2 --levels 2,3 --seed 5 --threads 1 --out "$(realpath --relative-to=. "$run/selfplay.windows.jsonl")" --summary "$(realpath --relative-to=. "$run/selfplay.windows.json")" >/dev/null 2>&1
 "$linux" selfplay --rules eight-ball --games 2 --levels 2,3 --seed 5 --threads 1 --out "$run/selfplay.linux.jsonl" --summary "$run/selfplay.linux.json" >/dev/null 2>&1

@@ -138,7 +138,22 @@ public static class NetCommands
         var (connection, setup, hello) = NetJoin.Connect(hostName, port, code, log);
         var names = setup.Start.Players;
         var match = new MatchSetup(setup.Rules, [new Seat(names.First) { Kind = SeatKind.Remote }, new Seat(names.Second)]) { Game = setup };
-        var link = new OnlineLink(false, code, log) { Connection = connection, ShotsAtJoin = hello.Shots, ComeBack = comeBack };
+        var link = new OnlineLink(false, code, log)
+        {
+            Connection = connection,
+            ShotsAtJoin = hello.Shots,
+            ComeBack = comeBack,
+            Rejoin = () =>
+            {
+                var (again, game, back) = NetJoin.Connect(hostName, port, code, log);
+                if (!Equals(game, setup))
+                {
+                    again.Close("another game");
+                    throw new CliException("join: the host came back with another game");
+                }
+                return (again, back.Shots);
+            },
+        };
         log($"join: joined {hostName}:{port}: {Ruleset.For(setup.Rules).Title}, {names.First} (the host) against {names.Second}");
         return new OnlineGame(SceneOf(setup), match, link);
     }

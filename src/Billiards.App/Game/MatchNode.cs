@@ -196,13 +196,13 @@ public sealed class MatchNode : Node
     }
 
     /// <summary>A new game after the last one ended (<see cref="Session.Rematch"/>); not over the network.</summary>
-    public bool Rematch() => !Networked && Session.Rematch();
+    public bool Rematch() => !IsNetworked && Session.Rematch();
 
     /// <summary>The game starts again (the pause menu), while no ball rolls (<see cref="Session.Restart"/>); not over the network.</summary>
-    public bool Restart() => _physics is { IsRolling: false } && !Networked && Session.Restart();
+    public bool Restart() => _physics is { IsRolling: false } && !IsNetworked && Session.Restart();
 
-    // A game with a remote seat: no take-back, restart or rematch (the other side would not follow).
-    private bool Networked => Session.Seats.Any(s => s.Kind == SeatKind.Remote);
+    /// <summary>True for a game with a remote seat: no take-back, restart or rematch (the other side would not follow).</summary>
+    public bool IsNetworked => Session.Seats.Any(s => s.Kind == SeatKind.Remote);
 
     /// <inheritdoc />
     protected override void Ready()

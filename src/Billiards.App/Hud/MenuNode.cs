@@ -328,7 +328,10 @@ public sealed partial class MenuNode : Node
                 if (_match is { Session.IsOver: true, Session.RematchIn: null } over)
                 {
                     // Under the result panel (HudRenderer draws it above 0.64 of the height).
-                    items.Add(("Rematch [Enter]", () => over.Rematch()));
+                    if (!over.IsNetworked)
+                    {
+                        items.Add(("Rematch [Enter]", () => over.Rematch()));
+                    }
                     items.Add(($"Menu [{MenuKey}]", () => ShowStart()));
                     y = height * 0.66f;
                     break;

@@ -222,7 +222,8 @@ public static class ScoreboardBuilder
         var state = match.Session.State;
         if (match.Session.IsOver)
         {
-            return match.Session.RematchIn is double left ? $"Next game in {Math.Max(1, (int)Math.Ceiling(left))} s" : "Game over: Enter or click Rematch; M: menu";
+            return match.Session.RematchIn is double left ? $"Next game in {Math.Max(1, (int)Math.Ceiling(left))} s"
+                : match.IsNetworked ? "Game over: M: menu" : "Game over: Enter or click Rematch; M: menu";
         }
         if (computerStatus is not null)
         {

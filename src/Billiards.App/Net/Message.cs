@@ -66,8 +66,12 @@ public sealed record StateHash(int Shot, string Balls, string Ruling) : Message
     public override string Kind => "state_hash";
 }
 
-/// <summary>The host's whole game after shot <paramref name="Shot"/> (a game record, compact JSON), after a mismatch.</summary>
-public sealed record Resync(int Shot, string Record) : Message
+/// <summary>
+/// One part of the host's whole game after shot <paramref name="Shot"/> (after a mismatch, or for
+/// a joiner coming back): part <paramref name="Part"/> of <paramref name="Parts"/> of the game
+/// record packed by <see cref="ResyncPacking"/>.
+/// </summary>
+public sealed record Resync(int Shot, int Part, int Parts, string Record) : Message
 {
     public override string Kind => "resync";
 }
@@ -156,7 +160,7 @@ public static class MessageCodec
                 "call" => new CallMessage(f.Int("shot", 0, MaxShot), f.OptionalInt("ball", 0, 63), f.OptionalText("pocket", 32)),
                 "choice" => new Choice(f.Int("shot", 0, MaxShot), f.Text("option", 32)),
                 "state_hash" => new StateHash(f.Int("shot", 0, MaxShot), f.Hex("balls"), f.Hex("ruling")),
-                "resync" => new Resync(f.Int("shot", 0, MaxShot), f.Text("record", Framing.MaxMessageBytes)),
+                "resync" => ResyncOf(f),
                 "ping" => new Ping(f.Long("id"), f.Bool("reply")),
                 "bye" => new Bye(f.Text("reason", MaxText)),
                 _ => throw new ProtocolException($"unknown kind \"{Clip(kind)}\""),
@@ -168,6 +172,12 @@ public static class MessageCodec
             }
             return m;
         }
+    }
+
+    private static Resync ResyncOf(Fields f)
+    {
+        var r = new Resync(f.Int("shot", 0, MaxShot), f.Int("part", 0, ResyncPacking.MaxParts - 1), f.Int("parts", 1, ResyncPacking.MaxParts), f.Text("record", ResyncPacking.PartChars));
+        return r.Part < r.Parts ? r : throw new ProtocolException($"resync: part {r.Part} of {r.Parts}");
     }
 
     private static HostGame HostGameOf(JsonElement e)
@@ -241,6 +251,8 @@ public static class MessageCodec
                     break;
                 case Resync r:
                     w.WriteNumber("shot", r.Shot);
+                    w.WriteNumber("part", r.Part);
+                    w.WriteNumber("parts", r.Parts);
                     w.WriteString("record", r.Record);
                     break;
                 case Ping p:

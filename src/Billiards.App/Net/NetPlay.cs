@@ -29,6 +29,9 @@ public sealed class NetPlay
     private readonly Queue<Message> _moves = new();
     private int _lastStroke = -1;
     private bool _refused;
+    // The parts of the host's game come so far (the joiner), and the resync they belong to.
+    private readonly System.Text.StringBuilder _parts = new();
+    private (int Shot, int Parts, int Next)? _resync;
 
     /// <summary>The peer's moves that came and wait to be carried out here.</summary>
     public int MovesWaiting => _moves.Count;
@@ -68,6 +71,8 @@ public sealed class NetPlay
         {
             _moves.Clear();
             _refused = false;
+            _parts.Clear();
+            _resync = null;
             _lastStroke = NextShot - 1;
             _theirs.Clear();
             _connection = value;
@@ -81,6 +86,12 @@ public sealed class NetPlay
 
     /// <summary>Resyncs taken (the joiner) or sent (the host).</summary>
     public int Resyncs { get; private set; }
+
+    /// <summary>Messages the last resync sent took (the host): the record's parts.</summary>
+    public int ResyncParts { get; private set; }
+
+    /// <summary>Characters of the packed record per resync message (<see cref="ResyncPacking.PartChars"/>; tests send smaller parts).</summary>
+    internal int PartChars { get; init; } = ResyncPacking.PartChars;
 
     /// <summary>Signal: the joiner took the host's game after a mismatch (the window shows the table again).</summary>
     public event Action? Resynced;
@@ -112,10 +123,31 @@ public sealed class NetPlay
         {
             return false;
         }
-        var record = Encoding.UTF8.GetString(GameRecordFile.ToUtf8(Session.Game, indented: false)).TrimEnd('\n');
-        Send(new Resync(NextShot, record));
+        SendResync(NextShot);
         _log($"net: sent the game so far ({Session.Game.Shots.Count} shots) to the player coming back");
         return true;
+    }
+
+    // The host's whole game, packed and cut into messages of at most 64 KB (ResyncPacking).
+    private void SendResync(int shot)
+    {
+        var record = Encoding.UTF8.GetString(GameRecordFile.ToUtf8(Session.Game, indented: false)).TrimEnd('\n');
+        IReadOnlyList<string> parts;
+        try
+        {
+            parts = ResyncPacking.Pack(record, PartChars);
+        }
+        catch (ArgumentException e)
+        {
+            _log($"net: the game is not sent: {e.Message}");
+            return;
+        }
+        for (int k = 0; k < parts.Count; k++)
+        {
+            Send(new Resync(shot, k, parts.Count, parts[k]));
+        }
+        ResyncParts = parts.Count;
+        _log($"net: the game ({record.Length} characters, {parts.Sum(p => p.Length)} packed) sent in {parts.Count} message{(parts.Count == 1 ? "" : "s")}");
     }
 
     /// <summary>Sends the local seat's choice after the last ruling.</summary>
@@ -270,7 +302,7 @@ public sealed class NetPlay
                 Compare(h.Shot);
                 return true;
             case Resync r when !IsHost:
-                TakeResync(connection, r);
+                TakePart(connection, r);
                 return connection.IsOpen;
             case Bye:
                 return false;
@@ -302,8 +334,7 @@ public sealed class NetPlay
         {
             Resyncs++;
             _log($"net: desync after shot {shot}: {what} differ; the host's game wins and is sent whole");
-            var record = Encoding.UTF8.GetString(GameRecordFile.ToUtf8(Session.Game, indented: false)).TrimEnd('\n');
-            Send(new Resync(shot, record));
+            SendResync(shot);
         }
         else
         {
@@ -311,12 +342,40 @@ public sealed class NetPlay
         }
     }
 
-    private void TakeResync(Connection connection, Resync r)
+    // A part of the host's game: the parts come in order, one resync at a time; the last one makes the game.
+    private void TakePart(Connection connection, Resync r)
+    {
+        var expected = _resync ?? (r.Shot, r.Parts, 0);
+        if (r.Shot != expected.Shot || r.Parts != expected.Parts || r.Part != expected.Next)
+        {
+            Hostile(connection, $"resync part {r.Part} of {r.Parts} for shot {r.Shot} out of order (expected part {expected.Next} of {expected.Parts} for shot {expected.Shot})");
+            return;
+        }
+        _parts.Append(r.Record);
+        _resync = expected with { Next = r.Part + 1 };
+        if (r.Part + 1 < r.Parts)
+        {
+            return;
+        }
+        string joined = _parts.ToString();
+        _parts.Clear();
+        _resync = null;
+        try
+        {
+            TakeResync(connection, r.Shot, ResyncPacking.Unpack(joined));
+        }
+        catch (ProtocolException e)
+        {
+            Hostile(connection, e.Message);
+        }
+    }
+
+    private void TakeResync(Connection connection, int shot, string text)
     {
         GameRecord record;
         try
         {
-            record = GameRecordFile.Parse(r.Record, "the host's resync");
+            record = GameRecordFile.Parse(text, "the host's resync");
         }
         catch (SceneException e)
         {
@@ -335,11 +394,7 @@ public sealed class NetPlay
         {
             // A joiner coming back: its new game plays the host's shots itself, so it stands
             // where the host's does, an option still to be chosen included.
-            for (int k = 0; k < record.Shots.Count; k++)
-            {
-                int shot = k;
-                Session.Play(record.Shots[k], Session.Shooter.Kind, judged => record.ChoiceAfter(shot, judged.Ruling));
-            }
+            PlayAll(Session, record);
         }
         else
         {
@@ -347,7 +402,7 @@ public sealed class NetPlay
             Session.Restore(replay.Game.Snapshot());
         }
         // The hashes after the resync are the host's.
-        foreach (int k in _mine.Keys.Where(k => k >= r.Shot).ToList())
+        foreach (int k in _mine.Keys.Where(k => k >= shot).ToList())
         {
             _mine.Remove(k);
         }
@@ -361,12 +416,18 @@ public sealed class NetPlay
     {
         ArgumentNullException.ThrowIfNull(record);
         var session = new Session(record.Setup, seats);
+        PlayAll(session, record);
+        return session;
+    }
+
+    // Plays the record's shots into the session, each from the seat to play, each option the record's choice.
+    private static void PlayAll(Session session, GameRecord record)
+    {
         for (int k = 0; k < record.Shots.Count; k++)
         {
             int shot = k;
             session.Play(record.Shots[k], session.Shooter.Kind, judged => record.ChoiceAfter(shot, judged.Ruling));
         }
-        return session;
     }
 
     private RemoteAction? Hostile(Connection connection, string why)

@@ -27,6 +27,13 @@ public sealed record OnlineLink(bool IsHost, string Code, Action<string> Log)
 
     /// <summary>What the HUD says of the other end while no one joined (the host's address and code).</summary>
     public string? WaitingLine { get; init; }
+
+    /// <summary>
+    /// The joiner's way back to a host it lost (the same address, the same code): a new
+    /// connection and the host's shots so far; it throws when the host is not there (yet) or
+    /// refuses. Null on the host.
+    /// </summary>
+    public Func<(Connection Connection, int Shots)>? Rejoin { get; init; }
 }
 
 /// <summary>
@@ -49,6 +56,14 @@ public sealed class OnlineNode : Node
     private bool _sendGame;
     private bool _awaitGame;
     private int _shots;
+    // The joiner trying its host again after a drop, and the seconds since the last try.
+    private Task<(Connection Connection, int Shots)>? _rejoining;
+    private double _sinceRejoin;
+    private bool _rejoinFailed;
+
+    /// <summary>Seconds between a joiner's tries to reach a host it lost.</summary>
+    public const double RejoinSeconds = 3;
+
     // True while this node carries out what came from the network (the peer's moves, the host's game):
     // the session's signals of those shots and choices are not sent back.
     private bool _carrying;
@@ -166,6 +181,7 @@ public sealed class OnlineNode : Node
             Watch.Dropped();
             _link.Log($"net: the connection to {PeerName} dropped: the game waits {Watch.ComeBack.TotalSeconds:0} s for them to come back");
         }
+        Rejoin(dt);
         if (Watch.Tick(dt))
         {
             session.Forfeit(LocalSeat, $"{PeerName} did not come back: {session.State.Players[LocalSeat]} wins by forfeit.");
@@ -194,6 +210,49 @@ public sealed class OnlineNode : Node
     }
 
     private string PeerName => _match!.Session.State.Players[1 - LocalSeat];
+
+    // A joiner whose host dropped tries it again every few seconds, on its own task: a host still
+    // there (the connection lost, not the host's game) admits it as a joiner coming back and sends
+    // its game, and the game resumes where it stood. A host that started again has a new game:
+    // that is not this one, and the joiner goes on waiting (then wins by forfeit).
+    private void Rejoin(double dt)
+    {
+        if (_link.Rejoin is not { } rejoin || Watch.State != LinkState.Lost)
+        {
+            return;
+        }
+        if (_rejoining is { IsCompleted: true } done)
+        {
+            _rejoining = null;
+            if (!done.IsCompletedSuccessfully)
+            {
+                if (!_rejoinFailed)
+                {
+                    _link.Log($"net: the host is not there yet ({done.Exception!.InnerException!.Message}); trying every {RejoinSeconds:0} s");
+                    _rejoinFailed = true;
+                }
+            }
+            else if (done.Result is var (connection, shots) && shots == 0 && _match!.Session.Shots.Count > 0)
+            {
+                connection.Close("a new game is not this one");
+                _link.Log("net: the host came back with a new game: this one is not resumed there");
+            }
+            else
+            {
+                _net!.Connection = done.Result.Connection;
+                _peerShot = null;
+                _awaitGame = done.Result.Shots > 0;
+                _rejoinFailed = false;
+                _link.Log($"net: back with the host ({done.Result.Shots} shots there): the game resumes");
+            }
+        }
+        _sinceRejoin += dt;
+        if (_rejoining is null && _sinceRejoin >= RejoinSeconds)
+        {
+            _sinceRejoin = 0;
+            _rejoining = Task.Run(rejoin);
+        }
+    }
 
     private static string Clock(double seconds)
     {
@@ -308,7 +367,9 @@ public sealed class OnlineNode : Node
         }
         int scale = HudRenderer.Scale(f.Height);
         float line = HudFont.LineHeight * scale;
-        var labels = new List<HudLabel>(hud.Labels ?? []) { new(f.Width / 2f, f.Height - (2.2f * line), StatusLine, Centred: true, Gold: _match?.Session.Held is not null) };
+        // Above the power bar's label when the bar is shown, else where the bar would be.
+        float y = f.Height - ((hud.Power is null ? 2.2f : 3.8f) * line);
+        var labels = new List<HudLabel>(hud.Labels ?? []) { new(f.Width / 2f, y, StatusLine, Centred: true, Gold: _match?.Session.Held is not null) };
         f.Hud = hud with { Labels = labels };
     }
 }

@@ -19,11 +19,11 @@ internal sealed class LoopbackGame : IDisposable
     private readonly List<string> _hostLog = [], _joinLog = [];
     private readonly Random _random = new(38);
 
-    public LoopbackGame(NetLimits? limits = null, string? hostProgram = null, Func<GameSetup, HostGame>? describe = null)
+    public LoopbackGame(NetLimits? limits = null, string? hostProgram = null, Func<GameSetup, HostGame>? describe = null, GameRules? rules = null, int partChars = ResyncPacking.PartChars)
     {
-        Setup = GameSetup.Of(GameRules.EightBall, 1, new PerPlayer<string>("Anna", "Ben"));
+        Setup = GameSetup.Of(rules ?? GameRules.EightBall, 1, new PerPlayer<string>("Anna", "Ben"));
         HostSession = new Session(Setup, [new Seat("Anna"), new Seat("Ben") { Kind = SeatKind.Remote }]);
-        Host = new NetPlay(HostSession, 0, isHost: true, line => Log(_hostLog, line));
+        Host = new NetPlay(HostSession, 0, isHost: true, line => Log(_hostLog, line)) { PartChars = partChars };
         describe ??= Handshake.Describe;
         Listener = new NetHost(IPAddress.Loopback, 0, () => new Hello(hostProgram ?? Handshake.ProgramVersion, Code, describe(Setup), HostSession.Shots.Count), line => Log(_hostLog, line), limits);
         Listener.PeerAdmitted += (c, _) => Host.Connection = c;

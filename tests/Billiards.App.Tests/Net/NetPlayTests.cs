@@ -69,7 +69,35 @@ public class NetPlayTests
         using var game = new LoopbackGame();
         game.Connect();
         game.Play(2);
-        // The joiner's table drifts: the stroke that arrives is struck there a hair harder than it was sent.
+        ForceMismatch(game);
+        Assert.Contains(game.HostLog, l => l.StartsWith("net: desync after shot", StringComparison.Ordinal) && l.Contains("the host's game wins", StringComparison.Ordinal));
+        Assert.Contains(game.JoinLog, l => l.StartsWith("net: resync: took the host's game", StringComparison.Ordinal));
+        game.Play(4);
+        Assert.Equal(Record(game.HostSession), Record(game.JoinSession!));
+    }
+
+    [Fact]
+    public void ALongGameIsResyncedInSeveralMessagesEachUnder64KB()
+    {
+        // Straight pool with soft random shots: no end in sight after 62 shots, and the record is
+        // more than one message holds (it was one message of at most 64 KB once, and failed here).
+        using var game = new LoopbackGame(rules: GameRules.StraightPool, partChars: 4_000);
+        game.Connect();
+        game.Play(62);
+        Assert.False(game.HostSession.IsOver);
+        Assert.True(game.HostSession.Shots.Count >= 62);
+        Assert.True(Record(game.HostSession).Length > Framing.MaxMessageBytes, $"the record is {Record(game.HostSession).Length} bytes");
+        ForceMismatch(game);
+        Assert.True(game.Host.ResyncParts > 1, $"{game.Host.ResyncParts} part(s)");
+        Assert.Contains(game.HostLog, l => l.Contains($"sent in {game.Host.ResyncParts} messages", StringComparison.Ordinal));
+        game.Play(3);
+        Assert.Equal(Record(game.HostSession), Record(game.JoinSession!));
+    }
+
+    // The joiner's table drifts: the stroke that arrives is struck there a hair harder than it was
+    // sent; the host finds the mismatch and sends its game, the joiner takes it.
+    private static void ForceMismatch(LoopbackGame game)
+    {
         var join = game.Join!;
         var host = game.Host;
         var local = host.Session.Shooter.Kind == SeatKind.Remote ? join : host;
@@ -82,12 +110,8 @@ public class NetPlayTests
         LoopbackGame.Until(() => (action = remote.Poll()) is not null, "the stroke never arrived");
         var drifted = action!.Shot! with { Shot = action.Shot!.Shot with { Speed = action.Shot.Shot.Speed + 1e-6 } };
         remote.Judged(remote.Session.Play(drifted, SeatKind.Remote, _ => null));
-        LoopbackGame.Until(() => { host.Poll(); join.Poll(); return join.Resyncs == 1; }, "no resync came");
+        LoopbackGame.Until(() => { host.Poll(); join.Poll(); return join.Resyncs == 1; }, $"no resync came: {string.Join(" / ", game.JoinLog)}");
         Assert.Equal(1, host.Resyncs);
-        Assert.Contains(game.HostLog, l => l.StartsWith("net: desync after shot", StringComparison.Ordinal) && l.Contains("the host's game wins", StringComparison.Ordinal));
-        Assert.Contains(game.JoinLog, l => l.StartsWith("net: resync: took the host's game", StringComparison.Ordinal));
-        game.Play(4);
-        Assert.Equal(Record(game.HostSession), Record(game.JoinSession!));
     }
 
     [Fact]
