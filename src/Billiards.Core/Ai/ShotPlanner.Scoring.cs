@@ -1,3 +1,4 @@
+using Billiards.Core.Balls;
 using Billiards.Core.Rules;
 
 namespace Billiards.Core.Ai;
@@ -85,8 +86,31 @@ public sealed partial class ShotPlanner
     {
         ArgumentNullException.ThrowIfNull(state);
         ArgumentNullException.ThrowIfNull(position);
-        var balls = position.ObjectBalls.ToList();
-        return balls.Count == 1 && Ruleset.For(state.Rules).NeedsSnookers(state, 1 - state.Shooter, balls);
+        return Decided(state, state.Shooter, position);
+    }
+
+    // Decided for the shooter's side of the state after a shot: asked for every legal shot the
+    // search judges, so it allocates nothing unless a game with snookers has one ball left.
+    private static bool Decided(GameState state, int shooter, TablePosition position)
+    {
+        var ruleset = Ruleset.For(state.Rules);
+        if (!ruleset.HasSnookers)
+        {
+            return false;
+        }
+        BallId? last = null;
+        for (int i = 0; i < position.Count; i++)
+        {
+            if (position.Ids[i] != position.CueBall)
+            {
+                if (last is not null)
+                {
+                    return false;
+                }
+                last = position.Ids[i];
+            }
+        }
+        return last is { } ball && ruleset.NeedsSnookers(state, 1 - shooter, [ball]);
     }
 
     /// <summary>
@@ -112,7 +136,7 @@ public sealed partial class ShotPlanner
         {
             return ruling.Winner is not { } w ? EvenScore : w == before.Shooter ? WonScore : LostScore;
         }
-        if (ruling.Legal && Decided(ruling.Next with { Shooter = before.Shooter }, after))
+        if (ruling.Legal && Decided(ruling.Next, before.Shooter, after))
         {
             // The last ball left and the opponent more than its points behind: the frame is won
             // whatever the shot leaves; a pot that ends it now is still the better (WonScore).
