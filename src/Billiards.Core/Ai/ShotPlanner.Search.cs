@@ -40,7 +40,9 @@ public sealed partial class ShotPlanner
     private sealed partial class Search(ShotPlanner planner, GameState state, TablePosition position, SkillLevel level, PlannerBudget budget, ulong seed, Stopwatch clock)
     {
         private readonly PlannerTable _table = planner.Table;
-        private readonly IReferee _referee = Referee.For(state.Rules, planner.Table.Table, planner.Table.R);
+        // The search reads no ruling's sentence; the decision's expected ruling (suggest writes it) has its words.
+        private readonly IReferee _referee = Referee.Wordless(state.Rules, planner.Table.Table, planner.Table.R);
+        private readonly IReferee _worded = Referee.For(state.Rules, planner.Table.Table, planner.Table.R);
         private int _simulations;
         private double[] _squares = [];
 
@@ -118,7 +120,7 @@ public sealed partial class ShotPlanner
                 Before = chosen.Before with { Call = declared },
             };
             var root = roots[chosen.Root];
-            var expected = workers[0].Run(chosen, chosen.Shot, _referee, level).Ruling;
+            var expected = workers[0].Run(chosen, chosen.Shot, _worded, level).Ruling;
             _simulations++;
             var c = chosen.Candidate;
             return new Decision(

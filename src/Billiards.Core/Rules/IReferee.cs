@@ -39,6 +39,21 @@ public static class Referee
         return Ruleset.For(rules).Referee(table, ballRadius);
     }
 
+    /// <summary>
+    /// <paramref name="rules"/>'s referee as <see cref="For"/> gives it, ruling without words where
+    /// the game's referee can (every ruling's fields the same, its <see cref="Ruling.Message"/>
+    /// empty): for the planner's search, which reads no sentence.
+    /// </summary>
+    internal static IReferee Wordless(GameRules rules, TableSpec table, double ballRadius)
+    {
+        var referee = For(rules, table, ballRadius);
+        if (referee is RefereeBase worded)
+        {
+            worded.Words = false;
+        }
+        return referee;
+    }
+
     /// <summary>The balls a game is played with, cue ball first (<see cref="Ruleset.Balls"/>).</summary>
     public static IReadOnlyList<Balls.BallId> BallsOf(GameRules rules) => Ruleset.For(rules).Balls;
 }

@@ -21,6 +21,12 @@ internal abstract class RefereeBase(GameRules rules, TableSpec table, double bal
 
     public double BallRadius { get; } = ballRadius;
 
+    /// <summary>
+    /// False for a referee that rules without words (the planner's search, which judges thousands
+    /// of shots and reads none of their sentences): its rulings' <see cref="Ruling.Message"/> is empty.
+    /// </summary>
+    internal bool Words { get; set; } = true;
+
     public Ruling Judge(GameState before, ShotRecord shot)
     {
         ArgumentNullException.ThrowIfNull(before);
@@ -30,7 +36,7 @@ internal abstract class RefereeBase(GameRules rules, TableSpec table, double bal
             throw new ArgumentException($"a {Rules.ToName()} referee cannot judge a {before.Rules.ToName()} game", nameof(before));
         }
         var facts = new ShotFacts(before, shot, Table, BallRadius);
-        return Rule(before, shot, facts, new RulingBuilder(before, facts));
+        return Rule(before, shot, facts, new RulingBuilder(before, facts) { Words = Words });
     }
 
     /// <summary>
@@ -112,6 +118,9 @@ internal sealed class RulingBuilder(GameState before, ShotFacts facts)
     /// <summary>The shot's last word, in place of the default "X is at the table".</summary>
     public string? Outcome { get; set; }
 
+    /// <summary>False when the ruling is built without its sentence (<see cref="RefereeBase.Words"/>).</summary>
+    public bool Words { get; init; } = true;
+
     /// <summary>An extra sentence after the outcome (a warning).</summary>
     public string? Note { get; set; }
 
@@ -183,7 +192,7 @@ internal sealed class RulingBuilder(GameState before, ShotFacts facts)
             GameOver ? [] : [.. Options],
             GameOver,
             Winner,
-            Message(cont, nextShooter),
+            Words ? Message(cont, nextShooter) : "",
             next)
         {
             Rerack = [.. Rerack],
