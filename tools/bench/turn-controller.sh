@@ -3,7 +3,7 @@
 # older Cores (tools/bench/baseline-core.sh builds each): by default 03cad24, the commit the turn
 # controller was built on, and c4c8cca, the turn controller's branch before it merged with the
 # physics and carom work. One job of TurnControllerBenchmarks per build of the benchmark project.
-# Writes the tables to tests/Billiards.Benchmarks/results/turn-controller/.
+# Keeps its table in tests/Billiards.Benchmarks/results/ (the run's logs stay in build/bench/).
 # Usage: tools/bench/turn-controller.sh [COMMIT...]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -15,4 +15,5 @@ for c in "${commits[@]}"; do
 done
 export BILLIARDS_BASELINE_CORE
 dotnet run -c Release --project tests/Billiards.Benchmarks -- --filter '*TurnControllerBenchmarks*' \
-  --artifacts tests/Billiards.Benchmarks/results/turn-controller
+  --artifacts build/bench/turn-controller
+cp build/bench/turn-controller/results/Billiards.Benchmarks.TurnControllerBenchmarks-report-github.md tests/Billiards.Benchmarks/results/
