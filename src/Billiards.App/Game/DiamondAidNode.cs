@@ -46,8 +46,8 @@ public sealed class DiamondAidNode : Node
     /// <summary>The stroke <see cref="Path"/> was simulated for, or null.</summary>
     public ShotSpec? Shot => Path is null ? null : _traced?.Shot;
 
-    /// <summary>True on a table the aid reads: the carom table and its diamonds.</summary>
-    public bool Available => _physics?.Table.Preset == CaromTable.Preset;
+    /// <summary>True on a table the aid reads: a pocketless table (the carom table) and its diamonds, whatever game is played on it.</summary>
+    public bool Available => _physics is { Table.HasPockets: false };
 
     /// <inheritdoc />
     protected override void Ready()
