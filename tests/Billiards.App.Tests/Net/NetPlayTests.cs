@@ -7,6 +7,7 @@ using Billiards.Core.Scenes;
 namespace Billiards.App.Tests.Net;
 
 /// <summary>A networked game on loopback: the same game on both sides, the refusals of the handshake on both sides, a forced mismatch resynced.</summary>
+[Collection("Network")]
 public class NetPlayTests
 {
     private static string Record(Session s) => System.Text.Encoding.UTF8.GetString(GameRecordFile.ToJsonLines(s.RecordedGames));

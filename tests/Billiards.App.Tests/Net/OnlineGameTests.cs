@@ -19,6 +19,7 @@ namespace Billiards.App.Tests.Net;
 /// <c>tools/game-script --split</c> from the whole 8-ball game of two people) play a whole game;
 /// every wait is bounded.
 /// </summary>
+[Collection("Network")]
 public class OnlineGameTests
 {
     private const string Code = "K7PQ2M";

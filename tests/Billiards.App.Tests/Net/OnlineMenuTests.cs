@@ -16,6 +16,7 @@ namespace Billiards.App.Tests.Net;
 /// then show the same game on loopback, and the host's break arrives on the joiner's table.
 /// Each side runs on its own thread and clock; every wait is bounded.
 /// </summary>
+[Collection("Network")]
 public partial class OnlineMenuTests
 {
     private static readonly TimeSpan Bound = TimeSpan.FromMinutes(2);

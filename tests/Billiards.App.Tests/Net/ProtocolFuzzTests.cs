@@ -13,6 +13,7 @@ namespace Billiards.App.Tests.Net;
 /// connection and a log line naming the connection and what was wrong; then a real joiner plays
 /// a normal exchange with the same host. Every wait is bounded.
 /// </summary>
+[Collection("Network")]
 public sealed class ProtocolFuzzTests
 {
     private const int Seed = 3838;

@@ -14,6 +14,7 @@ namespace Billiards.App.Tests.Net;
 /// joiner coming back and sends its game, and both stand at the same shot. The real host and join
 /// code on fake windows, each on its own thread and clock; every wait is bounded.
 /// </summary>
+[Collection("Network")]
 public class RejoinTests
 {
     private static readonly TimeSpan Bound = TimeSpan.FromMinutes(2);
