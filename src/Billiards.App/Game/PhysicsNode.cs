@@ -418,13 +418,8 @@ public sealed class PhysicsNode : Node
             IsRolling = false;
             // Nothing moves any more: interpolation must not pull the picture back a step.
             _simulation.Balls.CopyTo(_previous);
-            if (!HandOnly && StrikeThrough is null && CueIndex is int cue && _simulation.Balls[cue].IsPocketed)
-            {
-                // A scene played without a game: a scratched cue ball comes back in hand instead of
-                // leaving the table without one. A game's referee or practice's session decides
-                // through the node that strikes (ReturnCueBall).
-                ReturnCueBall();
-            }
+            // A scratched cue ball is the striking node's to rule on: a game's referee, or the
+            // session without a referee of practice and of a scene without a game (ReturnCueBall).
             var displacement = HasCueBall ? CueBallPosition - _cueAtStrike : Vec3.Zero;
             CameToRest?.Invoke(displacement);
         }

@@ -73,7 +73,6 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
     private CueNode? _cue;
     private InputModeNode? _modes;
     private ShotPlanner? _planner;
-    private Session? _session;
     private Scene? _before;
     private ShotSpec? _exact;
     private BallId? _dragging;
@@ -103,7 +102,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
     /// Practice's turn controller: the session of <see cref="PracticeRuleset"/> (no referee) that
     /// strikes every shot and keeps the timeline the retry and the take-back go back on.
     /// </summary>
-    public Session? Session => _session;
+    public Session? Session { get; private set; }
 
     /// <summary>The last shot struck, or null.</summary>
     public ShotSpec? LastShot { get; private set; }
@@ -161,7 +160,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         _physics.HandOnly = Drill is not null;
         _physics.StrikeThrough = OnStrike;
         _physics.CameToRest += _ => OnRest();
-        _session = Session.Practice(Position(), _physics.CreateSimulation);
+        Session = Session.Practice(Position(), _physics.CreateSimulation);
         if (setup.Shot is { } shot)
         {
             SetCue(shot);
@@ -197,7 +196,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
     /// </summary>
     public bool Retry()
     {
-        if (_physics is null || _physics.IsRolling || _session is not { Game.Shots.Count: > 0 } session)
+        if (_physics is null || _physics.IsRolling || Session is not { Game.Shots.Count: > 0 } session)
         {
             return false;
         }
@@ -248,7 +247,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
     private Simulation? OnStrike(ShotSpec shot)
     {
         var position = Position();
-        var session = _session!;
+        var session = Session!;
         if (Attempt is { Potted: 0, Outcome: null })
         {
             _attemptStart = session.Game.Shots.Count;
@@ -268,7 +267,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
     {
         Changed();
         // No referee: the session notes the shot, and a cue ball that dropped comes back in hand.
-        if (_session?.Rest(_physics!.Simulation) is not null && _session.BallInHand != BallInHand.None && Drill is null)
+        if (Session?.Rest(_physics!.Simulation) is not null && Session.BallInHand != BallInHand.None && Drill is null)
         {
             _physics.ReturnCueBall();
         }
@@ -571,7 +570,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         _start = scene with { Shot = null, Game = null };
         Rebuild(_start);
         // A loaded position is a new session on its physics.
-        _session = Session.Practice(Position(), _physics.CreateSimulation);
+        Session = Session.Practice(Position(), _physics.CreateSimulation);
         if (scene.Shot is { } shot)
         {
             SetCue(shot);
