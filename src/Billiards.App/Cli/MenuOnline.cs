@@ -3,6 +3,7 @@ using System.Net.NetworkInformation;
 using System.Net.Sockets;
 using Billiards.App.Game;
 using Billiards.App.Hud;
+using Billiards.App.Platform;
 using Billiards.App.Net;
 using Billiards.Core.Scenes;
 
@@ -55,7 +56,7 @@ public sealed class MenuOnline(IPEndPoint hostAt, Action<string> log) : IDisposa
                 {
                     var (name, port) = NetJoin.ParseAddress(asked.Request.Address!, NetCommands.DefaultPort);
                     string code = asked.Request.Code!;
-                    _joining = Task.Run(() => NetCommands.Connect(name, port, code, log));
+                    _joining = BackgroundWork.RunBlocking(() => NetCommands.Connect(name, port, code, log));
                 }
                 catch (CliException e)
                 {

@@ -2,6 +2,7 @@ using System.Globalization;
 using Billiards.App.Game;
 using Billiards.App.Hud;
 using Billiards.App.Nodes;
+using Billiards.App.Platform;
 using Billiards.App.Rendering;
 using Billiards.Core.Rules;
 
@@ -250,7 +251,7 @@ public sealed class OnlineNode : Node
         if (_rejoining is null && _sinceRejoin >= RejoinSeconds)
         {
             _sinceRejoin = 0;
-            _rejoining = Task.Run(rejoin);
+            _rejoining = BackgroundWork.RunBlocking(rejoin);
         }
     }
 

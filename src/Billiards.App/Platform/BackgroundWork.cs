@@ -26,6 +26,19 @@ public static partial class BackgroundWork
     public static Task<T> Run<T>(Func<T> work) =>
         Task.Factory.StartNew(work, CancellationToken.None, TaskCreationOptions.DenyChildAttach, Scheduler.Value);
 
+    /// <summary>
+    /// Runs <paramref name="work"/>, which blocks (a connect and handshake, a game loop), on a thread
+    /// of its own at normal priority, never on the shared thread pool: the connections' readers and
+    /// writers run on that pool, and on two cores with every pool thread blocked they would wait
+    /// past their own timeouts.
+    /// </summary>
+    public static Task<T> RunBlocking<T>(Func<T> work) =>
+        Task.Factory.StartNew(work, CancellationToken.None, TaskCreationOptions.LongRunning | TaskCreationOptions.DenyChildAttach, TaskScheduler.Default);
+
+    /// <inheritdoc cref="RunBlocking{T}(Func{T})"/>
+    public static Task RunBlocking(Action work) =>
+        Task.Factory.StartNew(work, CancellationToken.None, TaskCreationOptions.LongRunning | TaskCreationOptions.DenyChildAttach, TaskScheduler.Default);
+
     /// <summary>Lowers the calling thread's priority; true when the system took it.</summary>
     public static bool Lower()
     {

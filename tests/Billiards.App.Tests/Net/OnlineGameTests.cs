@@ -36,7 +36,7 @@ public class OnlineGameTests
         {
             var listening = new TaskCompletionSource<int>(TaskCreationOptions.RunContinuationsAsynchronously);
             var hostSide = new Side();
-            var host = Task.Run(() => NetCommands.Host(
+            var host = BackgroundWork.RunBlocking(() => NetCommands.Host(
                 new NetCommands.HostOptions(null, Code, "Anna,Ben", null, Script("host"), hostRecord, null)
                 {
                     AnyPort = true,
@@ -47,7 +47,7 @@ public class OnlineGameTests
                 TextWriter.Null, line => log.Enqueue($"host {line}"), hostSide.Open));
             int port = await listening.Task.WaitAsync(TimeSpan.FromSeconds(30));
             var joinSide = new Side();
-            var join = Task.Run(() => NetCommands.Join($"127.0.0.1:{port}", Code, new PlayCommand.PlayOptions(Script("join"), null) { Record = joinRecord },
+            var join = BackgroundWork.RunBlocking(() => NetCommands.Join($"127.0.0.1:{port}", Code, new PlayCommand.PlayOptions(Script("join"), null) { Record = joinRecord },
                 line => log.Enqueue($"join {line}"), joinSide.Open, clock: joinSide.Clock));
             var both = Task.WhenAll(host, join);
             Assert.Same(both, await Task.WhenAny(both, Task.Delay(Bound)));

@@ -52,7 +52,7 @@ public partial class OnlineMenuTests
                 (hud, window) => Connected(hud, "Player 2") && Press(window, Key.W, Key.W, Key.W, Key.W, Key.W, Key.W, Key.Space),
                 (hud, _) => hud.Board?.Title.Contains("shot 1", StringComparison.Ordinal) == true,
             ]);
-            var hostRun = Task.Run(() => host.Play(folder, "host"));
+            var hostRun = BackgroundWork.RunBlocking(() => host.Play(folder, "host"));
             var (code, port) = await hosting.Task.WaitAsync(Bound);
             var join = new Side(
             [
@@ -73,7 +73,7 @@ public partial class OnlineMenuTests
                 // The host's break, played here.
                 (hud, _) => hud.Board?.Title.Contains("shot 1", StringComparison.Ordinal) == true,
             ]);
-            var joinRun = Task.Run(() => join.Play(folder, "join"));
+            var joinRun = BackgroundWork.RunBlocking(() => join.Play(folder, "join"));
             var both = Task.WhenAll(hostRun, joinRun);
             Assert.Same(both, await Task.WhenAny(both, Task.Delay(Bound)));
             Assert.Equal(new[] { 0, 0 }, await both);

@@ -26,11 +26,11 @@ public class RejoinTests
         var listening = new TaskCompletionSource<NetHost>(TaskCreationOptions.RunContinuationsAsynchronously);
         var host = new Side();
         var join = new Side();
-        var hostRun = Task.Run(() => NetCommands.Host(
+        var hostRun = BackgroundWork.RunBlocking(() => NetCommands.Host(
             new NetCommands.HostOptions(null, LoopbackGame.Code, "Anna,Ben", null, null, null, null) { AnyPort = true, Address = IPAddress.Loopback, Listening = listening.SetResult, Clock = host.Clock },
             TextWriter.Null, line => log.Enqueue($"host {line}"), host.Open, h => host.Game = h));
         var listener = await listening.Task.WaitAsync(Bound);
-        var joinRun = Task.Run(() => NetCommands.Join($"127.0.0.1:{listener.Port}", LoopbackGame.Code, new PlayCommand.PlayOptions(null, null) { Started = h => join.Game = h },
+        var joinRun = BackgroundWork.RunBlocking(() => NetCommands.Join($"127.0.0.1:{listener.Port}", LoopbackGame.Code, new PlayCommand.PlayOptions(null, null) { Started = h => join.Game = h },
             line => log.Enqueue($"join {line}"), join.Open, clock: join.Clock));
         try
         {
