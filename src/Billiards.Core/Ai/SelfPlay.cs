@@ -105,7 +105,7 @@ public sealed class SelfPlay
         {
             var state = game.State;
             var skill = skills[state.Shooter];
-            var position = new TablePosition(game.Balls.OrderBy(b => b.Key.Value).Select(b => (b.Key, b.Value)), game.Ruleset.CueBall(state));
+            var position = new TablePosition(game.Balls.OrderBy(b => b.Id.Value), game.Ruleset.CueBall(state));
             var decision = _planner.Decide(state, position, skill, budget, PlannerRandom.Derive(seed, k, 1));
             var place = game.BallInHand == BallInHand.None ? null : decision.Place;
             var executed = noise is null

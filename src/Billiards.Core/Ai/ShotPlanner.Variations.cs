@@ -118,7 +118,7 @@ public sealed partial class ShotPlanner
 
         private void AddBreak(int rootIndex, Root root, List<Variation> variations)
         {
-            var balls = root.Position.Enumerate().Where(b => b.Id != root.Position.CueBall).ToList();
+            var balls = root.Position.Balls.Where(b => b.Id != root.Position.CueBall).ToList();
             if (balls.Count == 0)
             {
                 return;

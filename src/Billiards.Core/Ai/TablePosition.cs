@@ -15,56 +15,51 @@ namespace Billiards.Core.Ai;
 /// </summary>
 public sealed class TablePosition
 {
-    private readonly BallId[] _ids;
-    private readonly Vec3[] _positions;
-
     /// <summary>A position of the given balls.</summary>
     /// <param name="balls">Ids and centres (m); the order is kept.</param>
     /// <param name="cueBall">The ball the player at the table strikes (<see cref="Ruleset.CueBall"/>).</param>
-    public TablePosition(IEnumerable<(BallId Id, Vec3 Position)> balls, BallId cueBall)
+    public TablePosition(BallLayout balls, BallId cueBall)
     {
         ArgumentNullException.ThrowIfNull(balls);
-        var list = balls.ToList();
-        _ids = [.. list.Select(b => b.Id)];
-        _positions = [.. list.Select(b => b.Position)];
+        Balls = balls;
         CueBall = cueBall;
     }
+
+    /// <inheritdoc cref="TablePosition(BallLayout, BallId)"/>
+    public TablePosition(IEnumerable<(BallId Id, Vec3 Position)> balls, BallId cueBall)
+        : this(balls as BallLayout ?? new BallLayout(balls), cueBall)
+    {
+    }
+
+    /// <summary>The balls and their centres.</summary>
+    public BallLayout Balls { get; }
 
     /// <summary>The ball the player at the table strikes; every other ball is an object ball to them.</summary>
     public BallId CueBall { get; }
 
     /// <summary>Ball ids, index-aligned with <see cref="Positions"/>.</summary>
-    public IReadOnlyList<BallId> Ids => _ids;
+    public IReadOnlyList<BallId> Ids => Balls.Ids;
 
     /// <summary>Ball centres (m), index-aligned with <see cref="Ids"/>.</summary>
-    public IReadOnlyList<Vec3> Positions => _positions;
+    public IReadOnlyList<Vec3> Positions => Balls.Positions;
 
     /// <summary>Number of balls on the table.</summary>
-    public int Count => _ids.Length;
+    public int Count => Balls.Count;
 
     /// <summary>The centre of <see cref="CueBall"/>, or null when it is off the table (pocketed).</summary>
-    public Vec3? Cue => IndexOf(CueBall) is var i and >= 0 ? _positions[i] : null;
+    public Vec3? Cue => Balls.PositionOf(CueBall);
 
     /// <summary>The object balls on the table: every ball but <see cref="CueBall"/>.</summary>
-    public IEnumerable<BallId> ObjectBalls => _ids.Where(b => b != CueBall);
+    public IEnumerable<BallId> ObjectBalls => Balls.Ids.Where(b => b != CueBall);
 
     /// <summary>This position for a player who strikes <paramref name="cueBall"/>.</summary>
-    public TablePosition ForCueBall(BallId cueBall) => cueBall == CueBall ? this : new(Enumerate(), cueBall);
+    public TablePosition ForCueBall(BallId cueBall) => cueBall == CueBall ? this : new(Balls, cueBall);
 
     /// <summary>The balls at rest in a simulation, pocketed ones left out, for a player who strikes <paramref name="cueBall"/>.</summary>
     public static TablePosition Of(Simulation simulation, BallId cueBall)
     {
         ArgumentNullException.ThrowIfNull(simulation);
-        var list = new List<(BallId, Vec3)>();
-        var balls = simulation.Balls;
-        for (int i = 0; i < balls.Length; i++)
-        {
-            if (!balls[i].IsOutOfPlay)
-            {
-                list.Add((simulation.Ids[i], balls[i].Position));
-            }
-        }
-        return new TablePosition(list, cueBall);
+        return new TablePosition(simulation.InPlay(), cueBall);
     }
 
     /// <summary>The balls after a shot, pocketed ones left out, for the player who struck it (<see cref="ShotRecord.CueBall"/>).</summary>
@@ -98,18 +93,13 @@ public sealed class TablePosition
     }
 
     /// <summary>Index of a ball, or -1 when it is not on the table.</summary>
-    public int IndexOf(BallId id) => Array.IndexOf(_ids, id);
+    public int IndexOf(BallId id) => Balls.IndexOf(id);
 
-    /// <summary>This position with <paramref name="id"/> at <paramref name="position"/> (added if absent).</summary>
-    public TablePosition With(BallId id, Vec3 position)
-    {
-        var list = Enumerate().Where(b => b.Id != id).ToList();
-        list.Add((id, position));
-        return new TablePosition(list, CueBall);
-    }
+    /// <summary>This position with <paramref name="id"/> at <paramref name="position"/>, last in the order (the ball placed last).</summary>
+    public TablePosition With(BallId id, Vec3 position) => new(Balls.Without(id).With(id, position), CueBall);
 
     /// <summary>This position without <paramref name="id"/>.</summary>
-    public TablePosition Without(BallId id) => new(Enumerate().Where(b => b.Id != id), CueBall);
+    public TablePosition Without(BallId id) => new(Balls.Without(id), CueBall);
 
     /// <summary>
     /// True when a ball of radius <paramref name="radius"/> at <paramref name="p"/> may be placed
@@ -123,9 +113,11 @@ public sealed class TablePosition
         {
             return false;
         }
-        for (int i = 0; i < _ids.Length; i++)
+        var ids = Balls.IdSpan;
+        var positions = Balls.PositionSpan;
+        for (int i = 0; i < ids.Length; i++)
         {
-            if (_ids[i] != ignore && Placement.Overlaps(radius, _positions[i], p, PlacementMargin))
+            if (ids[i] != ignore && Placement.Overlaps(radius, positions[i], p, PlacementMargin))
             {
                 return false;
             }
@@ -157,18 +149,6 @@ public sealed class TablePosition
     public static PhysicsConfig PlannerPhysics(PhysicsParams physics, Physics.Collisions.InteractionModels? models = null) =>
         new(ModelRegistry.Standard, ModelRegistry.Event, PhysicsConfig.DefaultDt, physics) { Models = models ?? Physics.Collisions.InteractionModels.Default };
 
-    private Scene Scene(TableSpec table, PhysicsConfig physics)
-    {
-        var balls = Enumerate().Select(b => new BallSetup(b.Id, b.Position, Vec3.Zero, Vec3.Zero)).ToList();
-        return new Scene("planner", null, table, physics, null, balls, null, null);
-    }
-
-    /// <summary>The balls as (id, centre) pairs.</summary>
-    public IEnumerable<(BallId Id, Vec3 Position)> Enumerate()
-    {
-        for (int i = 0; i < _ids.Length; i++)
-        {
-            yield return (_ids[i], _positions[i]);
-        }
-    }
+    private Scene Scene(TableSpec table, PhysicsConfig physics) =>
+        Scenes.Scene.Of(Balls, table, physics, BallSet.Pool) with { Path = "planner" };
 }

@@ -29,7 +29,7 @@ public sealed record GameSetup(TableSpec Table, PhysicsConfig Physics, int Seed,
     /// position), cue ball included, in the ball set's order; null for the rack with the cue ball
     /// on the head spot.
     /// </summary>
-    public IReadOnlyList<(BallId Id, Vec3 Position)>? Position { get; init; }
+    public BallLayout? Position { get; init; }
 
     /// <summary>A game of <paramref name="rules"/> on its ruleset's table (pool's 9 ft, snooker's 12 ft) with the default physics for its balls.</summary>
     public static GameSetup Of(GameRules rules, int seed, PerPlayer<string>? players = null, int? target = null)
@@ -40,11 +40,11 @@ public sealed record GameSetup(TableSpec Table, PhysicsConfig Physics, int Seed,
     }
 
     /// <summary>The rack of <paramref name="rack"/> (0 the first) with the cue ball where the rack puts it (the head spot; snooker's D).</summary>
-    public IReadOnlyList<(BallId Id, Vec3 Position)> Racked(int rack)
+    public BallLayout Racked(int rack)
     {
         var balls = Ruleset.Rack(Start, Table, BallRadius, Seed + rack);
         var cue = Ruleset.CueBall(Start);
-        return balls.Any(b => b.Id == cue) ? balls : [(cue, Ruleset.CueStart(Table, BallRadius)), .. balls];
+        return new(balls.Any(b => b.Id == cue) ? balls : [(cue, Ruleset.CueStart(Table, BallRadius)), .. balls]);
     }
 }
 
@@ -64,7 +64,7 @@ public sealed record GameShot(ShotSpec Shot, Call? Call = null, Vec3? Place = nu
 /// <param name="Input">What the player did (with the option the next shooter took).</param>
 /// <param name="Ruling">The referee's ruling.</param>
 /// <param name="After">The balls at rest after the shot, before the ruling's spots and reracks (m, z = R), in the ball set's order.</param>
-public sealed record MatchShot(GameState Before, GameShot Input, Ruling Ruling, IReadOnlyList<(BallId Id, Vec3 Position)> After);
+public sealed record MatchShot(GameState Before, GameShot Input, Ruling Ruling, BallLayout After);
 
 /// <summary>
 /// The one state machine of a game, driven alike by the window, self-play and replays: it keeps
@@ -96,8 +96,8 @@ public sealed class Match
 {
     private readonly Func<Scene, Simulation> _createSimulation;
     private readonly List<MatchShot> _shots = [];
-    private Dictionary<BallId, Vec3> _balls = [];
-    private Dictionary<BallId, Vec3> _beforeShot = [];
+    private BallLayout _balls;
+    private BallLayout _beforeShot = BallLayout.Empty;
     private int _racks;
     private (GameState Before, GameShot Input)? _struck;
     private Simulation? _judged;
@@ -116,7 +116,7 @@ public sealed class Match
         Referee = Ruleset.Referee(setup.Table, setup.BallRadius);
         _createSimulation = createSimulation ?? SimulationFactory.Create;
         State = setup.Start;
-        _balls = (setup.Position ?? setup.Racked(0)).ToDictionary(b => b.Id, b => b.Position);
+        _balls = setup.Position ?? setup.Racked(0);
     }
 
     /// <summary>The setup.</summary>
@@ -156,7 +156,7 @@ public sealed class Match
     public BallInHand BallInHand => State.Shot == 0 ? Ruleset.BreakBallInHand : State.BallInHand;
 
     /// <summary>The balls on the table now, at rest (the cue ball is absent while in hand after a scratch).</summary>
-    public IReadOnlyDictionary<BallId, Vec3> Balls => _balls;
+    public BallLayout Balls => _balls;
 
     /// <summary>
     /// The table as it stands between shots, as a simulation at rest, for a window to show and to
@@ -165,14 +165,14 @@ public sealed class Match
     /// </summary>
     public Simulation Layout()
     {
-        var balls = new Dictionary<BallId, Vec3>(_balls);
+        var balls = _balls;
         var cue = Ruleset.CueBall(State);
-        if (!balls.ContainsKey(cue))
+        if (!balls.Contains(cue))
         {
             var region = BallInHand.Region();
             var head = Ruleset.CueStart(Setup.Table, Setup.BallRadius);
-            balls[cue] = BallInHand == BallInHand.None ? head
-                : Placement.FreeSpotNear(Setup.Table, Setup.BallRadius, cue, head, balls.Select(b => (b.Key, b.Value)), region);
+            balls = balls.With(cue, BallInHand == BallInHand.None ? head
+                : Placement.FreeSpotNear(Setup.Table, Setup.BallRadius, cue, head, balls, region));
         }
         var sim = _createSimulation(SceneOf(balls, null));
         sim.RefereeRules = true;
@@ -222,15 +222,16 @@ public sealed class Match
                 throw new InvalidOperationException($"shot {State.Shot}: the cue ball can only be placed with ball in hand");
             }
             var p = place with { Z = r };
-            _balls[cue] = p;
+            _balls = _balls.With(cue, p);
             before = before with { Placement = p };
         }
-        else if (!_balls.ContainsKey(cue))
+        else if (!_balls.Contains(cue))
         {
-            _balls[cue] = Ruleset.CueStart(Setup.Table, r);
-            before = before with { Placement = _balls[cue] };
+            var head = Ruleset.CueStart(Setup.Table, r);
+            _balls = _balls.With(cue, head);
+            before = before with { Placement = head };
         }
-        _beforeShot = new Dictionary<BallId, Vec3>(_balls);
+        _beforeShot = _balls;
         // No wall-clock bound: a shot must end the same way on every machine.
         var sim = _createSimulation(SceneOf(_balls, input.Shot));
         sim.RefereeRules = true;
@@ -263,7 +264,7 @@ public sealed class Match
         var record = ShotRecord.LastShot(simulation, struck.Input.Shot);
         var ruling = Referee.Judge(struck.Before, record);
         _balls = AtRest(simulation);
-        var played = new MatchShot(struck.Before, struck.Input, ruling, [.. Ordered(_balls)]);
+        var played = new MatchShot(struck.Before, struck.Input, ruling, Ordered(_balls));
         _shots.Add(played);
         if (ruling.GameOver)
         {
@@ -311,7 +312,7 @@ public sealed class Match
         {
             throw new InvalidOperationException(_struck is not null ? "a shot is still running" : "an option must be chosen first");
         }
-        return new MatchSnapshot(Setup, State, [.. Ordered(_balls)], [.. _shots], _racks);
+        return new MatchSnapshot(Setup, State, Ordered(_balls), [.. _shots], _racks);
     }
 
     /// <summary>
@@ -330,7 +331,7 @@ public sealed class Match
         _struck = null;
         _judged = null;
         State = snapshot.State;
-        _balls = snapshot.Balls.ToDictionary(b => b.Id, b => b.Position);
+        _balls = snapshot.Balls;
         _shots.Clear();
         _shots.AddRange(snapshot.Shots);
         _racks = snapshot.Racks;
@@ -341,7 +342,7 @@ public sealed class Match
         if (outcome.Replace)
         {
             // Snooker's replace: every ball back where it stood before the shot.
-            _balls = new Dictionary<BallId, Vec3>(_beforeShot);
+            _balls = _beforeShot;
         }
         else if (!outcome.Rerack && outcome.Spot.Count > 0)
         {
@@ -356,55 +357,28 @@ public sealed class Match
         if (outcome.Rerack)
         {
             _racks++;
-            _balls = Setup.Racked(_racks).ToDictionary(b => b.Id, b => b.Position);
+            _balls = Setup.Racked(_racks);
             return;
         }
         if (ruling.Rerack.Count > 0)
         {
             _racks++;
-            if (Ruleset.RerackDuringPlay(_balls, ruling.Rerack, Setup.Table, Setup.BallRadius, Setup.Seed + _racks) is { } hand)
+            var (balls, hand) = Ruleset.RerackDuringPlay(_balls, ruling.Rerack, Setup.Table, Setup.BallRadius, Setup.Seed + _racks);
+            _balls = balls;
+            if (hand is not null)
             {
-                State = State with { BallInHand = hand };
+                State = State with { BallInHand = hand.Value };
             }
         }
     }
 
     // The balls in play at rest; a ball the shot pocketed is off the table whatever the model did after.
-    private Dictionary<BallId, Vec3> AtRest(Simulation sim)
-    {
-        var balls = new Dictionary<BallId, Vec3>();
-        var after = sim.Balls;
-        for (int i = 0; i < after.Length; i++)
-        {
-            if (!after[i].IsOutOfPlay)
-            {
-                balls[sim.Ids[i]] = after[i].Position with { Z = Setup.BallRadius };
-            }
-        }
-        return balls;
-    }
+    private BallLayout AtRest(Simulation sim) => sim.InPlay(Setup.BallRadius);
 
-    private IEnumerable<(BallId Id, Vec3 Position)> Ordered(IReadOnlyDictionary<BallId, Vec3> balls)
-    {
-        var set = Ruleset.BallSet.Ids;
-        return balls.OrderBy(b => IndexIn(set, b.Key)).Select(b => (b.Key, b.Value));
-    }
+    private BallLayout Ordered(BallLayout balls) => balls.OrderedBy(Ruleset.BallSet.Ids);
 
-    private static int IndexIn(IReadOnlyList<BallId> set, BallId id)
-    {
-        for (int i = 0; i < set.Count; i++)
-        {
-            if (set[i] == id)
-            {
-                return i;
-            }
-        }
-        return int.MaxValue;
-    }
-
-    private Scene SceneOf(IReadOnlyDictionary<BallId, Vec3> balls, ShotSpec? shot) =>
-        new("game", null, Setup.Table, Setup.Physics, null,
-            [.. Ordered(balls).Select(b => new BallSetup(b.Id, b.Position, Vec3.Zero, Vec3.Zero))], shot, Ruleset.Name) { BallSet = Ruleset.BallSet };
+    private Scene SceneOf(BallLayout balls, ShotSpec? shot) =>
+        Scene.Of(Ordered(balls), Setup.Table, Setup.Physics, Ruleset.BallSet, shot, Ruleset.Name);
 }
 
 /// <summary>
@@ -413,7 +387,7 @@ public sealed class Match
 /// </summary>
 public sealed class MatchSnapshot
 {
-    internal MatchSnapshot(GameSetup setup, GameState state, IReadOnlyList<(BallId Id, Vec3 Position)> balls, IReadOnlyList<MatchShot> shots, int racks)
+    internal MatchSnapshot(GameSetup setup, GameState state, BallLayout balls, IReadOnlyList<MatchShot> shots, int racks)
     {
         Setup = setup;
         State = state;
@@ -429,7 +403,7 @@ public sealed class MatchSnapshot
     public GameState State { get; }
 
     /// <summary>The balls at rest on the table (m, z = R), in the ball set's order; a cue ball in hand is absent.</summary>
-    public IReadOnlyList<(BallId Id, Vec3 Position)> Balls { get; }
+    public BallLayout Balls { get; }
 
     /// <summary>The shots played before the snapshot.</summary>
     public IReadOnlyList<MatchShot> Shots { get; }

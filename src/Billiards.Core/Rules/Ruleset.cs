@@ -482,11 +482,11 @@ public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentati
 
     /// <summary>
     /// Racks <paramref name="balls"/> again during a game (14.1's rerack of fourteen) on the balls
-    /// at rest; returns the ball in hand the rerack gives (a cue ball in the rack's way is taken
-    /// up), or null when it gives none.
+    /// at rest (<paramref name="table"/>); returns the balls after the rerack and the ball in hand
+    /// it gives (a cue ball in the rack's way is taken up), or null when it gives none.
     /// </summary>
     /// <exception cref="InvalidOperationException">For a game without reracks during play.</exception>
-    public virtual BallInHand? RerackDuringPlay(IDictionary<BallId, Vec3> table, IReadOnlyList<BallId> balls, TableSpec tableSpec, double ballRadius, int seed) =>
+    public virtual (BallLayout Balls, BallInHand? BallInHand) RerackDuringPlay(BallLayout table, IReadOnlyList<BallId> balls, TableSpec tableSpec, double ballRadius, int seed) =>
         throw new InvalidOperationException($"{Name} has no rerack during play");
 
     /// <summary>What the HUD shows as <paramref name="player"/>'s target with <paramref name="objectBalls"/> on the table.</summary>

@@ -64,7 +64,7 @@ public interface IRefereeRules
     void SpotBalls(Physics.Simulation simulation, IReadOnlyList<BallId> balls);
 
     /// <inheritdoc cref="Ruleset.RerackDuringPlay"/>
-    BallInHand? RerackDuringPlay(IDictionary<BallId, Vec3> table, IReadOnlyList<BallId> balls, TableSpec tableSpec, double ballRadius, int seed);
+    (BallLayout Balls, BallInHand? BallInHand) RerackDuringPlay(BallLayout table, IReadOnlyList<BallId> balls, TableSpec tableSpec, double ballRadius, int seed);
 }
 
 /// <summary>What people are shown of a game: its names, each player's target, the words of its scores.</summary>

@@ -109,7 +109,7 @@ public sealed class Session
         }
         var rack = setup.Racked(0);
         bool racked = balls.Count == rack.Count && rack.All(b => balls.Contains(b));
-        return new Session(racked ? setup : setup with { Position = balls }, seats, createSimulation, opening);
+        return new Session(racked ? setup : setup with { Position = new BallLayout(balls) }, seats, createSimulation, opening);
     }
 
     /// <summary>
@@ -125,7 +125,7 @@ public sealed class Session
     {
         ArgumentNullException.ThrowIfNull(position);
         var start = new GameState(PracticeRuleset.Practice) { Players = new(player, player), Shot = 1, BallInHand = BallInHand.None };
-        var setup = new GameSetup(position.Table, position.Physics, 1, start) { Position = Layout(position) };
+        var setup = new GameSetup(position.Table, position.Physics, 1, start) { Position = position.Layout };
         return new Session(setup, Seat.Of(start.Players, SeatKind.Person), createSimulation) { TakeBacks = true };
     }
 
@@ -143,10 +143,8 @@ public sealed class Session
             throw new InvalidOperationException(IsShotRunning ? "a shot is still running" : "only practice moves balls by hand");
         }
         var now = Game.Snapshot();
-        Game.Restore(new MatchSnapshot(now.Setup, now.State with { BallInHand = BallInHand.None }, Layout(position), now.Shots, now.Racks));
+        Game.Restore(new MatchSnapshot(now.Setup, now.State with { BallInHand = BallInHand.None }, position.Layout, now.Shots, now.Racks));
     }
-
-    private static List<(BallId Id, Vec3 Position)> Layout(Scene position) => [.. position.Balls.Select(b => (b.Id, b.Position))];
 
     /// <summary>The two seats, player 0 first.</summary>
     public IReadOnlyList<Seat> Seats { get; }

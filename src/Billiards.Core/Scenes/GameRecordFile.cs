@@ -401,7 +401,7 @@ public static class GameRecordFile
         static string At(int k) => string.Create(CultureInfo.InvariantCulture, $"$.shots[{k}]");
     }
 
-    private static List<(Balls.BallId Id, Vec3 Position)> ReadBalls(JsonElement e, GameSetup setup, string file, string at)
+    private static Balls.BallLayout ReadBalls(JsonElement e, GameSetup setup, string file, string at)
     {
         if (e.ValueKind != JsonValueKind.Array)
         {
@@ -423,9 +423,13 @@ public static class GameRecordFile
             {
                 throw new SceneException(file, here + ".position", "expected [x, y] (m)");
             }
+            if (list.Exists(x => x.Item1 == ball))
+            {
+                throw new SceneException(file, here + ".id", $"ball \"{id.GetString()}\" is listed twice");
+            }
             list.Add((ball, new Vec3(p[0].GetDouble(), p[1].GetDouble(), setup.BallRadius)));
         }
-        return list;
+        return new Balls.BallLayout(list);
     }
 
     // The ruling as GameBlockWriter.RulingToUtf8 formats it, so that rulings compare as text.

@@ -82,6 +82,22 @@ public sealed record Scene(
 
     /// <summary>The ball radius the scene's model uses (m).</summary>
     public double BallRadius => Physics.Model.BallRadius(Physics.Params);
+
+    /// <summary>Where the scene's balls start, in the scene's order.</summary>
+    public BallLayout Layout => new(Balls.Select(b => (b.Id, b.Position)));
+
+    /// <summary>A scene of <paramref name="balls"/> at rest, in the layout's order: a game's position between shots, or a shot's start.</summary>
+    /// <param name="balls">The balls and their centres.</param>
+    /// <param name="table">The table.</param>
+    /// <param name="physics">The physics.</param>
+    /// <param name="ballSet">The balls' set.</param>
+    /// <param name="shot">The shot to strike, or null.</param>
+    /// <param name="rules">The rules' name, or null.</param>
+    public static Scene Of(BallLayout balls, TableSpec table, PhysicsConfig physics, BallSet ballSet, ShotSpec? shot = null, string? rules = null)
+    {
+        ArgumentNullException.ThrowIfNull(balls);
+        return new("game", null, table, physics, null, [.. balls.Select(b => new BallSetup(b.Id, b.Position, Vec3.Zero, Vec3.Zero))], shot, rules) { BallSet = ballSet };
+    }
 }
 
 /// <summary>Constants of the thesis model that the rest of Core needs in SI.</summary>

@@ -21,7 +21,7 @@ internal static class Aimer
 
     public static GameShot Next(Match game, Func<BallId, bool> isTarget, bool callShots)
     {
-        var balls = game.Balls;
+        var balls = game.Balls.ToDictionary();
         var table = game.Setup.Table;
         if (game.State.Shot == 0 && game.State.Rules != GameRules.StraightPool)
         {
@@ -119,7 +119,7 @@ internal static class Aimer
     /// <summary>A soft roll into the clearest direction: touches no ball (a no-contact foul, or a push-out).</summary>
     public static GameShot Roll(Match game, bool pushOut = false, RefereeOption? choice = null)
     {
-        var balls = game.Balls;
+        var balls = game.Balls.ToDictionary();
         var table = game.Setup.Table;
         var cue = balls.TryGetValue(PoolBalls.Cue, out var c) ? c : Initializer(table);
         var pockets = Billiards.Core.Table.TableGeometry.Build(table, R).Pockets.ToArray();

@@ -14,13 +14,13 @@ public class MatchSnapshotTests
     private static readonly PerPlayer<string> Players = new("Anna", "Ben");
 
     private static bool IsTarget(Match game, BallId ball) =>
-        game.Ruleset.LegalTargets(game.State, game.Balls.Keys.Where(b => !PoolBalls.IsCue(b))).Contains(ball);
+        game.Ruleset.LegalTargets(game.State, game.Balls.Ids.Where(b => !PoolBalls.IsCue(b))).Contains(ball);
 
     private static GameShot NextShot(Match game) => Aimer.Next(game, b => IsTarget(game, b), callShots: true);
 
     // Every coordinate of every ball, as raw bits: equal means equal to the last bit.
-    private static long[] Bits(IReadOnlyDictionary<BallId, Vec3> balls) =>
-        [.. balls.OrderBy(b => b.Key.Value).SelectMany(b => new[] { (long)b.Key.Value, BitConverter.DoubleToInt64Bits(b.Value.X), BitConverter.DoubleToInt64Bits(b.Value.Y), BitConverter.DoubleToInt64Bits(b.Value.Z) })];
+    private static long[] Bits(BallLayout balls) =>
+        [.. balls.OrderBy(b => b.Id.Value).SelectMany(b => new[] { (long)b.Id.Value, BitConverter.DoubleToInt64Bits(b.Position.X), BitConverter.DoubleToInt64Bits(b.Position.Y), BitConverter.DoubleToInt64Bits(b.Position.Z) })];
 
     [Theory]
     [InlineData("eight-ball", 3)]

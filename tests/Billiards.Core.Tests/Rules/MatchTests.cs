@@ -15,7 +15,7 @@ public class MatchTests
     private static readonly PerPlayer<string> Players = new("Anna", "Ben");
 
     private static bool IsTarget(Match game, BallId ball) =>
-        game.Ruleset.LegalTargets(game.State, game.Balls.Keys.Where(b => !PoolBalls.IsCue(b))).Contains(ball);
+        game.Ruleset.LegalTargets(game.State, game.Balls.Ids.Where(b => !PoolBalls.IsCue(b))).Contains(ball);
 
     private static Match PlayOut(GameSetup setup, int maxShots = 200)
     {

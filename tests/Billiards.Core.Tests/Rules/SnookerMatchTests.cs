@@ -45,7 +45,7 @@ public class SnookerMatchTests
         for (int i = 0; i < 80 && !match.IsOver; i++)
         {
             var state = match.State;
-            var colours = match.Balls.Keys.Where(SnookerRuleset.IsColour).ToList();
+            var colours = match.Balls.Ids.Where(SnookerRuleset.IsColour).ToList();
             Call? call = SnookerPart.Of(state).BallOn == "colour" && colours.Count > 0 ? Call.Nominate(colours[random.Next(colours.Count)]) : null;
             Vec3? place = match.BallInHand == BallInHand.D
                 ? new Vec3(SnookerTable.BaulkLineX(match.Setup.Table) - (random.NextDouble() * 0.2), (random.NextDouble() - 0.5) * 0.4, r)
@@ -61,7 +61,7 @@ public class SnookerMatchTests
             // (A frame's end starts the next frame's state at 0 - 0.)
             Assert.True(match.IsOver || match.State.Score.First >= shot.Before.Score.First && match.State.Score.Second >= shot.Before.Score.Second,
                 $"shot {i}: {shot.Before.Score} -> {match.State.Score}: {match.Shots[^1].Ruling.Message} ({match.Shots[^1].Input.Choice})");
-            var balls = match.Balls.Values.ToList();
+            var balls = match.Balls.Positions.ToList();
             for (int a = 0; a < balls.Count; a++)
             {
                 for (int b = a + 1; b < balls.Count; b++)

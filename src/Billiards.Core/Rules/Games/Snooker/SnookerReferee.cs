@@ -129,12 +129,10 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
                 .Where(b => redsPhase || !ruling.Legal || b != BallOnBall(ballOn))
                 .ToList();
             var afterTable = Positions(shot.BallsAfter);
-            afterTable.Remove(Cue);
             bool cueInHand = facts.Scratch || facts.CueOffTable;
-            if (!cueInHand && shot.IndexOf(Cue) is int ci and >= 0 && !shot.BallsAfter[ci].IsOutOfPlay)
-            {
-                afterTable[Cue] = shot.BallsAfter[ci].Position;
-            }
+            afterTable = !cueInHand && shot.IndexOf(Cue) is int ci and >= 0 && !shot.BallsAfter[ci].IsOutOfPlay
+                ? afterTable.With(Cue, shot.BallsAfter[ci].Position)
+                : afterTable.Without(Cue);
 
             bool scoring = ruling.Legal && points > 0;
             var score = before.Score.With(shooter, before.Score[shooter] + points);
@@ -150,8 +148,8 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
                 return EndOfFrame(score, points, penalty);
             }
 
-            SnookerRuleset.Respot(afterTable, spot, _table, _r);
-            var objectsAfter = afterTable.Keys.Where(b => b != Cue).ToList();
+            afterTable = SnookerRuleset.Respot(afterTable, spot, _table, _r);
+            var objectsAfter = afterTable.Ids.Where(b => b != Cue).ToList();
             string nextOn = scoring
                 ? ballOn switch
                 {
@@ -171,8 +169,8 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
             }
             misses = misses.With(shooter, miss ? misses[shooter] + 1 : 0);
             // The full view matters only from a second miss in a row on.
-            bool fullView = miss && misses[shooter] >= 2 && positionsBefore.TryGetValue(Cue, out var cueBefore)
-                && firstOn.Any(b => positionsBefore.TryGetValue(b, out var p) && Sightlines.BothSides(cueBefore, p, Obstacles(positionsBefore, b), _r));
+            bool fullView = miss && misses[shooter] >= 2 && positionsBefore.PositionOf(Cue) is { } cueBefore
+                && firstOn.Any(b => positionsBefore.PositionOf(b) is { } p && Sightlines.BothSides(cueBefore, p, Obstacles(positionsBefore, b), _r));
             if (miss && fullView && misses[shooter] >= 3)
             {
                 ruling.Foul(Foul.ThreeMisses, "a third foul and a miss in a row with a full ball view");
@@ -190,7 +188,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
             bool freeBallSafety = ruling.Legal && freeBall && !scoring;
             bool incomingSnookered = (!ruling.Legal || freeBallSafety) && !cueInHand && Snookered(afterTable, nextOn);
             if (freeBallSafety && incomingSnookered && !OnlyPinkAndBlack(objectsAfter)
-                && !Snookered(Without(afterTable, nominated!.Value), nextOn))
+                && !Snookered(afterTable.Without(nominated!.Value), nextOn))
             {
                 ruling.Foul(Foul.SnookeredByFreeBall, $"{before.IncomingName} was left snookered behind the free ball");
                 score = score.With(incoming, score[incoming] + penalty);
@@ -304,13 +302,13 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
 
         // The striker was snookered (no straight line to any part of any ball on) and the cue ball
         // travelled at least as far as the nearest ball on: no miss.
-        private bool SnookeredAndReached(Dictionary<BallId, Vec3> positions, HashSet<BallId> on)
+        private bool SnookeredAndReached(BallLayout positions, HashSet<BallId> on)
         {
-            if (!positions.TryGetValue(Cue, out var cue))
+            if (positions.PositionOf(Cue) is not { } cue)
             {
                 return false;
             }
-            var targets = on.Where(positions.ContainsKey).ToList();
+            var targets = on.Where(positions.Contains).ToList();
             // The nearest first: the answer does not depend on the order, and a near ball is the likeliest in view.
             targets.Sort((a, b) => (positions[a] - cue).LengthXY.CompareTo((positions[b] - cue).LengthXY));
             if (targets.Count == 0 || targets.Exists(b => Sightlines.AnyPart(cue, positions[b], Obstacles(positions, b), _r)))
@@ -324,9 +322,9 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
         }
 
         // The incoming player cannot strike both extremities of any ball on (their ball on: nextOn).
-        private bool Snookered(Dictionary<BallId, Vec3> table, string ballOn)
+        private bool Snookered(BallLayout table, string ballOn)
         {
-            if (!table.TryGetValue(Cue, out var cue))
+            if (table.PositionOf(Cue) is not { } cue)
             {
                 return false;
             }
@@ -346,16 +344,9 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
             return any;
         }
 
-        private static Dictionary<BallId, Vec3> Without(Dictionary<BallId, Vec3> table, BallId ball)
-        {
-            var copy = new Dictionary<BallId, Vec3>(table);
-            copy.Remove(ball);
-            return copy;
-        }
-
         // Every ball but the cue ball and the target, in one list reused for each sightline: a
         // caller reads it before it asks for the next.
-        private List<Vec3> Obstacles(Dictionary<BallId, Vec3> table, BallId target)
+        private List<Vec3> Obstacles(BallLayout table, BallId target)
         {
             _obstacles.Clear();
             foreach (var (id, position) in table)
@@ -370,7 +361,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
 
         // The cue ball left the bed before its first contact and passed over a ball lying on its
         // straight line of flight short of the ball it struck.
-        private bool JumpedOver(Dictionary<BallId, Vec3> positions, BallId struck)
+        private bool JumpedOver(BallLayout positions, BallId struck)
         {
             var events = shot.Events;
             int contact = shot.FirstContactIndex;
@@ -379,7 +370,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
             {
                 airborne |= events[i].Kind == EventKind.BallAirborne && events[i].A == Cue;
             }
-            if (!airborne || shot.Shot is not { } strike || !positions.TryGetValue(Cue, out var cue) || !positions.TryGetValue(struck, out var target))
+            if (!airborne || shot.Shot is not { } strike || positions.PositionOf(Cue) is not { } cue || positions.PositionOf(struck) is not { } target)
             {
                 return false;
             }
@@ -403,18 +394,18 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
             return false;
         }
 
-        private Dictionary<BallId, Vec3> Positions(ReadOnlySpan<BallState> balls)
+        private BallLayout Positions(ReadOnlySpan<BallState> balls)
         {
             var ids = shot.Ids;
-            var table = new Dictionary<BallId, Vec3>(ids.Length);
+            var table = new List<(BallId, Vec3)>(ids.Length);
             for (int i = 0; i < balls.Length && i < ids.Length; i++)
             {
                 if (!balls[i].IsOutOfPlay)
                 {
-                    table[ids[i]] = balls[i].Position with { Z = _r };
+                    table.Add((ids[i], balls[i].Position with { Z = _r }));
                 }
             }
-            return table;
+            return new BallLayout(table);
         }
     }
 }

@@ -239,19 +239,20 @@ public sealed class SnookerRuleset : Ruleset
     }
 
     /// <summary>
-    /// Re-spots the colours of <paramref name="balls"/> on <paramref name="table"/> (ball centres,
-    /// changed in place), the highest value first (rules.md): each on its own spot; if that is
-    /// taken, on the highest-value spot that is free; if none is, as near its own spot as it fits on
-    /// the long axis towards the top cushion, else towards baulk. Reds are never re-spotted.
+    /// Re-spots the colours of <paramref name="balls"/> on <paramref name="table"/>, the highest
+    /// value first (rules.md): each on its own spot; if that is taken, on the highest-value spot
+    /// that is free; if none is, as near its own spot as it fits on the long axis towards the top
+    /// cushion, else towards baulk. Reds are never re-spotted. Returns the balls after the spotting.
     /// </summary>
-    public static void Respot(IDictionary<BallId, Vec3> table, IEnumerable<BallId> balls, TableSpec tableSpec, double radius)
+    public static BallLayout Respot(BallLayout table, IEnumerable<BallId> balls, TableSpec tableSpec, double radius)
     {
         ArgumentNullException.ThrowIfNull(table);
+        ArgumentNullException.ThrowIfNull(balls);
         foreach (var ball in balls.Where(IsColour).OrderByDescending(b => b.Value))
         {
-            table.Remove(ball);
-            table[ball] = RespotPosition(ball, table.Values.ToList(), tableSpec, radius);
+            table = table.With(ball, RespotPosition(ball, table.Without(ball).Positions, tableSpec, radius));
         }
+        return table;
     }
 
     /// <summary>Where a colour goes when re-spotted among <paramref name="others"/> (m, z = R).</summary>
@@ -287,22 +288,13 @@ public sealed class SnookerRuleset : Ruleset
     {
         ArgumentNullException.ThrowIfNull(simulation);
         ArgumentNullException.ThrowIfNull(balls);
-        var table = new Dictionary<BallId, Vec3>();
-        var state = simulation.Balls;
-        for (int i = 0; i < state.Length; i++)
-        {
-            if (!state[i].IsOutOfPlay)
-            {
-                table[simulation.Ids[i]] = state[i].Position;
-            }
-        }
-        var before = new Dictionary<BallId, Vec3>(table);
-        Respot(table, balls, simulation.Table, simulation.BallRadius);
+        var before = simulation.InPlay();
+        var table = Respot(before, balls, simulation.Table, simulation.BallRadius);
         foreach (var ball in balls.Where(IsColour).OrderByDescending(b => b.Value))
         {
-            if (!before.TryGetValue(ball, out var was) || was != table[ball])
+            if (table.PositionOf(ball) is { } spot && before.PositionOf(ball) != spot)
             {
-                simulation.PlaceBall(ball, table[ball]);
+                simulation.PlaceBall(ball, spot);
             }
         }
     }

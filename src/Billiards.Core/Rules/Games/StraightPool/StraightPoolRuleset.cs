@@ -51,7 +51,7 @@ public sealed class StraightPoolRuleset : Ruleset
     /// fifteenth ball in the rack's way goes to the head spot (the centre spot if the cue ball is
     /// there); a cue ball in the way is taken up, and the shooter has ball in hand behind the head string.
     /// </summary>
-    public override BallInHand? RerackDuringPlay(IDictionary<BallId, Vec3> table, IReadOnlyList<BallId> balls, TableSpec tableSpec, double ballRadius, int seed)
+    public override (BallLayout Balls, BallInHand? BallInHand) RerackDuringPlay(BallLayout table, IReadOnlyList<BallId> balls, TableSpec tableSpec, double ballRadius, int seed)
     {
         ArgumentNullException.ThrowIfNull(table);
         double r = ballRadius;
@@ -59,22 +59,22 @@ public sealed class StraightPoolRuleset : Ruleset
         bool InTheWay(Vec3 p) => rack.Any(b => (b.Position - p).Length < 2 * r) || (Initializer.FootSpot(tableSpec, r) - p).Length < 2 * r;
         BallInHand? hand = null;
         var cueBall = BallSet.CueBalls[0]; // 14.1's one cue ball
-        if (table.TryGetValue(cueBall, out var cue) && InTheWay(cue))
+        if (table.PositionOf(cueBall) is { } cue && InTheWay(cue))
         {
-            table.Remove(cueBall);
+            table = table.Without(cueBall);
             hand = BallInHand.Kitchen;
         }
-        foreach (var (id, _) in table.Where(b => b.Key != cueBall && InTheWay(b.Value)).OrderBy(b => b.Key.Value).ToList())
+        foreach (var (id, _) in table.Where(b => b.Id != cueBall && InTheWay(b.Position)).OrderBy(b => b.Id.Value).ToList())
         {
             var head = Initializer.HeadSpot(tableSpec, r);
-            bool headTaken = table.TryGetValue(cueBall, out var c) && (c - head).Length < 2 * r;
-            table[id] = headTaken ? new Vec3(0, 0, r) : head;
+            bool headTaken = table.PositionOf(cueBall) is { } c && (c - head).Length < 2 * r;
+            table = table.With(id, headTaken ? new Vec3(0, 0, r) : head);
         }
         foreach (var (id, p) in rack)
         {
-            table[id] = p;
+            table = table.With(id, p);
         }
-        return hand;
+        return (table, hand);
     }
 
     /// <inheritdoc />

@@ -28,8 +28,8 @@ public class PracticeSessionTests
     private static Scene Open() => Position((0, -0.6, 0.05), (1, 0.3, 0.0), (2, 0.5, 0.4), (3, -0.2, -0.4));
 
     // Every coordinate of every ball, as raw bits: equal means equal to the last bit.
-    private static long[] Bits(IReadOnlyDictionary<BallId, Vec3> balls) =>
-        [.. balls.OrderBy(b => b.Key.Value).SelectMany(b => new[] { (long)b.Key.Value, BitConverter.DoubleToInt64Bits(b.Value.X), BitConverter.DoubleToInt64Bits(b.Value.Y), BitConverter.DoubleToInt64Bits(b.Value.Z) })];
+    private static long[] Bits(BallLayout balls) =>
+        [.. balls.OrderBy(b => b.Id.Value).SelectMany(b => new[] { (long)b.Id.Value, BitConverter.DoubleToInt64Bits(b.Position.X), BitConverter.DoubleToInt64Bits(b.Position.Y), BitConverter.DoubleToInt64Bits(b.Position.Z) })];
 
     private static GameShot Shot(double speed, double aimDeg) => new(new ShotSpec(speed, aimDeg, 0, 0), null, null, false);
 
@@ -69,13 +69,13 @@ public class PracticeSessionTests
         var played = session.Play(Shot(1.5, 45), SeatKind.Person);
         Assert.True(played.Ruling.Legal);
         Assert.Equal(BallInHand.Table, session.BallInHand);
-        Assert.False(session.Game.Balls.ContainsKey(Cue));
+        Assert.False(session.Game.Balls.Contains(Cue));
         // Placed anywhere on the table, struck from there.
         var place = new Vec3(-0.9, -0.3, 0);
         var next = session.Play(new GameShot(new ShotSpec(1.0, 0, 0, 0), null, place, false), SeatKind.Person);
         Assert.Equal(BallInHand.None, session.BallInHand);
         Assert.Equal(-0.9, next.Before.Placement!.Value.X);
-        Assert.True(session.Game.Balls.ContainsKey(Cue));
+        Assert.True(session.Game.Balls.Contains(Cue));
     }
 
     [Fact]

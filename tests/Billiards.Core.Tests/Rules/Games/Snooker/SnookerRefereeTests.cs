@@ -82,33 +82,28 @@ public class SnookerRefereeTests
     [Fact]
     public void RespottingAColourGoesToItsOwnSpot()
     {
-        var table = new Dictionary<BallId, Vec3>();
-        SnookerRuleset.Respot(table, [Id("green")], SnookerShot.Table, R);
+        var table = SnookerRuleset.Respot(BallLayout.Empty, [Id("green")], SnookerShot.Table, R);
         Assert.Equal(SnookerTable.Spot(SnookerShot.Table, "green", R), table[Id("green")]);
     }
 
     [Fact]
     public void RespottingWhenTheOwnSpotIsTakenUsesTheHighestValueFreeSpot()
     {
-        var table = new Dictionary<BallId, Vec3> { [Id("red-1")] = SnookerTable.Spot(SnookerShot.Table, "pink", R) };
-        SnookerRuleset.Respot(table, [Id("pink")], SnookerShot.Table, R);
+        var table = SnookerRuleset.Respot([(Id("red-1"), SnookerTable.Spot(SnookerShot.Table, "pink", R))], [Id("pink")], SnookerShot.Table, R);
         Assert.Equal(SnookerTable.Spot(SnookerShot.Table, "black", R), table[Id("pink")]);
-        table = new() { [Id("red-1")] = SnookerTable.Spot(SnookerShot.Table, "pink", R), [Id("red-2")] = SnookerTable.Spot(SnookerShot.Table, "black", R) };
-        SnookerRuleset.Respot(table, [Id("pink")], SnookerShot.Table, R);
+        table = SnookerRuleset.Respot([(Id("red-1"), SnookerTable.Spot(SnookerShot.Table, "pink", R)), (Id("red-2"), SnookerTable.Spot(SnookerShot.Table, "black", R))], [Id("pink")], SnookerShot.Table, R);
         Assert.Equal(SnookerTable.Spot(SnookerShot.Table, "blue", R), table[Id("pink")]);
     }
 
     [Fact]
     public void RespottingWithEverySpotTakenGoesAsNearItsOwnSpotAsItFitsTowardsTheTopCushion()
     {
-        var table = BallSet.Colours.Select((c, i) => (Id($"red-{i + 1}"), SnookerTable.Spot(SnookerShot.Table, c, R))).ToDictionary(b => b.Item1, b => b.Item2);
-        SnookerRuleset.Respot(table, [Id("brown")], SnookerShot.Table, R);
+        var table = SnookerRuleset.Respot(new BallLayout(BallSet.Colours.Select((c, i) => (Id($"red-{i + 1}"), SnookerTable.Spot(SnookerShot.Table, c, R)))), [Id("brown")], SnookerShot.Table, R);
         var brown = SnookerTable.Spot(SnookerShot.Table, "brown", R);
         Assert.Equal(new Vec3(brown.X + 2 * R, 0, R).X, table[Id("brown")].X, 9);
         Assert.Equal(0, table[Id("brown")].Y);
         // Several at once: the higher value first, so the black takes its spot before the pink looks for one.
-        var two = new Dictionary<BallId, Vec3> { [Id("red-1")] = SnookerTable.Spot(SnookerShot.Table, "pink", R) };
-        SnookerRuleset.Respot(two, [Id("pink"), Id("black")], SnookerShot.Table, R);
+        var two = SnookerRuleset.Respot([(Id("red-1"), SnookerTable.Spot(SnookerShot.Table, "pink", R))], [Id("pink"), Id("black")], SnookerShot.Table, R);
         Assert.Equal(SnookerTable.Spot(SnookerShot.Table, "black", R), two[Id("black")]);
         Assert.Equal(SnookerTable.Spot(SnookerShot.Table, "blue", R), two[Id("pink")]);
     }

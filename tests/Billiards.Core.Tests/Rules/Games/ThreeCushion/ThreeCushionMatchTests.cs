@@ -113,7 +113,7 @@ public class ThreeCushionMatchTests
             }
             Assert.True(match.State.Score.First >= before.Score.First && match.State.Score.Second >= before.Score.Second, shot.Ruling.Message);
             Assert.True(ThreeCushionPart.Of(match.State).Innings.First >= ThreeCushionPart.Of(before).Innings.First && ThreeCushionPart.Of(match.State).Innings.Second >= ThreeCushionPart.Of(before).Innings.Second, shot.Ruling.Message);
-            var balls = match.Balls.Values.ToList();
+            var balls = match.Balls.Positions.ToList();
             Assert.Equal(3, balls.Count);
             for (int a = 0; a < balls.Count; a++)
             {
