@@ -26,12 +26,12 @@ public sealed class FreeTableNode : Node
         physics.StrikeThrough = OnStrike;
         physics.CameToRest += _ =>
         {
-            if (session.Rest(physics.Simulation) is not null && session.BallInHand != BallInHand.None)
+            if (session.RestWithCueBallInHand(physics.Simulation))
             {
                 physics.ReturnCueBall();
             }
         };
-        if (physics.IsRolling && physics.LastShot is { } opening && session.Submit(Shot(opening), SeatKind.Person) is { } sim)
+        if (physics.IsRolling && physics.LastShot is { } opening && session.Submit(new GameShot(opening), SeatKind.Person) is { } sim)
         {
             // The scene's own shot is already on its way: the session plays it from the scene's position.
             physics.ReplaceShot(sim);
@@ -49,13 +49,6 @@ public sealed class FreeTableNode : Node
         return true;
     }
 
-    private static GameShot Shot(ShotSpec shot) => new(shot, null, null, false);
-
-    private Simulation? OnStrike(ShotSpec shot)
-    {
-        var physics = _physics!;
-        var session = Session!;
-        session.Reposition(physics.Scene with { Balls = physics.BallsAtRest(), Shot = null });
-        return session.Submit(Shot(shot), SeatKind.Person);
-    }
+    private Simulation? OnStrike(ShotSpec shot) =>
+        Session!.StrikeFrom(_physics!.Scene with { Balls = _physics.BallsAtRest(), Shot = null }, shot);
 }

@@ -252,8 +252,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
         {
             _attemptStart = session.Game.Shots.Count;
         }
-        session.Reposition(position);
-        var sim = session.Submit(new GameShot(shot, null, null, false), SeatKind.Person);
+        var sim = session.StrikeFrom(position, shot);
         if (sim is not null)
         {
             _before = position;
@@ -267,7 +266,7 @@ public sealed class PracticeNode(Scene start, PracticeSetup setup) : Node
     {
         Changed();
         // No referee: the session notes the shot, and a cue ball that dropped comes back in hand.
-        if (Session?.Rest(_physics!.Simulation) is not null && Session.BallInHand != BallInHand.None && Drill is null)
+        if (Session?.RestWithCueBallInHand(_physics!.Simulation) == true && Drill is null)
         {
             _physics.ReturnCueBall();
         }

@@ -1,4 +1,5 @@
 using Billiards.Core.Balls;
+using Billiards.Core.Cue;
 using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Scenes;
@@ -350,6 +351,24 @@ public sealed class Session
         Submitted?.Invoke(shot, source);
         return sim;
     }
+
+    /// <summary>
+    /// Practice: a person's stroke from <paramref name="position"/>'s balls as they lie now, moved
+    /// by hand or not (<see cref="Reposition"/>), through the one entry (<see cref="Submit"/>).
+    /// </summary>
+    /// <returns>The running shot, or null when it may not be struck now.</returns>
+    /// <exception cref="InvalidOperationException">In a game with a referee, or while a shot runs.</exception>
+    public Simulation? StrikeFrom(Scene position, ShotSpec shot)
+    {
+        Reposition(position);
+        return Submit(new GameShot(shot), SeatKind.Person);
+    }
+
+    /// <summary>
+    /// Practice: <see cref="Rest"/>, and true when the shot left the cue ball in hand (it dropped),
+    /// for the table to bring it back.
+    /// </summary>
+    public bool RestWithCueBallInHand(Simulation simulation) => Rest(simulation) is not null && BallInHand != BallInHand.None;
 
     /// <summary>
     /// Judges the running shot, now at rest in <paramref name="simulation"/>, and applies the
