@@ -15,6 +15,25 @@ public class BackgroundWorkTests
     }
 
     [Fact]
+    public void BlockingWorkRunsOnAThreadOfItsOwnOffThePoolAtNormalPriority()
+    {
+        // The connections read and write on the thread pool: a join's handshake or a game loop
+        // that blocked a pool thread would starve them on two busy cores.
+        int? callerNice = BackgroundWork.Niceness();
+        var (pooled, nice) = Polled(BackgroundWork.RunBlocking(() => (Thread.CurrentThread.IsThreadPoolThread, BackgroundWork.Niceness())));
+        Assert.False(pooled);
+        Assert.Equal(callerNice, nice);
+        bool ranPooled = true;
+        var done = BackgroundWork.RunBlocking(() => ranPooled = Thread.CurrentThread.IsThreadPoolThread);
+        while (!done.IsCompleted)
+        {
+            Thread.Sleep(1);
+        }
+        Assert.True(done.IsCompletedSuccessfully);
+        Assert.False(ranPooled);
+    }
+
+    [Fact]
     public void WorkRunsOnItsOwnThreadAtTheLowestPriorityAndLeavesTheCallerAlone()
     {
         int caller = Environment.CurrentManagedThreadId;
