@@ -99,7 +99,7 @@ public sealed partial class ShotPlanner
         var scoring = new List<int>();
         for (int i = 0; i < strokes.Count; i++)
         {
-            if (first[i].Point)
+            if (Point(first[i]))
             {
                 scoring.Add(i);
             }
@@ -123,7 +123,7 @@ public sealed partial class ShotPlanner
                 {
                     var executed = skill.SearchStroke(strokes[kept[k]], new PlannerRandom(PlannerRandom.Derive(seed, kept[k], s + 1)), Table.R);
                     var ruling = JudgeCarom(ref sims[t], records[t], snapshot, position, executed, state, referee, out var after);
-                    if (ruling.Point)
+                    if (Point(ruling))
                     {
                         made++;
                         sum += 1 + (level.Position && !ruling.GameOver ? CaromPositionWeight * LeaveQuality(after, ruling.Next) : 0);
@@ -207,13 +207,15 @@ public sealed partial class ShotPlanner
     }
 
     // Scoring strokes among the two neighbouring aims of the same ball, speed and tip.
+    private static bool Point(Ruling ruling) => ruling.PartOf<ThreeCushionRulingPart>() is { Point: true };
+
     private static int Neighbours(int i, Ruling[] first, CaromLevel level)
     {
         int stride = level.Speeds * level.Spins;
         int n = 0;
         foreach (int j in (ReadOnlySpan<int>)[i - stride, i + stride])
         {
-            n += j >= 0 && j < first.Length && first[j].Point ? 1 : 0;
+            n += j >= 0 && j < first.Length && Point(first[j]) ? 1 : 0;
         }
         return n;
     }
@@ -226,7 +228,8 @@ public sealed partial class ShotPlanner
         for (int i = 0; i < strokes.Count; i++)
         {
             var r = first[i];
-            double score = (r.Legal ? 10 : 0) + (r.Cushions >= 3 ? 0 : r.Cushions) - (strokes[i].Speed / 10);
+            int cushions = r.PartOf<ThreeCushionRulingPart>()?.Cushions ?? 0;
+            double score = (r.Legal ? 10 : 0) + (cushions >= 3 ? 0 : cushions) - (strokes[i].Speed / 10);
             if (score > bestScore)
             {
                 (best, bestScore) = (i, score);

@@ -369,7 +369,6 @@ public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentati
             RefereeOption.PassBack => new OptionOutcome(next with { Shooter = next.Incoming, BallInHand = BallInHand.None }, false, ruling.Spot),
             // The offender plays again from where the balls lie (from hand after an in-off); a free ball is the incoming player's only.
             RefereeOption.PutBack => new OptionOutcome(PutBack(next), false, ruling.Spot),
-            RefereeOption.Replace => new OptionOutcome(ruling.Replaced ?? throw new ArgumentException("the ruling has no replaced state", nameof(ruling)), false, []) { Replace = true },
             RefereeOption.Accept or RefereeOption.SpotEight or RefereeOption.Shoot or RefereeOption.Play => new OptionOutcome(next, false, ruling.Spot),
             _ => ChooseOther(ruling, option, next),
         };
@@ -443,7 +442,7 @@ public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentati
         return start with { Shooter = breaker };
     }
 
-    /// <summary>What a game's own option (three-cushion's <see cref="RefereeOption.SpotBreak"/>) leads to; by default the table as it lies.</summary>
+    /// <summary>What a game's own option (snooker's <see cref="RefereeOption.Replace"/>, three-cushion's <see cref="RefereeOption.SpotBreak"/>) leads to; by default the table as it lies.</summary>
     protected virtual OptionOutcome ChooseOther(Ruling ruling, RefereeOption option, GameState next)
     {
         ArgumentNullException.ThrowIfNull(ruling);

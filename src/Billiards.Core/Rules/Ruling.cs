@@ -44,38 +44,17 @@ public sealed record Ruling(
     /// </summary>
     public PerPlayer<int> Score { get; init; }
 
-    /// <summary>Snooker: points scored by the shooter on this shot.</summary>
+    /// <summary>Points scored by the shooter on this shot, in games that score shot by shot (snooker); 0 in the others.</summary>
     public int Points { get; init; }
 
-    /// <summary>Snooker: points awarded to the other player for a foul (0 without one).</summary>
+    /// <summary>Points awarded to the other player for a foul, in games that award them (snooker); 0 without one.</summary>
     public int Penalty { get; init; }
 
-    /// <summary>Snooker: the referee called a foul and a miss (<see cref="RefereeOption.Replace"/> is offered).</summary>
-    public bool FoulAndMiss { get; init; }
+    /// <summary>The game's own part of the ruling (<see cref="RulingPart"/>), or null for a game without one.</summary>
+    public RulingPart? Part { get; init; }
 
-    /// <summary>Snooker: the incoming player is snookered after a foul and may nominate a free ball.</summary>
-    public bool FreeBall { get; init; }
-
-    /// <summary>Three-cushion: the shot scored a point.</summary>
-    public bool Point { get; init; }
-
-    /// <summary>
-    /// Three-cushion: the shooter's cue ball's cushion contacts before its contact with the
-    /// second object ball, or in all when it met fewer than two.
-    /// </summary>
-    public int Cushions { get; init; }
-
-    /// <summary>Three-cushion: each player's innings after the shot (the score sheet's).</summary>
-    public PerPlayer<int> Innings { get; init; }
-
-    /// <summary>Three-cushion: the shooter's points in this inning, this shot's included.</summary>
-    public int Run { get; init; }
-
-    /// <summary>
-    /// Snooker, after a foul and a miss: the state for the offender's next shot when the balls are
-    /// replaced where they were before the shot (<see cref="RefereeOption.Replace"/>), else null.
-    /// </summary>
-    public GameState? Replaced { get; init; }
+    /// <summary>The game's own part of the ruling as <typeparamref name="T"/>, or null when the game has none of that kind.</summary>
+    public T? PartOf<T>() where T : RulingPart => Part as T;
 
     /// <summary>
     /// The state and table work that follow when the next shooter takes <paramref name="option"/>.

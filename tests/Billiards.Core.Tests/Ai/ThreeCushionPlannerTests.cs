@@ -5,6 +5,7 @@ using Billiards.Core.Mathematics;
 using Billiards.Core.Physics;
 using Billiards.Core.Rules;
 using Billiards.Core.Table;
+using Billiards.Core.Tests.Rules;
 
 namespace Billiards.Core.Tests.Ai;
 

@@ -257,9 +257,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
                 Next = next,
                 Points = points,
                 Penalty = built.Legal ? 0 : penalty,
-                FoulAndMiss = miss,
-                FreeBall = freeBall,
-                Replaced = replaced,
+                Part = new SnookerRulingPart { FoulAndMiss = miss, FreeBall = freeBall, Replaced = replaced },
             };
         }
 

@@ -95,8 +95,9 @@ public sealed class SnookerRuleset : Ruleset
         ArgumentNullException.ThrowIfNull(ruling);
         writer.WriteNumber("points", ruling.Points);
         writer.WriteNumber("penalty", ruling.Penalty);
-        writer.WriteBoolean("foul_and_miss", ruling.FoulAndMiss);
-        writer.WriteBoolean("free_ball", ruling.FreeBall);
+        var part = ruling.PartOf<SnookerRulingPart>();
+        writer.WriteBoolean("foul_and_miss", part?.FoulAndMiss ?? false);
+        writer.WriteBoolean("free_ball", part?.FreeBall ?? false);
     }
 
     /// <summary>After a foul: play, put-back, and after a foul and a miss replace.</summary>
@@ -110,6 +111,15 @@ public sealed class SnookerRuleset : Ruleset
         return option == RefereeOption.Play && SnookerPart.Of(state).FreeBall
             ? $"{state.ShooterName} plays the balls as they lie, with a free ball."
             : base.ChoiceMessage(option, state);
+    }
+
+    /// <summary>After a foul and a miss, <see cref="RefereeOption.Replace"/>: every ball back where it stood before the shot, the offender to play again.</summary>
+    protected override OptionOutcome ChooseOther(Ruling ruling, RefereeOption option, GameState next)
+    {
+        ArgumentNullException.ThrowIfNull(ruling);
+        return option == RefereeOption.Replace
+            ? new OptionOutcome(ruling.PartOf<SnookerRulingPart>()?.Replaced ?? throw new ArgumentException("the ruling has no replaced state", nameof(ruling)), false, []) { Replace = true }
+            : base.ChooseOther(ruling, option, next);
     }
 
     /// <summary>The offender plays again from where the balls lie; a free ball was the incoming player's only.</summary>

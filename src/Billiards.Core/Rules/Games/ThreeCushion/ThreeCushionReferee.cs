@@ -125,7 +125,8 @@ public sealed class ThreeCushionReferee(TableSpec table, double ballRadius) : IR
         Ruling Make(bool keep, bool over, int? winner, string message, GameState next) =>
             new(fouls.Count == 0, fouls, [], keep, BallInHand.None, spot, keep || over ? [] : FrozenOptions(shot, next), over, winner, message, next)
             {
-                Score = score, Point = point, Cushions = contacts.Cushions, Innings = innings, Run = run,
+                Score = score,
+                Part = new ThreeCushionRulingPart { Point = point, Cushions = contacts.Cushions, Innings = innings, Run = run },
             };
 
         if (point && score[shooter] >= before.Target)

@@ -90,15 +90,16 @@ public sealed class ThreeCushionRuleset : Ruleset
     {
         ArgumentNullException.ThrowIfNull(writer);
         ArgumentNullException.ThrowIfNull(ruling);
-        writer.WriteBoolean("point", ruling.Point);
-        writer.WriteNumber("cushions", ruling.Cushions);
+        var part = ruling.PartOf<ThreeCushionRulingPart>() ?? new ThreeCushionRulingPart();
+        writer.WriteBoolean("point", part.Point);
+        writer.WriteNumber("cushions", part.Cushions);
         GameBlockWriter.WritePair(writer, "score", ruling.Score);
-        GameBlockWriter.WritePair(writer, "innings", ruling.Innings);
+        GameBlockWriter.WritePair(writer, "innings", part.Innings);
         writer.WriteStartArray("average");
-        writer.WriteNumberValue(AverageValue(ruling.Score.First, ruling.Innings.First));
-        writer.WriteNumberValue(AverageValue(ruling.Score.Second, ruling.Innings.Second));
+        writer.WriteNumberValue(AverageValue(ruling.Score.First, part.Innings.First));
+        writer.WriteNumberValue(AverageValue(ruling.Score.Second, part.Innings.Second));
         writer.WriteEndArray();
-        writer.WriteNumber("run", ruling.Run);
+        writer.WriteNumber("run", part.Run);
     }
 
     /// <inheritdoc />
@@ -144,7 +145,7 @@ public sealed class ThreeCushionRuleset : Ruleset
     public override int BreakValue(Ruling ruling)
     {
         ArgumentNullException.ThrowIfNull(ruling);
-        return ruling.Point ? 1 : 0;
+        return ruling.PartOf<ThreeCushionRulingPart>() is { Point: true } ? 1 : 0;
     }
 
     /// <summary>20 shots a point of the target and 200 more: a race to 40 at a general average of 0.3 takes some 270 shots.</summary>
