@@ -13,6 +13,9 @@ namespace Billiards.App.Net;
 /// <param name="PerSecond">Messages a second the peer may send, on average.</param>
 public sealed record NetLimits(TimeSpan Idle, TimeSpan FrameDeadline, TimeSpan PingEvery, int Burst, double PerSecond)
 {
+    /// <summary>Longest the host waits for a joiner's hello (<see cref="Handshake.Timeout"/> by default).</summary>
+    public TimeSpan HelloWithin { get; init; } = Handshake.Timeout;
+
     /// <summary>The game's limits: 15 s silent, 5 s a frame, a ping a second, 100 messages at once, 50 a second.</summary>
     public static NetLimits Default { get; } = new(TimeSpan.FromSeconds(15), TimeSpan.FromSeconds(5), TimeSpan.FromSeconds(1), 100, 50);
 }

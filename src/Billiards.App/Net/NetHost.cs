@@ -5,7 +5,7 @@ namespace Billiards.App.Net;
 
 /// <summary>
 /// The host's listener: accepts connections on a background task, takes each one's hello within
-/// <see cref="Handshake.Timeout"/> and admits one peer with the right version and code (a peer that
+/// <see cref="NetLimits.HelloWithin"/> (<see cref="Handshake.Timeout"/>) and admits one peer with the right version and code (a peer that
 /// dropped may come back the same way). Everything else is refused with one log line and a bye
 /// naming why. At most <see cref="MaxPending"/> connections are in their handshake at once; more
 /// are closed at once.
@@ -97,12 +97,13 @@ public sealed class NetHost : IDisposable
         try
         {
             connection = new Connection(client, name, _log, _limits);
-            var first = await connection.WaitFirstAsync(Handshake.Timeout).ConfigureAwait(false);
+            var within = (_limits ?? NetLimits.Default).HelloWithin;
+            var first = await connection.WaitFirstAsync(within).ConfigureAwait(false);
             if (first is null)
             {
                 if (connection.IsOpen)
                 {
-                    Refuse(connection, $"no hello within {Handshake.Timeout.TotalSeconds:0} s");
+                    Refuse(connection, $"no hello within {within.TotalSeconds:0} s");
                 }
                 else
                 {
