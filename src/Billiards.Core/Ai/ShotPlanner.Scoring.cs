@@ -142,6 +142,10 @@ public sealed partial class ShotPlanner
             // whatever the shot leaves; a pot that ends it now is still the better (WonScore).
             return DecidedScore;
         }
+        if (level.Break is { } breakWeights && before.Shot == 0 && Ruleset.For(before.Rules).PowerBreak)
+        {
+            return BreakScore(before, ruling, after, level, breakWeights, look);
+        }
         if (before.PushOut)
         {
             if (!ruling.Legal)
@@ -171,5 +175,22 @@ public sealed partial class ShotPlanner
         // In a game of points (snooker) an open table gives the opponent a break, not one shot: it costs more.
         double weight = Ruleset.For(before.Rules).Policy.OpponentWeight;
         return SafetyScore - weight * opponent + snookered;
+    }
+
+    // A break as the planner that plays for the noise scores it (BreakSearch): kept table, dry, foul.
+    private double BreakScore(GameState before, Ruling ruling, TablePosition after, SkillLevel level, BreakSearch weights, bool look)
+    {
+        if (ruling.Continue)
+        {
+            double q = look ? Table.PositionQuality(after, ruling.Next, level.PositionAimStdDeg, level.Leave.BestShot, level.Leave.SecondShot) : EvenScore;
+            double problems = look ? ProblemBallCost * Table.ProblemBalls(after, ruling.Next) : 0;
+            return weights.Stay + weights.Position * q - problems;
+        }
+        if (!ruling.Legal)
+        {
+            return weights.Foul;
+        }
+        double opponent = look ? Table.BestEase(after, ruling.Next, level.OpponentAimStdDeg) : EvenScore;
+        return weights.Dry - weights.Opponent * opponent;
     }
 }

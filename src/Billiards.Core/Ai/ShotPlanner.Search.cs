@@ -94,11 +94,14 @@ public sealed partial class ShotPlanner
             Simulate(workers, variations, Enumerable.Range(0, variations.Count), 0, first, sum, pots, count);
             int samples = first;
             var field = Ranked(variations.Count, sum, count);
-            if (level.ScreenTop > 0 && level.ScreenSamples > 0)
+            var (screenTop, screenSamples) = level.Break is { } noiseBreak && SearchesNoiseBreak
+                ? (noiseBreak.ScreenTop, noiseBreak.ScreenSamples)
+                : (level.ScreenTop, level.ScreenSamples);
+            if (screenTop > 0 && screenSamples > 0)
             {
-                field = WithSafeties(field, level.ScreenTop);
-                Simulate(workers, variations, field, samples, level.ScreenSamples, sum, pots, count);
-                samples += level.ScreenSamples;
+                field = WithSafeties(field, screenTop);
+                Simulate(workers, variations, field, samples, screenSamples, sum, pots, count);
+                samples += screenSamples;
                 _pots = pots;
                 field = Ranked(field, sum, count);
             }

@@ -60,6 +60,9 @@ public sealed partial class ShotPlanner
         // The levels that look ahead (3 to 5) search the wide break grid when they play for the noise.
         private bool PlaysBreakForNoise => level.Error == SearchError.Noise && level.LookAhead > 0;
 
+        // This search is of such a break (the wide grid), whose rounds BreakSearch sizes.
+        private bool SearchesNoiseBreak => PlaysBreakForNoise && state.Shot == 0 && Ruleset.For(state.Rules).PowerBreak;
+
         private void AddVariations(int rootIndex, Root root, int candidates, List<Variation> variations)
         {
             var cue = root.Cue;

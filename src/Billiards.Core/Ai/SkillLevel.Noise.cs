@@ -38,6 +38,37 @@ public sealed record LeaveWeights(double Stay, double Position, double BestShot,
     public static LeaveWeights UnderNoise { get; } = new(0.55, 0.45, 0.7, 0.3);
 }
 
+/// <summary>
+/// How the planner that plays for the noise searches and scores a break (the first shot of a rack
+/// in the games with a power break). Under our WPA rules the breaker stays at the table only when a
+/// ball drops and no foul is called, and only then can the rack be run from the break: a break that
+/// keeps the table scores <paramref name="Stay"/> plus <paramref name="Position"/> times the next
+/// position's quality (weighed as <see cref="LeaveWeights"/> says, less the problem balls' cost), a
+/// legal dry break <paramref name="Dry"/> less <paramref name="Opponent"/> times the opponent's best
+/// shot (the opponent at the table of an open rack), and a foul (the cue ball pocketed or off the
+/// table: ball in hand to the opponent on an open rack) <paramref name="Foul"/>, below any dry break.
+/// The break grid's best breaks lie close together, so the search's middle round takes the best
+/// <paramref name="ScreenTop"/> of the first round with <paramref name="ScreenSamples"/> draws more
+/// each before the last round's, where a lucky few draws would otherwise pick among them.
+/// </summary>
+/// <param name="Stay">Score of a break that keeps the table before the position counts.</param>
+/// <param name="Position">Weight of the next position's quality after a break that keeps the table.</param>
+/// <param name="Dry">Score of a legal break that drops nothing before the opponent's chances count.</param>
+/// <param name="Opponent">Weight of the opponent's best shot after a dry break.</param>
+/// <param name="Foul">Score of a foul break.</param>
+/// <param name="ScreenTop">Breaks the middle round takes from the first.</param>
+/// <param name="ScreenSamples">Draws of the noise per break in the middle round.</param>
+public sealed record BreakSearch(double Stay, double Position, double Dry, double Opponent, double Foul, int ScreenTop, int ScreenSamples)
+{
+    /// <summary>
+    /// The break of the planner that plays for the noise: a dry break scores the opponent's table
+    /// (0.3 less 0.4 times the opponent's best shot), a foul break -0.3 (the levels score both as
+    /// any shot: the dry break as a safety, the foul 0.08); 200 breaks of the first round get 30
+    /// draws more each.
+    /// </summary>
+    public static BreakSearch UnderNoise { get; } = new(0.55, 0.45, 0.3, 0.4, -0.3, 200, 30);
+}
+
 /// <summary>The level's planner under execution noise (<see cref="ExecutionNoise"/>).</summary>
 public sealed partial record SkillLevel
 {
@@ -49,6 +80,9 @@ public sealed partial record SkillLevel
 
     /// <summary>How the search scores a shot that keeps its player at the table (<see cref="LeaveWeights.Default"/>; <see cref="LeaveWeights.UnderNoise"/> when playing for the noise).</summary>
     public LeaveWeights Leave { get; init; } = LeaveWeights.Default;
+
+    /// <summary>How the search takes and scores a break (null: like any shot; <see cref="BreakSearch.UnderNoise"/> when playing for the noise).</summary>
+    public BreakSearch? Break { get; init; }
 
     /// <summary>The execution noise the search samples when <see cref="Error"/> is <see cref="SearchError.Noise"/>, else null.</summary>
     public ExecutionNoise? Noise { get; init; }
@@ -63,7 +97,7 @@ public sealed partial record SkillLevel
     public SkillLevel PlayingFor(ExecutionNoise noise)
     {
         ArgumentNullException.ThrowIfNull(noise);
-        return this with { Error = SearchError.Noise, Noise = noise, AimStdDeg = Math.Max(MinPositionAimStdDeg, noise.AimStdDeg), Leave = LeaveWeights.UnderNoise };
+        return this with { Error = SearchError.Noise, Noise = noise, AimStdDeg = Math.Max(MinPositionAimStdDeg, noise.AimStdDeg), Leave = LeaveWeights.UnderNoise, Break = BreakSearch.UnderNoise };
     }
 
     /// <summary>
@@ -72,7 +106,7 @@ public sealed partial record SkillLevel
     /// the planner that plays for the noise.
     /// </summary>
     public SkillLevel NoiseBlind() =>
-        this with { Error = SearchError.Exact, Noise = null, Samples = 1, ScreenTop = 0, ScreenSamples = 0, RefineSamples = 0, FirstRoundSimulations = int.MaxValue };
+        this with { Error = SearchError.Exact, Noise = null, Break = null, Samples = 1, ScreenTop = 0, ScreenSamples = 0, RefineSamples = 0, FirstRoundSimulations = int.MaxValue };
 
     /// <summary>
     /// A stroke of the search aiming for <paramref name="planned"/> on a ball of radius
