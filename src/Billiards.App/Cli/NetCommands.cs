@@ -176,12 +176,13 @@ public static class NetCommands
         return PlayCommand.Play(null, openPlatform, clock: clock, options: options with { Online = online }, openAudio: openAudio);
     }
 
-    /// <summary>The scene the joiner's window shows: the host's table and physics with the game's rack.</summary>
+    /// <summary>The scene the joiner's window shows: the host's table and physics with the game's rack and its ball set (carom's three balls and cloth for three-cushion).</summary>
     public static Scene SceneOf(GameSetup setup)
     {
         ArgumentNullException.ThrowIfNull(setup);
-        var balls = (setup.Position ?? setup.Racked(0)).Select(b => new BallSetup(b.Id, b.Position, Vec3.Zero, Vec3.Zero)).ToList();
-        return new Scene("online", $"{Ruleset.For(setup.Rules).Title} online", setup.Table, setup.Physics, null, balls, null, setup.Rules.ToName());
+        var ruleset = Ruleset.For(setup.Rules);
+        return Scene.Of(setup.Position ?? setup.Racked(0), setup.Table, setup.Physics, ruleset.BallSet, rules: setup.Rules.ToName())
+            with { Path = "online", Name = $"{ruleset.Title} online" };
     }
 
     /// <summary>A code as given (case does not matter), or one line saying what a code is.</summary>

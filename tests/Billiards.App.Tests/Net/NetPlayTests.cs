@@ -26,6 +26,21 @@ public class NetPlayTests
         Assert.NotNull(game.Host.Connection!.RoundTripMs ?? WaitForPing(game.Host.Connection));
     }
 
+    [Theory]
+    [InlineData("eight-ball")]
+    [InlineData("snooker")]
+    [InlineData("three-cushion")]
+    public void TheJoinersSceneHasTheGamesBallSetAndRack(string rules)
+    {
+        var setup = GameSetup.Of(rules, seed: 5);
+        var scene = NetCommands.SceneOf(setup);
+        var ruleset = Ruleset.For(rules);
+        Assert.Same(ruleset.BallSet, scene.BallSet);
+        Assert.Equal(setup.Racked(0), scene.Layout);
+        Assert.Equal(rules, scene.Rules);
+        Assert.Equal($"{ruleset.Title} online", scene.Name);
+    }
+
     private static double? WaitForPing(Connection c)
     {
         LoopbackGame.Until(() => c.RoundTripMs is not null, "no ping was answered");
