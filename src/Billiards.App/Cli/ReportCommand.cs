@@ -111,11 +111,12 @@ public static class ReportCommand
         });
         var aiRuns = new Argument<string[]>("summaries") { Description = "The merged summaries of selfplay --noise fastfiz:K --planners noise,blind, one a noise level.", Arity = ArgumentArity.OneOrMore };
         var aiOutput = new Option<string>("--out") { Description = "Folder for ai.md and ai-break-and-run.png.", DefaultValueFactory = _ => "out/ai" };
-        var ai = new Command("ai", VerbHelp.Verb("Tabulate the computer player under execution noise against the noise-blind planner, with 95 % intervals and a plot.", "report-ai")) { aiRuns, aiOutput };
+        var aiBreaks = new Option<string[]>("--breaks") { Description = "The shard summaries of selfplay --planners noise,noise over the odd games of a run (the racks the blind planner broke there), counted in the break-and-run rate.", AllowMultipleArgumentsPerToken = true };
+        var ai = new Command("ai", VerbHelp.Verb("Tabulate the computer player under execution noise against the noise-blind planner, with 95 % intervals and a plot.", "report-ai")) { aiRuns, aiOutput, aiBreaks };
         ai.SetAction(parse =>
         {
             string dir = OutputFiles.CheckFolder("--out", parse.GetValue(aiOutput)!, [.. AiReport.FileNames]);
-            var files = AiReport.Files(AiReport.Read(parse.GetValue(aiRuns)!));
+            var files = AiReport.Files(AiReport.Read(parse.GetValue(aiRuns)!, parse.GetValue(aiBreaks) ?? []));
             Directory.CreateDirectory(dir);
             OutputFiles.WriteAll([.. files.Select(f => (Path.Combine(dir, f.Name), f.Bytes))]);
             stdout.Write(Encoding.UTF8.GetString(files[0].Bytes));

@@ -51,26 +51,26 @@ public static class AiReport
 
     /// <summary>Reads the summaries (<paramref name="files"/>), checks that each is a noisy run of the noise planner against the blind one, and orders them by noise.</summary>
     /// <exception cref="SceneException">A file that is not such a summary, or two of the same noise.</exception>
-    public static IReadOnlyList<SelfPlaySummary> Read(IReadOnlyList<string> files)
+    public static IReadOnlyList<AiRun> Read(IReadOnlyList<string> files) => Read(files, []);
+
+    /// <summary>
+    /// Reads the summaries (<paramref name="files"/>) as <see cref="Read(IReadOnlyList{string})"/>
+    /// does, with the racks the noise planner did not break in them (<paramref name="breakFiles"/>):
+    /// the shards of a run of the same seed, games and noise with the noise planner on both sides
+    /// (<c>--planners noise,noise</c>) over the odd games, whose breaks player 1 made in the run
+    /// against the blind planner (shards K/N of one even N, every odd K once: <c>--shard 1/2</c>, or
+    /// <c>1/4</c> and <c>3/4</c> side by side). The break-and-run rate then counts every rack of
+    /// the run's games that the noise planner broke.
+    /// </summary>
+    /// <exception cref="SceneException">A file that is not such a summary, or shards that are not the odd games of a run given.</exception>
+    public static IReadOnlyList<AiRun> Read(IReadOnlyList<string> files, IReadOnlyList<string> breakFiles)
     {
         ArgumentNullException.ThrowIfNull(files);
+        ArgumentNullException.ThrowIfNull(breakFiles);
         var runs = new List<SelfPlaySummary>();
         foreach (string file in files)
         {
-            string text;
-            try
-            {
-                text = File.ReadAllText(file);
-            }
-            catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
-            {
-                throw new SceneException(file, "$", $"cannot read the file ({e.Message})");
-            }
-            var s = SelfPlaySummary.Parse(text, file);
-            if (s.Noise is null)
-            {
-                throw new SceneException(file, "$.noise", "a run without noise (expected selfplay --noise fastfiz:K --planners noise,blind)");
-            }
+            var s = Load(file);
             if (s.Planners != new Core.Rules.PerPlayer<SearchError>(SearchError.Noise, SearchError.Exact))
             {
                 throw new SceneException(file, "$.planners", "expected noise,blind (the planner for the noise as player 0 against the blind one)");
@@ -85,7 +85,65 @@ public static class AiReport
             }
             runs.Add(s);
         }
-        return [.. runs.OrderBy(r => r.Noise!.Scale)];
+        var others = runs.ToDictionary(r => r.Noise!, _ => new List<(string File, SelfPlaySummary Summary)>());
+        foreach (string file in breakFiles)
+        {
+            var s = Load(file);
+            if (s.Planners != new Core.Rules.PerPlayer<SearchError>(SearchError.Noise, SearchError.Noise))
+            {
+                throw new SceneException(file, "$.planners", "expected noise,noise (the racks of the odd games broken by the planner for the noise)");
+            }
+            var run = runs.FirstOrDefault(r => r.Noise == s.Noise)
+                ?? throw new SceneException(file, "$.noise", $"no run against the blind planner at {s.Noise} is given");
+            if (s.Rules != run.Rules || s.Seed != run.Seed || s.RunGames != run.RunGames || s.Levels != run.Levels)
+            {
+                throw new SceneException(file, "$.seed", $"not the games of the run at {s.Noise} (expected {run.Rules.Name}, seed {run.Seed}, {run.RunGames} games, levels {run.Levels.First},{run.Levels.Second})");
+            }
+            others[run.Noise!].Add((file, s));
+        }
+        foreach (var (noise, shards) in others)
+        {
+            if (shards.Count > 0 && OddGamesProblem(shards.Select(x => x.Summary.Shard).ToList()) is { } problem)
+            {
+                throw new SceneException(shards[0].File, "$.shard", $"{problem} at {noise} (expected every odd shard K/N of one even N once: the odd games)");
+            }
+        }
+        return [.. runs.OrderBy(r => r.Noise!.Scale).Select(r => new AiRun(r, [.. others[r.Noise!].Select(x => x.Summary)]))];
+    }
+
+    private static SelfPlaySummary Load(string file)
+    {
+        string text;
+        try
+        {
+            text = File.ReadAllText(file);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
+        {
+            throw new SceneException(file, "$", $"cannot read the file ({e.Message})");
+        }
+        var s = SelfPlaySummary.Parse(text, file);
+        return s.Noise is null
+            ? throw new SceneException(file, "$.noise", "a run without noise (expected selfplay --noise fastfiz:K --planners noise,blind)")
+            : s;
+    }
+
+    // Null when the shards are exactly the odd games (every odd K of one even N once), else what is wrong.
+    private static string? OddGamesProblem(IReadOnlyList<SelfPlayShard> shards)
+    {
+        int n = shards[0].Count;
+        if (n % 2 != 0 || shards.Any(x => x.Count != n))
+        {
+            return "shards of different or odd counts";
+        }
+        var indices = shards.Select(x => x.Index).ToList();
+        if (indices.Any(k => k % 2 == 0))
+        {
+            return "a shard of even games";
+        }
+        return indices.Distinct().Count() != indices.Count ? "a shard given twice"
+            : indices.Count != n / 2 ? $"{n / 2 - indices.Count} odd shards missing"
+            : null;
     }
 
     private static string Pct(double x) => string.Create(CultureInfo.InvariantCulture, $"{100 * x:0.0} %");
@@ -97,7 +155,7 @@ public static class AiReport
     }
 
     /// <summary>The page: one row a noise level, every rate with its 95 % interval.</summary>
-    public static string ToMarkdown(IReadOnlyList<SelfPlaySummary> runs)
+    public static string ToMarkdown(IReadOnlyList<AiRun> runs)
     {
         ArgumentNullException.ThrowIfNull(runs);
         var inv = CultureInfo.InvariantCulture;
@@ -107,30 +165,39 @@ public static class AiReport
         sb.Append("candidate), 8-ball, the break alternating; the figures are player 0's, with 95 % intervals (Wilson;\n");
         sb.Append("balls per visit: the balls taken as a Poisson count). Made by `billiards report ai` from the runs' merged\n");
         sb.Append("summaries ([computer-player.md](../computer-player.md#execution-noise)).\n\n");
-        sb.Append("| noise | games | pot success | break and run (of its breaks) | balls per visit | wins against the blind planner | decision ms, median / p95 (noise; blind) | run wall clock |\n");
+        sb.Append("| noise | games | pot success | break and run (of the racks it broke) | balls per visit | wins against the blind planner | decision ms, median / p95 (noise; blind) | run wall clock |\n");
         sb.Append("|---|---:|---|---|---|---|---|---:|\n");
-        foreach (var r in runs)
+        foreach (var run in runs)
         {
+            var r = run.Run;
             var me = r.Players.First;
             var blind = r.Players.Second;
             var (vlo, vhi) = PerVisit(me.BreakSum, me.Visits);
-            sb.Append(inv, $"| `{r.Noise}` | {r.Games} | {Rate(me.Pots, me.PotAttempts)} | {Rate(me.BreakAndRuns, me.Breaks)} | ");
+            sb.Append(inv, $"| `{r.Noise}` | {r.Games} | {Rate(me.Pots, me.PotAttempts)} | {Rate(run.BreakAndRuns, run.Breaks)} | ");
             sb.Append(inv, $"{me.BreakSum} / {me.Visits} = {(me.Visits > 0 ? (double)me.BreakSum / me.Visits : 0):0.00} ({vlo:0.00} - {vhi:0.00}) | {Rate(me.GamesWon, r.Games)} | ");
             sb.Append(inv, $"{me.DecisionMedianMs:0} / {me.DecisionP95Ms:0}; {blind.DecisionMedianMs:0} / {blind.DecisionP95Ms:0} | {r.Milliseconds / 60000:0} min |\n");
         }
         sb.Append("\nThe seeds and sizes of the runs: ");
-        sb.Append(string.Join("; ", runs.Select(r => string.Create(inv, $"`{r.Noise}` seed {r.Seed}, {r.RunGames} games"))));
+        sb.Append(string.Join("; ", runs.Select(r => string.Create(inv, $"`{r.Run.Noise}` seed {r.Run.Seed}, {r.Run.RunGames} games"))));
+        if (runs.Any(r => r.OtherBreaks.Count > 0))
+        {
+            sb.Append(". The break and run counts every rack the planner for the noise broke: its breaks in the run against the blind planner, and at ");
+            sb.Append(string.Join(", ", runs.Where(r => r.OtherBreaks.Count > 0).Select(r => $"`{r.Run.Noise}`")));
+            sb.Append(" every break of the same games that the blind planner broke there (the odd games), played again by the planner for the noise on both sides (`--planners noise,noise`, ");
+            sb.Append(string.Join(", ", runs.Where(r => r.OtherBreaks.Count > 0).Select(r => string.Create(inv, $"`{r.Run.Noise}` {r.OtherBreaks.Sum(o => o.Games)} games, {r.OtherBreaks.Sum(o => o.Milliseconds) / 60000:0} min"))));
+            sb.Append("); a rack run out from the break is the breaker's alone, whoever the opponent");
+        }
         sb.Append(". The run wall clock is the sum of its shards'; the decision times are wall-clock times on a shared machine (the benchmark has the figures to compare).\n\n");
         sb.Append("![Break-and-run rate against the noise, made by `billiards report ai SUMMARY.json ... --out docs/ai`](ai-break-and-run.png)\n");
         return sb.ToString();
     }
 
     /// <summary>The plot: player 0's break-and-run rate with its 95 % interval against the noise scale K.</summary>
-    public static byte[] ToPng(IReadOnlyList<SelfPlaySummary> runs)
+    public static byte[] ToPng(IReadOnlyList<AiRun> runs)
     {
         ArgumentNullException.ThrowIfNull(runs);
         const int W = 640, H = 420, Left = 70, Right = 30, Top = 50, Bottom = 60;
-        double kMax = Math.Max(1, runs.Count > 0 ? runs.Max(r => r.Noise!.Scale) : 1);
+        double kMax = Math.Max(1, runs.Count > 0 ? runs.Max(r => r.Noise.Scale) : 1);
         kMax = Math.Ceiling(kMax);
         using var bitmap = new SKBitmap(W, H);
         using (var canvas = new SKCanvas(bitmap))
@@ -164,9 +231,9 @@ public static class AiReport
             using var path = new SKPath();
             for (int i = 0; i < runs.Count; i++)
             {
-                var me = runs[i].Players.First;
-                double k = runs[i].Noise!.Scale, rate = me.Breaks > 0 ? (double)me.BreakAndRuns / me.Breaks : 0;
-                var (lo, hi) = Wilson(me.BreakAndRuns, me.Breaks);
+                var run = runs[i];
+                double k = run.Noise.Scale, rate = run.Breaks > 0 ? (double)run.BreakAndRuns / run.Breaks : 0;
+                var (lo, hi) = Wilson(run.BreakAndRuns, run.Breaks);
                 canvas.DrawLine(X(k), Y(lo), X(k), Y(hi), line);
                 canvas.DrawLine(X(k) - 6, Y(lo), X(k) + 6, Y(lo), line);
                 canvas.DrawLine(X(k) - 6, Y(hi), X(k) + 6, Y(hi), line);
@@ -188,6 +255,25 @@ public static class AiReport
     }
 
     /// <summary>Every file of the report, by name (<see cref="FileNames"/>).</summary>
-    public static IReadOnlyList<(string Name, byte[] Bytes)> Files(IReadOnlyList<SelfPlaySummary> runs) =>
+    public static IReadOnlyList<(string Name, byte[] Bytes)> Files(IReadOnlyList<AiRun> runs) =>
         [(FileNames[0], Encoding.UTF8.GetBytes(ToMarkdown(runs))), (FileNames[1], ToPng(runs))];
+}
+
+/// <summary>
+/// One noise level of <see cref="AiReport"/>: the run of the planner for the noise against the blind
+/// one, and the shards of the run of its odd games with the planner for the noise on both sides
+/// (none: the rate counts player 0's breaks alone).
+/// </summary>
+/// <param name="Run">The merged summary of <c>--planners noise,blind</c>.</param>
+/// <param name="OtherBreaks">The shard summaries of <c>--planners noise,noise</c> over the odd games of the same run.</param>
+public sealed record AiRun(SelfPlaySummary Run, IReadOnlyList<SelfPlaySummary> OtherBreaks)
+{
+    /// <summary>The run's noise.</summary>
+    public ExecutionNoise Noise => Run.Noise!;
+
+    /// <summary>Racks the planner for the noise broke: player 0's in the run, both players' in the other shards.</summary>
+    public int Breaks => Run.Players.First.Breaks + OtherBreaks.Sum(o => o.Players.First.Breaks + o.Players.Second.Breaks);
+
+    /// <summary>Of <see cref="Breaks"/>, the racks it ran out from the break.</summary>
+    public int BreakAndRuns => Run.Players.First.BreakAndRuns + OtherBreaks.Sum(o => o.Players.First.BreakAndRuns + o.Players.Second.BreakAndRuns);
 }
