@@ -1,5 +1,6 @@
 using System.Collections.Concurrent;
 using System.Diagnostics;
+using System.Globalization;
 using System.Net.Sockets;
 using System.Threading.Channels;
 
@@ -140,8 +141,28 @@ public sealed class Connection : IDisposable
         return TryReceive(out m) ? m : null;
     }
 
+    /// <summary>
+    /// How the reader stands, for a log line when a peer seems silent: when its task started (ms
+    /// after the connection), the messages it has read, and whether it has ended; with the thread
+    /// pool's threads and queued work items at the moment of asking.
+    /// </summary>
+    public string ReaderState
+    {
+        get
+        {
+            double started = Volatile.Read(ref _readerStartedMs);
+            string reader = started < 0 ? "not started" : string.Create(CultureInfo.InvariantCulture, $"started at {started:0} ms");
+            string state = _reader.IsCompleted ? (_reader.IsFaulted ? "faulted" : "ended") : "running";
+            return string.Create(CultureInfo.InvariantCulture,
+                $"reader {reader}, {state}, {Received} messages read; pool: {ThreadPool.ThreadCount} threads, {ThreadPool.PendingWorkItemCount} queued");
+        }
+    }
+
+    private double _readerStartedMs = -1;
+
     private async Task ReadLoop()
     {
+        Volatile.Write(ref _readerStartedMs, _clock.Elapsed.TotalMilliseconds);
         try
         {
             while (!_stop.IsCancellationRequested)

@@ -103,6 +103,8 @@ public sealed class NetHost : IDisposable
             {
                 if (connection.IsOpen)
                 {
+                    // How the reader stood says whether the peer was silent or its frame went unread.
+                    _log($"net: {name}: no hello within {within.TotalSeconds:0} s: {connection.ReaderState}");
                     Refuse(connection, $"no hello within {within.TotalSeconds:0} s");
                 }
                 else

@@ -26,6 +26,22 @@ public class NetPlayTests
         Assert.NotNull(game.Host.Connection!.RoundTripMs ?? WaitForPing(game.Host.Connection));
     }
 
+    // A peer that connects and says nothing past the hello's time is refused, and the line before
+    // the refusal says how the host's reader stood: started, still waiting, nothing read.
+    [Fact]
+    public void ASilentPeerIsRefusedWithTheReadersState()
+    {
+        var log = new System.Collections.Concurrent.ConcurrentQueue<string>();
+        var limits = NetLimits.Default with { HelloWithin = TimeSpan.FromSeconds(1) };
+        using var host = new NetHost(System.Net.IPAddress.Loopback, 0, () => throw new InvalidOperationException("no peer is admitted"), log.Enqueue, limits);
+        using var client = new System.Net.Sockets.TcpClient();
+        client.Connect(System.Net.IPAddress.Loopback, host.Port);
+        string port = ((System.Net.IPEndPoint)client.Client.LocalEndPoint!).Port.ToString(System.Globalization.CultureInfo.InvariantCulture);
+        LoopbackGame.Until(() => log.Any(l => l.Contains("refused: no hello within 1 s", StringComparison.Ordinal)), "refused");
+        string state = Assert.Single(log, l => l.StartsWith($"net: 127.0.0.1:{port}: no hello within 1 s: ", StringComparison.Ordinal));
+        Assert.Matches(@"reader started at \d+ ms, running, 0 messages read; pool: \d+ threads, \d+ queued$", state);
+    }
+
     [Theory]
     [InlineData("eight-ball")]
     [InlineData("snooker")]
