@@ -66,17 +66,7 @@ public sealed class TablePosition
     public static TablePosition After(ShotRecord record)
     {
         ArgumentNullException.ThrowIfNull(record);
-        var list = new List<(BallId, Vec3)>();
-        var balls = record.BallsAfter;
-        var ids = record.Ids;
-        for (int i = 0; i < balls.Length; i++)
-        {
-            if (!balls[i].IsOutOfPlay)
-            {
-                list.Add((ids[i], balls[i].Position));
-            }
-        }
-        return new TablePosition(list, record.CueBall);
+        return new TablePosition(record.InPlayAfter(), record.CueBall);
     }
 
     /// <summary>A fresh rack of <paramref name="rack"/> with <paramref name="cueBall"/> where the rack puts it (the head spot; snooker's rack has it in the D).</summary>

@@ -54,6 +54,26 @@ public sealed class BallLayout : IReadOnlyList<(BallId Id, Vec3 Position)>, IEqu
     /// <summary>No balls.</summary>
     public static BallLayout Empty { get; } = new([], []);
 
+    /// <summary>
+    /// The balls of <paramref name="balls"/> in play (pocketed and lost ones left out), each with
+    /// its id from <paramref name="ids"/> (index-aligned), in their order; with <paramref name="z"/>,
+    /// every centre at that height (on the bed, for balls at rest). A simulation's balls and a
+    /// shot record's, before or after the shot, all become layouts here.
+    /// </summary>
+    public static BallLayout InPlay(ReadOnlySpan<BallState> balls, IReadOnlyList<BallId> ids, double? z = null)
+    {
+        ArgumentNullException.ThrowIfNull(ids);
+        var list = new List<(BallId, Vec3)>(balls.Length);
+        for (int i = 0; i < balls.Length; i++)
+        {
+            if (!balls[i].IsOutOfPlay)
+            {
+                list.Add((ids[i], z is { } h ? balls[i].Position with { Z = h } : balls[i].Position));
+            }
+        }
+        return new BallLayout(list);
+    }
+
     /// <summary>Number of balls.</summary>
     public int Count => _ids.Length;
 

@@ -49,6 +49,12 @@ public sealed class ShotRecord
     /// </summary>
     public ReadOnlySpan<BallState> BallsBefore => _before;
 
+    /// <summary>The balls in play after the shot as a layout (<see cref="BallLayout.InPlay"/>); with <paramref name="z"/>, every centre at that height.</summary>
+    public BallLayout InPlayAfter(double? z = null) => BallLayout.InPlay(_balls, _ids, z);
+
+    /// <summary>The balls in play when the shot was struck as a layout (empty when <see cref="BallsBefore"/> is); with <paramref name="z"/>, every centre at that height.</summary>
+    public BallLayout InPlayBefore(double? z = null) => _before.Length == _ids.Length ? BallLayout.InPlay(_before, _ids, z) : BallLayout.Empty;
+
     /// <summary>
     /// Takes the shot from a simulation: its events from index <paramref name="firstEvent"/> (the
     /// shot's cue strike, when it has one) and its balls as they are now.

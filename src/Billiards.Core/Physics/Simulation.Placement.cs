@@ -103,19 +103,7 @@ public abstract partial class Simulation
     /// The balls in play (pocketed and lost ones left out) as a layout, in the simulation's order;
     /// with <paramref name="z"/>, every centre at that height (on the bed, for balls at rest).
     /// </summary>
-    public BallLayout InPlay(double? z = null)
-    {
-        var balls = Balls;
-        var list = new List<(BallId, Vec3)>(balls.Length);
-        for (int i = 0; i < balls.Length; i++)
-        {
-            if (!balls[i].IsOutOfPlay)
-            {
-                list.Add((Ids[i], z is { } h ? balls[i].Position with { Z = h } : balls[i].Position));
-            }
-        }
-        return new BallLayout(list);
-    }
+    public BallLayout InPlay(double? z = null) => BallLayout.InPlay(Balls, Ids, z);
 
     /// <summary>
     /// Puts several balls at rest at once (a rerack, a set position): every ball listed is tested

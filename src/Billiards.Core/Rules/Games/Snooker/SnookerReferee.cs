@@ -45,7 +45,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
         {
             int shooter = before.Shooter, incoming = before.Incoming;
             var onTableBefore = facts.OnTableBefore.Select(n => new BallId(n)).ToList();
-            var positionsBefore = Positions(shot.BallsBefore.Length == shot.Ids.Length ? shot.BallsBefore : shot.BallsAfter);
+            var positionsBefore = shot.BallsBefore.Length == shot.Ids.Length ? shot.InPlayBefore(_r) : shot.InPlayAfter(_r);
             string ballOn = SnookerRuleset.BallOnOf(before);
             bool redsPhase = ballOn is SnookerRuleset.Red or SnookerRuleset.Colour;
             BallId? nominated = before.Call is { IsNomination: true } c ? c.Ball : null;
@@ -128,7 +128,7 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
             var spot = facts.Pocketed.Concat(facts.OffTable).Where(SnookerRuleset.IsColour)
                 .Where(b => redsPhase || !ruling.Legal || b != BallOnBall(ballOn))
                 .ToList();
-            var afterTable = Positions(shot.BallsAfter);
+            var afterTable = shot.InPlayAfter(_r);
             bool cueInHand = facts.Scratch || facts.CueOffTable;
             afterTable = !cueInHand && shot.IndexOf(Cue) is int ci and >= 0 && !shot.BallsAfter[ci].IsOutOfPlay
                 ? afterTable.With(Cue, shot.BallsAfter[ci].Position)
@@ -390,20 +390,6 @@ internal sealed class SnookerReferee(TableSpec table, double ballRadius) : Refer
                 }
             }
             return false;
-        }
-
-        private BallLayout Positions(ReadOnlySpan<BallState> balls)
-        {
-            var ids = shot.Ids;
-            var table = new List<(BallId, Vec3)>(ids.Length);
-            for (int i = 0; i < balls.Length && i < ids.Length; i++)
-            {
-                if (!balls[i].IsOutOfPlay)
-                {
-                    table.Add((ids[i], balls[i].Position with { Z = _r }));
-                }
-            }
-            return new BallLayout(table);
         }
     }
 }
