@@ -31,7 +31,7 @@ public static class NetCommands
         var port = new Option<int?>("--port") { Description = $"The TCP port to listen on (default {DefaultPort})." };
         var code = new Option<string?>("--code") { Description = $"The {MessageCodec.CodeLength}-character code the joiner must give (letters and digits without 0, O, 1, I); default: a new random one, shown." };
         var players = new Option<string?>("--players") { Description = "The players' names, A,B: the host's first (default Player 1,Player 2)." };
-        var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball, straight-pool, snooker or three-cushion (default eight-ball)." };
+        var rules = new Option<string?>("--rules") { Description = $"The game: {VerbHelp.Games} (default eight-ball)." };
         var (script, record, stats) = PlayOptions();
         var host = new Command("host", VerbHelp.Verb("Wait for one player to join and play a game with them over the network.", "host")) { port, code, players, rules, script, record, stats };
         host.SetAction(parse => Host(new HostOptions(parse.GetValue(port), parse.GetValue(code), parse.GetValue(players), parse.GetValue(rules), parse.GetValue(script), parse.GetValue(record), parse.GetValue(stats)) { OpenAudio = PlayCommand.OpenAudio }, stdout, log.WriteLine, title => PlatformWiring.Open(title)));

@@ -29,7 +29,7 @@ public static class PlayCommand
         };
         var script = new Option<string?>("--script") { Description = $"Replay a timed list of input events ({InputScript.Format} JSON); the game closes when it ends." };
         var stats = new Option<string?>("--stats") { Description = $"Write per-second frame rates, frame-time percentiles and input-to-frame delays ({FrameStats.Format} JSON) when the game ends." };
-        var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball, straight-pool or snooker (default: the scene's rules)." };
+        var rules = new Option<string?>("--rules") { Description = $"The game: {VerbHelp.Games} (default: the scene's rules)." };
         var players = new Option<string?>("--players") { Description = $"The two players, A,B: each a name or human (a person), or computer:LEVEL (1-5; also cpu:LEVEL); default {DefaultPlayers}." };
         var record = new Option<string?>("--record") { Description = $"Write the game ({GameRecordFile.Format} JSON, which replay reads) when the window closes." };
         var cap = new Option<double?>("--fps-cap") { Description = $"The most frames a second (0: no cap); default the display's refresh rate, else {PlatformWiring.DefaultFrameCap}." };

@@ -38,7 +38,7 @@ public static class SelfplayCommand
     public static Command Create(TextWriter stdout, TextWriter stderr)
     {
         // Not Required: --merge needs none of them (checked in the action).
-        var rules = new Option<string?>("--rules") { Description = "The game: eight-ball, nine-ball, ten-ball, straight-pool or snooker." };
+        var rules = new Option<string?>("--rules") { Description = $"The game: {VerbHelp.Games}." };
         var games = new Option<int?>("--games") { Description = "Number of games of the whole run." };
         var levels = new Option<string?>("--levels") { Description = "The two players' levels, 1-5, e.g. 5,3 (the first is player 0)." };
         var seed = new Option<long?>("--seed") { Description = "Seed of every rack and every error." };

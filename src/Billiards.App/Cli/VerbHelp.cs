@@ -1,3 +1,5 @@
+using Billiards.Core.Rules;
+
 namespace Billiards.App.Cli;
 
 /// <summary>
@@ -17,4 +19,17 @@ public static class VerbHelp
     /// <param name="what">One sentence: what the verb does.</param>
     /// <param name="section">The section's anchor on the page, e.g. "simulate" or "report-accuracy".</param>
     public static string Verb(string what, string section) => $"{what} Docs: {Page}#{section}";
+
+    /// <summary>
+    /// The games a <c>--rules</c> option takes, from the registered rulesets: "eight-ball, nine-ball, ...
+    /// or three-cushion", so that a game added to the registry is in every verb's help.
+    /// </summary>
+    public static string Games
+    {
+        get
+        {
+            var names = RuleNames.GameNames;
+            return names.Count < 2 ? string.Join("", names) : $"{string.Join(", ", names.Take(names.Count - 1))} or {names[^1]}";
+        }
+    }
 }

@@ -1,6 +1,7 @@
 using System.Text.RegularExpressions;
 using Billiards.App.Cli;
 using Billiards.App.Tests.Docs;
+using Billiards.Core.Rules;
 
 namespace Billiards.App.Tests.Cli;
 
@@ -119,8 +120,28 @@ public sealed partial class HelpAndCommandLinePageTests
         Assert.Equal(verbs.Count, sections.Count());
     }
 
+    [Fact]
+    public void EveryRulesOptionNamesEveryRegisteredGameInTheHelpAndOnThePage()
+    {
+        var withRules = Verbs().Where(v => HelpOptions(v.Help).Contains("--rules")).ToList();
+        Assert.Contains(withRules, v => v.Path == "selfplay");
+        Assert.Contains(withRules, v => v.Path == "host");
+        foreach (var (path, help) in withRules)
+        {
+            string line = Section(help, "Options:").Single(l => l.TrimStart().StartsWith("--rules", StringComparison.Ordinal));
+            var named = GameName().Matches(line).Select(m => m.Value).Where(RuleNames.GameNames.Contains).Distinct().ToList();
+            Assert.True(named.SequenceEqual(RuleNames.GameNames), $"{path} --rules names {string.Join(", ", named)}; the games are {string.Join(", ", RuleNames.GameNames)}");
+            string row = PageSection(path).Split('\n').Single(l => l.StartsWith("| `--rules", StringComparison.Ordinal));
+            var onPage = GameName().Matches(row).Select(m => m.Value).Where(RuleNames.GameNames.Contains).Distinct().ToList();
+            Assert.True(onPage.SequenceEqual(RuleNames.GameNames), $"{VerbHelp.Page}, {path}: --rules names {string.Join(", ", onPage)}; the games are {string.Join(", ", RuleNames.GameNames)}");
+        }
+    }
+
     [GeneratedRegex(@"^  (\S+)(?: <[^>]+>)*\s{2,}(.*)$")]
     private static partial Regex CommandLine();
+
+    [GeneratedRegex(@"[a-z]+(?:-[a-z]+)*")]
+    private static partial Regex GameName();
 
     [GeneratedRegex(@"--[a-z][a-z-]*")]
     private static partial Regex LongOption();
