@@ -249,7 +249,7 @@ public sealed class MatchNode : Node
                 Rematch();
                 return true;
             case Key.Space when CanShoot && _cue is not null:
-                bool power = Session.State.Shot == 0 && Session.Ruleset.PowerBreak;
+                bool power = Session.Ruleset.IsPowerBreak(Session.State);
                 _physics!.Strike(_cue.MakeShot(Power));
                 if (power)
                 {

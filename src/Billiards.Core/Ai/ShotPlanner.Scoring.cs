@@ -142,7 +142,7 @@ public sealed partial class ShotPlanner
             // whatever the shot leaves; a pot that ends it now is still the better (WonScore).
             return DecidedScore;
         }
-        if (level.Break is { } breakWeights && before.Shot == 0 && Ruleset.For(before.Rules).PowerBreak)
+        if (level.Break is { } breakWeights && Ruleset.For(before.Rules).IsPowerBreak(before))
         {
             return BreakScore(before, ruling, after, level, breakWeights, look);
         }
@@ -161,10 +161,7 @@ public sealed partial class ShotPlanner
             // Position counts, but less than the pot: for a strong player a moderate next shot is
             // still likely, and the pot in hand is certain. Each ball left without a straight way
             // to a pocket costs a little, so that shots which free a cluster are preferred.
-            var weights = level.Leave;
-            double q = look ? Table.PositionQuality(after, ruling.Next, level.PositionAimStdDeg, weights.BestShot, weights.SecondShot) : EvenScore;
-            double problems = look ? ProblemBallCost * Table.ProblemBalls(after, ruling.Next) : 0;
-            return weights.Stay + weights.Position * q - problems + (PointScore * ruling.Points);
+            return StayScore(level.Leave.Stay, level.Leave.Position, ruling, after, level, look) + (PointScore * ruling.Points);
         }
         if (!ruling.Legal)
         {
@@ -177,14 +174,22 @@ public sealed partial class ShotPlanner
         return SafetyScore - weight * opponent + snookered;
     }
 
+    // A shot that keeps its player at the table: stay plus position times the next position's quality
+    // (the level's leave weights and aim error), less each problem ball's cost.
+    private double StayScore(double stay, double position, Ruling ruling, TablePosition after, SkillLevel level, bool look)
+    {
+        var leave = level.Leave;
+        double q = look ? Table.PositionQuality(after, ruling.Next, level.PositionAimStdDeg, leave.BestShot, leave.SecondShot) : EvenScore;
+        double problems = look ? ProblemBallCost * Table.ProblemBalls(after, ruling.Next) : 0;
+        return stay + position * q - problems;
+    }
+
     // A break as the planner that plays for the noise scores it (BreakSearch): kept table, dry, foul.
     private double BreakScore(GameState before, Ruling ruling, TablePosition after, SkillLevel level, BreakSearch weights, bool look)
     {
         if (ruling.Continue)
         {
-            double q = look ? Table.PositionQuality(after, ruling.Next, level.PositionAimStdDeg, level.Leave.BestShot, level.Leave.SecondShot) : EvenScore;
-            double problems = look ? ProblemBallCost * Table.ProblemBalls(after, ruling.Next) : 0;
-            return weights.Stay + weights.Position * q - problems;
+            return StayScore(weights.Stay, weights.Position, ruling, after, level, look);
         }
         if (!ruling.Legal)
         {

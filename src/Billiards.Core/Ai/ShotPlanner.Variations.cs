@@ -61,7 +61,7 @@ public sealed partial class ShotPlanner
         private bool PlaysBreakForNoise => level.Error == SearchError.Noise && level.LookAhead > 0;
 
         // This search is of such a break (the wide grid), whose rounds BreakSearch sizes.
-        private bool SearchesNoiseBreak => PlaysBreakForNoise && state.Shot == 0 && Ruleset.For(state.Rules).PowerBreak;
+        private bool SearchesNoiseBreak => PlaysBreakForNoise && Ruleset.For(state.Rules).IsPowerBreak(state);
 
         private void AddVariations(int rootIndex, Root root, int candidates, List<Variation> variations)
         {

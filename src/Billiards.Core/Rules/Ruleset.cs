@@ -510,6 +510,13 @@ public abstract class Ruleset : IShotConstraints, IRefereeRules, IGamePresentati
     /// </summary>
     public virtual bool PowerBreak => true;
 
+    /// <summary>True when the shot to play in <paramref name="state"/> is a power break: the rack's first shot in a game with one (<see cref="PowerBreak"/>).</summary>
+    public bool IsPowerBreak(GameState state)
+    {
+        ArgumentNullException.ThrowIfNull(state);
+        return state.Shot == 0 && PowerBreak;
+    }
+
     /// <summary>How the computer player weighs the game (<see cref="Ai.PlannerPolicy"/>): pool's by default.</summary>
     public virtual Ai.PlannerPolicy Policy => Ai.PlannerPolicy.Pool;
 
