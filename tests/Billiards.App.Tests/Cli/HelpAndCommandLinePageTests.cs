@@ -120,20 +120,28 @@ public sealed partial class HelpAndCommandLinePageTests
         Assert.Equal(verbs.Count, sections.Count());
     }
 
+    /// <summary>
+    /// The help names every registered game; the page every shipped one (Core's rulesets). Other
+    /// tests of this process register games of their own (<c>touch</c>), so the help may name
+    /// more than the page, but only registered games, and the shipped ones in their order.
+    /// </summary>
     [Fact]
     public void EveryRulesOptionNamesEveryRegisteredGameInTheHelpAndOnThePage()
     {
+        var shipped = Ruleset.All.Where(r => r.GetType().Assembly == typeof(Ruleset).Assembly).Select(r => r.Name).ToList();
+        Assert.Contains("three-cushion", shipped);
         var withRules = Verbs().Where(v => HelpOptions(v.Help).Contains("--rules")).ToList();
         Assert.Contains(withRules, v => v.Path == "selfplay");
         Assert.Contains(withRules, v => v.Path == "host");
         foreach (var (path, help) in withRules)
         {
             string line = Section(help, "Options:").Single(l => l.TrimStart().StartsWith("--rules", StringComparison.Ordinal));
-            var named = GameName().Matches(line).Select(m => m.Value).Where(RuleNames.GameNames.Contains).Distinct().ToList();
-            Assert.True(named.SequenceEqual(RuleNames.GameNames), $"{path} --rules names {string.Join(", ", named)}; the games are {string.Join(", ", RuleNames.GameNames)}");
+            var registered = RuleNames.GameNames;
+            var named = GameName().Matches(line).Select(m => m.Value).Where(registered.Contains).Distinct().ToList();
+            Assert.True(named.Where(shipped.Contains).SequenceEqual(shipped), $"{path} --rules names {string.Join(", ", named)}; the shipped games are {string.Join(", ", shipped)}");
             string row = PageSection(path).Split('\n').Single(l => l.StartsWith("| `--rules", StringComparison.Ordinal));
-            var onPage = GameName().Matches(row).Select(m => m.Value).Where(RuleNames.GameNames.Contains).Distinct().ToList();
-            Assert.True(onPage.SequenceEqual(RuleNames.GameNames), $"{VerbHelp.Page}, {path}: --rules names {string.Join(", ", onPage)}; the games are {string.Join(", ", RuleNames.GameNames)}");
+            var onPage = GameName().Matches(row).Select(m => m.Value).Where(registered.Contains).Distinct().ToList();
+            Assert.True(onPage.SequenceEqual(shipped), $"{VerbHelp.Page}, {path}: --rules names {string.Join(", ", onPage)}; the shipped games are {string.Join(", ", shipped)}");
         }
     }
 
