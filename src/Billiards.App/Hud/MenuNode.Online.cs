@@ -153,7 +153,7 @@ public sealed partial class MenuNode
         OnlineRequested?.Invoke(new OnlineRequest(null, address, JoinCode));
     }
 
-    private void LayoutOnline(ref float y, float wide, float line, float u, float cx, Action<float, float, IReadOnlyList<(string Label, Action Act, bool Chosen)>> row)
+    private void LayoutOnline(ref float y, float wide, float line, float u, float cx, ButtonRow row)
     {
         float buttonH = line + (10 * u), gap = 6 * u;
         switch (Page)

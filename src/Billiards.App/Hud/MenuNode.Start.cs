@@ -196,15 +196,21 @@ public sealed partial class MenuNode
         PlayedSettings = PlayedSettings with { FastComputer = StartSettings.FastComputer, TakeBacks = StartSettings.TakeBacks, Muted = StartSettings.Muted, Graphics = StartSettings.Graphics };
     }
 
+    /// <summary>
+    /// Lays out a row of buttons of one width, centred, at <c>y</c>: in as few lines as the window's
+    /// width holds, each of about as many buttons; returns the height it took beyond one line.
+    /// </summary>
+    private delegate float ButtonRow(float y, float w, IReadOnlyList<(string Label, Action Act, bool Chosen)> items);
+
     // The games to choose from, under their label, the one chosen marked; returns the y below.
-    private float GameRow(float y, float line, float u, float cx, Action<float, float, IReadOnlyList<(string Label, Action Act, bool Chosen)>> row)
+    private float GameRow(float y, float line, float u, float cx, ButtonRow row)
     {
         var games = Ruleset.All.Select(r => r.Game).ToList();
         float gameW = (games.Max(g => HudFont.Width(GameName(g))) + 16) * u;
         _labels.Add(new HudLabel(cx, y, "Game", 1, Gold: true, Centred: true));
         y += line + (2 * u);
-        row(y, gameW, [.. games.Select(g => (GameName(g), (Action)(() => StartGame = g), StartGame == g))]);
-        return y + line + (10 * u) + (2 * line);
+        float more = row(y, gameW, [.. games.Select(g => (GameName(g), (Action)(() => StartGame = g), StartGame == g))]);
+        return y + more + line + (10 * u) + (2 * line);
     }
 
     private void NextCushion() => StartSettings = StartSettings with { Cushion = Cycle(ModelRegistry.BallCushionModels, StartSettings.Cushion) };
@@ -234,17 +240,29 @@ public sealed partial class MenuNode
             _buttons.Add((new HudButton(x, y, w, h, label) { Chosen = chosen, Note = note, Picture = picture }, act));
             _rowOf.Add(row);
         }
-        // A row of buttons of one width, centred.
-        void Row(float y, float w, IReadOnlyList<(string Label, Action Act, bool Chosen)> items)
+        // A row of buttons of one width, centred; wrapped into lines of about equal count when
+        // the window is too narrow for it (six games in two lines of three, not one cut off).
+        float Row(float y, float w, IReadOnlyList<(string Label, Action Act, bool Chosen)> items)
         {
-            float total = (items.Count * w) + ((items.Count - 1) * gap);
-            float x = cx - (total / 2);
-            foreach (var (label, act, chosen) in items)
+            float room = width - (2 * gap);
+            int fit = Math.Clamp((int)((room + gap) / (w + gap)), 1, Math.Max(1, items.Count));
+            int lines = Math.Max(1, (items.Count + fit - 1) / fit);
+            int perLine = (items.Count + lines - 1) / lines;
+            for (int start = 0; start < items.Count; start += perLine)
             {
-                Add(x, y, w, buttonH, label, act, chosen);
-                x += w + gap;
+                int inLine = Math.Min(perLine, items.Count - start);
+                float total = (inLine * w) + ((inLine - 1) * gap);
+                float x = cx - (total / 2);
+                for (int k = start; k < start + inLine; k++)
+                {
+                    var (label, act, chosen) = items[k];
+                    Add(x, y, w, buttonH, label, act, chosen);
+                    x += w + gap;
+                }
+                row++;
+                y += buttonH + gap;
             }
-            row++;
+            return (lines - 1) * (buttonH + gap);
         }
         float top = MathF.Max(line, height * 0.08f);
         _labels.Add(new HudLabel(cx, top, GameTitle, 3, Gold: true, Centred: true));
@@ -290,7 +308,7 @@ public sealed partial class MenuNode
                     int l = level;
                     opponents.Add(($"Computer {l}", () => StartOpponent = l, StartOpponent == l));
                 }
-                Row(y, (HudFont.Width("Computer 5") + 16) * u, opponents);
+                y += Row(y, (HudFont.Width("Computer 5") + 16) * u, opponents);
                 y += buttonH + (2 * line);
                 float startAt = _buttons.Count;
                 Row(y, wide, [("Start", Begin, false), ("Back", Back, false)]);

@@ -1,0 +1,93 @@
+using Billiards.App.Hud;
+using Billiards.App.Platform;
+using Billiards.App.Rendering;
+using Billiards.App.Tests.Game;
+
+namespace Billiards.App.Tests.Hud;
+
+/// <summary>
+/// Every page of the start menu fits the window at the sizes a player gives it: each button lies
+/// whole inside the window, no two overlap, its label fits it, and Up and Down reach every row.
+/// A row too wide for a narrow window (the six games at 1000 px) wraps into lines, not off-screen.
+/// </summary>
+public sealed class MenuLayoutTests
+{
+    public static TheoryData<MenuPage, int, int> PagesAndSizes()
+    {
+        var data = new TheoryData<MenuPage, int, int>();
+        foreach (var page in new[] { MenuPage.Start, MenuPage.Play, MenuPage.Drills, MenuPage.Settings, MenuPage.Online, MenuPage.Host, MenuPage.Join })
+        {
+            foreach (var (w, h) in new[] { (1280, 720), (1000, 760), (900, 720), (900, 560), (800, 600) })
+            {
+                data.Add(page, w, h);
+            }
+        }
+        return data;
+    }
+
+    [Theory]
+    [MemberData(nameof(PagesAndSizes))]
+    public void EveryButtonLiesInsideTheWindowAndNoneOverlap(MenuPage page, int width, int height)
+    {
+        using var game = new TestGame();
+        game.Window.FramebufferSize = (width, height);
+        game.World.Menu.ShowStart(page);
+        game.Frame();
+        var buttons = game.Frame().Hud!.Buttons!;
+        Assert.NotEmpty(buttons);
+        float u = HudRenderer.Scale(height);
+        foreach (var b in buttons)
+        {
+            Assert.True(b.X >= 0 && b.Y >= 0 && b.X + b.Width <= width && b.Y + b.Height <= height,
+                $"{page} at {width}x{height}: \"{b.Label}\" at ({b.X}, {b.Y}) {b.Width}x{b.Height} is not inside the window");
+            if (page != MenuPage.Drills)
+            {
+                // A drill's card shows its title in a smaller line under its picture.
+                Assert.True(HudFont.Width(b.Label) * u <= b.Width, $"{page} at {width}x{height}: \"{b.Label}\" is wider than its button");
+            }
+        }
+        for (int i = 0; i < buttons.Count; i++)
+        {
+            for (int j = i + 1; j < buttons.Count; j++)
+            {
+                Assert.False(Overlap(buttons[i], buttons[j]), $"{page} at {width}x{height}: \"{buttons[i].Label}\" and \"{buttons[j].Label}\" overlap");
+            }
+        }
+    }
+
+    [Fact]
+    public void TheGamesWrapIntoTwoLinesOfThreeInANarrowWindowAndTheKeysReachEachLine()
+    {
+        using var game = new TestGame();
+        game.Window.FramebufferSize = (1000, 760);
+        var menu = game.World.Menu;
+        menu.ShowStart(MenuPage.Play);
+        game.Frame();
+        var buttons = game.Frame().Hud!.Buttons!;
+        var games = buttons.Where(b => b.Label is "8-ball" or "9-ball" or "10-ball" or "14.1 straight pool" or "Snooker" or "Three-cushion").ToList();
+        Assert.Equal(6, games.Count);
+        Assert.Equal([3, 3], games.GroupBy(b => b.Y).Select(g => g.Count()));
+        // From Start, Up goes to the opponents, then to the second line of games, then to the first:
+        // Enter there picks a game of the first line, Down and Enter one of the second.
+        foreach (var _ in Enumerable.Range(0, 3))
+        {
+            game.Window.Press(Key.Up);
+        }
+        game.Window.Press(Key.Enter);
+        string Chosen() => Assert.Single(game.Frame().Hud!.Buttons!, b => b.Chosen && games.Any(g => g.Label == b.Label)).Label;
+        Assert.Contains(Chosen(), new[] { "8-ball", "9-ball", "10-ball" });
+        game.Window.Press(Key.Down);
+        game.Window.Press(Key.Enter);
+        Assert.Contains(Chosen(), new[] { "14.1 straight pool", "Snooker", "Three-cushion" });
+        game.Window.Press(Key.Up);
+        game.Window.Press(Key.Enter);
+        Assert.Contains(Chosen(), new[] { "8-ball", "9-ball", "10-ball" });
+        // And the wide window keeps them on one line.
+        game.Window.FramebufferSize = (1280, 720);
+        game.Frame();
+        Assert.Single(game.Frame().Hud!.Buttons!.Where(b => b.Label is "8-ball" or "Three-cushion").Select(b => b.Y).Distinct());
+    }
+
+    private static bool Overlap(HudButton a, HudButton b) =>
+        a.X < b.X + b.Width && b.X < a.X + a.Width && a.Y < b.Y + b.Height && b.Y < a.Y + a.Height;
+}
