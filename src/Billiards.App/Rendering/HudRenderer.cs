@@ -232,30 +232,26 @@ internal sealed class HudRenderer : IDisposable
         {
             _help.Clear();
             _out = _help;
-            // The overlay fits the window: a smaller text scale first, then lines wrapped.
+            // The overlay fits the window: a smaller text scale first, then texts wrapped.
             int helpScale = scale;
             var lines = hud.HelpLines;
-            float longest = lines.Max(HudFont.Width);
+            float longest = HelpLayout.Layout(lines, float.MaxValue, HudFont.Width).Width;
             while (helpScale > 1 && (longest * helpScale) + (4 * margin) > width)
             {
                 helpScale--;
             }
             float fit = MathF.Max(60, (width - (4 * margin)) / helpScale);
-            if (longest > fit)
-            {
-                lines = Wrap(lines, fit, HudFont.Width);
-                longest = lines.Max(HudFont.Width);
-            }
+            var (runs, across, rows) = HelpLayout.Layout(lines, fit, HudFont.Width);
             int helpLine = HudFont.LineHeight * helpScale;
-            float w = (longest * helpScale) + (4 * margin);
-            float h = (lines.Count * helpLine) + (4 * margin);
+            float w = (across * helpScale) + (4 * margin);
+            float h = (rows * helpLine) + (4 * margin);
             float x = MathF.Max(0, (width - w) / 2), y = MathF.Max(0, (height - h) / 2);
             // Opaque: the layer copies it back instead of blending the largest panel (HudLayer).
             Rect(x, y, w, h, new Vector4(0.02f, 0.03f, 0.02f, 1));
             Rect(x, y, w, scale, new Vector4(0.8f, 0.7f, 0.3f, 1));
-            for (int i = 0; i < lines.Count; i++)
+            foreach (var run in runs)
             {
-                Text(lines[i], x + (2 * margin), y + (2 * margin) + (i * helpLine), helpScale, textColor);
+                Text(run.Text, x + (2 * margin) + (run.X * helpScale), y + (2 * margin) + (run.Row * helpLine), helpScale, run.Title ? Gold : textColor);
             }
             _out = _vertices;
             _helpLayer.Draw(_help, Floats, width, height, _submitHelp);
