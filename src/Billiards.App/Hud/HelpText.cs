@@ -72,6 +72,6 @@ public static class HelpText
         "  U            mute / unmute the sound",
         "  H or F1      show / hide this help",
         "  F11          fullscreen",
-        "  Escape       menu: resume, restart, quit (quit asks first)",
+        "  Escape       menu: resume, restart, the start menu (M), quit (quit asks first)",
     ];
 }

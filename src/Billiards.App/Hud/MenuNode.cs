@@ -14,7 +14,7 @@ public enum MenuPage
 {
     /// <summary>No menu: the game.</summary>
     None,
-    /// <summary>The pause menu: resume, restart, quit.</summary>
+    /// <summary>The pause menu: resume, restart, the start menu, quit.</summary>
     Pause,
     /// <summary>Quit asks first.</summary>
     ConfirmQuit,
@@ -37,7 +37,7 @@ public enum MenuPage
 }
 
 /// <summary>
-/// The pause menu (Escape: resume, restart, quit; quit asks before it quits), the buttons of
+/// The pause menu (Escape: resume, restart, the start menu, quit; quit asks before it quits), the buttons of
 /// the incoming player's options, and at game over Rematch (Enter) and Menu (M) under the result panel. Buttons are laid out here in pixels and hit-tested against the
 /// same rectangles the HUD draws; each also has its key (Escape, R, Q, Y, N; 1-5 for the options).
 /// While a menu is open the game is paused and takes no other input but the help (H or F1).
@@ -195,6 +195,9 @@ public sealed partial class MenuNode : Node
                     case Key.R:
                         Restart();
                         break;
+                    case MenuKey when CanLeaveForStart:
+                        Go(MenuPage.Start);
+                        break;
                     case Key.Q:
                         AskQuit();
                         break;
@@ -220,6 +223,10 @@ public sealed partial class MenuNode : Node
         _keys.Loop.Paused = true;
         Page = MenuPage.Pause;
     }
+
+    // The pause menu leads to the start menu (another game, practice, settings; Escape there comes
+    // back to this game) unless the game is played online: leaving it there would end it for both.
+    private bool CanLeaveForStart => _match is not { IsNetworked: true };
 
     private void Resume()
     {
@@ -315,6 +322,10 @@ public sealed partial class MenuNode : Node
                 title = "Paused";
                 items.Add(("Resume [Esc]", Resume));
                 items.Add(("Restart [R]", Restart));
+                if (CanLeaveForStart)
+                {
+                    items.Add(($"Menu [{MenuKey}]", () => Go(MenuPage.Start)));
+                }
                 items.Add(("Quit [Q]", (Action)AskQuit));
                 y = height / 2f;
                 break;

@@ -156,10 +156,10 @@ public class SystemKeysAndHudTests
         Assert.Equal(Billiards.App.Hud.MenuPage.Pause, menu.Page);
         Assert.True(game.World.Loop.Paused);
         var frame = game.Frame();
-        Assert.Equal(["Resume [Esc]", "Restart [R]", "Quit [Q]"], frame.Hud!.Buttons!.Select(b => b.Label));
+        Assert.Equal(["Resume [Esc]", "Restart [R]", "Menu [M]", "Quit [Q]"], frame.Hud!.Buttons!.Select(b => b.Label));
         Assert.Equal("Paused", frame.Hud.Title);
         // The game takes no input meanwhile.
-        game.Window.Press(Key.M);
+        game.Window.Press(Key.E);
         Assert.Equal(InputMode.View, game.World.InputModes.Mode);
         game.Window.Press(Key.Q);
         Assert.Equal(Billiards.App.Hud.MenuPage.ConfirmQuit, menu.Page);
@@ -178,6 +178,42 @@ public class SystemKeysAndHudTests
         Assert.False(game.Window.Closed);
         Click(game, menu.CentreOf("Yes")!.Value);
         Assert.True(game.Window.Closed);
+    }
+
+    [Fact]
+    public void ThePauseMenuLeadsToTheStartMenuWhoseEscapeComesBackToTheGame()
+    {
+        var scene = Billiards.Core.Scenes.SceneLoader.Load(Billiards.App.Cli.PlayCommand.FindRulesScene(Billiards.Core.Rules.GameRules.NineBall));
+        using var game = new TestGame(scene, new Billiards.App.Game.MatchSetup(Billiards.Core.Rules.GameRules.NineBall, [new Billiards.Core.Rules.Seat("Anna"), new Billiards.Core.Rules.Seat("Computer L2", 2)]));
+        var menu = game.World.Menu;
+        var match = game.World.Tree.Root.GetInTree<Billiards.App.Game.MatchNode>();
+        var session = match.Session;
+        game.Window.Press(Key.Escape);
+        game.Window.Press(Key.M);
+        Assert.Equal(Billiards.App.Hud.MenuPage.Start, menu.Page);
+        Assert.True(game.World.Loop.Paused);
+        Assert.Contains(game.Frame().Hud!.Buttons!, b => b.Label == "Play");
+        game.Window.Press(Key.Escape);
+        Assert.Equal(Billiards.App.Hud.MenuPage.None, menu.Page);
+        Assert.False(game.World.Loop.Paused);
+        Assert.Same(session, match.Session);
+        // By the mouse too.
+        game.Window.Press(Key.Escape);
+        game.Frame();
+        Click(game, menu.CentreOf("Menu [M]")!.Value);
+        Assert.Equal(Billiards.App.Hud.MenuPage.Start, menu.Page);
+    }
+
+    [Fact]
+    public void AnOnlineGamesPauseMenuHasNoWayToTheStartMenu()
+    {
+        var scene = Billiards.Core.Scenes.SceneLoader.Load(Billiards.App.Cli.PlayCommand.FindRulesScene(Billiards.Core.Rules.GameRules.EightBall));
+        using var game = new TestGame(scene, new Billiards.App.Game.MatchSetup(Billiards.Core.Rules.GameRules.EightBall, [new Billiards.Core.Rules.Seat("Anna"), new Billiards.Core.Rules.Seat("Ben") { Kind = Billiards.Core.Rules.SeatKind.Remote }]));
+        var menu = game.World.Menu;
+        game.Window.Press(Key.Escape);
+        Assert.DoesNotContain(game.Frame().Hud!.Buttons!, b => b.Label.StartsWith("Menu", StringComparison.Ordinal));
+        game.Window.Press(Key.M);
+        Assert.Equal(Billiards.App.Hud.MenuPage.Pause, menu.Page);
     }
 
     [Fact]
