@@ -23,7 +23,7 @@ namespace Billiards.App.Cli;
 /// starts working, and writes its files with <see cref="OutputFiles.Write"/> (temporary file beside
 /// the target, then a rename).
 /// </remarks>
-public static class CommandLine
+public static partial class CommandLine
 {
     /// <summary>Exit code for bad input (scene or arguments).</summary>
     public const int BadInput = 2;
@@ -36,20 +36,7 @@ public static class CommandLine
     {
         try
         {
-            var root = new RootCommand(VerbHelp.Root)
-            {
-                SimulateCommand.Create(stdout, stderr),
-                RenderCommand.Create(stdout),
-                RenderAudioCommand.Create(),
-                ReportCommand.Create(stdout, stderr),
-                SuggestCommand.Create(stdout),
-                SelfplayCommand.Create(stdout, stderr),
-                ReplayCommand.Create(stdout),
-            };
-            PlayCommand.AddTo(root);
-            NetCommands.AddTo(root, stdout, stderr);
-            VersionLine.Install(root);
-            var parse = root.Parse(args);
+            var parse = Root(stdout, stderr).Parse(args);
             if (parse.Errors.Count > 0)
             {
                 return Fail(stderr, $"billiards: {Plain(parse.Errors[0].Message)}", BadInput);
@@ -61,6 +48,25 @@ public static class CommandLine
             var (message, code) = Classify(e);
             return Fail(stderr, message, code);
         }
+    }
+
+    /// <summary>The program's command: every verb with its options.</summary>
+    internal static RootCommand Root(TextWriter stdout, TextWriter stderr)
+    {
+        var root = new RootCommand(VerbHelp.Root)
+        {
+            SimulateCommand.Create(stdout, stderr),
+            RenderCommand.Create(stdout),
+            RenderAudioCommand.Create(),
+            ReportCommand.Create(stdout, stderr),
+            SuggestCommand.Create(stdout),
+            SelfplayCommand.Create(stdout, stderr),
+            ReplayCommand.Create(stdout),
+        };
+        PlayCommand.AddTo(root);
+        NetCommands.AddTo(root, stdout, stderr);
+        VersionLine.Install(root);
+        return root;
     }
 
     /// <summary>The line a user sees for an exception, and the exit code (see the remarks of <see cref="CommandLine"/>).</summary>
@@ -93,10 +99,20 @@ public static class CommandLine
         message.Replace("\r\n", " ", StringComparison.Ordinal).Replace('\n', ' ').Replace('\r', ' ');
 
     // System.CommandLine names CLR types in its messages ("System.Nullable`1[System.Double]").
-    private static string Plain(string message) =>
-        message.Replace("'System.Nullable`1[System.Double]'", "number").Replace("'System.Double'", "number")
-               .Replace("'System.Nullable`1[System.Int32]'", "whole number").Replace("'System.Int32'", "whole number")
-               .Replace("'System.Int64'", "whole number");
+    /// <summary>
+    /// A parse error in a player's words: the .NET type an option expects ("'System.Nullable`1[System.Int64]'")
+    /// named as "number" or "whole number".
+    /// </summary>
+    internal static string Plain(string message) => TypeName().Replace(message, m => m.Groups[1].Value switch
+    {
+        "Double" or "Single" or "Decimal" => "number",
+        "Int16" or "Int32" or "Int64" or "UInt16" or "UInt32" or "UInt64" or "Byte" or "SByte" => "whole number",
+        "Boolean" => "true or false",
+        string other => other.ToLowerInvariant(),
+    });
+
+    [System.Text.RegularExpressions.GeneratedRegex(@"'System\.(?:Nullable`1\[System\.)?(\w+)\]?'")]
+    private static partial System.Text.RegularExpressions.Regex TypeName();
 }
 
 /// <summary>A bad command-line argument, reported as one line with exit code 2.</summary>
