@@ -39,7 +39,17 @@ public static partial class CommandLine
             var parse = Root(stdout, stderr).Parse(args);
             if (parse.Errors.Count > 0)
             {
-                return Fail(stderr, $"billiards: {Plain(parse.Errors[0].Message)}", BadInput);
+                // A verb of subcommands alone ("report"): which ones there are, not "Required command was not provided".
+                var command = parse.CommandResult.Command;
+                string message = Plain(parse.Errors[0].Message);
+                if (command is { Action: null, Subcommands.Count: > 0 })
+                {
+                    string names = string.Join(", ", command.Subcommands.Where(c => !c.Hidden).Select(c => c.Name));
+                    message = parse.UnmatchedTokens.Count == 0
+                        ? $"{command.Name}: expected one of {names} (billiards {command.Name} --help)"
+                        : $"{command.Name} {parse.UnmatchedTokens[0]}: not one of {names} (billiards {command.Name} --help)";
+                }
+                return Fail(stderr, $"billiards: {message}", BadInput);
             }
             return parse.Invoke(new InvocationConfiguration { Output = stdout, Error = stderr, EnableDefaultExceptionHandler = false });
         }

@@ -4,11 +4,12 @@ using Billiards.App.Cli;
 namespace Billiards.App.Tests.Cli;
 
 /// <summary>
-/// Every option of every verb that takes a number, given a word instead, is refused in a player's
-/// words: "number" or "whole number", never the .NET type the parser names
-/// ("System.Nullable`1[System.Int64]"), on one line with exit 2.
+/// The parser's errors in a player's words, on one line with exit 2: every option of every verb
+/// that takes a number, given a word instead, says "number" or "whole number", never the .NET type
+/// the parser names ("System.Nullable`1[System.Int64]"); a verb of subcommands alone (report)
+/// given none, or one it lacks, lists its subcommands.
 /// </summary>
-public sealed class NumberOptionTests
+public sealed class ParseErrorTests
 {
     private static readonly Type[] Whole = [typeof(int), typeof(long), typeof(short), typeof(uint), typeof(ulong), typeof(ushort), typeof(byte)];
     private static readonly Type[] Real = [typeof(double), typeof(float), typeof(decimal)];
@@ -57,5 +58,18 @@ public sealed class NumberOptionTests
         Assert.Equal(CommandLine.BadInput, code);
         Assert.Equal("", stdout);
         Assert.Equal("billiards: Cannot parse argument 'abc' for option '--seed' as expected type whole number.", stderr.TrimEnd('\n'));
+    }
+
+    [Theory]
+    [InlineData(new string[] { "report" }, "billiards: report: expected one of accuracy, cushions, reality, snookers, ai (billiards report --help)")]
+    [InlineData(new string[] { "report", "nope" }, "billiards: report nope: not one of accuracy, cushions, reality, snookers, ai (billiards report --help)")]
+    public void AVerbOfSubcommandsGivenNoneOrAnUnknownOneListsThem(string[] args, string expected)
+    {
+        var (code, stdout, stderr) = CliRun.Run(args);
+        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal("", stdout);
+        Assert.Equal(expected, stderr.TrimEnd('\n'));
+        var names = CommandLine.Root(TextWriter.Null, TextWriter.Null).Subcommands.Single(c => c.Name == "report").Subcommands.Select(c => c.Name);
+        Assert.All(names, n => Assert.Contains(n, stderr, StringComparison.Ordinal));
     }
 }
