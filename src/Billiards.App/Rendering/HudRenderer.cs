@@ -541,32 +541,22 @@ internal sealed class HudRenderer : IDisposable
             Text(b.Label, b.X + ((b.Width - lw) / 2), b.Y + ((b.Height - line) / 2) + u, scale, ink, shadow: !b.Chosen);
             return;
         }
-        float pad = 4 * u;
-        float pw = b.Width - (2 * pad), ph = pw * 0.5f;
-        Picture(b.Picture, b.X + pad, b.Y + pad, pw, ph, scale);
-        float ty = b.Y + pad + ph + (2 * u);
-        var title = Wrap([b.Label], (b.Width - (2 * pad)) / scale, HudFont.Width);
-        foreach (string t in title)
+        // A card: drawn at its own text scale, as the menu measured it (CardLayout).
+        int cardScale = b.TextScale ?? scale;
+        float pad = CardLayout.Pad(cardScale);
+        float pw = b.Width - (2 * pad), ph = CardLayout.PictureHeight(b.Width, cardScale);
+        Picture(b.Picture, b.X + pad, b.Y + pad, pw, ph, cardScale);
+        float ty = b.Y + pad + ph + (2 * cardScale);
+        var lines = CardLayout.Text(b.Label, b.Note, b.Width, cardScale);
+        foreach (string t in lines.Title)
         {
-            Text(t, b.X + pad, ty, scale, Gold);
-            ty += line;
+            Text(t, b.X + pad, ty, lines.TitleScale, Gold);
+            ty += HudFont.LineHeight * lines.TitleScale;
         }
-        if (b.Note is { } note)
+        foreach (string l in lines.Note)
         {
-            // The goal in smaller text where the scale allows, every word of it.
-            int small = Math.Max(1, scale - 1);
-            float room = b.Y + b.Height - pad - ty;
-            var lines = Wrap([note], (b.Width - (2 * pad)) / small, HudFont.Width);
-            if (small < scale && lines.Count * HudFont.LineHeight * small > room)
-            {
-                small = Math.Max(1, small - 1);
-                lines = Wrap([note], (b.Width - (2 * pad)) / small, HudFont.Width);
-            }
-            foreach (string l in lines)
-            {
-                Text(l, b.X + pad, ty, small, text, shadow: false);
-                ty += HudFont.LineHeight * small;
-            }
+            Text(l, b.X + pad, ty, lines.NoteScale, text, shadow: false);
+            ty += HudFont.LineHeight * lines.NoteScale;
         }
     }
 

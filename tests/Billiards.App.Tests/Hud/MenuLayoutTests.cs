@@ -31,6 +31,7 @@ public sealed class MenuLayoutTests
     {
         using var game = new TestGame();
         game.Window.FramebufferSize = (width, height);
+        game.World.Menu.DrillGallery = Billiards.App.Practice.DrillLibrary.All();
         game.World.Menu.ShowStart(page);
         game.Frame();
         var buttons = game.Frame().Hud!.Buttons!;
@@ -86,6 +87,36 @@ public sealed class MenuLayoutTests
         game.Window.FramebufferSize = (1280, 720);
         game.Frame();
         Assert.Single(game.Frame().Hud!.Buttons!.Where(b => b.Label is "8-ball" or "Three-cushion").Select(b => b.Y).Distinct());
+    }
+
+    [Theory]
+    [InlineData(1280, 720, 2)]
+    [InlineData(1000, 760, 1)]
+    [InlineData(900, 720, 1)]
+    [InlineData(900, 560, 1)]
+    [InlineData(800, 600, 1)]
+    [InlineData(1920, 1080, 2)]
+    public void EveryDrillsTitleAndGoalLieInsideItsCard(int width, int height, int titleScale)
+    {
+        using var game = new TestGame();
+        game.Window.FramebufferSize = (width, height);
+        game.World.Menu.DrillGallery = Billiards.App.Practice.DrillLibrary.All();
+        game.World.Menu.ShowStart(MenuPage.Drills);
+        game.Frame();
+        var cards = game.Frame().Hud!.Buttons!.Where(b => b.Picture is not null).ToList();
+        Assert.Equal(game.World.Menu.DrillGallery.Count, cards.Count);
+        Assert.True(cards.Count >= 17, $"{cards.Count} drills");
+        foreach (var card in cards)
+        {
+            int scale = Assert.IsType<int>(card.TextScale);
+            Assert.Equal(titleScale, scale);
+            float needed = CardLayout.Height(card.Label, card.Note, card.Width, scale);
+            Assert.True(needed <= card.Height + 0.01f, $"{width}x{height}: \"{card.Label}\" needs {needed} px, its card is {card.Height}");
+            Assert.True(CardLayout.TitleWordsFit(card.Label, card.Width, scale), $"{width}x{height}: a word of \"{card.Label}\" is broken");
+            // Every word of the goal is drawn.
+            var lines = CardLayout.Text(card.Label, card.Note, card.Width, scale);
+            Assert.Equal(card.Note!.Split(' ', StringSplitOptions.RemoveEmptyEntries), lines.Note.SelectMany(l => l.Split(' ', StringSplitOptions.RemoveEmptyEntries)));
+        }
     }
 
     private static bool Overlap(HudButton a, HudButton b) =>
