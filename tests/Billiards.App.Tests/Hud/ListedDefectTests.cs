@@ -172,18 +172,41 @@ public class ListedDefectTests
             game.Frame();
         }
         Assert.Equal(DrillLibrary.All()[1].Name, practice);
-        // Play: Enter, the focus on Start; Up to the opponents, Up to the games, Right to 9-ball, Enter chooses it; Down twice, Enter starts.
+        // Play: Enter, the focus on Start; Up to the opponents, Up to the games (one line or more,
+        // as the window's width and the registered games make it), Left to the first game, Right
+        // to 9-ball, Enter chooses it; Down to Start, Enter starts.
         game.World.Menu.ShowStart();
         game.Frame();
         game.Window.Press(Key.Enter);
         game.Frame();
         Assert.Equal(MenuPage.Play, game.World.Menu.Page);
         Assert.Equal("Start", game.World.Menu.FocusedLabel);
-        foreach (var key in new[] { Key.Up, Key.Up, Key.Left, Key.Left, Key.Left, Key.Left, Key.Left, Key.Left, Key.Right, Key.Enter, Key.Down, Key.Down, Key.Enter })
+        void Press(Key key)
         {
             game.Window.Press(key);
             game.Frame();
         }
+        Press(Key.Up);
+        Assert.Matches("^(Person|Computer [1-5])$", game.World.Menu.FocusedLabel);
+        Press(Key.Up);
+        for (int i = 0; i < Ruleset.All.Count; i++)
+        {
+            Press(Key.Left);
+        }
+        Assert.Equal("8-ball", game.World.Menu.FocusedLabel);
+        Press(Key.Right);
+        Assert.Equal("9-ball", game.World.Menu.FocusedLabel);
+        Press(Key.Enter);
+        for (int i = 0; i < 4 && game.World.Menu.FocusedLabel is not ("Start" or "Back"); i++)
+        {
+            Press(Key.Down);
+        }
+        if (game.World.Menu.FocusedLabel == "Back")
+        {
+            Press(Key.Left);
+        }
+        Assert.Equal("Start", game.World.Menu.FocusedLabel);
+        Press(Key.Enter);
         Assert.Equal(GameRules.NineBall, started);
     }
 }
