@@ -228,33 +228,37 @@ public sealed partial class MenuNode
 
     /// <summary>
     /// The gallery's grid in <paramref name="width"/> by <paramref name="room"/> pixels: the largest
-    /// text scale, then the fewest columns (at least four), whose cards hold every drill's title
-    /// (no word broken) and goal; where none fits, the smallest text in the grid that overflows least.
+    /// title, then the largest goal (the title's scale or one less), then the fewest columns (at
+    /// least four), whose cards hold every drill's title (no word broken between letters) and goal;
+    /// where none fits, the smallest text in the grid that overflows least.
     /// </summary>
-    internal static (int Columns, float CardWidth, float CardHeight, int TextScale) Gallery(IReadOnlyList<Drill> drills, float width, float room, float gap, int scale)
+    internal static (int Columns, float CardWidth, float CardHeight, int TextScale, int NoteScale) Gallery(IReadOnlyList<Drill> drills, float width, float room, float gap, int scale)
     {
-        (int, float, float, int)? best = null;
+        (int, float, float, int, int)? best = null;
         float bestHeight = float.MaxValue;
         for (int textScale = scale; textScale >= 1; textScale--)
         {
-            for (int columns = Math.Min(4, Math.Max(1, drills.Count)); columns <= Math.Max(4, drills.Count); columns++)
+            for (int noteScale = textScale; noteScale >= Math.Max(1, textScale - 1); noteScale--)
             {
-                float cardW = MathF.Min(150 * textScale, (width - ((columns + 1) * gap)) / columns);
-                float cardH = drills.Select(d => CardLayout.Height(d.Title, d.Goal, cardW, textScale)).DefaultIfEmpty(0).Max();
-                int rows = Math.Max(1, (drills.Count + columns - 1) / columns);
-                float needed = rows * (cardH + gap);
-                if (needed <= room && drills.All(d => CardLayout.TitleWordsFit(d.Title, cardW, textScale)))
+                for (int columns = Math.Min(4, Math.Max(1, drills.Count)); columns <= Math.Max(4, drills.Count); columns++)
                 {
-                    return (columns, cardW, cardH, textScale);
-                }
-                if (textScale == 1 && needed < bestHeight)
-                {
-                    bestHeight = needed;
-                    best = (columns, cardW, cardH, textScale);
+                    float cardW = MathF.Min(150 * textScale, (width - ((columns + 1) * gap)) / columns);
+                    float cardH = drills.Select(d => CardLayout.Height(d.Title, d.Goal, cardW, textScale, noteScale)).DefaultIfEmpty(0).Max();
+                    int rows = Math.Max(1, (drills.Count + columns - 1) / columns);
+                    float needed = rows * (cardH + gap);
+                    if (needed <= room && drills.All(d => CardLayout.TitleWordsFit(d.Title, cardW, textScale)))
+                    {
+                        return (columns, cardW, cardH, textScale, noteScale);
+                    }
+                    if (textScale == 1 && needed < bestHeight)
+                    {
+                        bestHeight = needed;
+                        best = (columns, cardW, cardH, textScale, noteScale);
+                    }
                 }
             }
         }
-        return best ?? (4, 150, 150, 1);
+        return best ?? (4, 150, 150, 1, 1);
     }
 
     private void LayoutStart()
@@ -266,9 +270,9 @@ public sealed partial class MenuNode
         float cx = width / 2f;
         _rowOf.Clear();
         int row = 0;
-        void Add(float x, float y, float w, float h, string label, Action act, bool chosen = false, string? note = null, HudPicture? picture = null, int? textScale = null)
+        void Add(float x, float y, float w, float h, string label, Action act, bool chosen = false, string? note = null, HudPicture? picture = null, int? textScale = null, int? noteScale = null)
         {
-            _buttons.Add((new HudButton(x, y, w, h, label) { Chosen = chosen, Note = note, Picture = picture, TextScale = textScale }, act));
+            _buttons.Add((new HudButton(x, y, w, h, label) { Chosen = chosen, Note = note, Picture = picture, TextScale = textScale, NoteScale = noteScale }, act));
             _rowOf.Add(row);
         }
         // A row of buttons of one width, centred; wrapped into lines of about equal count when
@@ -353,7 +357,7 @@ public sealed partial class MenuNode
             {
                 // A gallery of cards, each the drill's position from above, its title and its goal,
                 // every word inside its card: as large a text and as few columns as the window holds.
-                var (columns, cardW, cardH, textScale) = Gallery(DrillGallery, width, height - y - buttonH - (2 * gap), gap, scale);
+                var (columns, cardW, cardH, textScale, noteScale) = Gallery(DrillGallery, width, height - y - buttonH - (2 * gap), gap, scale);
                 int count = DrillGallery.Count;
                 int rows = Math.Max(1, (count + columns - 1) / columns);
                 for (int r = 0; r < rows; r++)
@@ -364,7 +368,7 @@ public sealed partial class MenuNode
                     for (int k = 0; k < inRow; k++)
                     {
                         var drill = DrillGallery[(r * columns) + k];
-                        Add(x, y, cardW, cardH, drill.Title, () => RequestPractice(drill.Name), note: drill.Goal, picture: PictureOf(drill), textScale: textScale);
+                        Add(x, y, cardW, cardH, drill.Title, () => RequestPractice(drill.Name), note: drill.Goal, picture: PictureOf(drill), textScale: textScale, noteScale: noteScale);
                         x += cardW + gap;
                     }
                     row++;

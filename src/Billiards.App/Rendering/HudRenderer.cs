@@ -547,7 +547,7 @@ internal sealed class HudRenderer : IDisposable
         float pw = b.Width - (2 * pad), ph = CardLayout.PictureHeight(b.Width, cardScale);
         Picture(b.Picture, b.X + pad, b.Y + pad, pw, ph, cardScale);
         float ty = b.Y + pad + ph + (2 * cardScale);
-        var lines = CardLayout.Text(b.Label, b.Note, b.Width, cardScale);
+        var lines = CardLayout.Text(b.Label, b.Note, b.Width, cardScale, b.NoteScale ?? Math.Max(1, cardScale - 1));
         foreach (string t in lines.Title)
         {
             Text(t, b.X + pad, ty, lines.TitleScale, Gold);

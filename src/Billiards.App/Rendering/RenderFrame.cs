@@ -144,8 +144,11 @@ public readonly record struct HudButton(float X, float Y, float Width, float Hei
     /// <summary>A picture above the label (a drill's position), or null.</summary>
     public HudPicture? Picture { get; init; }
 
-    /// <summary>A card's text scale (its title; its goal one smaller, see <see cref="CardLayout"/>), or null for the HUD's.</summary>
+    /// <summary>A card's text scale (its title, its margins and picture; see <see cref="CardLayout"/>), or null for the HUD's.</summary>
     public int? TextScale { get; init; }
+
+    /// <summary>A card's goal's text scale, or null for one smaller than <see cref="TextScale"/> (at least 1).</summary>
+    public int? NoteScale { get; init; }
 
     /// <summary>True when the pixel lies on the button.</summary>
     public bool Contains(Vector2 p) => p.X >= X && p.X < X + Width && p.Y >= Y && p.Y < Y + Height;

@@ -107,11 +107,11 @@ public sealed class MenuLayoutTests
 
     [Theory]
     [InlineData(1280, 720, 2)]
-    [InlineData(1000, 760, 1)]
+    [InlineData(1000, 760, 2)]
     [InlineData(900, 720, 1)]
     [InlineData(900, 560, 1)]
     [InlineData(800, 600, 1)]
-    [InlineData(1920, 1080, 2)]
+    [InlineData(1920, 1080, 3)]
     public void EveryDrillsTitleAndGoalLieInsideItsCard(int width, int height, int titleScale)
     {
         using var game = new TestGame();
@@ -125,14 +125,33 @@ public sealed class MenuLayoutTests
         foreach (var card in cards)
         {
             int scale = Assert.IsType<int>(card.TextScale);
+            int noteScale = Assert.IsType<int>(card.NoteScale);
             Assert.Equal(titleScale, scale);
-            float needed = CardLayout.Height(card.Label, card.Note, card.Width, scale);
+            Assert.InRange(noteScale, Math.Max(1, scale - 1), scale);
+            float needed = CardLayout.Height(card.Label, card.Note, card.Width, scale, noteScale);
             Assert.True(needed <= card.Height + 0.01f, $"{width}x{height}: \"{card.Label}\" needs {needed} px, its card is {card.Height}");
             Assert.True(CardLayout.TitleWordsFit(card.Label, card.Width, scale), $"{width}x{height}: a word of \"{card.Label}\" is broken");
             // Every word of the goal is drawn.
-            var lines = CardLayout.Text(card.Label, card.Note, card.Width, scale);
+            var lines = CardLayout.Text(card.Label, card.Note, card.Width, scale, noteScale);
+            Assert.Equal(card.Label.Replace(" ", "", StringComparison.Ordinal), string.Concat(lines.Title).Replace(" ", "", StringComparison.Ordinal));
             Assert.Equal(card.Note!.Split(' ', StringSplitOptions.RemoveEmptyEntries), lines.Note.SelectMany(l => l.Split(' ', StringSplitOptions.RemoveEmptyEntries)));
         }
+    }
+
+    [Fact]
+    public void ACardsTitleBreaksAfterAHyphenNeverBetweenLetters()
+    {
+        const int Scale = 2;
+        float width = (HudFont.Width("Long-short-") * Scale) + (2 * CardLayout.Pad(Scale)) + 1;
+        var lines = CardLayout.Text("Long-short-long", null, width, Scale, Scale);
+        Assert.Equal(["Long-short-", "long"], lines.Title);
+        Assert.True(CardLayout.TitleWordsFit("Long-short-long", width, Scale));
+        // Narrower than "Long-short-", wider than each part: a part to a line.
+        float narrow = (HudFont.Width("short-") * Scale) + (2 * CardLayout.Pad(Scale)) + 1;
+        Assert.Equal(["Long-", "short-", "long"], CardLayout.Text("Long-short-long", null, narrow, Scale, Scale).Title);
+        // A word without a hyphen too wide for the card does not fit (the gallery then picks another grid).
+        Assert.False(CardLayout.TitleWordsFit("Umbrella", (HudFont.Width("Umbr") * Scale) + (2 * CardLayout.Pad(Scale)), Scale));
+        Assert.Equal(["Side pocket", "hold"], CardLayout.Text("Side pocket hold", null, (HudFont.Width("Side pocket") * Scale) + (2 * CardLayout.Pad(Scale)) + 1, Scale, Scale).Title);
     }
 
     private static bool Overlap(HudButton a, HudButton b) =>
