@@ -261,6 +261,20 @@ public sealed partial class MenuNode
         return best ?? (4, 150, 150, 1, 1);
     }
 
+    // The last grid Gallery chose and what it was chosen for: the menu lays out every frame, the
+    // search measures every drill's text in many grids, and only a new window size or gallery changes it.
+    private (IReadOnlyList<Drill> Drills, float Width, float Room, float Gap, int Scale, (int, float, float, int, int) Grid)? _gallery;
+
+    private (int Columns, float CardWidth, float CardHeight, int TextScale, int NoteScale) GalleryGrid(float width, float room, float gap, int scale)
+    {
+        if (_gallery is not { } g || !ReferenceEquals(g.Drills, DrillGallery) || g.Width != width || g.Room != room || g.Gap != gap || g.Scale != scale)
+        {
+            g = (DrillGallery, width, room, gap, scale, Gallery(DrillGallery, width, room, gap, scale));
+            _gallery = g;
+        }
+        return g.Grid;
+    }
+
     private void LayoutStart()
     {
         var (width, height) = _size;
@@ -275,6 +289,26 @@ public sealed partial class MenuNode
             _buttons.Add((new HudButton(x, y, w, h, label) { Chosen = chosen, Note = note, Picture = picture, TextScale = textScale, NoteScale = noteScale }, act));
             _rowOf.Add(row);
         }
+        // Items of one size in lines of perLine (at least one line), each line centred; add places
+        // item k at x, y. Returns the y below the last line.
+        float Lines(float y, float w, float h, int count, int perLine, Action<int, float, float> add)
+        {
+            int start = 0;
+            do
+            {
+                int inLine = Math.Min(perLine, count - start);
+                float x = cx - (((inLine * w) + ((inLine - 1) * gap)) / 2);
+                for (int k = start; k < start + inLine; k++, x += w + gap)
+                {
+                    add(k, x, y);
+                }
+                row++;
+                y += h + gap;
+                start += perLine;
+            }
+            while (start < count);
+            return y;
+        }
         // A row of buttons of one width, centred; wrapped into lines of about equal count when
         // the window is too narrow for it (six games in two lines of three, not one cut off).
         float Row(float y, float w, IReadOnlyList<(string Label, Action Act, bool Chosen)> items)
@@ -283,20 +317,7 @@ public sealed partial class MenuNode
             int fit = Math.Clamp((int)((room + gap) / (w + gap)), 1, Math.Max(1, items.Count));
             int lines = Math.Max(1, (items.Count + fit - 1) / fit);
             int perLine = (items.Count + lines - 1) / lines;
-            for (int start = 0; start < items.Count; start += perLine)
-            {
-                int inLine = Math.Min(perLine, items.Count - start);
-                float total = (inLine * w) + ((inLine - 1) * gap);
-                float x = cx - (total / 2);
-                for (int k = start; k < start + inLine; k++)
-                {
-                    var (label, act, chosen) = items[k];
-                    Add(x, y, w, buttonH, label, act, chosen);
-                    x += w + gap;
-                }
-                row++;
-                y += buttonH + gap;
-            }
+            Lines(y, w, buttonH, items.Count, perLine, (k, x, ky) => Add(x, ky, w, buttonH, items[k].Label, items[k].Act, items[k].Chosen));
             return (lines - 1) * (buttonH + gap);
         }
         float top = MathF.Max(line, height * 0.08f);
@@ -357,23 +378,12 @@ public sealed partial class MenuNode
             {
                 // A gallery of cards, each the drill's position from above, its title and its goal,
                 // every word inside its card: as large a text and as few columns as the window holds.
-                var (columns, cardW, cardH, textScale, noteScale) = Gallery(DrillGallery, width, height - y - buttonH - (2 * gap), gap, scale);
-                int count = DrillGallery.Count;
-                int rows = Math.Max(1, (count + columns - 1) / columns);
-                for (int r = 0; r < rows; r++)
+                var (columns, cardW, cardH, textScale, noteScale) = GalleryGrid(width, height - y - buttonH - (2 * gap), gap, scale);
+                y = Lines(y, cardW, cardH, DrillGallery.Count, columns, (k, x, ky) =>
                 {
-                    int inRow = Math.Min(columns, count - (r * columns));
-                    float total = (inRow * cardW) + ((inRow - 1) * gap);
-                    float x = cx - (total / 2);
-                    for (int k = 0; k < inRow; k++)
-                    {
-                        var drill = DrillGallery[(r * columns) + k];
-                        Add(x, y, cardW, cardH, drill.Title, () => RequestPractice(drill.Name), note: drill.Goal, picture: PictureOf(drill), textScale: textScale, noteScale: noteScale);
-                        x += cardW + gap;
-                    }
-                    row++;
-                    y += cardH + gap;
-                }
+                    var drill = DrillGallery[k];
+                    Add(x, ky, cardW, cardH, drill.Title, () => RequestPractice(drill.Name), note: drill.Goal, picture: PictureOf(drill), textScale: textScale, noteScale: noteScale);
+                });
                 Row(y, wide, [("Back", Back, false)]);
                 break;
             }

@@ -235,13 +235,14 @@ internal sealed class HudRenderer : IDisposable
             // The overlay fits the window: a smaller text scale first, then texts wrapped.
             int helpScale = scale;
             var lines = hud.HelpLines;
-            float longest = HelpLayout.Layout(lines, float.MaxValue, HudFont.Width).Width;
-            while (helpScale > 1 && (longest * helpScale) + (4 * margin) > width)
+            var natural = HelpLayout.Layout(lines, float.MaxValue, HudFont.Width);
+            while (helpScale > 1 && (natural.Width * helpScale) + (4 * margin) > width)
             {
                 helpScale--;
             }
             float fit = MathF.Max(60, (width - (4 * margin)) / helpScale);
-            var (runs, across, rows) = HelpLayout.Layout(lines, fit, HudFont.Width);
+            // Laid out again only when the texts must wrap.
+            var (runs, across, rows) = natural.Width <= fit ? natural : HelpLayout.Layout(lines, fit, HudFont.Width);
             int helpLine = HudFont.LineHeight * helpScale;
             float w = (across * helpScale) + (4 * margin);
             float h = (rows * helpLine) + (4 * margin);
