@@ -81,6 +81,9 @@ public sealed class NetPlay
 
     private Connection? _connection;
 
+    // True while the host's game is being taken (its shots are played here again).
+    private bool _taking;
+
     /// <summary>Mismatches found so far.</summary>
     public int Mismatches { get; private set; }
 
@@ -153,10 +156,15 @@ public sealed class NetPlay
     /// <summary>Sends the local seat's choice after the last ruling.</summary>
     public void SendChoice(RefereeOption option) => Send(new Choice(NextShot - 1, option.ToName()));
 
-    /// <summary>After a judged shot: sends its hashes and compares them with the peer's when both are in.</summary>
+    /// <summary>After a judged shot: sends its hashes and compares them with the peer's when both are in (not for the host's shots played again while its game is taken).</summary>
     public void Judged(MatchShot played)
     {
         ArgumentNullException.ThrowIfNull(played);
+        if (_taking)
+        {
+            // The host's shots played again while its game is taken: the host has their hashes.
+            return;
+        }
         int n = NextShot - 1;
         var hashes = Hashes(played);
         _mine[n] = hashes;
@@ -390,16 +398,34 @@ public sealed class NetPlay
             Hostile(connection, "resync of another game, or while a shot runs");
             return;
         }
-        if (Session.Shots.Count == 0)
+        // The host's game is played on a game of its own first, so that a record that cannot be
+        // played here leaves this side's game as it was. It is taken whole before its last shot,
+        // and the last shot is played here again, so that an option it left to be chosen is
+        // pending here too (a snapshot is taken between shots and holds none).
+        int last = Math.Max(0, record.Shots.Count - 1);
+        MatchSnapshot before;
+        try
         {
-            // A joiner coming back: its new game plays the host's shots itself, so it stands
-            // where the host's does, an option still to be chosen included.
-            PlayAll(Session, record);
+            var host = new Session(record.Setup, Session.Seats);
+            PlayAll(host, record, 0, last);
+            before = host.Game.Snapshot();
+            PlayAll(host, record, last, record.Shots.Count);
         }
-        else
+        catch (Exception e) when (e is InvalidOperationException or ArgumentException)
         {
-            var replay = Replay(record, Session.Seats);
-            Session.Restore(replay.Game.Snapshot());
+            // A record that reads but cannot be played (a placement where no ball is in hand).
+            Hostile(connection, $"a resync that cannot be played here ({MessageCodec.Clip(e.Message)})");
+            return;
+        }
+        _taking = true;
+        try
+        {
+            Session.Restore(before);
+            PlayAll(Session, record, last, record.Shots.Count);
+        }
+        finally
+        {
+            _taking = false;
         }
         // The hashes after the resync are the host's.
         foreach (int k in _mine.Keys.Where(k => k >= shot).ToList())
@@ -411,19 +437,10 @@ public sealed class NetPlay
         Resynced?.Invoke();
     }
 
-    /// <summary>A session of <paramref name="seats"/> that has played <paramref name="record"/>'s shots (a joiner coming back, a resync).</summary>
-    public static Session Replay(GameRecord record, IReadOnlyList<Seat> seats)
+    // Plays the record's shots [from, to) into the session, each from the seat to play, each option the record's choice.
+    private static void PlayAll(Session session, GameRecord record, int from, int to)
     {
-        ArgumentNullException.ThrowIfNull(record);
-        var session = new Session(record.Setup, seats);
-        PlayAll(session, record);
-        return session;
-    }
-
-    // Plays the record's shots into the session, each from the seat to play, each option the record's choice.
-    private static void PlayAll(Session session, GameRecord record)
-    {
-        for (int k = 0; k < record.Shots.Count; k++)
+        for (int k = from; k < to; k++)
         {
             int shot = k;
             session.Play(record.Shots[k], session.Shooter.Kind, judged => record.ChoiceAfter(shot, judged.Ruling));

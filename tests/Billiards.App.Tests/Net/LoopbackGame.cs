@@ -27,6 +27,8 @@ internal sealed class LoopbackGame : IDisposable
         describe ??= Handshake.Describe;
         Listener = new NetHost(IPAddress.Loopback, 0, () => new Hello(hostProgram ?? Handshake.ProgramVersion, Code, describe(Setup), HostSession.Shots.Count), line => Log(_hostLog, line), limits);
         Listener.PeerAdmitted += (c, _) => Host.Connection = c;
+        // Each ruling's hashes go out as the window sends them (OnlineNode).
+        HostSession.Ruled += _ => Host.Judged(HostSession.Game.Shots[^1]);
     }
 
     public GameSetup Setup { get; }
@@ -56,6 +58,7 @@ internal sealed class LoopbackGame : IDisposable
         var names = setup.Start.Players;
         JoinSession = new Session(setup, [new Seat(names.First) { Kind = SeatKind.Remote }, new Seat(names.Second)]);
         Join = new NetPlay(JoinSession, 1, isHost: false, LogJoin) { Connection = connection };
+        JoinSession.Ruled += _ => Join.Judged(JoinSession.Game.Shots[^1]);
         Assert.Equal(0, hello.Shots);
         Until(() => Host.Connection is { IsOpen: true }, "the host never admitted the joiner");
     }
@@ -85,13 +88,11 @@ internal sealed class LoopbackGame : IDisposable
             bool hostPlays = HostSession.Shooter.Kind != SeatKind.Remote;
             var (local, remote) = hostPlays ? (Host, join) : (join, Host);
             var shot = new GameShot(HostSession.Shots.Count == 0 ? new ShotSpec(8, 0) : new ShotSpec(1.5 + (_random.NextDouble() * 2), _random.NextDouble() * 360));
-            var played = local.Session.Play(shot, SeatKind.Person, _ => null);
+            local.Session.Play(shot, SeatKind.Person, _ => null);
             local.SendShot(shot);
-            local.Judged(played);
             RemoteAction? action = null;
             Until(() => (action = remote.Poll()) is not null, $"shot {k} never arrived: host {string.Join(" / ", HostLog)} join {string.Join(" / ", JoinLog)}");
-            var theirs = remote.Session.Play(action!.Shot!, SeatKind.Remote, _ => null);
-            remote.Judged(theirs);
+            remote.Session.Play(action!.Shot!, SeatKind.Remote, _ => null);
         }
         Choose();
     }

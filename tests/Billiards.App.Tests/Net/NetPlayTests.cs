@@ -108,6 +108,55 @@ public class NetPlayTests
         Assert.Equal(Record(game.HostSession), Record(game.JoinSession!));
     }
 
+    // The host's game ends at a ruling whose option is still to be chosen (a soft break: the
+    // incoming player may take the table or have it racked again) when the joiner, whose table
+    // drifted, takes it: the joiner stands there too, the same options offered, and the game goes
+    // on from the choice. (The joiner once threw here, its game's thread with it.)
+    [Fact]
+    public void AMismatchAtAPendingOptionIsResyncedWithTheOptionStillToBeChosen()
+    {
+        using var game = new LoopbackGame();
+        game.Connect();
+        ForceMismatch(game, new GameShot(new ShotSpec(0.6, 0)));
+        Assert.NotEmpty(game.HostSession.PendingOptions);
+        Assert.Equal(game.HostSession.PendingOptions, game.JoinSession!.PendingOptions);
+        Assert.Equal(game.HostSession.Shooter.Name, game.JoinSession.Shooter.Name);
+        Assert.Equal(NetPlay.Hashes(game.HostSession.Game.Shots[^1]), NetPlay.Hashes(game.JoinSession.Game.Shots[^1]));
+        // The shot played again sent no second hash of it (the host would refuse the connection).
+        LoopbackGame.Until(() => game.Host.Poll() is null && game.Join!.Poll() is null, "poll");
+        Assert.True(game.Host.Connection!.IsOpen, string.Join(" / ", game.HostLog));
+        int mismatches = game.Host.Mismatches;
+        game.Play(3);
+        Assert.Equal(Record(game.HostSession), Record(game.JoinSession));
+        Assert.Equal(mismatches, game.Host.Mismatches);
+    }
+
+    // A host's record that reads but cannot be played here (its last shot places the cue ball
+    // where no ball is in hand) closes the connection with one line and leaves the joiner's game
+    // as it stood; the joiner's game thread goes on (it once threw).
+    [Fact]
+    public void AResyncThatCannotBePlayedClosesTheConnectionWithALine()
+    {
+        using var game = new LoopbackGame();
+        game.Connect();
+        game.Play(2);
+        Assert.Empty(game.HostSession.PendingOptions);
+        string record = System.Text.Encoding.UTF8.GetString(GameRecordFile.ToUtf8(game.HostSession.Game, indented: false)).TrimEnd('\n');
+        int last = record.LastIndexOf("\"place\":null", StringComparison.Ordinal);
+        Assert.True(last > record.IndexOf("\"place\":", StringComparison.Ordinal), "the record's last shot places no ball");
+        string placed = string.Concat(record.AsSpan(0, last), "\"place\":[0.3,0.1]", record.AsSpan(last + "\"place\":null".Length));
+        string joinersBefore = Record(game.JoinSession!);
+        var parts = ResyncPacking.Pack(placed);
+        for (int k = 0; k < parts.Count; k++)
+        {
+            game.Host.Connection!.Send(new Resync(game.HostSession.Shots.Count, k, parts.Count, parts[k]));
+        }
+        LoopbackGame.Until(() => { game.Join!.Poll(); return game.Join.Connection is { IsOpen: false }; }, $"the joiner kept the connection: {string.Join(" / ", game.JoinLog)}");
+        Assert.Contains(game.JoinLog, l => l.Contains("refused: a resync that cannot be played here (", StringComparison.Ordinal));
+        Assert.Equal(0, game.Join!.Resyncs);
+        Assert.Equal(joinersBefore, Record(game.JoinSession!));
+    }
+
     [Fact]
     public void ALongGameIsResyncedInSeveralMessagesEachUnder64KB()
     {
@@ -128,20 +177,19 @@ public class NetPlayTests
 
     // The joiner's table drifts: the stroke that arrives is struck there a hair harder than it was
     // sent; the host finds the mismatch and sends its game, the joiner takes it.
-    private static void ForceMismatch(LoopbackGame game)
+    private static void ForceMismatch(LoopbackGame game, GameShot? struck = null)
     {
         var join = game.Join!;
         var host = game.Host;
         var local = host.Session.Shooter.Kind == SeatKind.Remote ? join : host;
         var remote = local == host ? join : host;
-        var shot = new GameShot(new ShotSpec(2.5, 97));
-        var played = local.Session.Play(shot, SeatKind.Person, _ => null);
+        var shot = struck ?? new GameShot(new ShotSpec(2.5, 97));
+        local.Session.Play(shot, SeatKind.Person, _ => null);
         local.SendShot(shot);
-        local.Judged(played);
         RemoteAction? action = null;
         LoopbackGame.Until(() => (action = remote.Poll()) is not null, "the stroke never arrived");
         var drifted = action!.Shot! with { Shot = action.Shot!.Shot with { Speed = action.Shot.Shot.Speed + 1e-6 } };
-        remote.Judged(remote.Session.Play(drifted, SeatKind.Remote, _ => null));
+        remote.Session.Play(drifted, SeatKind.Remote, _ => null);
         LoopbackGame.Until(() => { host.Poll(); join.Poll(); return join.Resyncs == 1; }, $"no resync came: {string.Join(" / ", game.JoinLog)}");
         Assert.Equal(1, host.Resyncs);
     }
