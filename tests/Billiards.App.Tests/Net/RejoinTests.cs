@@ -19,8 +19,11 @@ public class RejoinTests
 {
     private static readonly TimeSpan Bound = TimeSpan.FromMinutes(2);
 
-    [Fact]
-    public async Task AJoinerWhoseHostDroppedTakesUpTheGameAgainWhenTheHostIsThere()
+    // Anna breaks at 8 m/s (a legal break) or at 1 m/s (too soft: Ben, the joiner, is to choose).
+    [Theory]
+    [InlineData(Key.W, 20)]
+    [InlineData(Key.Q, 8)]
+    public async Task AJoinerWhoseHostDroppedTakesUpTheGameAgainWhenTheHostIsThere(Key power, int presses)
     {
         var log = new ConcurrentQueue<string>();
         var listening = new TaskCompletionSource<NetHost>(TaskCreationOptions.RunContinuationsAsynchronously);
@@ -38,13 +41,17 @@ public class RejoinTests
             // Anna breaks; both tables come to rest after it.
             host.Do(() =>
             {
-                for (int i = 0; i < 8; i++)
+                // Straight up the table: the camera may still be turning to the break, and its
+                // turn would be the aim at whichever frame the stroke came.
+                host.Game!.Tree.Root.FindInTree<MatchNode>()!.AimAt(0);
+                for (int i = 0; i < presses; i++)
                 {
-                    host.Window.Press(Key.W);
+                    host.Window.Press(power);
                 }
                 host.Window.Press(Key.Space);
             });
             Until(() => host.Ask(() => Rested(host)) && join.Ask(() => Rested(join)), "the break never came to rest on both sides", log);
+            Assert.Equal(0, host.Ask(() => host.Session!.Game.Shots[0].Input.Shot.AimDeg), 9);
             // The connection is cut at the host; its game waits, it still listens.
             host.Do(() => listener.Peer!.Dispose());
             Until(() => join.Ask(() => join.Online!.Watch is { Returns: 1, State: LinkState.Connected }) && host.Ask(() => host.Online!.Watch.Returns == 1), "the joiner never came back", log);
@@ -55,6 +62,16 @@ public class RejoinTests
             var joinAfter = join.Ask(() => (join.Session!.Game.Shots[0].After, join.Session.State.Shooter));
             Assert.Equal(hostAfter.Item1, joinAfter.Item1);
             Assert.Equal(hostAfter.Item2, joinAfter.Item2);
+            // An option left to be chosen is the joiner's to choose there too, and its choice reaches the host.
+            var options = host.Ask(() => host.Session!.PendingOptions.ToList());
+            Assert.Equal(options, join.Ask(() => join.Session!.PendingOptions.ToList()));
+            Assert.True((power == Key.Q) == (options.Count > 0), string.Join(",", options) + " / " + string.Join(" / ", log));
+            if (options.Count > 0)
+            {
+                join.Do(() => join.Window.Press(Key.D1));
+                Until(() => host.Ask(() => host.Session!.PendingOptions.Count == 0 && host.Session.Game.Shots[0].Input.Choice == options[0]), "the joiner's choice never reached the host", log);
+                Assert.Equal(options[0], join.Ask(() => join.Session!.Game.Shots[0].Input.Choice));
+            }
         }
         finally
         {
