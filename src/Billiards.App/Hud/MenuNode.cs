@@ -154,7 +154,12 @@ public sealed partial class MenuNode : Node
         }
         if (e is MouseMoveInput move && IsStartScreen)
         {
-            Hover(move.Position);
+            // The focus follows the pointer when it moves, not where it happened to rest when the
+            // window opened (the first report has no motion): Enter then still plays.
+            if (move.Delta != Vector2.Zero)
+            {
+                Hover(move.Position);
+            }
             return true;
         }
         if (e is KeyInput { Pressed: true } key)

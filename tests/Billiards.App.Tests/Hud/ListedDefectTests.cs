@@ -153,6 +153,28 @@ public class ListedDefectTests
         Assert.False(hud.Developer);
     }
 
+    // A window that opens under a resting pointer (on Settings, say) reports where the pointer is:
+    // that is not a choice, and Enter still opens Play; once the pointer moves, the focus follows it.
+    [Fact]
+    public void ThePointerWhereTheWindowOpenedDoesNotTakeTheStartMenusFocusUntilItMoves()
+    {
+        using var game = EightBall("Computer L3", 3);
+        game.World.Menu.ShowStart();
+        var settings = game.Frame().Hud!.Buttons!.Single(b => b.Label == "Settings");
+        game.Window.MoveTo(settings.X + (settings.Width / 2), settings.Y + (settings.Height / 2));
+        game.Frame();
+        Assert.Equal("Play", game.World.Menu.FocusedLabel);
+        game.Window.MoveTo(settings.X + (settings.Width / 2) + 3, settings.Y + (settings.Height / 2));
+        game.Frame();
+        Assert.Equal("Settings", game.World.Menu.FocusedLabel);
+        var play = game.Frame().Hud!.Buttons!.Single(b => b.Label == "Play");
+        game.Window.MoveTo(play.X + 5, play.Y + 5);
+        game.Frame();
+        game.Window.Press(Key.Enter);
+        game.Frame();
+        Assert.Equal(MenuPage.Play, game.World.Menu.Page);
+    }
+
     [Fact]
     public void TheStartMenuWorksFromTheKeyboardAlone()
     {
