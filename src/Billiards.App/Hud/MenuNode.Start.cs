@@ -19,6 +19,10 @@ public sealed partial class MenuNode
 {
     private readonly List<HudLabel> _labels = [];
     private readonly List<int> _rowOf = [];
+
+    // The group of each button: the buttons one row of choices laid out (the games, wrapped into
+    // lines or not; the opponents; Start and Back; the drills' grid), within which Left and Right move.
+    private readonly List<int> _groupOf = [];
     private int _focus;
     private MenuPage _quitReturn = MenuPage.Pause;
 
@@ -117,8 +121,17 @@ public sealed partial class MenuNode
                     _buttons[_focus].Act();
                 }
                 break;
-            case Key.Left or Key.Right or Key.Tab:
-                _focus = Math.Clamp(_focus + (key == Key.Left ? -1 : 1), 0, _buttons.Count - 1);
+            case Key.Tab:
+                _focus = Math.Clamp(_focus + 1, 0, _buttons.Count - 1);
+                break;
+            case Key.Left or Key.Right:
+                // Within the focused row of choices (from the opponents, Left does not jump back to
+                // the games); a button alone in its row stays.
+                int next = _focus + (key == Key.Left ? -1 : 1);
+                if (_focus >= 0 && _focus < _buttons.Count && next >= 0 && next < _buttons.Count && _groupOf[next] == _groupOf[_focus])
+                {
+                    _focus = next;
+                }
                 break;
             case Key.Up or Key.Down:
                 _focus = NextRow(key == Key.Up ? -1 : 1);
@@ -283,11 +296,13 @@ public sealed partial class MenuNode
         float buttonH = line + (10 * u), gap = 6 * u;
         float cx = width / 2f;
         _rowOf.Clear();
-        int row = 0;
+        _groupOf.Clear();
+        int row = 0, group = 0;
         void Add(float x, float y, float w, float h, string label, Action act, bool chosen = false, string? note = null, HudPicture? picture = null, int? textScale = null, int? noteScale = null)
         {
             _buttons.Add((new HudButton(x, y, w, h, label) { Chosen = chosen, Note = note, Picture = picture, TextScale = textScale, NoteScale = noteScale }, act));
             _rowOf.Add(row);
+            _groupOf.Add(group);
         }
         // Items of one size in lines of perLine (at least one line), each line centred; add places
         // item k at x, y. Returns the y below the last line.
@@ -307,6 +322,7 @@ public sealed partial class MenuNode
                 start += perLine;
             }
             while (start < count);
+            group++;
             return y;
         }
         // A row of buttons of one width, centred; wrapped into lines of about equal count when

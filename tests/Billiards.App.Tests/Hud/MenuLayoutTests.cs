@@ -64,6 +64,52 @@ public sealed class MenuLayoutTests
         return [.. buttons.Where(b => b.Y < opponents)];
     }
 
+    // Left and Right move within the focused row of choices: through the games across their lines
+    // (the end of one line to the start of the next), never from the opponents back into the games
+    // or from the games on to the opponents; a button alone in its row (the start page's) stays.
+    [Fact]
+    public void LeftAndRightMoveWithinTheFocusedRowOfChoices()
+    {
+        using var game = new TestGame();
+        game.Window.FramebufferSize = (1000, 760);
+        var menu = game.World.Menu;
+        menu.ShowStart();
+        game.Frame();
+        Assert.Equal("Play", menu.FocusedLabel);
+        game.Window.Press(Key.Right);
+        game.Window.Press(Key.Left);
+        game.Frame();
+        Assert.Equal("Play", menu.FocusedLabel);
+        menu.ShowStart(MenuPage.Play);
+        var games = GameButtons(game.Frame().Hud!.Buttons!);
+        var lines = games.GroupBy(b => b.Y).OrderBy(g => g.Key).Select(g => g.Select(b => b.Label).ToList()).ToList();
+        Assert.True(lines.Count >= 2, "the games are on one line at 1000 px");
+        void Press(Key key, int times = 1)
+        {
+            for (int i = 0; i < times; i++)
+            {
+                game.Window.Press(key);
+                game.Frame();
+            }
+        }
+        // From Start up to the opponents; Left as often as there are buttons: Person, not a game.
+        Press(Key.Up);
+        Press(Key.Left, game.Frame().Hud!.Buttons!.Count);
+        Assert.Equal("Person", menu.FocusedLabel);
+        // Up to the games' last line, Left through the lines to the first game; Right to the next
+        // line's first, Left back to the end of the line above.
+        Press(Key.Up);
+        Press(Key.Left, games.Count);
+        Assert.Equal(games[0].Label, menu.FocusedLabel);
+        Press(Key.Right, lines[0].Count);
+        Assert.Equal(lines[1][0], menu.FocusedLabel);
+        Press(Key.Left);
+        Assert.Equal(lines[0][^1], menu.FocusedLabel);
+        // Right past the last game stays on it.
+        Press(Key.Right, games.Count + 3);
+        Assert.Equal(games[^1].Label, menu.FocusedLabel);
+    }
+
     [Fact]
     public void TheGamesWrapIntoLinesOfAboutEqualCountInANarrowWindowAndTheKeysReachEachLine()
     {
